@@ -1,0 +1,1 @@
+//! Reading point sets and writing triangulations and graphs.

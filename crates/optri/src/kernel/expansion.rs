@@ -1,0 +1,150 @@
+//! Exact floating-point expansion arithmetic (Shewchuk 1997, §2).
+//!
+//! An *expansion* is a sum of `f64` components that are non-overlapping and
+//! sorted by increasing magnitude, so its sign is the sign of its last
+//! non-zero component. The `robust` crate keeps these helpers private, so the
+//! few we need for exact length and area comparisons live here.
+//!
+//! Exactness requires that no intermediate result overflows or underflows;
+//! [`crate::PointSet`] enforces the coordinate range that guarantees this
+//! (see [`crate::kernel::MAX_COORDINATE`]).
+
+/// `a + b = s + e` exactly, with `s = fl(a + b)` (Knuth's TwoSum).
+#[inline]
+pub fn two_sum(a: f64, b: f64) -> (f64, f64) {
+    let s = a + b;
+    let bv = s - a;
+    let av = s - bv;
+    (s, (a - av) + (b - bv))
+}
+
+/// `a - b = s + e` exactly, with `s = fl(a - b)`.
+#[inline]
+pub fn two_diff(a: f64, b: f64) -> (f64, f64) {
+    two_sum(a, -b)
+}
+
+/// `a * b = p + e` exactly, with `p = fl(a * b)`; the error term comes from a
+/// fused multiply-add, which is exact whenever the product does not underflow.
+#[inline]
+pub fn two_product(a: f64, b: f64) -> (f64, f64) {
+    let p = a * b;
+    (p, a.mul_add(b, -p))
+}
+
+/// A growable exact sum of `f64` terms.
+///
+/// Terms are added one by one with Shewchuk's GROW-EXPANSION (with zero
+/// elimination), which keeps the components non-overlapping and increasing.
+#[derive(Clone, Debug, Default)]
+pub struct Expansion {
+    components: Vec<f64>,
+}
+
+impl Expansion {
+    /// The empty sum (zero).
+    pub fn new() -> Self {
+        Self {
+            components: Vec::with_capacity(32),
+        }
+    }
+
+    /// Adds one term exactly.
+    pub fn add(&mut self, b: f64) {
+        let mut q = b;
+        let mut out = 0;
+        for i in 0..self.components.len() {
+            let (s, e) = two_sum(q, self.components[i]);
+            q = s;
+            if e != 0.0 {
+                self.components[out] = e;
+                out += 1;
+            }
+        }
+        self.components.truncate(out);
+        if q != 0.0 {
+            self.components.push(q);
+        }
+    }
+
+    /// Adds the exact product `a * b`.
+    pub fn add_product(&mut self, a: f64, b: f64) {
+        let (p, e) = two_product(a, b);
+        self.add(e);
+        self.add(p);
+    }
+
+    /// Adds `sign * (h + l)²` exactly, where `h + l` is an exact two-term value
+    /// (typically the output of [`two_diff`]).
+    pub fn add_square(&mut self, h: f64, l: f64, sign: f64) {
+        self.add_product(sign * h, h);
+        self.add_product(sign * 2.0 * h, l);
+        self.add_product(sign * l, l);
+    }
+
+    /// Adds `sign * (a + b) * (c + d)` exactly, for exact two-term values.
+    pub fn add_two_term_product(&mut self, (a, b): (f64, f64), (c, d): (f64, f64), sign: f64) {
+        self.add_product(sign * a, c);
+        self.add_product(sign * a, d);
+        self.add_product(sign * b, c);
+        self.add_product(sign * b, d);
+    }
+
+    /// The exact sign of the sum: -1, 0 or 1.
+    pub fn sign(&self) -> i32 {
+        match self.components.last() {
+            None => 0,
+            Some(&v) if v > 0.0 => 1,
+            Some(_) => -1,
+        }
+    }
+
+    /// The sum rounded to the nearest `f64` (approximately: components summed).
+    pub fn approximate(&self) -> f64 {
+        self.components.iter().sum()
+    }
+}
+
+/// The exact sign of `terms[0] + terms[1] + …`.
+pub fn sign_of_sum(terms: &[f64]) -> i32 {
+    let mut e = Expansion::new();
+    for &t in terms {
+        e.add(t);
+    }
+    e.sign()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn two_sum_is_exact_where_naive_sum_loses_bits() {
+        let (s, e) = two_sum(1.0, 1e-20);
+        assert_eq!(s, 1.0);
+        assert_eq!(e, 1e-20);
+    }
+
+    #[test]
+    fn sign_of_sum_sees_cancelled_tiny_terms() {
+        // 1e16 + 1 - 1e16 is 0 in naive f64 (ties to even) but 1 exactly.
+        assert_eq!(1e16 + 1.0 - 1e16, 0.0);
+        assert_eq!(sign_of_sum(&[1e16, 1.0, -1e16]), 1);
+        assert_eq!(sign_of_sum(&[1e16, -1.0, -1e16]), -1);
+        assert_eq!(sign_of_sum(&[1e16, -1e16]), 0);
+        assert_eq!(sign_of_sum(&[]), 0);
+    }
+
+    #[test]
+    fn squares_expand_exactly() {
+        // (1 + 2^-60)^2 - 1 - 2^-59 = 2^-120 > 0, invisible in f64.
+        let tiny = 2f64.powi(-60);
+        let mut e = Expansion::new();
+        e.add_square(1.0, tiny, 1.0);
+        e.add(-1.0);
+        e.add(-2.0 * tiny);
+        assert_eq!(e.sign(), 1);
+        e.add(-tiny * tiny);
+        assert_eq!(e.sign(), 0);
+    }
+}

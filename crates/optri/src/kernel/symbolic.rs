@@ -1,0 +1,230 @@
+//! Simulation of simplicity: one symbolic perturbation for every tie.
+//!
+//! The minmax-length and greedy algorithms assume that no two lengths are
+//! equal and no three points are collinear. Instead of special cases, optri
+//! decides every tie as if the points had been perturbed (Edelsbrunner &
+//! Mücke, *Simulation of Simplicity*, ACM TOG 9(1), 1990):
+//!
+//! ```text
+//!   y_m  ←  y_m + ε^(3^(2m))        x_m  ←  x_m + ε^(3^(2m+1))
+//! ```
+//!
+//! for the point with (distinct-point) index `m` and an infinitesimal `ε > 0`.
+//! A lower index is perturbed more, and within a point `y` more than `x`.
+//! Base 3 (not SoS's base 2) matters: squared lengths contain `ε_v²`, and with
+//! base 2 the square of one variable's perturbation would coincide with the
+//! next variable's, making the order of monomials ambiguous. With base 3 every
+//! monomial of degree ≤ 2 has a distinct exponent, so the sign of any
+//! polynomial of degree ≤ 2 per variable is the sign of its first non-zero
+//! coefficient in order of increasing exponent. Orientation is multilinear,
+//! so its rule is the same as in the original paper.
+//!
+//! Because all decisions come from one perturbed point set, they are mutually
+//! consistent: perturbed lengths are pairwise distinct and perturbed
+//! orientations are never zero, for *distinct* input points.
+
+use super::expansion::sign_of_sum;
+use super::predicates::{compare_lengths, orient_sign};
+use super::Point;
+use std::cmp::Ordering;
+
+/// Orientation of points `i, j, k` of `points` under the symbolic perturbation:
+/// `1` (counter-clockwise) or `-1` (clockwise), never `0` for distinct points.
+///
+/// # Panics
+/// If two of the indices are equal or two of the points coincide.
+pub fn orient_symbolic(points: &[Point], i: u32, j: u32, k: u32) -> i32 {
+    let exact = orient_sign(points[i as usize], points[j as usize], points[k as usize]);
+    if exact != 0 {
+        return exact;
+    }
+    // Sort the indices ascending and track the permutation's parity.
+    let mut idx = [i, j, k];
+    let mut parity = 1;
+    for a in 0..3 {
+        for b in 0..2 - a {
+            if idx[b] > idx[b + 1] {
+                idx.swap(b, b + 1);
+                parity = -parity;
+            }
+        }
+    }
+    assert!(
+        idx[0] != idx[1] && idx[1] != idx[2],
+        "orient_symbolic needs three distinct indices"
+    );
+    let [pi, pj, pk] = idx.map(|m| points[m as usize]);
+    // Coefficients of ε_{y_i}, ε_{x_i}, ε_{y_j} in the perturbed determinant.
+    let terms = [
+        sign_of_sum(&[pk[0], -pj[0]]),
+        sign_of_sum(&[pj[1], -pk[1]]),
+        sign_of_sum(&[pi[0], -pk[0]]),
+    ];
+    let s = terms.into_iter().find(|&t| t != 0).unwrap_or_else(|| {
+        panic!("orient_symbolic: coincident points {pi:?} {pj:?} {pk:?}");
+    });
+    s * parity
+}
+
+/// Compares the lengths of segments `ab` and `cd` (indices into `points`)
+/// under the symbolic perturbation.
+///
+/// Returns `Equal` only if the two segments are the same pair of points.
+/// Segments sharing an endpoint are handled (coefficients add up).
+pub fn compare_lengths_symbolic(points: &[Point], ab: [u32; 2], cd: [u32; 2]) -> Ordering {
+    let [a, b] = ab;
+    let [c, d] = cd;
+    let p = |m: u32| points[m as usize];
+    let exact = compare_lengths(p(a), p(b), p(c), p(d));
+    if exact != Ordering::Equal {
+        return exact;
+    }
+    let same =
+        |s: [u32; 2], t: [u32; 2]| (s[0] == t[0] && s[1] == t[1]) || (s[0] == t[1] && s[1] == t[0]);
+    if same(ab, cd) {
+        return Ordering::Equal;
+    }
+    // f(ε) = Σ_u (A_u + Σ α_v ε_v)² − (B_u + Σ β_v ε_v)², A = a−b, B = c−d.
+    // Variable v = (point m, coordinate u), rank 2m + (u == x).
+    let alpha = |m: u32| (m == a) as i32 - (m == b) as i32;
+    let beta = |m: u32| (m == c) as i32 - (m == d) as i32;
+    let mut ms = [a, b, c, d];
+    ms.sort_unstable();
+    let mut vars: Vec<(u32, usize)> = Vec::with_capacity(8); // (point, coord) by increasing rank
+    for (n, &m) in ms.iter().enumerate() {
+        if n > 0 && ms[n - 1] == m {
+            continue;
+        }
+        vars.push((m, 1)); // y first: rank 2m
+        vars.push((m, 0)); // then x: rank 2m+1
+    }
+    let to_ordering = |s: i32| {
+        if s > 0 {
+            Ordering::Greater
+        } else {
+            Ordering::Less
+        }
+    };
+    for (n, &(m, u)) in vars.iter().enumerate() {
+        let (al, be) = (alpha(m), beta(m));
+        // Linear coefficient 2(α A_u − β B_u).
+        let (al_f, be_f) = (al as f64, be as f64);
+        let lin = sign_of_sum(&[
+            al_f * p(a)[u],
+            -al_f * p(b)[u],
+            -be_f * p(c)[u],
+            be_f * p(d)[u],
+        ]);
+        if lin != 0 {
+            return to_ordering(lin);
+        }
+        // Cross terms with earlier variables of the same coordinate.
+        for &(w, uw) in &vars[..n] {
+            if uw != u {
+                continue;
+            }
+            let cross = al * alpha(w) - be * beta(w);
+            if cross != 0 {
+                return to_ordering(cross);
+            }
+        }
+        let square = al * al - be * be;
+        if square != 0 {
+            return to_ordering(square);
+        }
+    }
+    unreachable!("distinct segments always differ under the perturbation")
+}
+
+/// Total order on segments used by every length-driven algorithm:
+/// the symbolic length order of [`compare_lengths_symbolic`].
+///
+/// Segments are given as index pairs; the order does not depend on the
+/// order of the two endpoints.
+pub fn segment_order(points: &[Point]) -> impl Fn(&[u32; 2], &[u32; 2]) -> Ordering + '_ {
+    move |s, t| compare_lengths_symbolic(points, *s, *t)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::cmp::Ordering::*;
+
+    #[test]
+    fn orientation_is_antisymmetric_and_never_zero() {
+        let pts = [
+            [0.0, 0.0],
+            [1.0, 1.0],
+            [2.0, 2.0],
+            [3.0, 0.0],
+            [0.0, 5.0],
+            [0.0, 7.0],
+        ];
+        for i in 0..6u32 {
+            for j in 0..6u32 {
+                for k in 0..6u32 {
+                    if i == j || j == k || i == k {
+                        continue;
+                    }
+                    let s = orient_symbolic(&pts, i, j, k);
+                    assert!(s == 1 || s == -1);
+                    assert_eq!(orient_symbolic(&pts, j, i, k), -s);
+                    assert_eq!(orient_symbolic(&pts, j, k, i), s);
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn length_order_is_total_and_antisymmetric_on_a_grid() {
+        let mut pts = Vec::new();
+        for x in 0..3 {
+            for y in 0..3 {
+                pts.push([x as f64, y as f64]);
+            }
+        }
+        let n = pts.len() as u32;
+        let mut segs = Vec::new();
+        for i in 0..n {
+            for j in i + 1..n {
+                segs.push([i, j]);
+            }
+        }
+        for s in &segs {
+            for t in &segs {
+                let o = compare_lengths_symbolic(&pts, *s, *t);
+                assert_eq!(o == Equal, s == t);
+                assert_eq!(compare_lengths_symbolic(&pts, *t, *s), o.reverse());
+                assert_eq!(compare_lengths_symbolic(&pts, [s[1], s[0]], *t), o);
+            }
+        }
+        // Sorting with it must be consistent (transitive); sort and re-check adjacent pairs.
+        let mut sorted = segs.clone();
+        sorted.sort_by(segment_order(&pts));
+        for w in sorted.windows(2) {
+            assert_eq!(compare_lengths_symbolic(&pts, w[0], w[1]), Less);
+        }
+        for a in 0..sorted.len() {
+            for b in a + 1..sorted.len() {
+                assert_eq!(compare_lengths_symbolic(&pts, sorted[a], sorted[b]), Less);
+            }
+        }
+    }
+
+    #[test]
+    fn shared_endpoint_rule_matches_the_closed_form() {
+        // |p-r| vs |p-q| with equal lengths; smallest index decides (see module docs).
+        let pts = [[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]];
+        // p = 0 is the smallest index: sign f = -sign(r_y - q_y), f = |pr|² - |pq|².
+        // r = 2 (y=1), q = 1 (y=0): f < 0.
+        assert_eq!(compare_lengths_symbolic(&pts, [0, 2], [0, 1]), Less);
+        // m = r is the smallest index: sign f = sign(r_y - p_y), else +1.
+        let pts2 = [[0.0, 1.0], [1.0, 0.0], [0.0, 0.0]]; // r = 0, q = 1, p = 2
+        assert_eq!(compare_lengths_symbolic(&pts2, [2, 0], [2, 1]), Greater);
+        let pts3 = [[1.0, 0.0], [0.0, 1.0], [0.0, 0.0]]; // r_y = p_y: the +1 case
+        assert_eq!(compare_lengths_symbolic(&pts3, [2, 0], [2, 1]), Greater);
+        // m = q is the smallest index: sign f = sign(p_y - q_y), else -1.
+        let pts4 = [[0.0, 1.0], [1.0, 0.0], [0.0, 0.0]]; // q = 0, r = 1, p = 2
+        assert_eq!(compare_lengths_symbolic(&pts4, [2, 1], [2, 0]), Less);
+    }
+}

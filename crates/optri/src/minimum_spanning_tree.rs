@@ -1,0 +1,47 @@
+//! Euclidean minimum spanning tree, by Kruskal over the relative neighbourhood
+//! graph (every MST edge `pq` is an RNG edge: a point `r` in the lune of `pq`
+//! makes `pq` the strictly longest edge of the cycle `p q r`).
+//!
+//! Equal lengths are ordered by the kernel's symbolic perturbation
+//! ([`crate::kernel::compare_lengths_symbolic`]), so the tree is unique and
+//! reproducible.
+
+use crate::delaunay::{delaunay_graph, to_input_edges};
+use crate::error::Result;
+use crate::kernel::segment_order;
+use crate::point_set::PointSet;
+use crate::relative_neighborhood_graph::rng_from_delaunay;
+
+/// Kruskal over candidate edges (distinct indices) in the symbolic length order.
+pub(crate) fn kruskal(
+    points: &[crate::kernel::Point],
+    mut candidates: Vec<[u32; 2]>,
+) -> Vec<[u32; 2]> {
+    candidates.sort_unstable_by(segment_order(points));
+    let mut parent: Vec<u32> = (0..points.len() as u32).collect();
+    fn find(parent: &mut [u32], mut x: u32) -> u32 {
+        while parent[x as usize] != x {
+            parent[x as usize] = parent[parent[x as usize] as usize];
+            x = parent[x as usize];
+        }
+        x
+    }
+    let mut tree = Vec::with_capacity(points.len() - 1);
+    for [u, v] in candidates {
+        let (a, b) = (find(&mut parent, u), find(&mut parent, v));
+        if a != b {
+            parent[a as usize] = b;
+            tree.push([u, v]);
+        }
+    }
+    tree
+}
+
+/// The Euclidean minimum spanning tree: `n - 1` edges as sorted `[min, max]`
+/// input-index pairs (over the distinct points).
+pub fn minimum_spanning_tree(points: &PointSet) -> Result<Vec<[u32; 2]>> {
+    let g = delaunay_graph(points.points())?;
+    let rng = rng_from_delaunay(points.points(), &g);
+    let tree = kruskal(points.points(), rng);
+    Ok(to_input_edges(points, tree.into_iter()))
+}

@@ -1,0 +1,390 @@
+//! The [`Triangulation`] type: triangles over a [`PointSet`], exact
+//! validation, and quality measures.
+
+use crate::convex_hull::hull_distinct;
+use crate::error::{Error, Result};
+use crate::kernel::{self, compare_lengths, orient_sign, Point};
+use crate::point_set::PointSet;
+use serde::Serialize;
+use std::collections::HashMap;
+
+/// A triangulation of a point set.
+///
+/// Triangles are counter-clockwise triples of *input* indices (for merged
+/// duplicates, the index of the first occurrence). A triangulation produced
+/// by optri always passes [`validate`](Self::validate).
+#[derive(Clone, Debug)]
+pub struct Triangulation {
+    point_set: PointSet,
+    triangles: Vec<[u32; 3]>,
+}
+
+/// Quality measures of a triangulation (rounded values for reporting).
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Stats {
+    /// Length of the longest edge.
+    pub max_edge_length: f64,
+    /// The longest edge, as input indices (chosen exactly).
+    pub longest_edge: [u32; 2],
+    /// Sum of all edge lengths (the *weight*).
+    pub total_edge_length: f64,
+    /// Smallest triangle area.
+    pub min_area: f64,
+    /// Largest triangle area.
+    pub max_area: f64,
+    /// Smallest interior angle, degrees.
+    pub min_angle_deg: f64,
+    /// Largest interior angle, degrees.
+    pub max_angle_deg: f64,
+    /// Number of triangles.
+    pub triangles: usize,
+    /// Number of edges.
+    pub edges: usize,
+    /// Number of hull points (collinear boundary points included).
+    pub hull_points: usize,
+}
+
+impl Triangulation {
+    /// Wraps triangles given as *distinct* indices of `point_set` (internal
+    /// algorithms work on distinct points), orienting each counter-clockwise.
+    pub(crate) fn from_distinct(point_set: &PointSet, triangles: Vec<[u32; 3]>) -> Self {
+        let pts = point_set.points();
+        let triangles = triangles
+            .into_iter()
+            .map(|[a, b, c]| {
+                let [a, b, c] =
+                    if orient_sign(pts[a as usize], pts[b as usize], pts[c as usize]) < 0 {
+                        [a, c, b]
+                    } else {
+                        [a, b, c]
+                    };
+                [a, b, c].map(|d| point_set.input_index(d))
+            })
+            .collect();
+        Self {
+            point_set: point_set.clone(),
+            triangles,
+        }
+    }
+
+    /// Builds a triangulation from triangles given as input indices and
+    /// checks it with [`validate`](Self::validate).
+    pub fn from_triangles(point_set: &PointSet, triangles: Vec<[u32; 3]>) -> Result<Self> {
+        let t = Self {
+            point_set: point_set.clone(),
+            triangles,
+        };
+        t.validate()?;
+        Ok(t)
+    }
+
+    /// The validated point set.
+    pub fn point_set(&self) -> &PointSet {
+        &self.point_set
+    }
+
+    /// The caller's points (duplicates included), indexed by input index.
+    pub fn points(&self) -> &[Point] {
+        self.point_set.input_points()
+    }
+
+    /// Counter-clockwise triangles as input indices.
+    pub fn triangles(&self) -> &[[u32; 3]] {
+        &self.triangles
+    }
+
+    /// All edges as `[min, max]` input-index pairs, sorted.
+    pub fn edges(&self) -> Vec<[u32; 2]> {
+        let mut e: Vec<[u32; 2]> = self
+            .triangles
+            .iter()
+            .flat_map(|t| [[t[0], t[1]], [t[1], t[2]], [t[2], t[0]]])
+            .map(|[a, b]| [a.min(b), a.max(b)])
+            .collect();
+        e.sort_unstable();
+        e.dedup();
+        e
+    }
+
+    fn point(&self, i: u32) -> Point {
+        self.point_set.input_points()[i as usize]
+    }
+
+    /// The longest edge, chosen by exact length comparison (ties: the
+    /// smallest index pair).
+    pub fn longest_edge(&self) -> [u32; 2] {
+        let edges = self.edges();
+        let mut best = edges[0];
+        for &e in &edges[1..] {
+            if compare_lengths(
+                self.point(e[0]),
+                self.point(e[1]),
+                self.point(best[0]),
+                self.point(best[1]),
+            ) == std::cmp::Ordering::Greater
+            {
+                best = e;
+            }
+        }
+        best
+    }
+
+    /// Quality measures.
+    pub fn stats(&self) -> Stats {
+        let edges = self.edges();
+        let longest_edge = self.longest_edge();
+        let mut stats = Stats {
+            max_edge_length: kernel::metrics::length(
+                self.point(longest_edge[0]),
+                self.point(longest_edge[1]),
+            ),
+            longest_edge,
+            total_edge_length: edges
+                .iter()
+                .map(|e| kernel::metrics::length(self.point(e[0]), self.point(e[1])))
+                .sum(),
+            min_area: f64::INFINITY,
+            max_area: 0.0,
+            min_angle_deg: 180.0,
+            max_angle_deg: 0.0,
+            triangles: self.triangles.len(),
+            edges: edges.len(),
+            hull_points: 2 * self.point_set.len() - 2 - self.triangles.len(),
+        };
+        for t in &self.triangles {
+            let [a, b, c] = t.map(|i| self.point(i));
+            let area = kernel::metrics::area(a, b, c);
+            stats.min_area = stats.min_area.min(area);
+            stats.max_area = stats.max_area.max(area);
+            for ang in kernel::metrics::angles_deg(a, b, c) {
+                stats.min_angle_deg = stats.min_angle_deg.min(ang);
+                stats.max_angle_deg = stats.max_angle_deg.max(ang);
+            }
+        }
+        stats
+    }
+
+    /// Checks exactly that this is a triangulation of the point set.
+    ///
+    /// Verified: every triangle is strictly counter-clockwise (no flat
+    /// triangles); no directed edge is used twice; the unpaired edges are
+    /// exactly the convex hull's edges (collinear hull points included);
+    /// around every vertex the triangles form one fan that turns once (interior)
+    /// or less than once (boundary), so no two triangles overlap; every distinct
+    /// point is a vertex; and the triangle count is `2n - h - 2`. A locally
+    /// injective triangulated disc whose boundary is the hull is embedded, so
+    /// no point can lie inside an edge or a triangle.
+    pub fn validate(&self) -> Result<()> {
+        let bad = |m: String| Err(Error::InvalidTriangulation(m));
+        let ps = &self.point_set;
+        let pts = ps.points();
+        let n_input = ps.input_points().len() as u32;
+        let n = pts.len();
+        let mut tris = Vec::with_capacity(self.triangles.len());
+        for (ti, t) in self.triangles.iter().enumerate() {
+            if t.iter().any(|&i| i >= n_input) {
+                return bad(format!(
+                    "triangle {ti} {t:?} has an index out of range (< {n_input})"
+                ));
+            }
+            let d = t.map(|i| ps.distinct_index(i));
+            if d[0] == d[1] || d[1] == d[2] || d[0] == d[2] {
+                return bad(format!("triangle {ti} {t:?} repeats a point"));
+            }
+            if orient_sign(pts[d[0] as usize], pts[d[1] as usize], pts[d[2] as usize]) <= 0 {
+                return bad(format!(
+                    "triangle {ti} {t:?} is not strictly counter-clockwise (flat or clockwise)"
+                ));
+            }
+            tris.push(d);
+        }
+        // Directed edge -> apex (the third vertex of its triangle).
+        let mut apex: HashMap<(u32, u32), u32> = HashMap::with_capacity(3 * tris.len());
+        for (ti, &[a, b, c]) in tris.iter().enumerate() {
+            for (u, v, w) in [(a, b, c), (b, c, a), (c, a, b)] {
+                if apex.insert((u, v), w).is_some() {
+                    return bad(format!(
+                        "directed edge ({u}, {v}) is used by two triangles (at triangle {ti})"
+                    ));
+                }
+            }
+        }
+        let hull = hull_distinct(pts);
+        let h = hull.len();
+        let mut boundary = 0usize;
+        for &(u, v) in apex.keys() {
+            if !apex.contains_key(&(v, u)) {
+                boundary += 1;
+            }
+        }
+        for i in 0..h {
+            let (u, v) = (hull[i], hull[(i + 1) % h]);
+            if !apex.contains_key(&(u, v)) || apex.contains_key(&(v, u)) {
+                return bad(format!(
+                    "hull edge ({}, {}) is not a boundary edge",
+                    ps.input_index(u),
+                    ps.input_index(v)
+                ));
+            }
+        }
+        if boundary != h {
+            return bad(format!(
+                "{boundary} boundary edges, but the convex hull has {h}"
+            ));
+        }
+        // Fans: at v, each triangle (v, a, b) turns from a to b.
+        let mut turn: Vec<Vec<(u32, u32)>> = vec![Vec::new(); n];
+        for &[a, b, c] in &tris {
+            turn[a as usize].push((b, c));
+            turn[b as usize].push((c, a));
+            turn[c as usize].push((a, b));
+        }
+        let mut on_hull = vec![false; n];
+        for &v in &hull {
+            on_hull[v as usize] = true;
+        }
+        for v in 0..n {
+            let fan = &turn[v];
+            if fan.is_empty() {
+                return bad(format!(
+                    "point {} is not a vertex of any triangle",
+                    ps.input_index(v as u32)
+                ));
+            }
+            let next: HashMap<u32, u32> = fan.iter().copied().collect();
+            let has_pred: std::collections::HashSet<u32> = fan.iter().map(|&(_, b)| b).collect();
+            let start = if on_hull[v] {
+                match fan.iter().find(|&&(a, _)| !has_pred.contains(&a)) {
+                    Some(&(a, _)) => a,
+                    None => {
+                        return bad(format!(
+                            "hull point {} is surrounded by triangles",
+                            ps.input_index(v as u32)
+                        ))
+                    }
+                }
+            } else {
+                fan[0].0
+            };
+            let o = pts[v];
+            let d0 = pts[start as usize];
+            // Half-open halves relative to d0: [0, π) is 0, [π, 2π) is 1.
+            let half = |x: u32| -> u8 {
+                let p = pts[x as usize];
+                match orient_sign(o, d0, p) {
+                    1 => 0,
+                    -1 => 1,
+                    _ => (kernel::dot_sign(o, d0, p) < 0) as u8,
+                }
+            };
+            let (mut cur, mut steps, mut wraps) = (start, 0usize, 0usize);
+            while let Some(&nx) = next.get(&cur) {
+                if half(cur) == 1 && half(nx) == 0 {
+                    wraps += 1;
+                }
+                cur = nx;
+                steps += 1;
+                if cur == start || steps > fan.len() {
+                    break;
+                }
+            }
+            let closed = cur == start;
+            let ok = if on_hull[v] {
+                !closed && steps == fan.len() && wraps == 0
+            } else {
+                closed && steps == fan.len() && wraps == 1
+            };
+            if !ok {
+                return bad(format!(
+                    "the triangles around point {} do not form a single non-overlapping fan",
+                    ps.input_index(v as u32)
+                ));
+            }
+        }
+        if tris.len() != 2 * n - h - 2 {
+            return bad(format!(
+                "{} triangles, but {n} points with {h} on the hull need {}",
+                tris.len(),
+                2 * n - h - 2
+            ));
+        }
+        Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn square_with_center() -> PointSet {
+        PointSet::new(&[[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [0.0, 2.0], [1.0, 1.0]]).unwrap()
+    }
+
+    #[test]
+    fn a_valid_fan_passes_and_reports_stats() {
+        let ps = square_with_center();
+        let t =
+            Triangulation::from_triangles(&ps, vec![[0, 1, 4], [1, 2, 4], [2, 3, 4], [3, 0, 4]])
+                .unwrap();
+        let s = t.stats();
+        assert_eq!(s.triangles, 4);
+        assert_eq!(s.edges, 8);
+        assert_eq!(s.hull_points, 4);
+        assert!((s.max_edge_length - 2.0).abs() < 1e-12);
+        assert!((s.min_angle_deg - 45.0).abs() < 1e-9);
+        assert!((s.max_angle_deg - 90.0).abs() < 1e-9);
+    }
+
+    #[test]
+    fn invalid_triangulations_are_rejected_with_reasons() {
+        let ps = square_with_center();
+        let cases: Vec<(Vec<[u32; 3]>, &str)> = vec![
+            (vec![[0, 1, 2], [0, 2, 3]], "not a vertex"),
+            (
+                vec![[0, 4, 1], [1, 2, 4], [2, 3, 4], [3, 0, 4]],
+                "counter-clockwise",
+            ),
+            (vec![[0, 1, 4], [1, 2, 4], [2, 3, 4]], "boundary"),
+            (
+                vec![[0, 1, 4], [1, 2, 4], [2, 3, 4], [3, 0, 4], [0, 1, 2]],
+                "used by two",
+            ),
+            (
+                vec![[0, 1, 9], [1, 2, 4], [2, 3, 4], [3, 0, 4]],
+                "out of range",
+            ),
+        ];
+        for (tris, why) in cases {
+            let e = Triangulation::from_triangles(&ps, tris.clone())
+                .unwrap_err()
+                .to_string();
+            assert!(e.contains(why), "{tris:?}: {e}");
+        }
+    }
+
+    #[test]
+    fn a_point_inside_an_edge_is_rejected() {
+        // (1,0) lies on edge (0,0)-(2,0) of a triangle that skips it.
+        let ps = PointSet::new(&[[0.0, 0.0], [2.0, 0.0], [1.0, 2.0], [1.0, 0.0]]).unwrap();
+        assert!(Triangulation::from_triangles(&ps, vec![[0, 1, 2]]).is_err());
+        assert!(Triangulation::from_triangles(&ps, vec![[0, 3, 2], [3, 1, 2]]).is_ok());
+    }
+
+    #[test]
+    fn a_doubly_covering_mesh_is_rejected() {
+        // Hexagon-like fan around the center that winds twice has the wrong
+        // count or a bad fan; build a wound-twice fan on 5 outer points.
+        let mut pts = vec![[0.0, 0.0]];
+        for k in 0..5 {
+            let a = std::f64::consts::TAU * k as f64 / 5.0;
+            pts.push([a.cos(), a.sin()]);
+        }
+        let ps = PointSet::new(&pts).unwrap();
+        let ok: Vec<[u32; 3]> = (0..5).map(|k| [0, 1 + k, 1 + (k + 1) % 5]).collect();
+        assert!(Triangulation::from_triangles(&ps, ok).is_ok());
+        let twice: Vec<[u32; 3]> = (0..5)
+            .map(|k| [0, 1 + (2 * k) % 5, 1 + (2 * k + 2) % 5])
+            .collect();
+        assert!(Triangulation::from_triangles(&ps, twice).is_err());
+    }
+}
