@@ -25,6 +25,7 @@
 #![warn(missing_docs)]
 
 pub mod convex_hull;
+mod criterion;
 pub mod delaunay;
 mod error;
 pub mod gabriel_graph;
@@ -37,7 +38,8 @@ pub mod relative_neighborhood_graph;
 mod triangulation;
 
 pub use convex_hull::{convex_hull, convex_hull_edges};
-pub use delaunay::delaunay;
+pub use criterion::{triangulate, Criterion, Phase, Solution};
+pub use delaunay::{delaunay, delaunay_edges};
 pub use error::{Error, Result};
 pub use gabriel_graph::gabriel_graph;
 pub use minimum_spanning_tree::minimum_spanning_tree;

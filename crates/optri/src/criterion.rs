@@ -1,0 +1,125 @@
+//! The registry of triangulation criteria, so front ends (CLI, demo, later
+//! Python and web) can list, select and compare them uniformly.
+
+use crate::error::{Error, Result};
+use crate::point_set::PointSet;
+use crate::triangulation::Triangulation;
+use serde::Serialize;
+use std::time::Instant;
+
+/// An optimality criterion optri can triangulate by.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[non_exhaustive]
+pub enum Criterion {
+    /// The Delaunay triangulation (maximises the smallest angle).
+    Delaunay,
+}
+
+/// One timed phase of an algorithm run.
+#[derive(Clone, Debug, Serialize)]
+pub struct Phase {
+    /// Phase name, e.g. `"delaunay"`.
+    pub name: &'static str,
+    /// Wall-clock milliseconds.
+    pub ms: f64,
+}
+
+/// The result of [`triangulate`]: the triangulation and how it was obtained.
+#[derive(Clone, Debug)]
+pub struct Solution {
+    /// The criterion that was optimised.
+    pub criterion: Criterion,
+    /// Whether the result is provably optimal for the criterion.
+    pub exact: bool,
+    /// The algorithm that ran (e.g. `"spade bulk load"`).
+    pub algorithm: String,
+    /// The triangulation.
+    pub triangulation: Triangulation,
+    /// Timed phases, in order.
+    pub phases: Vec<Phase>,
+}
+
+impl Criterion {
+    /// Every implemented criterion, in display order.
+    pub const ALL: &'static [Criterion] = &[Criterion::Delaunay];
+
+    /// The command-line name, e.g. `"delaunay"`, `"minmax-length"`.
+    pub fn name(self) -> &'static str {
+        match self {
+            Criterion::Delaunay => "delaunay",
+        }
+    }
+
+    /// One line describing what is optimised.
+    pub fn description(self) -> &'static str {
+        match self {
+            Criterion::Delaunay => "maximises the smallest angle (empty circumcircles)",
+        }
+    }
+
+    /// Looks a criterion up by its [`name`](Self::name).
+    ///
+    /// # Errors
+    /// [`Error::Unsupported`] listing the available names.
+    pub fn from_name(name: &str) -> Result<Self> {
+        Self::ALL
+            .iter()
+            .copied()
+            .find(|c| c.name() == name)
+            .ok_or_else(|| {
+                let names: Vec<&str> = Self::ALL.iter().map(|c| c.name()).collect();
+                Error::Unsupported(format!(
+                    "unknown criterion '{name}'; available: {}",
+                    names.join(", ")
+                ))
+            })
+    }
+}
+
+/// Times `f` as a phase named `name`.
+pub(crate) fn timed<T>(phases: &mut Vec<Phase>, name: &'static str, f: impl FnOnce() -> T) -> T {
+    let start = Instant::now();
+    let out = f();
+    phases.push(Phase {
+        name,
+        ms: start.elapsed().as_secs_f64() * 1e3,
+    });
+    out
+}
+
+/// Triangulates `points` by `criterion`.
+pub fn triangulate(points: &PointSet, criterion: Criterion) -> Result<Solution> {
+    let mut phases = Vec::new();
+    let (triangulation, exact, algorithm) = match criterion {
+        Criterion::Delaunay => {
+            let t = timed(&mut phases, "delaunay", || crate::delaunay(points))?;
+            (
+                t,
+                true,
+                "spade bulk-load Delaunay (exact predicates)".to_string(),
+            )
+        }
+    };
+    Ok(Solution {
+        criterion,
+        exact,
+        algorithm,
+        triangulation,
+        phases,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn unknown_criterion_lists_the_available_ones() {
+        let e = Criterion::from_name("nope").unwrap_err().to_string();
+        assert!(e.contains("delaunay"), "{e}");
+        assert_eq!(
+            Criterion::from_name("delaunay").unwrap(),
+            Criterion::Delaunay
+        );
+    }
+}
