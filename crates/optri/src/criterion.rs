@@ -13,6 +13,8 @@ use std::time::Instant;
 pub enum Criterion {
     /// The Delaunay triangulation (maximises the smallest angle).
     Delaunay,
+    /// Minimises the longest edge (Edelsbrunner–Tan).
+    MinmaxLength,
 }
 
 /// One timed phase of an algorithm run.
@@ -41,12 +43,13 @@ pub struct Solution {
 
 impl Criterion {
     /// Every implemented criterion, in display order.
-    pub const ALL: &'static [Criterion] = &[Criterion::Delaunay];
+    pub const ALL: &'static [Criterion] = &[Criterion::Delaunay, Criterion::MinmaxLength];
 
     /// The command-line name, e.g. `"delaunay"`, `"minmax-length"`.
     pub fn name(self) -> &'static str {
         match self {
             Criterion::Delaunay => "delaunay",
+            Criterion::MinmaxLength => "minmax-length",
         }
     }
 
@@ -54,6 +57,7 @@ impl Criterion {
     pub fn description(self) -> &'static str {
         match self {
             Criterion::Delaunay => "maximises the smallest angle (empty circumcircles)",
+            Criterion::MinmaxLength => "minimises the longest edge",
         }
     }
 
@@ -98,6 +102,10 @@ pub fn triangulate(points: &PointSet, criterion: Criterion) -> Result<Solution> 
                 true,
                 "spade bulk-load Delaunay (exact predicates)".to_string(),
             )
+        }
+        Criterion::MinmaxLength => {
+            let (t, algorithm) = crate::minmax_length::minmax_length_timed(points, &mut phases)?;
+            (t, true, algorithm)
         }
     };
     Ok(Solution {

@@ -32,6 +32,7 @@ pub mod gabriel_graph;
 pub mod io;
 pub mod kernel;
 pub mod minimum_spanning_tree;
+pub mod minmax_length;
 pub mod planar_graph;
 mod point_set;
 pub mod relative_neighborhood_graph;
@@ -43,6 +44,9 @@ pub use delaunay::{delaunay, delaunay_edges};
 pub use error::{Error, Result};
 pub use gabriel_graph::gabriel_graph;
 pub use minimum_spanning_tree::minimum_spanning_tree;
+pub use minmax_length::minmax_length;
+#[doc(hidden)]
+pub use minmax_length::minmax_length_cubic;
 pub use point_set::PointSet;
 pub use relative_neighborhood_graph::relative_neighborhood_graph;
 pub use triangulation::{Stats, Triangulation};

@@ -1,0 +1,402 @@
+//! Minmax edge-length triangulation against independent references:
+//! an exhaustive search over all triangulations (n ≤ 9), Delaunay, the
+//! paper's examples, and (for the fast polygon algorithm) the cubic DP.
+
+use optri::kernel::{compare_lengths, orient_sign, Point};
+use optri::{minmax_length, minmax_length_cubic, PointSet, Triangulation};
+use rand::{rngs::StdRng, Rng, SeedableRng};
+use std::cmp::Ordering;
+
+/// The longest edge of `t` as a pair of points.
+fn longest(t: &Triangulation) -> [Point; 2] {
+    let e = t.longest_edge();
+    let p = t.point_set().input_points();
+    [p[e[0] as usize], p[e[1] as usize]]
+}
+
+fn cmp_seg(a: [Point; 2], b: [Point; 2]) -> Ordering {
+    compare_lengths(a[0], a[1], b[0], b[1])
+}
+
+/// Exhaustive minmax oracle: enumerates every triangulation of the distinct
+/// points (branch and bound on the longest edge) by repeatedly choosing the
+/// apex of the triangle left of the first open directed edge.
+struct Exhaustive<'a> {
+    p: &'a [Point],
+    edges: Vec<[usize; 2]>,
+    /// Directed edges whose left side is still untriangulated / already done.
+    open: Vec<[usize; 2]>,
+    closed: Vec<[usize; 2]>,
+    best: Option<[Point; 2]>,
+}
+
+impl Exhaustive<'_> {
+    fn crosses(&self, a: usize, b: usize) -> bool {
+        let (pa, pb) = (self.p[a], self.p[b]);
+        self.edges.iter().any(|&[u, w]| {
+            if u == a || u == b || w == a || w == b {
+                return false;
+            }
+            let (pu, pw) = (self.p[u], self.p[w]);
+            orient_sign(pa, pb, pu) * orient_sign(pa, pb, pw) < 0
+                && orient_sign(pu, pw, pa) * orient_sign(pu, pw, pb) < 0
+        })
+    }
+    fn has_edge(&self, a: usize, b: usize) -> bool {
+        self.edges
+            .iter()
+            .any(|&[u, w]| (u == a && w == b) || (u == b && w == a))
+    }
+    fn search(&mut self, current: Option<[Point; 2]>) {
+        if let (Some(c), Some(b)) = (current, self.best) {
+            if cmp_seg(c, b) != Ordering::Less {
+                return;
+            }
+        }
+        let Some(&[a, b]) = self.open.last() else {
+            self.best = current;
+            return;
+        };
+        let n = self.p.len();
+        for c in 0..n {
+            if c == a || c == b || orient_sign(self.p[a], self.p[b], self.p[c]) <= 0 {
+                continue;
+            }
+            // Empty closed triangle (other than its corners).
+            let (pa, pb, pc) = (self.p[a], self.p[b], self.p[c]);
+            let blocked = (0..n).any(|x| {
+                x != a
+                    && x != b
+                    && x != c
+                    && orient_sign(pa, pb, self.p[x]) >= 0
+                    && orient_sign(pb, pc, self.p[x]) >= 0
+                    && orient_sign(pc, pa, self.p[x]) >= 0
+            });
+            if blocked {
+                continue;
+            }
+            let new_edges = [[b, c], [c, a]];
+            if new_edges.iter().any(|&[u, w]| {
+                self.closed.contains(&[u, w]) || (!self.has_edge(u, w) && self.crosses(u, w))
+            }) {
+                continue;
+            }
+            // Apply.
+            let saved = (self.edges.len(), self.open.clone(), self.closed.len());
+            self.open.retain(|&e| e != [a, b]);
+            self.closed.push([a, b]);
+            let mut cur = current;
+            for &[u, w] in &new_edges {
+                self.closed.push([u, w]);
+                if let Some(i) = self.open.iter().position(|&e| e == [u, w]) {
+                    self.open.remove(i);
+                } else if !self.closed.contains(&[w, u]) {
+                    self.open.push([w, u]);
+                }
+                if !self.has_edge(u, w) {
+                    self.edges.push([u, w]);
+                }
+                let s = [self.p[u], self.p[w]];
+                cur = Some(match cur {
+                    Some(m) if cmp_seg(m, s) != Ordering::Less => m,
+                    _ => s,
+                });
+            }
+            self.search(cur);
+            self.edges.truncate(saved.0);
+            self.open = saved.1;
+            self.closed.truncate(saved.2);
+        }
+    }
+}
+
+/// The optimal longest edge over all triangulations of the distinct points.
+fn exhaustive_minmax(ps: &PointSet) -> [Point; 2] {
+    let p = ps.points();
+    let hull: Vec<usize> = optri::convex_hull(ps)
+        .into_iter()
+        .map(|i| ps.distinct_index(i) as usize)
+        .collect();
+    let h = hull.len();
+    let mut ex = Exhaustive {
+        p,
+        edges: Vec::new(),
+        open: Vec::new(),
+        closed: Vec::new(),
+        best: None,
+    };
+    let mut current: Option<[Point; 2]> = None;
+    for i in 0..h {
+        let (a, b) = (hull[i], hull[(i + 1) % h]);
+        ex.edges.push([a, b]);
+        ex.open.push([a, b]);
+        ex.closed.push([b, a]);
+        let s = [p[a], p[b]];
+        current = Some(match current {
+            Some(m) if cmp_seg(m, s) != Ordering::Less => m,
+            _ => s,
+        });
+    }
+    ex.search(current);
+    ex.best.expect("every point set has a triangulation")
+}
+
+fn check_against_exhaustive(points: &[Point]) {
+    let Ok(ps) = PointSet::new(points) else {
+        return;
+    };
+    let t = minmax_length(&ps).unwrap();
+    t.validate()
+        .unwrap_or_else(|e| panic!("{e} for {points:?}"));
+    let want = exhaustive_minmax(&ps);
+    assert_eq!(
+        cmp_seg(longest(&t), want),
+        Ordering::Equal,
+        "points {points:?}: got {:?}, optimum {:?}",
+        longest(&t),
+        want
+    );
+    let d = optri::delaunay(&ps).unwrap();
+    assert_ne!(cmp_seg(longest(&t), longest(&d)), Ordering::Greater);
+}
+
+#[test]
+fn random_small_sets_match_the_exhaustive_search() {
+    let mut rng = StdRng::seed_from_u64(1);
+    for _ in 0..1500 {
+        let n = rng.gen_range(3..=9);
+        let pts: Vec<Point> = (0..n)
+            .map(|_| [rng.gen_range(-100.0..100.0), rng.gen_range(-100.0..100.0)])
+            .collect();
+        check_against_exhaustive(&pts);
+    }
+}
+
+#[test]
+fn degenerate_small_sets_match_the_exhaustive_search() {
+    let mut rng = StdRng::seed_from_u64(2);
+    for round in 0..2500 {
+        let n = rng.gen_range(3..=9);
+        let pts: Vec<Point> = match round % 5 {
+            // Small integer grid: many equal lengths, collinear runs, duplicates.
+            0 | 1 => (0..n)
+                .map(|_| [rng.gen_range(0..4) as f64, rng.gen_range(0..4) as f64])
+                .collect(),
+            // Collinear run plus a few points.
+            2 => (0..n)
+                .map(|i| {
+                    if i < n / 2 + 1 {
+                        [i as f64, 2.0 * i as f64]
+                    } else {
+                        [rng.gen_range(-3..8) as f64, rng.gen_range(-3..8) as f64]
+                    }
+                })
+                .collect(),
+            // Cocircular: integer points on the circle x² + y² = 25, plus the centre sometimes.
+            3 => {
+                let circle = [
+                    [5.0, 0.0],
+                    [4.0, 3.0],
+                    [3.0, 4.0],
+                    [0.0, 5.0],
+                    [-3.0, 4.0],
+                    [-4.0, 3.0],
+                    [-5.0, 0.0],
+                    [-4.0, -3.0],
+                    [-3.0, -4.0],
+                    [0.0, -5.0],
+                    [3.0, -4.0],
+                    [4.0, -3.0],
+                ];
+                let mut v: Vec<Point> = (0..n).map(|_| circle[rng.gen_range(0..12)]).collect();
+                if rng.gen_bool(0.3) {
+                    v.push([0.0, 0.0]);
+                }
+                v
+            }
+            // Triangular lattice-ish (equal lengths) with huge and negative scale.
+            _ => {
+                let s = if rng.gen_bool(0.5) { 1e30 } else { -3e-20 };
+                (0..n)
+                    .map(|_| {
+                        let (a, b) = (rng.gen_range(0..3) as f64, rng.gen_range(0..3) as f64);
+                        [s * (2.0 * a + b), s * (2.0 * b)]
+                    })
+                    .collect()
+            }
+        };
+        check_against_exhaustive(&pts);
+    }
+}
+
+#[test]
+fn paper_section_2_example_beats_delaunay() {
+    // §2: a = (−2, 0), b = (1, √3), c = (1, −√3), d = (2 − ε, 0). Delaunay uses
+    // ad; the minmax triangulation uses bc. Rational stand-in: √3 ≈ 1.732.
+    let pts = [[-2.0, 0.0], [1.0, 1.732], [1.0, -1.732], [1.9, 0.0]];
+    let ps = PointSet::new(&pts).unwrap();
+    let t = minmax_length(&ps).unwrap();
+    t.validate().unwrap();
+    let d = optri::delaunay(&ps).unwrap();
+    assert_eq!(cmp_seg(longest(&t), longest(&d)), Ordering::Less);
+    assert!(t.edges().contains(&[1, 2]), "the optimum draws bc");
+    check_against_exhaustive(&pts);
+}
+
+#[test]
+fn paper_section_5_3_remark_example() {
+    // Two equilateral triangles abc, abd, with d moved slightly towards ab:
+    // the unique optimum draws ab, which is not a 2-edge.
+    let s = 1.7320508075688772;
+    let pts = [[0.0, 0.0], [2.0, 0.0], [1.0, s], [1.0, -s + 0.05]];
+    let ps = PointSet::new(&pts).unwrap();
+    let t = minmax_length(&ps).unwrap();
+    t.validate().unwrap();
+    assert!(t.edges().contains(&[0, 1]));
+    check_against_exhaustive(&pts);
+    // And the §4 remark configuration: c, d close to b, ab crossing cd.
+    check_against_exhaustive(&[[0.0, 0.0], [10.0, 0.0], [9.5, 1.0], [9.6, -1.2]]);
+}
+
+#[test]
+fn duplicates_and_errors() {
+    let pts = [
+        [0.0, 0.0],
+        [1.0, 0.0],
+        [0.0, 0.0],
+        [0.0, 1.0],
+        [1.0, 1.0],
+        [1.0, 1.0],
+    ];
+    let ps = PointSet::new(&pts).unwrap();
+    let t = minmax_length(&ps).unwrap();
+    t.validate().unwrap();
+    assert_eq!(t.triangles().len(), 2);
+    assert!(PointSet::new(&[[0.0, 0.0], [1.0, 1.0], [2.0, 2.0]]).is_err());
+}
+
+// ---- fast polygon algorithm vs the cubic reference ----
+
+fn same_optimum(points: &[Point], what: &str) {
+    let ps = PointSet::new(points).unwrap();
+    let t = minmax_length(&ps).unwrap();
+    t.validate().unwrap_or_else(|e| panic!("{what}: {e}"));
+    let r = minmax_length_cubic(&ps).unwrap();
+    r.validate().unwrap();
+    assert_eq!(
+        cmp_seg(longest(&t), longest(&r)),
+        Ordering::Equal,
+        "{what}: fast {:?} vs cubic {:?}",
+        longest(&t),
+        longest(&r)
+    );
+    let d = optri::delaunay(&ps).unwrap();
+    assert_ne!(
+        cmp_seg(longest(&t), longest(&d)),
+        Ordering::Greater,
+        "{what}"
+    );
+}
+
+#[test]
+fn random_sets_match_the_cubic_reference() {
+    let mut rng = StdRng::seed_from_u64(3);
+    for &n in &[10usize, 50, 200, 1000, 2000] {
+        let pts: Vec<Point> = (0..n)
+            .map(|_| [rng.gen::<f64>(), rng.gen::<f64>()])
+            .collect();
+        same_optimum(&pts, &format!("uniform n={n}"));
+    }
+}
+
+#[test]
+fn integer_grids_match_the_cubic_reference() {
+    let mut rng = StdRng::seed_from_u64(4);
+    for &(w, n) in &[(5, 20), (10, 80), (20, 300), (40, 1000), (6, 36)] {
+        let pts: Vec<Point> = (0..n)
+            .map(|_| [rng.gen_range(0..w) as f64, rng.gen_range(0..w) as f64])
+            .collect();
+        same_optimum(&pts, &format!("grid {w}x{w} n={n}"));
+    }
+    // A full grid.
+    let full: Vec<Point> = (0..15)
+        .flat_map(|x| (0..15).map(move |y| [x as f64, y as f64]))
+        .collect();
+    same_optimum(&full, "full 15x15 grid");
+}
+
+#[test]
+fn convex_position_matches_the_cubic_reference() {
+    let mut rng = StdRng::seed_from_u64(5);
+    for &n in &[20usize, 100, 300] {
+        let pts: Vec<Point> = (0..n)
+            .map(|i| {
+                let a = i as f64 / n as f64 * std::f64::consts::TAU;
+                let r = 1.0 + 1e-3 * rng.gen::<f64>();
+                [r * a.cos(), r * a.sin()]
+            })
+            .collect();
+        same_optimum(&pts, &format!("perturbed circle n={n}"));
+    }
+}
+
+/// Tiny TSPLIB reader: `NODE_COORD_SECTION`, then `id x y` lines until `EOF`.
+fn read_tsp(path: &std::path::Path) -> Vec<Point> {
+    let text = std::fs::read_to_string(path).unwrap();
+    let mut pts = Vec::new();
+    let mut inside = false;
+    for line in text.lines() {
+        let line = line.trim();
+        if line.starts_with("NODE_COORD_SECTION") {
+            inside = true;
+            continue;
+        }
+        if !inside || line.is_empty() {
+            continue;
+        }
+        if line.starts_with("EOF") {
+            break;
+        }
+        let f: Vec<f64> = line
+            .split_whitespace()
+            .skip(1)
+            .map(|x| x.parse().unwrap())
+            .collect();
+        pts.push([f[0], f[1]]);
+    }
+    pts
+}
+
+#[test]
+fn tsplib_files_match_the_cubic_reference() {
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../../shared/data/tsplib");
+    let mut files: Vec<_> = std::fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|e| e == "tsp"))
+        .collect();
+    files.sort();
+    assert!(files.len() >= 14, "{dir:?}");
+    for f in files {
+        let pts = read_tsp(&f);
+        same_optimum(&pts, &f.display().to_string());
+    }
+}
+
+#[test]
+fn registered_as_an_exact_criterion() {
+    let c = optri::Criterion::from_name("minmax-length").unwrap();
+    let ps = PointSet::new(&[[0.0, 0.0], [4.0, 0.0], [0.0, 3.0], [4.0, 3.0], [2.0, 1.0]]).unwrap();
+    let s = optri::triangulate(&ps, c).unwrap();
+    assert!(s.exact);
+    assert!(s.algorithm.contains("Edelsbrunner"));
+    assert!(s.phases.iter().any(|p| p.name == "polygons"));
+    s.triangulation.validate().unwrap();
+    assert_eq!(
+        cmp_seg(
+            longest(&s.triangulation),
+            longest(&minmax_length_cubic(&ps).unwrap())
+        ),
+        Ordering::Equal
+    );
+}
