@@ -152,6 +152,7 @@ fn run(points: &PointSet, method: PolygonMethod, phases: &mut Vec<Phase>) -> Res
                 let region = Region {
                     points: pts,
                     vertices,
+                    symbolic: false,
                 };
                 match method {
                     PolygonMethod::Cubic => region.minmax_triangulation_cubic(),

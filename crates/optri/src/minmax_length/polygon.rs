@@ -7,65 +7,21 @@
 //! position pairs are diagonals, and §3's straightforward cubic dynamic
 //! program (Klincsek) used as the test reference and as the fallback.
 
-use crate::kernel::{compare_lengths, dot_sign, orient_sign, Point};
+use crate::kernel::{
+    compare_lengths, compare_lengths_symbolic, dot_sign, orient_sign, orient_symbolic, Point,
+};
 use std::cmp::Ordering;
 
 /// A region: `vertices[i]` is the distinct-point index at position `i`, in
 /// counter-clockwise order (the region is to the left of every boundary edge).
+///
+/// With `symbolic` set, every predicate is evaluated on the kernel's
+/// perturbed points `S′` (no three collinear, no equal lengths); otherwise on
+/// the exact input.
 pub(crate) struct Region<'a> {
     pub points: &'a [Point],
     pub vertices: &'a [u32],
-}
-
-/// Counter-clockwise angle class of direction `x − o` relative to the ray
-/// `o → r`: 0 on the ray, 1 in (0, π), 2 opposite, 3 in (π, 2π).
-fn angle_class(o: Point, r: Point, x: Point) -> u8 {
-    match orient_sign(o, r, x) {
-        1 => 1,
-        -1 => 3,
-        _ => {
-            if dot_sign(o, r, x) > 0 {
-                0
-            } else {
-                2
-            }
-        }
-    }
-}
-
-/// Exact comparison of the counter-clockwise angles from ray `o → r` to rays
-/// `o → x` and `o → y` (each in `[0, 2π)`).
-fn compare_ccw_from(o: Point, r: Point, x: Point, y: Point) -> Ordering {
-    let (cx, cy) = (angle_class(o, r, x), angle_class(o, r, y));
-    cx.cmp(&cy).then_with(|| {
-        if cx == 1 || cx == 3 {
-            match orient_sign(o, x, y) {
-                1 => Ordering::Less,
-                -1 => Ordering::Greater,
-                _ => Ordering::Equal,
-            }
-        } else {
-            Ordering::Equal
-        }
-    })
-}
-
-/// Is the direction `x − o` strictly inside the counter-clockwise wedge that
-/// sweeps from ray `o → first` to ray `o → last`? Equal rays mean the full
-/// turn (a crack tip).
-fn strictly_inside_wedge(o: Point, first: Point, last: Point, x: Point) -> bool {
-    if angle_class(o, first, x) == 0 {
-        return false;
-    }
-    if angle_class(o, first, last) == 0 {
-        return true;
-    }
-    compare_ccw_from(o, first, x, last) == Ordering::Less
-}
-
-/// Is `x` strictly inside the open segment `ab`?
-fn strictly_between(a: Point, b: Point, x: Point) -> bool {
-    orient_sign(a, b, x) == 0 && dot_sign(x, a, b) < 0
+    pub symbolic: bool,
 }
 
 impl<'a> Region<'a> {
@@ -73,22 +29,76 @@ impl<'a> Region<'a> {
         self.vertices.len()
     }
 
+    /// Orientation of three points by index (0 if two indices coincide).
     #[inline]
-    pub fn point(&self, pos: usize) -> Point {
-        self.points[self.vertices[pos] as usize]
+    pub fn orient(&self, i: u32, j: u32, k: u32) -> i32 {
+        if self.symbolic {
+            if i == j || j == k || i == k {
+                0
+            } else {
+                orient_symbolic(self.points, i, j, k)
+            }
+        } else {
+            let p = |m: u32| self.points[m as usize];
+            orient_sign(p(i), p(j), p(k))
+        }
+    }
+
+    /// Compares `|ab|` with `|cd|` (indices).
+    #[inline]
+    pub fn compare_lengths(&self, ab: [u32; 2], cd: [u32; 2]) -> Ordering {
+        if self.symbolic {
+            compare_lengths_symbolic(self.points, ab, cd)
+        } else {
+            let p = |m: u32| self.points[m as usize];
+            compare_lengths(p(ab[0]), p(ab[1]), p(cd[0]), p(cd[1]))
+        }
+    }
+
+    /// Counter-clockwise angle class of direction `x − o` relative to the ray
+    /// `o → r`: 0 on the ray, 1 in (0, π), 2 opposite, 3 in (π, 2π).
+    fn angle_class(&self, o: u32, r: u32, x: u32) -> u8 {
+        match self.orient(o, r, x) {
+            1 => 1,
+            -1 => 3,
+            _ => {
+                let p = |m: u32| self.points[m as usize];
+                if dot_sign(p(o), p(r), p(x)) > 0 {
+                    0
+                } else {
+                    2
+                }
+            }
+        }
+    }
+
+    /// Is the direction `x − o` strictly inside the counter-clockwise wedge
+    /// that sweeps from ray `o → first` to ray `o → last`? Equal rays mean the
+    /// full turn (a crack tip).
+    pub fn strictly_inside_wedge(&self, o: u32, first: u32, last: u32, x: u32) -> bool {
+        let cx = self.angle_class(o, first, x);
+        if cx == 0 {
+            return false;
+        }
+        let cl = self.angle_class(o, first, last);
+        if cl == 0 {
+            return true;
+        }
+        cx < cl || (cx == cl && (cx == 1 || cx == 3) && self.orient(o, x, last) > 0)
+    }
+
+    /// Is point `x` strictly inside the open segment `ab`?
+    fn strictly_between(&self, a: u32, b: u32, x: u32) -> bool {
+        let p = |m: u32| self.points[m as usize];
+        x != a && x != b && self.orient(a, b, x) == 0 && dot_sign(p(x), p(a), p(b)) < 0
     }
 
     /// Is the region a strictly convex polygon (no cracks, every corner a
     /// strict left turn)? Then every pair of non-adjacent positions is a diagonal.
     pub fn is_strictly_convex(&self) -> bool {
         let k = self.len();
-        (0..k).all(|i| {
-            orient_sign(
-                self.point(i),
-                self.point((i + 1) % k),
-                self.point((i + 2) % k),
-            ) > 0
-        })
+        let v = self.vertices;
+        (0..k).all(|i| self.orient(v[i], v[(i + 1) % k], v[(i + 2) % k]) > 0)
     }
 
     /// Is the segment between positions `a` and `b` (not adjacent) a diagonal:
@@ -98,34 +108,27 @@ impl<'a> Region<'a> {
     /// crosses no boundary edge; then it cannot leave the region.
     pub fn is_diagonal(&self, a: usize, b: usize) -> bool {
         let k = self.len();
-        let (va, vb) = (self.vertices[a], self.vertices[b]);
+        let v = self.vertices;
+        let (va, vb) = (v[a], v[b]);
         if va == vb {
             return false;
         }
-        let (pa, pb) = (self.point(a), self.point(b));
-        let wedge_ok = |pos: usize, target: Point| {
-            let o = self.point(pos);
-            strictly_inside_wedge(
-                o,
-                self.point((pos + 1) % k),
-                self.point((pos + k - 1) % k),
-                target,
-            )
+        let wedge_ok = |pos: usize, target: u32| {
+            self.strictly_inside_wedge(v[pos], v[(pos + 1) % k], v[(pos + k - 1) % k], target)
         };
-        if !wedge_ok(a, pb) || !wedge_ok(b, pa) {
+        if !wedge_ok(a, vb) || !wedge_ok(b, va) {
             return false;
         }
         for i in 0..k {
-            let (u, w) = (self.vertices[i], self.vertices[(i + 1) % k]);
-            let (pu, pw) = (self.point(i), self.point((i + 1) % k));
-            if u != va && u != vb && strictly_between(pa, pb, pu) {
+            let (u, w) = (v[i], v[(i + 1) % k]);
+            if self.strictly_between(va, vb, u) {
                 return false;
             }
             if u == va || u == vb || w == va || w == vb {
                 continue;
             }
-            let s1 = orient_sign(pa, pb, pu) * orient_sign(pa, pb, pw);
-            let s2 = orient_sign(pu, pw, pa) * orient_sign(pu, pw, pb);
+            let s1 = self.orient(va, vb, u) * self.orient(va, vb, w);
+            let s2 = self.orient(u, w, va) * self.orient(u, w, vb);
             if s1 < 0 && s2 < 0 {
                 return false;
             }
@@ -165,8 +168,8 @@ impl<'a> Region<'a> {
             if t[0] == NONE {
                 return s;
             }
-            let p = |x: u32| self.point(x as usize);
-            if compare_lengths(p(s[0]), p(s[1]), p(t[0]), p(t[1])) == Ordering::Less {
+            let p = |x: u32| self.vertices[x as usize];
+            if self.compare_lengths([p(s[0]), p(s[1])], [p(t[0]), p(t[1])]) == Ordering::Less {
                 t
             } else {
                 s
@@ -179,8 +182,8 @@ impl<'a> Region<'a> {
             if s[0] == NONE {
                 return true;
             }
-            let p = |x: u32| self.point(x as usize);
-            compare_lengths(p(s[0]), p(s[1]), p(t[0]), p(t[1])) == Ordering::Less
+            let p = |x: u32| self.vertices[x as usize];
+            self.compare_lengths([p(s[0]), p(s[1])], [p(t[0]), p(t[1])]) == Ordering::Less
         };
         for gap in 2..k {
             for i in 0..k - gap {
@@ -199,7 +202,8 @@ impl<'a> Region<'a> {
                     {
                         continue; // that side cannot be triangulated
                     }
-                    if orient_sign(self.point(i), self.point(m), self.point(j)) <= 0 {
+                    let v = self.vertices;
+                    if self.orient(v[i], v[m], v[j]) <= 0 {
                         continue;
                     }
                     let mut v = longer(value[idx(i, m)], value[idx(m, j)]);
