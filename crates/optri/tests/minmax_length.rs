@@ -158,6 +158,13 @@ fn check_against_exhaustive(points: &[Point]) {
     );
     let d = optri::delaunay(&ps).unwrap();
     assert_ne!(cmp_seg(longest(&t), longest(&d)), Ordering::Greater);
+    no_fallbacks(points);
+}
+
+/// The quadratic algorithm never had to fall back to the cubic program.
+fn no_fallbacks(what: impl std::fmt::Debug) {
+    let n = optri::minmax_length::FALLBACKS.load(std::sync::atomic::Ordering::Relaxed);
+    assert_eq!(n, 0, "fallbacks to the cubic program (last: {what:?})");
 }
 
 #[test]

@@ -43,20 +43,25 @@
 //! | [`regions`], [`rng_perturbed`] | §3 steps 1–2, §5.4 (perturbed RNG) |
 //! | [`polygon::Region::minmax_triangulation_cubic`] | §3 dynamic program (Klincsek) |
 
+pub(crate) mod fast;
 pub(crate) mod polygon;
 
 use crate::convex_hull::hull_distinct;
 use crate::criterion::{timed, Phase};
 use crate::delaunay::{delaunay_graph, DelaunayGraph};
 use crate::error::Result;
+use crate::kernel::orient_sign;
 use crate::kernel::{compare_lengths, in_lune_symbolic, Point};
 use crate::planar_graph::PlanarGraph;
 use crate::point_set::PointSet;
 use crate::relative_neighborhood_graph::rng_from_delaunay;
 use crate::triangulation::Triangulation;
+use fast::{FastRegion, Mesh};
 use polygon::Region;
 use rayon::prelude::*;
 use std::cmp::Ordering::Greater;
+use std::collections::HashMap;
+use std::sync::atomic::{AtomicUsize, Ordering as AtomicOrdering};
 
 /// Is some perturbed point inside the perturbed lune of the `rng(S)` edge
 /// `pq`? Such a point lies in the *closed* disc `D(p, |pq|)`; by the
@@ -114,9 +119,8 @@ pub(crate) fn rng_perturbed(points: &[Point], g: &DelaunayGraph) -> Vec<[u32; 2]
 
 /// §3 steps 1–2: the polygonal regions of `ch(S) ∪ rng(S′)` as
 /// counter-clockwise position cycles (cracks repeated).
-pub(crate) fn regions(points: &[Point], rng: Vec<[u32; 2]>) -> Vec<Vec<u32>> {
-    let mut edges = rng;
-    let hull = hull_distinct(points);
+pub(crate) fn regions(points: &[Point], rng: &[[u32; 2]], hull: &[u32]) -> Vec<Vec<u32>> {
+    let mut edges = rng.to_vec();
     for i in 0..hull.len() {
         edges.push([hull[i], hull[(i + 1) % hull.len()]]);
     }
@@ -138,13 +142,24 @@ pub(crate) fn regions(points: &[Point], rng: Vec<[u32; 2]>) -> Vec<Vec<u32>> {
 enum PolygonMethod {
     /// §3's cubic dynamic program.
     Cubic,
+    /// §5.1, §5.3 and §6 on the perturbed points, then §5.4's repair.
+    Quadratic,
 }
+
+/// How often the quadratic algorithm met an inconsistency and fell back to
+/// the cubic program for a region (a bug indicator; tests assert it stays 0).
+#[doc(hidden)]
+pub static FALLBACKS: AtomicUsize = AtomicUsize::new(0);
 
 fn run(points: &PointSet, method: PolygonMethod, phases: &mut Vec<Phase>) -> Result<Triangulation> {
     let pts = points.points();
     let g = timed(phases, "delaunay", || delaunay_graph(pts))?;
     let rng = timed(phases, "rng", || rng_perturbed(pts, &g));
-    let regions = timed(phases, "regions", || regions(pts, rng));
+    let hull = hull_distinct(pts);
+    let regions = timed(phases, "regions", || regions(pts, &rng, &hull));
+    let mesh = timed(phases, "mesh", || {
+        (method == PolygonMethod::Quadratic).then(|| Mesh::new(&g, &rng, &hull))
+    });
     let triangles: Vec<[u32; 3]> = timed(phases, "polygons", || {
         regions
             .par_iter()
@@ -154,12 +169,28 @@ fn run(points: &PointSet, method: PolygonMethod, phases: &mut Vec<Phase>) -> Res
                     vertices,
                     symbolic: false,
                 };
-                match method {
-                    PolygonMethod::Cubic => region.minmax_triangulation_cubic(),
+                if vertices.len() == 3 {
+                    return vec![[vertices[0], vertices[1], vertices[2]]];
+                }
+                match (method, &mesh) {
+                    (PolygonMethod::Quadratic, Some(mesh)) => {
+                        match FastRegion::new(pts, vertices, mesh).and_then(|f| f.triangulate()) {
+                            Ok(t) => t,
+                            Err(e) => {
+                                if std::env::var_os("OPTRI_DEBUG").is_some() {
+                                    eprintln!("fallback {e:?} on {vertices:?}");
+                                }
+                                FALLBACKS.fetch_add(1, AtomicOrdering::Relaxed);
+                                region.minmax_triangulation_cubic()
+                            }
+                        }
+                    }
+                    _ => region.minmax_triangulation_cubic(),
                 }
             })
             .collect()
     });
+    let triangles = timed(phases, "repair", || repair_flat_triangles(pts, triangles));
     Ok(Triangulation::from_distinct(points, triangles))
 }
 
@@ -170,7 +201,7 @@ fn run(points: &PointSet, method: PolygonMethod, phases: &mut Vec<Phase>) -> Res
 /// # Errors
 /// Propagates failures of the Delaunay construction.
 pub fn minmax_length(points: &PointSet) -> Result<Triangulation> {
-    run(points, PolygonMethod::Cubic, &mut Vec::new())
+    run(points, PolygonMethod::Quadratic, &mut Vec::new())
 }
 
 /// [`minmax_length`] with phase timings, and the algorithm's name.
@@ -178,17 +209,100 @@ pub(crate) fn minmax_length_timed(
     points: &PointSet,
     phases: &mut Vec<Phase>,
 ) -> Result<(Triangulation, String)> {
-    let t = run(points, PolygonMethod::Cubic, phases)?;
+    let t = run(points, PolygonMethod::Quadratic, phases)?;
     Ok((t, ALGORITHM.to_string()))
 }
 
 /// The method's name, as reported by [`crate::triangulate`].
 const ALGORITHM: &str =
-    "Edelsbrunner–Tan: hull ∪ RNG(perturbed) decomposition, cubic DP per region";
+    "Edelsbrunner–Tan: hull ∪ RNG(perturbed) decomposition, §5.1/§5.3/§6 polygon algorithm on the symbolic perturbation, §5.4 flat-triangle repair";
 
 /// Test reference, not the product: §3's straightforward method, the cubic
 /// dynamic program on every region of `ch(S) ∪ rng(S′)`, exact comparisons.
 #[doc(hidden)]
 pub fn minmax_length_cubic(points: &PointSet) -> Result<Triangulation> {
     run(points, PolygonMethod::Cubic, &mut Vec::new())
+}
+
+/// §5.4: turns a triangulation of the perturbed points into one of the
+/// input points. A triangle whose corners are collinear in `S` is *flat*.
+/// The flat triangles, joined across shared edges, form components, each on
+/// one line; every input point on the open segment `uw` of a non-flat
+/// triangle `uwy` lies in the flat component across `uw` (it cannot be inside
+/// the empty perturbed triangle). Replacing each such triangle by the fan
+/// from `y` over the points of `uw` in order along the line, and dropping the
+/// flat triangles, gives a triangulation of `S`; by the Δ-Lemma the new edges
+/// are shorter than `max(|uy|, |wy|)`, so the longest edge does not grow.
+fn repair_flat_triangles(points: &[Point], triangles: Vec<[u32; 3]>) -> Vec<[u32; 3]> {
+    let p = |m: u32| points[m as usize];
+    let is_flat = |t: &[u32; 3]| orient_sign(p(t[0]), p(t[1]), p(t[2])) == 0;
+    if !triangles.iter().any(is_flat) {
+        return triangles;
+    }
+    let key = |u: u32, w: u32| (u.min(w), u.max(w));
+    // Flat triangles by edge, and their components (union-find).
+    let flat: Vec<[u32; 3]> = triangles.iter().copied().filter(is_flat).collect();
+    let mut parent: Vec<usize> = (0..flat.len()).collect();
+    fn find(parent: &mut [usize], mut i: usize) -> usize {
+        while parent[i] != i {
+            parent[i] = parent[parent[i]];
+            i = parent[i];
+        }
+        i
+    }
+    let mut by_edge: HashMap<(u32, u32), usize> = HashMap::new();
+    for (i, t) in flat.iter().enumerate() {
+        for j in 0..3 {
+            let e = key(t[j], t[(j + 1) % 3]);
+            if let Some(&other) = by_edge.get(&e) {
+                let (a, b) = (find(&mut parent, i), find(&mut parent, other));
+                parent[a] = b;
+            } else {
+                by_edge.insert(e, i);
+            }
+        }
+    }
+    // Points of each component, sorted along its line (lexicographic order
+    // is an order along any line).
+    let mut members: HashMap<usize, Vec<u32>> = HashMap::new();
+    for (i, t) in flat.iter().enumerate() {
+        let root = find(&mut parent, i);
+        members.entry(root).or_default().extend_from_slice(t);
+    }
+    let lex = |a: &u32, b: &u32| {
+        let (pa, pb) = (p(*a), p(*b));
+        pa[0].total_cmp(&pb[0]).then(pa[1].total_cmp(&pb[1]))
+    };
+    for list in members.values_mut() {
+        list.sort_by(lex);
+        list.dedup();
+    }
+    let mut out = Vec::with_capacity(triangles.len());
+    let mut work: Vec<[u32; 3]> = triangles.into_iter().filter(|t| !is_flat(t)).collect();
+    while let Some(t) = work.pop() {
+        let split = (0..3).find_map(|j| {
+            let (u, w, y) = (t[j], t[(j + 1) % 3], t[(j + 2) % 3]);
+            let &f = by_edge.get(&key(u, w))?;
+            let line = &members[&find(&mut parent.clone(), f)];
+            let iu = line.iter().position(|&m| m == u)?;
+            let iw = line.iter().position(|&m| m == w)?;
+            (iu.abs_diff(iw) > 1).then(|| {
+                let inner: Vec<u32> = if iu < iw {
+                    line[iu..=iw].to_vec()
+                } else {
+                    line[iw..=iu].iter().rev().copied().collect()
+                };
+                (inner, y)
+            })
+        });
+        match split {
+            None => out.push(t),
+            Some((chain, y)) => {
+                for w in chain.windows(2) {
+                    work.push([w[0], w[1], y]);
+                }
+            }
+        }
+    }
+    out
 }
