@@ -150,13 +150,6 @@ impl<'a> Mesh<'a> {
     pub fn is_hull_only(&self, u: u32, v: u32) -> bool {
         self.slot(u, v).is_some_and(|s| self.constraint[s] == 2)
     }
-
-    /// The corners of triangle `t` rotated so that `o` comes first.
-    fn rotated(&self, t: u32, o: u32) -> Option<[u32; 3]> {
-        let tri = self.g.triangles[t as usize];
-        let i = tri.iter().position(|&w| w == o)?;
-        Some([tri[i], tri[(i + 1) % 3], tri[(i + 2) % 3]])
-    }
 }
 
 /// Failure of an invariant the paper guarantees: the caller falls back to the
@@ -166,16 +159,21 @@ pub(crate) struct Inconsistent(pub &'static str);
 
 type Res<T> = std::result::Result<T, Inconsistent>;
 
-/// One region, prepared for the §6 scans.
+/// One region, prepared for the §6 scans: its Delaunay triangles with local
+/// adjacency (no hashing during the walks).
 pub(crate) struct FastRegion<'a> {
     points: &'a [Point],
     v: &'a [u32],
     k: usize,
     mesh: &'a Mesh<'a>,
-    /// Delaunay triangles of each corner's fan, counter-clockwise.
-    fans: Vec<Vec<u32>>,
-    /// (triangle, vertex) → position of that corner.
-    corner: HashMap<(u32, u32), u32>,
+    /// Corners (vertex indices, counter-clockwise) of the local triangles.
+    corners: Vec<[u32; 3]>,
+    /// Neighbour across edge `j` (corner `j` → `j+1`), `NONE` at the boundary.
+    neighbours: Vec<[u32; 3]>,
+    /// Region position of each corner.
+    positions: Vec<[u32; 3]>,
+    /// Per position: the first triangle of its fan and the corner index.
+    fan_start: Vec<(u32, u8)>,
     geo: Region<'a>,
 }
 
@@ -194,33 +192,81 @@ impl Bits {
 impl<'a> FastRegion<'a> {
     pub fn new(points: &'a [Point], v: &'a [u32], mesh: &'a Mesh<'a>) -> Res<Self> {
         let k = v.len();
-        let mut fans = vec![Vec::new(); k];
-        let mut corner = HashMap::new();
-        for a in 0..k {
-            let o = v[a];
-            let mut t = mesh
-                .left_of(o, v[(a + 1) % k])
-                .ok_or(Inconsistent("site1"))?;
-            loop {
-                fans[a].push(t);
-                corner.insert((t, o), a as u32);
-                let [_, _, y] = mesh.rotated(t, o).ok_or(Inconsistent("site2"))?;
-                if mesh.is_constraint(o, y) {
-                    break;
+        // The region's Delaunay triangles: flood fill inside the boundary.
+        let first = mesh
+            .left_of(v[0], v[1])
+            .ok_or(Inconsistent("no triangle"))?;
+        let mut local: HashMap<u32, u32> = HashMap::with_capacity(2 * k);
+        let mut globals = vec![first];
+        local.insert(first, 0);
+        let mut i = 0;
+        while i < globals.len() {
+            let tri = mesh.g.triangles[globals[i] as usize];
+            for j in 0..3 {
+                let (x, y) = (tri[j], tri[(j + 1) % 3]);
+                if mesh.is_constraint(x, y) {
+                    continue;
                 }
-                t = mesh.left_of(o, y).ok_or(Inconsistent("site3"))?;
-                if fans[a].len() > 3 * k {
-                    return Err(Inconsistent("site4"));
+                let t = mesh.left_of(y, x).ok_or(Inconsistent("open edge"))?;
+                if let std::collections::hash_map::Entry::Vacant(e) = local.entry(t) {
+                    e.insert(globals.len() as u32);
+                    globals.push(t);
                 }
             }
+            i += 1;
+            if globals.len() > 2 * k {
+                return Err(Inconsistent("region leaks"));
+            }
+        }
+        let corners: Vec<[u32; 3]> = globals
+            .iter()
+            .map(|&t| mesh.g.triangles[t as usize])
+            .collect();
+        let mut neighbours = vec![[NONE; 3]; corners.len()];
+        for (t, c) in corners.iter().enumerate() {
+            for j in 0..3 {
+                let (x, y) = (c[j], c[(j + 1) % 3]);
+                if !mesh.is_constraint(x, y) {
+                    neighbours[t][j] = local[&mesh.left_of(y, x).ok_or(Inconsistent("open"))?];
+                }
+            }
+        }
+        let mut positions = vec![[NONE; 3]; corners.len()];
+        let mut fan_start = Vec::with_capacity(k);
+        let index_of = |c: &[u32; 3], o: u32| c.iter().position(|&w| w == o).map(|i| i as u8);
+        for a in 0..k {
+            let o = v[a];
+            let g = mesh.left_of(o, v[(a + 1) % k]).ok_or(Inconsistent("fan"))?;
+            let mut t = *local.get(&g).ok_or(Inconsistent("fan outside"))?;
+            let mut i = index_of(&corners[t as usize], o).ok_or(Inconsistent("corner"))?;
+            fan_start.push((t, i));
+            let mut steps = 0;
+            loop {
+                positions[t as usize][i as usize] = a as u32;
+                let next = neighbours[t as usize][(i as usize + 2) % 3];
+                if next == NONE {
+                    break;
+                }
+                t = next;
+                i = index_of(&corners[t as usize], o).ok_or(Inconsistent("corner"))?;
+                steps += 1;
+                if steps > 2 * k {
+                    return Err(Inconsistent("fan loops"));
+                }
+            }
+        }
+        if positions.iter().flatten().any(|&p| p == NONE) {
+            return Err(Inconsistent("corner without position"));
         }
         Ok(Self {
             points,
             v,
             k,
             mesh,
-            fans,
-            corner,
+            corners,
+            neighbours,
+            positions,
+            fan_start,
             geo: Region {
                 points,
                 vertices: v,
@@ -239,51 +285,63 @@ impl<'a> FastRegion<'a> {
         (a + offset) % self.k
     }
 
-    fn pos(&self, t: u32, w: u32) -> Res<usize> {
-        self.corner
-            .get(&(t, w))
-            .map(|&p| p as usize)
-            .ok_or(Inconsistent("site5"))
-    }
-
     /// Positions visible from corner `a` (diagonals and the two boundary
     /// edges), in counter-clockwise angular order, which for a (weakly)
     /// simple polygon is boundary order from `a + 1` to `a − 1`.
-    pub fn visible(&self, a: usize) -> Res<Vec<usize>> {
+    pub fn visible(&self, a: usize) -> Vec<usize> {
         let o = self.v[a];
         let mut out = Vec::new();
-        let mut stack: Vec<[u32; 4]> = Vec::new();
-        for &t in &self.fans[a] {
-            let [_, x, y] = self.mesh.rotated(t, o).ok_or(Inconsistent("site6"))?;
-            out.push(self.pos(t, x)?);
-            out.push(self.pos(t, y)?);
-            if !self.mesh.is_constraint(x, y) {
-                stack.push([x, y, x, y]);
+        // (triangle, edge j, r, l): edge j of the triangle, seen from o
+        // through the wedge from ray o→r (clockwise side) to ray o→l.
+        let mut stack: Vec<(u32, u8, u32, u32)> = Vec::new();
+        let (mut t, mut i) = self.fan_start[a];
+        loop {
+            let (c, pos) = (&self.corners[t as usize], &self.positions[t as usize]);
+            let (i1, i2) = ((i as usize + 1) % 3, (i as usize + 2) % 3);
+            out.push(pos[i1] as usize);
+            out.push(pos[i2] as usize);
+            if self.neighbours[t as usize][i1] != NONE {
+                stack.push((t, i1 as u8, c[i1], c[i2]));
             }
+            let next = self.neighbours[t as usize][i2];
+            if next == NONE {
+                break;
+            }
+            t = next;
+            i = self.corners[t as usize]
+                .iter()
+                .position(|&w| w == o)
+                .unwrap_or(0) as u8;
         }
-        // Edge x → y seen from o through the wedge from ray o→r (clockwise
-        // side) to ray o→l; the triangle beyond is left of y → x.
-        while let Some([x, y, r, l]) = stack.pop() {
-            let t = self.mesh.left_of(y, x).ok_or(Inconsistent("site7"))?;
-            let [_, _, z] = self.mesh.rotated(t, y).ok_or(Inconsistent("site8"))?;
+        while let Some((t, j, r, l)) = stack.pop() {
+            let c = &self.corners[t as usize];
+            let x = c[j as usize];
+            let t2 = self.neighbours[t as usize][j as usize];
+            let c2 = &self.corners[t2 as usize];
+            // In t2 the shared edge runs x → ... reversed: y = c2[iy], x = c2[iy+1], z = c2[iy+2].
+            let ix = c2.iter().position(|&w| w == x).unwrap_or(0);
+            let (iy, iz) = ((ix + 2) % 3, (ix + 1) % 3);
+            let z = c2[iz];
             if z == o {
                 continue; // a crack copy of o: nothing beyond is visible
             }
             let right_of_l = self.geo.orient(o, z, l) > 0;
             let left_of_r = self.geo.orient(o, r, z) > 0;
             if left_of_r && right_of_l {
-                out.push(self.pos(t, z)?);
+                out.push(self.positions[t2 as usize][iz] as usize);
             }
-            if left_of_r && !self.mesh.is_constraint(x, z) {
-                stack.push([x, z, r, if right_of_l { z } else { l }]);
+            let n2 = &self.neighbours[t2 as usize];
+            if left_of_r && n2[ix] != NONE {
+                stack.push((t2, ix as u8, r, if right_of_l { z } else { l }));
             }
-            if right_of_l && !self.mesh.is_constraint(z, y) {
-                stack.push([z, y, if left_of_r { z } else { r }, l]);
+            if right_of_l && n2[iz] != NONE {
+                stack.push((t2, iz as u8, if left_of_r { z } else { r }, l));
             }
+            let _ = iy;
         }
         out.sort_unstable_by_key(|&b| self.off(a, b));
         out.dedup();
-        Ok(out)
+        out
     }
 
     /// §5.1 on the chain of positions `s, s+1, …, s+m` whose closing edge
@@ -340,8 +398,9 @@ impl<'a> FastRegion<'a> {
         // order; what remains on the stack has an empty half-lune.
         let rows: Vec<(Vec<u64>, Vec<u32>)> = (0..k)
             .into_par_iter()
+            .with_min_len(256)
             .map(|a| -> Res<(Vec<u64>, Vec<u32>)> {
-                let vis = self.visible(a)?;
+                let vis = self.visible(a);
                 let o = self.v[a];
                 let mut stack: Vec<usize> = Vec::new();
                 for &b in &vis {
@@ -382,9 +441,10 @@ impl<'a> FastRegion<'a> {
         // Step 2 (the clockwise half): 1-edges with their beneath side clockwise.
         let cw_of: Vec<Vec<u32>> = (0..k)
             .into_par_iter()
+            .with_min_len(256)
             .map(|a| -> Res<Vec<u32>> {
                 let mut cw: Vec<u32> = self
-                    .visible(a)?
+                    .visible(a)
                     .into_iter()
                     .filter(|&c| empty.get(c, a))
                     .map(|c| self.off(a, c) as u32)
@@ -407,9 +467,10 @@ impl<'a> FastRegion<'a> {
         // Step 3: the shortest 2-edge whose four partners meet or cross.
         let candidates: Vec<[usize; 6]> = (0..k)
             .into_par_iter()
+            .with_min_len(256)
             .map(|a| -> Res<Option<[usize; 6]>> {
                 let mut best: Option<[usize; 6]> = None;
-                for b in self.visible(a)? {
+                for b in self.visible(a) {
                     let ob = self.off(a, b);
                     if b < a || ob < 2 || ob > k - 2 || empty.get(a, b) || empty.get(b, a) {
                         continue;
@@ -468,6 +529,7 @@ impl<'a> FastRegion<'a> {
         out: &mut Vec<[u32; 3]>,
     ) -> Res<()> {
         if ns == ne {
+            super::count(super::CASE_1, 1);
             out.push([self.v[s], self.v[ns], self.v[e]]);
             self.incomplete(s, self.off(s, ns), out)?;
             return self.incomplete(ns, self.off(ns, e), out);
@@ -485,6 +547,8 @@ impl<'a> FastRegion<'a> {
                 .chain((0..=self.off(ns, e)).map(|i| self.v[self.at(ns, i)]))
                 .collect()
         };
+        super::count(super::CASE_2, 1);
+        super::count(super::CASE_2_REMAINDER_VERTICES, rest.len());
         let region = Region {
             points: self.points,
             vertices: &rest,
@@ -557,7 +621,7 @@ mod tests {
                 let f = FastRegion::new(&pts, &r, &mesh).unwrap();
                 let k = r.len();
                 for a in 0..k {
-                    let vis = f.visible(a).unwrap();
+                    let vis = f.visible(a);
                     let want: Vec<usize> = (1..k)
                         .map(|o| (a + o) % k)
                         .filter(|&b| {

@@ -21,8 +21,8 @@
 //!
 //! * The regions are cut by `ch(S) ∪ rng(S′)`. `rng(S′) ⊆ rng(S)` because a
 //!   point strictly inside a lune in `S` stays inside after an infinitesimal
-//!   perturbation (§5.4); the extra edges of `rng(S)` are removed by an exact
-//!   test of the few points on the lune boundary ([`rng_perturbed`]). The graph
+//!   perturbation (§5.4); [`rng_perturbed`] tests every Delaunay edge's lune under
+//!   the perturbation. The graph
 //!   is a subgraph of `ch(S) ∪ rng(S)`, which is plane *exactly* (both are in
 //!   every Delaunay completion), so the regions are computed without
 //!   perturbation.
@@ -54,7 +54,6 @@ use crate::kernel::orient_sign;
 use crate::kernel::{compare_lengths, in_lune_symbolic, Point};
 use crate::planar_graph::PlanarGraph;
 use crate::point_set::PointSet;
-use crate::relative_neighborhood_graph::rng_from_delaunay;
 use crate::triangulation::Triangulation;
 use fast::{FastRegion, Mesh};
 use polygon::Region;
@@ -99,17 +98,33 @@ fn perturbed_lune_is_occupied(
     false
 }
 
-/// `rng(S′)` for the kernel's symbolic perturbation `S′`: the edges of
-/// `rng(S)` whose perturbed lune is empty (§5.4: `rng(S′) ⊆ rng(S)`).
+/// `rng(S′)` for the kernel's symbolic perturbation `S′`: the Delaunay
+/// edges whose perturbed lune is empty. Every edge of `rng(S′)` is in
+/// `rng(S)` (§5.4), hence in every Delaunay completion of `S`, so testing the
+/// Delaunay edges suffices. One search per edge decides both the exact
+/// (strict-lune) test and its perturbed tie-break.
 pub(crate) fn rng_perturbed(points: &[Point], g: &DelaunayGraph) -> Vec<[u32; 2]> {
-    let rng = rng_from_delaunay(points, g);
     let n = points.len();
-    rng.into_par_iter()
+    g.edges
+        .par_iter()
         .map_init(
             || (vec![0u32; n], 0u32, Vec::new()),
-            |(seen, stamp, stack), [u, v]| {
+            |(seen, stamp, stack), &([u, v], apexes)| {
+                // An apex strictly in the lune settles most non-RNG edges.
+                if apexes
+                    .iter()
+                    .flatten()
+                    .any(|&a| in_lune_symbolic(points, u, v, a))
+                {
+                    return None;
+                }
+                let (p, q) = if g.neighbors(u).len() <= g.neighbors(v).len() {
+                    (u, v)
+                } else {
+                    (v, u)
+                };
                 *stamp += 1;
-                (!perturbed_lune_is_occupied(points, g, u, v, seen, *stamp, stack))
+                (!perturbed_lune_is_occupied(points, g, p, q, seen, *stamp, stack))
                     .then_some([u, v])
             },
         )
@@ -151,6 +166,33 @@ enum PolygonMethod {
 #[doc(hidden)]
 pub static FALLBACKS: AtomicUsize = AtomicUsize::new(0);
 
+/// Diagnostics for tests and benchmarks: how often §6 Case 1 and Case 2
+/// occurred, the total size of the Case 2 remainders handed to the cubic
+/// program, and how many flat triangles §5.4 removed.
+#[doc(hidden)]
+pub static COUNTERS: [AtomicUsize; 4] = [
+    AtomicUsize::new(0),
+    AtomicUsize::new(0),
+    AtomicUsize::new(0),
+    AtomicUsize::new(0),
+];
+/// Index into [`COUNTERS`].
+#[doc(hidden)]
+pub const CASE_1: usize = 0;
+/// Index into [`COUNTERS`].
+#[doc(hidden)]
+pub const CASE_2: usize = 1;
+/// Index into [`COUNTERS`].
+#[doc(hidden)]
+pub const CASE_2_REMAINDER_VERTICES: usize = 2;
+/// Index into [`COUNTERS`].
+#[doc(hidden)]
+pub const FLAT_TRIANGLES: usize = 3;
+
+pub(crate) fn count(which: usize, by: usize) {
+    COUNTERS[which].fetch_add(by, AtomicOrdering::Relaxed);
+}
+
 fn run(points: &PointSet, method: PolygonMethod, phases: &mut Vec<Phase>) -> Result<Triangulation> {
     let pts = points.points();
     let g = timed(phases, "delaunay", || delaunay_graph(pts))?;
@@ -178,7 +220,7 @@ fn run(points: &PointSet, method: PolygonMethod, phases: &mut Vec<Phase>) -> Res
                             Ok(t) => t,
                             Err(e) => {
                                 if std::env::var_os("OPTRI_DEBUG").is_some() {
-                                    eprintln!("fallback {e:?} on {vertices:?}");
+                                    eprintln!("fallback ({}) on {vertices:?}", e.0);
                                 }
                                 FALLBACKS.fetch_add(1, AtomicOrdering::Relaxed);
                                 region.minmax_triangulation_cubic()
@@ -239,6 +281,10 @@ fn repair_flat_triangles(points: &[Point], triangles: Vec<[u32; 3]>) -> Vec<[u32
     if !triangles.iter().any(is_flat) {
         return triangles;
     }
+    count(
+        FLAT_TRIANGLES,
+        triangles.iter().filter(|t| is_flat(t)).count(),
+    );
     let key = |u: u32, w: u32| (u.min(w), u.max(w));
     // Flat triangles by edge, and their components (union-find).
     let flat: Vec<[u32; 3]> = triangles.iter().copied().filter(is_flat).collect();
@@ -305,4 +351,49 @@ fn repair_flat_triangles(points: &[Point], triangles: Vec<[u32; 3]>) -> Vec<[u32
         }
     }
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// `rng(S′)` from the Delaunay search equals the brute-force definition
+    /// (no perturbed point in the perturbed lune), on degenerate grids.
+    #[test]
+    fn perturbed_rng_matches_brute_force() {
+        let mut s = 11u64;
+        let mut next = |m: u64| {
+            s = s
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            (s >> 33) % m
+        };
+        for round in 0..200 {
+            let g = if round % 2 == 0 { 4 } else { 7 };
+            let mut pts: Vec<Point> = (0..12).map(|_| [next(g) as f64, next(g) as f64]).collect();
+            pts.sort_by(|a, b| a[0].total_cmp(&b[0]).then(a[1].total_cmp(&b[1])));
+            pts.dedup();
+            let Ok(dg) = delaunay_graph(&pts) else {
+                continue;
+            };
+            if pts.len() < 3 || dg.triangles.is_empty() {
+                continue;
+            }
+            let mut got = rng_perturbed(&pts, &dg);
+            for e in &mut got {
+                *e = [e[0].min(e[1]), e[0].max(e[1])];
+            }
+            got.sort_unstable();
+            let n = pts.len() as u32;
+            let mut want = Vec::new();
+            for p in 0..n {
+                for q in p + 1..n {
+                    if (0..n).all(|x| !in_lune_symbolic(&pts, p, q, x)) {
+                        want.push([p, q]);
+                    }
+                }
+            }
+            assert_eq!(got, want, "{pts:?}");
+        }
+    }
 }

@@ -1,0 +1,121 @@
+//! Times the minmax-length triangulation against Delaunay in one process,
+//! for the figures in BENCHMARKS.md.
+//!
+//! ```text
+//! cargo run --release -p optri --example minmax_timing [-- uniform N | convex N... | cubic N...]
+//! ```
+//! * `uniform N` (default N = 1 000 000): Delaunay alone, then minmax-length
+//!   (with its phases), and the ratio.
+//! * `convex N…`: points on a circle with radius perturbed by 1e-3 (one
+//!   complete rng-polygon), minmax-length time per N and time / N².
+//! * `cubic N…`: the same convex sets, quadratic vs the cubic reference.
+//!
+//! Peak resident memory (VmHWM) is printed at the end.
+
+use optri::minmax_length::{
+    CASE_1, CASE_2, CASE_2_REMAINDER_VERTICES, COUNTERS, FALLBACKS, FLAT_TRIANGLES,
+};
+use optri::{Criterion, PointSet};
+use rand::{rngs::StdRng, Rng, SeedableRng};
+use std::sync::atomic::Ordering::Relaxed;
+use std::time::Instant;
+
+fn secs<T>(f: impl FnOnce() -> T) -> (T, f64) {
+    let t = Instant::now();
+    let out = f();
+    (out, t.elapsed().as_secs_f64())
+}
+
+fn convex(n: usize, seed: u64) -> Vec<[f64; 2]> {
+    let mut rng = StdRng::seed_from_u64(seed);
+    (0..n)
+        .map(|i| {
+            let a = i as f64 / n as f64 * std::f64::consts::TAU;
+            let r = 1.0 + 1e-3 * rng.gen::<f64>();
+            [r * a.cos(), r * a.sin()]
+        })
+        .collect()
+}
+
+fn peak_memory() -> String {
+    std::fs::read_to_string("/proc/self/status")
+        .ok()
+        .and_then(|s| {
+            s.lines()
+                .find(|l| l.starts_with("VmHWM"))
+                .map(str::to_string)
+        })
+        .unwrap_or_else(|| "VmHWM unavailable".into())
+}
+
+fn counters() -> String {
+    format!(
+        "case1={} case2={} case2_remainder_vertices={} flat={} fallbacks={}",
+        COUNTERS[CASE_1].load(Relaxed),
+        COUNTERS[CASE_2].load(Relaxed),
+        COUNTERS[CASE_2_REMAINDER_VERTICES].load(Relaxed),
+        COUNTERS[FLAT_TRIANGLES].load(Relaxed),
+        FALLBACKS.load(Relaxed)
+    )
+}
+
+fn main() {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    let mode = args.first().map(String::as_str).unwrap_or("uniform");
+    let sizes: Vec<usize> = args.iter().skip(1).filter_map(|a| a.parse().ok()).collect();
+    match mode {
+        "uniform" => {
+            let n = sizes.first().copied().unwrap_or(1_000_000);
+            let mut rng = StdRng::seed_from_u64(1);
+            let pts: Vec<[f64; 2]> = (0..n).map(|_| [rng.gen(), rng.gen()]).collect();
+            let ps = PointSet::new(&pts).unwrap();
+            let (_, d) = secs(|| optri::delaunay(&ps).unwrap());
+            let (s, m) = secs(|| optri::triangulate(&ps, Criterion::MinmaxLength).unwrap());
+            println!(
+                "uniform n={n}: delaunay {d:.3} s, minmax-length {m:.3} s, ratio {:.2}",
+                m / d
+            );
+            for p in &s.phases {
+                println!("  phase {:10} {:9.1} ms", p.name, p.ms);
+            }
+            println!("  {}", counters());
+        }
+        "convex" => {
+            for &n in &sizes {
+                let ps = PointSet::new(&convex(n, 2)).unwrap();
+                let (s, m) = secs(|| optri::triangulate(&ps, Criterion::MinmaxLength).unwrap());
+                let poly = s
+                    .phases
+                    .iter()
+                    .find(|p| p.name == "polygons")
+                    .map_or(0.0, |p| p.ms);
+                println!(
+                    "convex n={n}: minmax-length {m:.3} s (polygons {:.3} s), polygons/n² = {:.2} ns",
+                    poly / 1e3,
+                    poly * 1e6 / (n as f64 * n as f64)
+                );
+            }
+            println!("  {}", counters());
+        }
+        "cubic" => {
+            for &n in &sizes {
+                let ps = PointSet::new(&convex(n, 2)).unwrap();
+                let (t, q) = secs(|| optri::minmax_length(&ps).unwrap());
+                let (r, c) = secs(|| optri::minmax_length_cubic(&ps).unwrap());
+                let le = |t: &optri::Triangulation| {
+                    let e = t.longest_edge();
+                    let p = ps.input_points();
+                    [p[e[0] as usize], p[e[1] as usize]]
+                };
+                let (a, b) = (le(&t), le(&r));
+                let same = optri::kernel::compare_lengths(a[0], a[1], b[0], b[1]).is_eq();
+                println!(
+                    "convex n={n}: quadratic {q:.3} s, cubic {c:.3} s, cubic/quadratic {:.1}, same optimum: {same}",
+                    c / q
+                );
+            }
+        }
+        _ => eprintln!("modes: uniform N | convex N... | cubic N..."),
+    }
+    println!("peak memory: {}", peak_memory());
+}
