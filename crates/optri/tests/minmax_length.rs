@@ -141,6 +141,12 @@ fn exhaustive_minmax(ps: &PointSet) -> [Point; 2] {
     ex.best.expect("every point set has a triangulation")
 }
 
+/// The §5.1/§6 algorithm on every region, however small (the product hands
+/// regions below `SMALL_REGION` corners to the cubic program).
+fn quadratic_only(ps: &PointSet) -> Triangulation {
+    optri::minmax_length::minmax_length_with(ps, 0).unwrap()
+}
+
 fn check_against_exhaustive(points: &[Point]) {
     let Ok(ps) = PointSet::new(points) else {
         return;
@@ -406,4 +412,19 @@ fn registered_as_an_exact_criterion() {
         ),
         Ordering::Equal
     );
+}
+
+#[test]
+fn the_tests_exercise_every_branch() {
+    // Degenerate grids hit §6 Case 1 and Case 2 and the §5.4 repair.
+    let mut rng = StdRng::seed_from_u64(6);
+    for _ in 0..200 {
+        let pts: Vec<Point> = (0..30)
+            .map(|_| [rng.gen_range(0..6) as f64, rng.gen_range(0..6) as f64])
+            .collect();
+        same_optimum(&pts, "6x6 grid");
+    }
+    use optri::minmax_length::{CASE_1, CASE_2, COUNTERS, FLAT_TRIANGLES};
+    let c = |i: usize| COUNTERS[i].load(std::sync::atomic::Ordering::Relaxed);
+    assert!(c(CASE_1) > 0 && c(CASE_2) > 0 && c(FLAT_TRIANGLES) > 0);
 }

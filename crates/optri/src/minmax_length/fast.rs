@@ -159,6 +159,19 @@ pub(crate) struct Inconsistent(pub &'static str);
 
 type Res<T> = std::result::Result<T, Inconsistent>;
 
+/// `f` over all corners `0..k`, in parallel for large regions only (rayon's
+/// task overhead dominates on the many small regions of typical inputs).
+fn map_corners<T: Send, R: FromIterator<T> + rayon::iter::FromParallelIterator<T>>(
+    k: usize,
+    f: impl Fn(usize) -> T + Sync + Send,
+) -> R {
+    if k >= 256 {
+        (0..k).into_par_iter().map(f).collect()
+    } else {
+        (0..k).map(f).collect()
+    }
+}
+
 /// One region, prepared for the §6 scans: its Delaunay triangles with local
 /// adjacency (no hashing during the walks).
 pub(crate) struct FastRegion<'a> {
@@ -396,10 +409,8 @@ impl<'a> FastRegion<'a> {
         let words = k.div_ceil(64);
         // Step 1: per corner, the stack scan over its diagonals in angular
         // order; what remains on the stack has an empty half-lune.
-        let rows: Vec<(Vec<u64>, Vec<u32>)> = (0..k)
-            .into_par_iter()
-            .with_min_len(256)
-            .map(|a| -> Res<(Vec<u64>, Vec<u32>)> {
+        let rows: Vec<(Vec<u64>, Vec<u32>)> =
+            map_corners::<_, Vec<_>>(k, |a| -> Res<(Vec<u64>, Vec<u32>)> {
                 let vis = self.visible(a);
                 let o = self.v[a];
                 let mut stack: Vec<usize> = Vec::new();
@@ -428,6 +439,7 @@ impl<'a> FastRegion<'a> {
                 }
                 Ok((row, ccw))
             })
+            .into_iter()
             .collect::<Res<_>>()?;
         let mut empty = Bits {
             words,
@@ -439,22 +451,20 @@ impl<'a> FastRegion<'a> {
             ccw_of.push(ccw);
         }
         // Step 2 (the clockwise half): 1-edges with their beneath side clockwise.
-        let cw_of: Vec<Vec<u32>> = (0..k)
-            .into_par_iter()
-            .with_min_len(256)
-            .map(|a| -> Res<Vec<u32>> {
-                let mut cw: Vec<u32> = self
-                    .visible(a)
-                    .into_iter()
-                    .filter(|&c| empty.get(c, a))
-                    .map(|c| self.off(a, c) as u32)
-                    .collect();
-                if cw.last() != Some(&(k as u32 - 1)) {
-                    cw.push(k as u32 - 1);
-                }
-                Ok(cw)
-            })
-            .collect::<Res<_>>()?;
+        let cw_of: Vec<Vec<u32>> = map_corners::<_, Vec<_>>(k, |a| -> Res<Vec<u32>> {
+            let mut cw: Vec<u32> = self
+                .visible(a)
+                .into_iter()
+                .filter(|&c| empty.get(c, a))
+                .map(|c| self.off(a, c) as u32)
+                .collect();
+            if cw.last() != Some(&(k as u32 - 1)) {
+                cw.push(k as u32 - 1);
+            }
+            Ok(cw)
+        })
+        .into_iter()
+        .collect::<Res<_>>()?;
         // Predecessor / successor offsets in a sorted list.
         let below = |list: &[u32], x: usize| -> usize {
             let i = list.partition_point(|&o| (o as usize) < x);
@@ -465,10 +475,8 @@ impl<'a> FastRegion<'a> {
             list[i] as usize
         };
         // Step 3: the shortest 2-edge whose four partners meet or cross.
-        let candidates: Vec<[usize; 6]> = (0..k)
-            .into_par_iter()
-            .with_min_len(256)
-            .map(|a| -> Res<Option<[usize; 6]>> {
+        let candidates: Vec<[usize; 6]> =
+            map_corners::<_, Vec<_>>(k, |a| -> Res<Option<[usize; 6]>> {
                 let mut best: Option<[usize; 6]> = None;
                 for b in self.visible(a) {
                     let ob = self.off(a, b);
@@ -497,6 +505,7 @@ impl<'a> FastRegion<'a> {
                 }
                 Ok(best)
             })
+            .into_iter()
             .collect::<Res<Vec<_>>>()?
             .into_iter()
             .flatten()

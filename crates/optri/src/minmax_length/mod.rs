@@ -157,9 +157,22 @@ pub(crate) fn regions(points: &[Point], rng: &[[u32; 2]], hull: &[u32]) -> Vec<V
 enum PolygonMethod {
     /// §3's cubic dynamic program.
     Cubic,
-    /// §5.1, §5.3 and §6 on the perturbed points, then §5.4's repair.
-    Quadratic,
+    /// §5.1, §5.3 and §6 on the perturbed points, then §5.4's repair;
+    /// regions with fewer than `cubic_below` corners use the exact cubic
+    /// program instead (cheaper for tiny regions, equally optimal).
+    Quadratic { cubic_below: usize },
 }
+
+/// The product's method. Regions of up to 11 corners (most regions of
+/// typical inputs) are solved by the exact cubic program, which is faster
+/// there; the quadratic algorithm handles the larger ones.
+const PRODUCT: PolygonMethod = PolygonMethod::Quadratic {
+    cubic_below: SMALL_REGION,
+};
+
+/// Regions with fewer corners than this use the cubic program in the product.
+#[doc(hidden)]
+pub const SMALL_REGION: usize = 12;
 
 /// How often the quadratic algorithm met an inconsistency and fell back to
 /// the cubic program for a region (a bug indicator; tests assert it stays 0).
@@ -200,7 +213,7 @@ fn run(points: &PointSet, method: PolygonMethod, phases: &mut Vec<Phase>) -> Res
     let hull = hull_distinct(pts);
     let regions = timed(phases, "regions", || regions(pts, &rng, &hull));
     let mesh = timed(phases, "mesh", || {
-        (method == PolygonMethod::Quadratic).then(|| Mesh::new(&g, &rng, &hull))
+        matches!(method, PolygonMethod::Quadratic { .. }).then(|| Mesh::new(&g, &rng, &hull))
     });
     let triangles: Vec<[u32; 3]> = timed(phases, "polygons", || {
         regions
@@ -215,7 +228,9 @@ fn run(points: &PointSet, method: PolygonMethod, phases: &mut Vec<Phase>) -> Res
                     return vec![[vertices[0], vertices[1], vertices[2]]];
                 }
                 match (method, &mesh) {
-                    (PolygonMethod::Quadratic, Some(mesh)) => {
+                    (PolygonMethod::Quadratic { cubic_below }, Some(mesh))
+                        if vertices.len() >= cubic_below =>
+                    {
                         match FastRegion::new(pts, vertices, mesh).and_then(|f| f.triangulate()) {
                             Ok(t) => t,
                             Err(e) => {
@@ -243,7 +258,7 @@ fn run(points: &PointSet, method: PolygonMethod, phases: &mut Vec<Phase>) -> Res
 /// # Errors
 /// Propagates failures of the Delaunay construction.
 pub fn minmax_length(points: &PointSet) -> Result<Triangulation> {
-    run(points, PolygonMethod::Quadratic, &mut Vec::new())
+    run(points, PRODUCT, &mut Vec::new())
 }
 
 /// [`minmax_length`] with phase timings, and the algorithm's name.
@@ -251,13 +266,24 @@ pub(crate) fn minmax_length_timed(
     points: &PointSet,
     phases: &mut Vec<Phase>,
 ) -> Result<(Triangulation, String)> {
-    let t = run(points, PolygonMethod::Quadratic, phases)?;
+    let t = run(points, PRODUCT, phases)?;
     Ok((t, ALGORITHM.to_string()))
 }
 
 /// The method's name, as reported by [`crate::triangulate`].
 const ALGORITHM: &str =
     "Edelsbrunner–Tan: hull ∪ RNG(perturbed) decomposition, §5.1/§5.3/§6 polygon algorithm on the symbolic perturbation, §5.4 flat-triangle repair";
+
+/// The quadratic algorithm on every region with at least `cubic_below`
+/// corners (0 or 4: on all of them). For tests and benchmarks.
+#[doc(hidden)]
+pub fn minmax_length_with(points: &PointSet, cubic_below: usize) -> Result<Triangulation> {
+    run(
+        points,
+        PolygonMethod::Quadratic { cubic_below },
+        &mut Vec::new(),
+    )
+}
 
 /// Test reference, not the product: §3's straightforward method, the cubic
 /// dynamic program on every region of `ch(S) ∪ rng(S′)`, exact comparisons.
