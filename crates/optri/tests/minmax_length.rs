@@ -151,19 +151,20 @@ fn check_against_exhaustive(points: &[Point]) {
     let Ok(ps) = PointSet::new(points) else {
         return;
     };
-    let t = minmax_length(&ps).unwrap();
-    t.validate()
-        .unwrap_or_else(|e| panic!("{e} for {points:?}"));
     let want = exhaustive_minmax(&ps);
-    assert_eq!(
-        cmp_seg(longest(&t), want),
-        Ordering::Equal,
-        "points {points:?}: got {:?}, optimum {:?}",
-        longest(&t),
-        want
-    );
     let d = optri::delaunay(&ps).unwrap();
-    assert_ne!(cmp_seg(longest(&t), longest(&d)), Ordering::Greater);
+    for t in [minmax_length(&ps).unwrap(), quadratic_only(&ps)] {
+        t.validate()
+            .unwrap_or_else(|e| panic!("{e} for {points:?}"));
+        assert_eq!(
+            cmp_seg(longest(&t), want),
+            Ordering::Equal,
+            "points {points:?}: got {:?}, optimum {:?}",
+            longest(&t),
+            want
+        );
+        assert_ne!(cmp_seg(longest(&t), longest(&d)), Ordering::Greater);
+    }
     no_fallbacks(points);
 }
 
@@ -292,23 +293,25 @@ fn duplicates_and_errors() {
 
 fn same_optimum(points: &[Point], what: &str) {
     let ps = PointSet::new(points).unwrap();
-    let t = minmax_length(&ps).unwrap();
-    t.validate().unwrap_or_else(|e| panic!("{what}: {e}"));
     let r = minmax_length_cubic(&ps).unwrap();
     r.validate().unwrap();
-    assert_eq!(
-        cmp_seg(longest(&t), longest(&r)),
-        Ordering::Equal,
-        "{what}: fast {:?} vs cubic {:?}",
-        longest(&t),
-        longest(&r)
-    );
     let d = optri::delaunay(&ps).unwrap();
-    assert_ne!(
-        cmp_seg(longest(&t), longest(&d)),
-        Ordering::Greater,
-        "{what}"
-    );
+    for t in [minmax_length(&ps).unwrap(), quadratic_only(&ps)] {
+        t.validate().unwrap_or_else(|e| panic!("{what}: {e}"));
+        assert_eq!(
+            cmp_seg(longest(&t), longest(&r)),
+            Ordering::Equal,
+            "{what}: fast {:?} vs cubic {:?}",
+            longest(&t),
+            longest(&r)
+        );
+        assert_ne!(
+            cmp_seg(longest(&t), longest(&d)),
+            Ordering::Greater,
+            "{what}"
+        );
+    }
+    no_fallbacks(what);
 }
 
 #[test]

@@ -76,7 +76,7 @@ pub(crate) fn height_sign(points: &[Point], p: u32, q: u32, x: u32, y: u32) -> i
     // precedes a pair with the same largest rank.
     let mut best: Option<((u64, Option<u64>), i32)> = None;
     let mut consider = |key: (u64, Option<u64>), s: i32| {
-        if s != 0 && best.is_none_or(|(k, _)| key < k) {
+        if s != 0 && best.map_or(true, |(k, _)| key < k) {
             best = Some((key, s));
         }
     };
@@ -143,7 +143,7 @@ impl<'a> Mesh<'a> {
     }
 
     fn is_constraint(&self, u: u32, v: u32) -> bool {
-        self.slot(u, v).is_none_or(|s| self.constraint[s] != 0)
+        self.slot(u, v).map_or(true, |s| self.constraint[s] != 0)
     }
 
     /// Is `u v` a hull edge that is not in `rng(S′)`?
@@ -494,7 +494,7 @@ impl<'a> FastRegion<'a> {
                     if self.off(b, p2) > self.off(b, q1) {
                         continue;
                     }
-                    let shorter = best.is_none_or(|c| {
+                    let shorter = best.map_or(true, |c| {
                         self.geo
                             .compare_lengths([self.v[a], self.v[b]], [self.v[c[0]], self.v[c[1]]])
                             == Ordering::Less

@@ -72,7 +72,7 @@ fn perturbed_lune_is_occupied(
     g: &DelaunayGraph,
     p: u32,
     q: u32,
-    seen: &mut Vec<u32>,
+    seen: &mut [u32],
     stamp: u32,
     stack: &mut Vec<u32>,
 ) -> bool {
