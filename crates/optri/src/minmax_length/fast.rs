@@ -39,6 +39,13 @@ pub(crate) fn height_sign(points: &[Point], p: u32, q: u32, x: u32, y: u32) -> i
     }
     let pt = |m: u32| points[m as usize];
     let (pp, pq, px, py) = (pt(p), pt(q), pt(x), pt(y));
+    // Floating-point filter: four rounded differences, two products and a
+    // difference stay within 8u of the magnitudes; 1e-15 is a safe margin.
+    let (ab, cd) = ((pq[0] - pp[0]) * (px[1] - py[1]), (pq[1] - pp[1]) * (px[0] - py[0]));
+    let approx = ab - cd;
+    if approx.abs() > 1e-15 * (ab.abs() + cd.abs()) {
+        return if approx > 0.0 { 1 } else { -1 };
+    }
     let mut e = Expansion::new();
     e.add_two_term_product(two_diff(pq[0], pp[0]), two_diff(px[1], py[1]), 1.0);
     e.add_two_term_product(two_diff(pq[1], pp[1]), two_diff(px[0], py[0]), -1.0);
@@ -352,9 +359,15 @@ impl<'a> FastRegion<'a> {
             }
             let _ = iy;
         }
-        out.sort_unstable_by_key(|&b| self.off(a, b));
-        out.dedup();
-        out
+        // Boundary order by marking: O(k), no sort.
+        let mut mark = vec![false; self.k];
+        for &b in &out {
+            mark[b] = true;
+        }
+        (1..self.k)
+            .map(|o| self.at(a, o))
+            .filter(|&b| mark[b])
+            .collect()
     }
 
     /// §5.1 on the chain of positions `s, s+1, …, s+m` whose closing edge
