@@ -10,7 +10,7 @@
 //! |---|---|
 //! | geometry kernel | [`kernel`]: exact predicates, symbolic tie-break, lunes, metrics |
 //! | data structures | [`PointSet`], [`planar_graph`], [`Triangulation`] |
-//! | algorithms | [`delaunay`], [`convex_hull`], [`relative_neighborhood_graph`], [`gabriel_graph`], [`minimum_spanning_tree`] |
+//! | algorithms | [`minmax_length`](mod@minmax_length), [`delaunay`], [`convex_hull`], [`relative_neighborhood_graph`], [`gabriel_graph`], [`minimum_spanning_tree`] |
 //! | I/O | [`io`] |
 //!
 //! ```

@@ -41,7 +41,10 @@ pub(crate) fn height_sign(points: &[Point], p: u32, q: u32, x: u32, y: u32) -> i
     let (pp, pq, px, py) = (pt(p), pt(q), pt(x), pt(y));
     // Floating-point filter: four rounded differences, two products and a
     // difference stay within 8u of the magnitudes; 1e-15 is a safe margin.
-    let (ab, cd) = ((pq[0] - pp[0]) * (px[1] - py[1]), (pq[1] - pp[1]) * (px[0] - py[0]));
+    let (ab, cd) = (
+        (pq[0] - pp[0]) * (px[1] - py[1]),
+        (pq[1] - pp[1]) * (px[0] - py[0]),
+    );
     let approx = ab - cd;
     if approx.abs() > 1e-15 * (ab.abs() + cd.abs()) {
         return if approx > 0.0 { 1 } else { -1 };

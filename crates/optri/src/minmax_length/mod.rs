@@ -1,47 +1,87 @@
 //! Exact minmax edge-length triangulation (Edelsbrunner & Tan,
-//! `000_5891e11f36dd26ad.txt`).
+//! `000_5891e11f36dd26ad.txt`): a triangulation whose longest edge is as
+//! short as possible, in O(n²) time (O(n log n) plus O(k²) per region).
 //!
 //! # The algorithm (§3)
-//! 1. Build the Delaunay triangulation, the relative neighbourhood graph and
-//!    the convex hull ([`regions`]).
-//! 2. Cut the hull into the polygonal regions of `ch ∪ rng`, cracks traversed
-//!    on both sides ([`crate::planar_graph::PlanarGraph::bounded_faces`]).
-//! 3. Triangulate every region independently (rayon) with a minmax-optimal
-//!    polygon triangulation, and assemble.
+//! 1. Build the Delaunay triangulation, the relative neighbourhood graph
+//!    (`rng_perturbed`) and the convex hull.
+//! 2. Cut the hull into the polygonal regions of `ch ∪ rng` (`regions`),
+//!    cracks traversed on both sides
+//!    ([`crate::planar_graph::PlanarGraph::bounded_faces`]).
+//! 3. Triangulate every region independently (rayon), assemble, and undo
+//!    the perturbation (§5.4, `repair_flat_triangles`).
 //!
-//! The Subgraph Theorem (§4) says some minmax triangulation contains `rng(S)`,
+//! The Subgraph Theorem (§4) says some minmax triangulation contains the RNG,
 //! so optimal triangulations of the regions combine into an optimal one.
+//! A region is triangulated by
+//! * §5.1 if it is an *incomplete* rng-polygon (one hull edge outside the
+//!   RNG): `fast::FastRegion::incomplete`;
+//! * §5.3 + §6 if it is *complete*: classify all diagonals with the per-corner
+//!   stack scan, find `p′, p″, q′, q″`, take the shortest 2-edge passing the
+//!   Crossing-Lemma test and triangulate both sides
+//!   (`fast::FastRegion::shortest_expandable_2_edge`,
+//!   `fast::FastRegion::triangulate_side`);
+//! * regions with fewer than [`SMALL_REGION`] corners (most regions of
+//!   typical inputs) are solved by the exact cubic program instead, which is
+//!   cheaper there; tests run the quadratic algorithm on every region too
+//!   ([`minmax_length_with`]).
 //!
 //! # Degeneracy
 //! §4–§6 assume no two equal lengths and no three collinear points. optri's
 //! kernel defines one symbolic perturbation `S′` of the points
 //! ([`crate::kernel::symbolic`], base-3 simulation of simplicity): every
-//! orientation and length comparison is that of a real, infinitesimally
-//! perturbed point set, so the decisions are mutually consistent.
+//! orientation and length comparison is that of one real, infinitesimally
+//! perturbed point set, so all decisions are mutually consistent. The
+//! point-to-segment distance of §5.1 is compared by `fast::height_sign`,
+//! which expands the same perturbation.
 //!
-//! * The regions are cut by `ch(S) ∪ rng(S′)`. `rng(S′) ⊆ rng(S)` because a
-//!   point strictly inside a lune in `S` stays inside after an infinitesimal
-//!   perturbation (§5.4); [`rng_perturbed`] tests every Delaunay edge's lune under
-//!   the perturbation. The graph
-//!   is a subgraph of `ch(S) ∪ rng(S)`, which is plane *exactly* (both are in
-//!   every Delaunay completion), so the regions are computed without
-//!   perturbation.
-//! * Why that decomposition is safe: by the Subgraph Theorem for `S′` there is
-//!   a minmax triangulation `t(S′) ⊇ rng(S′) ∪ ch(S′)`; §5.4 turns it into a
-//!   minmax triangulation of `S` by replacing flat triangles, and that repair
-//!   keeps every edge whose open segment contains no point — in particular
-//!   all of `rng(S′)` and all (collinear-split) hull edges of `S`. Hence some
-//!   minmax triangulation of `S` contains `ch(S) ∪ rng(S′)`, and triangulating
-//!   each region optimally (for the *unperturbed* points) is optimal.
-//! * Within a region, [`polygon::Region::minmax_triangulation_cubic`] is
-//!   exact on the unperturbed points directly (it needs no general position).
+//! * The regions are cut by `ch(S) ∪ rng(S′)`. `rng(S′) ⊆ rng(S)`, because a
+//!   point strictly inside a lune of `S` stays inside after an infinitesimal
+//!   perturbation (§5.4), so it is found among the Delaunay edges. The graph is
+//!   a subgraph of `ch(S) ∪ rng(S)`, which is plane *exactly* (both lie in every
+//!   Delaunay completion), so the regions are computed without perturbation;
+//!   a hull edge of `S` outside `rng(S′)` is a 1-edge of `S′` with the region
+//!   beyond it (nothing lies outside the hull, and collinear hull points past
+//!   its endpoints are outside its closed lune), which is what §5.1 needs.
+//! * The decomposition loses nothing: by the Subgraph Theorem for `S′` there
+//!   is a minmax triangulation `t(S′) ⊇ rng(S′)`; §5.4 turns it into a minmax
+//!   triangulation of `S`, and that repair keeps every edge whose open segment
+//!   contains no point — all of `rng(S′)` and every hull edge of `S`.
+//! * Each region is triangulated optimally *for `S′`*. Any triangulation of
+//!   `S` containing `ch(S) ∪ rng(S′)` is also one of `S′` (its triangles are
+//!   not flat, so keep their orientation), and `|ab| < |cd|` in `S′` implies
+//!   `|ab| ≤ |cd|` in `S`; so the result's longest edge is at most the optimum
+//!   of `S`. §5.4's repair then replaces flat triangles (corners collinear in
+//!   `S`) by fans, which by the Δ-Lemma creates no longer edge, and yields a
+//!   valid triangulation of the unperturbed points — so the longest edge is
+//!   exactly optimal.
+//! * The cubic program (`polygon::Region::minmax_triangulation_cubic`) runs
+//!   either exactly on `S` (small regions, and the test reference
+//!   [`minmax_length_cubic`]) — it needs no general position — or on `S′`
+//!   (inside §6 Case 2, below).
+//!
+//! # Deviation from the paper
+//! §6 Case 2 (the partners `pp′` and `qq″` cross): the part beyond `qq″` is
+//! triangulated by §5.1 as in step 1 of the paper, but the remaining polygon
+//! (`p … q″` plus `q`) is triangulated by the cubic program on `S′` instead of
+//! the paper's hull-of-`V`, pocket and fan-out construction (§5.2). The
+//! Expandability Lemma guarantees that some triangulation of that polygon
+//! uses only edges shorter than `|pq|`, so the optimal one does too and the
+//! result is still optimal; the cost is cubic in the size of that remainder
+//! (a handful of vertices on the inputs measured, see the diagnostics
+//! [`COUNTERS`]).
 //!
 //! # Functions and the paper
 //! | function | paper |
 //! |---|---|
-//! | [`minmax_length`] | §3 global algorithm |
-//! | [`regions`], [`rng_perturbed`] | §3 steps 1–2, §5.4 (perturbed RNG) |
-//! | [`polygon::Region::minmax_triangulation_cubic`] | §3 dynamic program (Klincsek) |
+//! | [`minmax_length`] | §3 global algorithm, Subgraph Theorem (§4) |
+//! | `rng_perturbed`, `regions` | §3 steps 1–2, §5.4 (`rng(S′) ⊆ rng(S)`) |
+//! | `fast::FastRegion::incomplete` | §5.1, 1-Edge Lemma, Visibility Lemma |
+//! | `fast::FastRegion::visible` | §6 step 1 (diagonals in angular order) |
+//! | `fast::FastRegion::shortest_expandable_2_edge` | §6 steps 1–3, Containment and Crossing Lemmas |
+//! | `fast::FastRegion::triangulate_side` | §5.3 step 2, §6 Cases 1–2, Expandability Lemma |
+//! | `polygon::Region::minmax_triangulation_cubic` | §3 dynamic program (Klincsek) |
+//! | `repair_flat_triangles` | §5.4, Δ-Lemma |
 
 pub(crate) mod fast;
 pub(crate) mod polygon;
