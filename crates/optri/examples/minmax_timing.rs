@@ -79,6 +79,10 @@ fn main() {
                 println!("  phase {:10} {:9.1} ms", p.name, p.ms);
             }
             println!("  {}", counters());
+            if std::env::var_os("SKIP_PURE").is_some() {
+                println!("peak memory: {}", peak_memory());
+                return;
+            }
             let (_, q) = secs(|| optri::minmax_length::minmax_length_with(&ps, 0).unwrap());
             println!("  quadratic algorithm on every region (no small-region cutoff): {q:.3} s, ratio {:.2}", q / d);
         }

@@ -422,15 +422,28 @@ impl<'a> FastRegion<'a> {
     /// satisfying step 3, with `p′, q″` (right of `p → q`) and `q′, p″` (left).
     pub fn shortest_expandable_2_edge(&self) -> Res<[usize; 6]> {
         let k = self.k;
+        // Small and medium regions keep the visibility lists of step 1 for the
+        // later scans (O(k²) memory); large ones recompute them (O(k) each).
+        let cached: Vec<Vec<usize>> = if k <= 2048 {
+            map_corners(k, |a| self.visible(a))
+        } else {
+            Vec::new()
+        };
+        let visible = |a: usize| -> std::borrow::Cow<'_, [usize]> {
+            match cached.get(a) {
+                Some(v) => std::borrow::Cow::Borrowed(v.as_slice()),
+                None => std::borrow::Cow::Owned(self.visible(a)),
+            }
+        };
         let words = k.div_ceil(64);
         // Step 1: per corner, the stack scan over its diagonals in angular
         // order; what remains on the stack has an empty half-lune.
         let rows: Vec<(Vec<u64>, Vec<u32>)> =
             map_corners::<_, Vec<_>>(k, |a| -> Res<(Vec<u64>, Vec<u32>)> {
-                let vis = self.visible(a);
+                let vis = visible(a);
                 let o = self.v[a];
                 let mut stack: Vec<usize> = Vec::new();
-                for &b in &vis {
+                for &b in vis.iter() {
                     let x = self.v[b];
                     while let Some(&top) = stack.last() {
                         if x != self.v[top] && in_half_lune_symbolic(self.points, o, self.v[top], x)
@@ -468,9 +481,9 @@ impl<'a> FastRegion<'a> {
         }
         // Step 2 (the clockwise half): 1-edges with their beneath side clockwise.
         let cw_of: Vec<Vec<u32>> = map_corners::<_, Vec<_>>(k, |a| -> Res<Vec<u32>> {
-            let mut cw: Vec<u32> = self
-                .visible(a)
-                .into_iter()
+            let mut cw: Vec<u32> = visible(a)
+                .iter()
+                .copied()
                 .filter(|&c| empty.get(c, a))
                 .map(|c| self.off(a, c) as u32)
                 .collect();
@@ -494,7 +507,7 @@ impl<'a> FastRegion<'a> {
         let candidates: Vec<[usize; 6]> =
             map_corners::<_, Vec<_>>(k, |a| -> Res<Option<[usize; 6]>> {
                 let mut best: Option<[usize; 6]> = None;
-                for b in self.visible(a) {
+                for &b in visible(a).iter() {
                     let ob = self.off(a, b);
                     if b < a || ob < 2 || ob > k - 2 || empty.get(a, b) || empty.get(b, a) {
                         continue;
