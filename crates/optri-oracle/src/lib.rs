@@ -1,1 +1,31 @@
-//! Test oracles for optri.
+//! Independent reference implementations for testing optri (tests only).
+//!
+//! Nothing here uses optri: every predicate is exact integer/rational
+//! arithmetic on the `f64` inputs ([`exact`]), and every algorithm is the
+//! simplest one that is obviously correct — exhaustive enumeration
+//! ([`all_triangulations`], cross-checked by flip-graph search),
+//! Klincsek's polygon DP ([`klincsek`]), and brute-force definitions of the
+//! proximity graphs ([`graphs`]). Slow by design; inputs are small.
+//!
+//! Conventions: indices are `u32` into the caller's slice of *distinct*
+//! points; triangles are counter-clockwise with the smallest index first,
+//! lists of triangles and of `[min, max]` edges are sorted.
+
+pub mod enumerate;
+pub mod exact;
+pub mod graphs;
+pub mod klincsek;
+
+pub use enumerate::{
+    all_triangulations, canonical_triangle, canonical_triangulation, edge_length, empty_segments,
+    flip_graph_triangulations, max_edge_squared, max_twice_area, min_twice_area, optimum_by,
+    total_length, triangle_edges, TotalF64, MAX_ENUMERATION_POINTS,
+};
+pub use exact::{
+    compare_squared_lengths, dot_sign, incircle, on_open_segment, orient, properly_cross,
+    squared_length, to_rational, twice_area, Point,
+};
+pub use graphs::{
+    convex_hull_edges, delaunay_check, gabriel_edges, is_minimum_spanning_tree, rng_edges,
+};
+pub use klincsek::{klincsek, Criterion, MaxMinArea, MinMaxArea, MinMaxLength, MinWeight};
