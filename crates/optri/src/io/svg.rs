@@ -16,8 +16,8 @@ use std::fmt::Write;
 
 /// Plot width of one panel, pixels.
 const PLOT_WIDTH: f64 = 560.0;
-/// Space above the plot for the title and the stats line.
-const HEADER: f64 = 52.0;
+/// Space above the plot for the title and two stats lines.
+const HEADER: f64 = 66.0;
 /// Space below the plot for the legend.
 const FOOTER: f64 = 26.0;
 /// Margin around the plot.
@@ -26,7 +26,8 @@ const MARGIN: f64 = 16.0;
 /// What one panel shows.
 struct Panel<'a> {
     title: &'a str,
-    stats: String,
+    /// One or two caption lines.
+    stats: Vec<String>,
     points: Vec<Point>,
     all_points: &'a [Point],
     edges: &'a [[u32; 2]],
@@ -75,18 +76,25 @@ fn worst_triangle(t: &Triangulation) -> Option<[u32; 3]> {
         .map(|(_, tri)| tri)
 }
 
-fn triangulation_stats_line(t: &Triangulation) -> String {
+fn triangulation_stats_lines(t: &Triangulation) -> Vec<String> {
     let s = t.stats();
-    format!(
-        "{} points · {} triangles · max edge {} · total length {} · min angle {}° · area {}–{}",
-        t.point_set().len(),
-        s.triangles,
-        short_number(s.max_edge_length),
-        short_number(s.total_edge_length),
-        short_number(s.min_angle_deg),
-        short_number(s.min_area),
-        short_number(s.max_area)
-    )
+    vec![
+        format!(
+            "{} points · {} triangles · {} edges · {} hull points",
+            t.point_set().len(),
+            s.triangles,
+            s.edges,
+            s.hull_points
+        ),
+        format!(
+            "max edge {} · total length {} · min angle {}° · area {} to {}",
+            short_number(s.max_edge_length),
+            short_number(s.total_edge_length),
+            short_number(s.min_angle_deg),
+            short_number(s.min_area),
+            short_number(s.max_area)
+        ),
+    ]
 }
 
 fn triangulation_panel<'a>(
@@ -96,7 +104,7 @@ fn triangulation_panel<'a>(
 ) -> Panel<'a> {
     Panel {
         title,
-        stats: triangulation_stats_line(t),
+        stats: triangulation_stats_lines(t),
         points: t.point_set().points().to_vec(),
         all_points: t.points(),
         edges,
@@ -159,7 +167,7 @@ fn draw_panel(out: &mut String, x0: f64, y0: f64, plot_h: f64, panel: &Panel) {
         )
     };
     let n = panel.points.len().max(1) as f64;
-    let edge_width = (2.0 / n.sqrt()).clamp(0.25, 1.2);
+    let edge_width = (6.0 / n.sqrt()).clamp(0.35, 1.5);
     let radius = (12.0 / n.sqrt()).clamp(0.6, 3.5);
     let total_w = PLOT_WIDTH + 2.0 * MARGIN;
     let _ = writeln!(
@@ -174,13 +182,15 @@ fn draw_panel(out: &mut String, x0: f64, y0: f64, plot_h: f64, panel: &Panel) {
         y0 + 22.0,
         escape(panel.title)
     );
-    let _ = writeln!(
-        out,
-        r##"<text x="{:.2}" y="{:.2}" font-size="11" fill="#444444">{}</text>"##,
-        x0 + MARGIN,
-        y0 + 40.0,
-        escape(&panel.stats)
-    );
+    for (k, line) in panel.stats.iter().enumerate() {
+        let _ = writeln!(
+            out,
+            r##"<text x="{:.2}" y="{:.2}" font-size="11" fill="#444444">{}</text>"##,
+            x0 + MARGIN,
+            y0 + 40.0 + 14.0 * k as f64,
+            escape(line)
+        );
+    }
     if let Some(tri) = panel.worst {
         let corners: Vec<String> = tri
             .iter()
@@ -191,8 +201,9 @@ fn draw_panel(out: &mut String, x0: f64, y0: f64, plot_h: f64, panel: &Panel) {
             .collect();
         let _ = writeln!(
             out,
-            r##"<polygon class="worst" points="{}" fill="#f4a742" fill-opacity="0.55"/>"##,
-            corners.join(" ")
+            r##"<polygon class="worst" points="{}" fill="#f4a742" fill-opacity="0.6" stroke="#e07b00" stroke-width="{:.2}" stroke-linejoin="round"/>"##,
+            corners.join(" "),
+            (edge_width * 2.5).max(1.5)
         );
     }
     let _ = writeln!(
@@ -270,12 +281,12 @@ pub fn graph_to_svg(points: &[Point], edges: &[[u32; 2]], title: &str) -> String
         .sum();
     let panel = Panel {
         title,
-        stats: format!(
+        stats: vec![format!(
             "{} points · {} edges · total length {}",
             points.len(),
             edges.len(),
             short_number(total)
-        ),
+        )],
         points: points.to_vec(),
         all_points: points,
         edges,
