@@ -415,3 +415,42 @@ fn demo_draws_every_criterion() {
         &["d.json", ".svg"],
     );
 }
+
+#[test]
+fn every_tsplib_file_matches_its_readme_counts() {
+    // (file, DIMENSION, duplicate coords, hull points incl. collinear) from
+    // shared/data/tsplib/README.md, computed there independently.
+    let expected = [
+        ("berlin52", 52, 0, 8),
+        ("kroA100", 100, 0, 12),
+        ("ch150", 150, 0, 15),
+        ("a280", 280, 1, 44),
+        ("lin318", 318, 0, 11),
+        ("pr1002", 1002, 0, 31),
+        ("u1060", 1060, 0, 24),
+        ("vm1084", 1084, 0, 380),
+        ("pcb3038", 3038, 0, 10),
+        ("fl1577", 1577, 0, 85),
+        ("fnl4461", 4461, 0, 21),
+        ("att532", 532, 0, 12),
+        ("ali535", 535, 29, 10),
+        ("ts225", 225, 0, 96),
+    ];
+    for (name, n, duplicates, hull) in expected {
+        let input = format!("{TSPLIB}{name}.tsp");
+        let json = stdout_json(&run(&["triangulate", &input, "--json"]));
+        assert_eq!(json["points"], n, "{name}");
+        assert_eq!(
+            json["duplicates"].as_array().unwrap().len(),
+            duplicates,
+            "{name}"
+        );
+        assert_eq!(json["stats"]["hull_points"], hull, "{name}");
+        // 2n - h - 2 triangles over the distinct points.
+        assert_eq!(
+            json["stats"]["triangles"],
+            2 * (n - duplicates) - hull - 2,
+            "{name}"
+        );
+    }
+}

@@ -20,8 +20,9 @@ pub enum InputFormat {
     /// One point per line, `x y` (separated by spaces, tabs, commas or
     /// semicolons); `#` starts a comment; an optional non-numeric header line
     /// may precede the data. Every data row must have the same number of
-    /// columns (at least two); `x` and `y` are the first two, further columns
-    /// are ignored.
+    /// columns (at least two, all numbers). The coordinates are the columns
+    /// the header names `x` and `y` (case-insensitive, e.g. `id,x,y`), else
+    /// the first two; other columns are ignored.
     Text,
     /// Triangle's `.node`: a header `n dim attributes boundary_marker`, then
     /// `id x y [attributes…] [marker]` per vertex.
@@ -115,6 +116,8 @@ impl InputFormat {
 /// [`Error::Parse`] with the 1-based line of the first problem, or line 0 when
 /// the input holds no points at all.
 pub fn read_points(text: &str, format: InputFormat) -> Result<Vec<Point>> {
+    // A UTF-8 byte-order mark is not part of the first token.
+    let text = text.strip_prefix('\u{feff}').unwrap_or(text);
     let points = match format {
         InputFormat::Text => read_text(text)?,
         InputFormat::Node => read_node(text)?,
@@ -191,6 +194,9 @@ fn read_text(text: &str) -> Result<Vec<Point>> {
     // Column count of the first data row and its line, to report ragged rows.
     let mut columns: Option<(usize, usize)> = None;
     let mut seen_content = false;
+    // Columns of x and y: named by the header, else the first two.
+    let mut xy_columns = [0, 1];
+    let mut header_columns = None;
     for (i, raw) in text.lines().enumerate() {
         let line = i + 1;
         let tokens: Vec<&str> = strip_comment(raw)
@@ -205,6 +211,11 @@ fn read_text(text: &str) -> Result<Vec<Point>> {
         // A header (e.g. `x,y`) is allowed only as the first content line and
         // only when none of its tokens is a number.
         if first_content && tokens.iter().all(|t| t.parse::<f64>().is_err()) {
+            let named = |name: &str| tokens.iter().position(|t| t.eq_ignore_ascii_case(name));
+            if let (Some(x), Some(y)) = (named("x"), named("y")) {
+                xy_columns = [x, y];
+                header_columns = Some((tokens.len(), line));
+            }
             continue;
         }
         match columns {
@@ -213,6 +224,15 @@ fn read_text(text: &str) -> Result<Vec<Point>> {
                     return Err(parse(
                         line,
                         format!("expected 'x y', found a single value '{}'", tokens[0]),
+                    ));
+                }
+                if let Some((n, header)) = header_columns.filter(|&(n, _)| n != tokens.len()) {
+                    return Err(parse(
+                        line,
+                        format!(
+                            "{} columns, but the header on line {header} names {n}",
+                            tokens.len()
+                        ),
                     ));
                 }
                 columns = Some((tokens.len(), line));
@@ -229,11 +249,16 @@ fn read_text(text: &str) -> Result<Vec<Point>> {
             Some(_) => {}
         }
         // Extra columns must still be numbers, so a stray word is not ignored.
-        for t in &tokens[2..] {
-            t.parse::<f64>()
-                .map_err(|_| parse(line, format!("'{t}' is not a number")))?;
+        for (k, t) in tokens.iter().enumerate() {
+            if !xy_columns.contains(&k) {
+                t.parse::<f64>()
+                    .map_err(|_| parse(line, format!("'{t}' is not a number")))?;
+            }
         }
-        points.push([coordinate(tokens[0], line)?, coordinate(tokens[1], line)?]);
+        points.push([
+            coordinate(tokens[xy_columns[0]], line)?,
+            coordinate(tokens[xy_columns[1]], line)?,
+        ]);
     }
     Ok(points)
 }
@@ -585,9 +610,17 @@ mod tests {
             vec![[1.0, 2.0], [3.0, 4.0]]
         );
         assert_eq!(
-            read_points("-1e3 2.5E-2\n", InputFormat::Text).unwrap(),
+            read_points("\u{feff}-1e3 2.5E-2\r\n", InputFormat::Text).unwrap(),
             vec![[-1000.0, 0.025]]
         );
+        // A header naming x and y picks those columns.
+        assert_eq!(
+            read_points("id;Y;X\n1;2;3\n2;5;6\n", InputFormat::Text).unwrap(),
+            vec![[3.0, 2.0], [6.0, 5.0]]
+        );
+        let (line, m) = line_of(read_points("id,x,y\n1,2\n", InputFormat::Text).unwrap_err());
+        assert_eq!(line, 2);
+        assert!(m.contains("header on line 1"), "{m}");
     }
 
     #[test]
