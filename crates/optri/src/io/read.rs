@@ -658,6 +658,59 @@ mod tests {
     }
 
     #[test]
+    fn random_text_files_read_back_exactly_and_a_corruption_is_located() {
+        use rand::{rngs::StdRng, Rng, SeedableRng};
+        let mut rng = StdRng::seed_from_u64(11);
+        for round in 0..200 {
+            let n = rng.gen_range(1..30);
+            let points: Vec<Point> = (0..n)
+                .map(|_| {
+                    let scale = [1.0, 1e-30, 1e40, 3.0][rng.gen_range(0..4)];
+                    [
+                        rng.gen_range(-1.0..1.0) * scale,
+                        rng.gen_range(-5i32..5) as f64,
+                    ]
+                })
+                .collect();
+            let separators = [" ", "\t", ",", ";", " , ", "  "];
+            let mut lines: Vec<String> = Vec::new();
+            let mut data_lines = Vec::new();
+            if rng.gen_bool(0.3) {
+                lines.push("x y".into());
+            }
+            for p in &points {
+                while rng.gen_bool(0.2) {
+                    lines.push(["", "# comment 1 2", "   "][rng.gen_range(0..3)].into());
+                }
+                let sep = separators[rng.gen_range(0..separators.len())];
+                let (x, y) = if rng.gen_bool(0.5) {
+                    (format!("{}", p[0]), format!("{}", p[1]))
+                } else {
+                    (format!("{:e}", p[0]), format!("{:E}", p[1]))
+                };
+                let comment = if rng.gen_bool(0.2) { " # note" } else { "" };
+                lines.push(format!("{x}{sep}{y}{comment}"));
+                data_lines.push(lines.len());
+            }
+            let text = lines.join(if round % 2 == 0 { "\n" } else { "\r\n" });
+            assert_eq!(
+                read_points(&text, InputFormat::Text).unwrap(),
+                points,
+                "{text}"
+            );
+            // Corrupt one data line: the error names exactly that line.
+            let k = rng.gen_range(0..data_lines.len());
+            let bad = ["1.2.3", "nan", "-inf", "x1", "1e999", "0x10"][rng.gen_range(0..6)];
+            let mut corrupted = lines.clone();
+            corrupted[data_lines[k] - 1] = format!("{bad} 0");
+            let (line, m) =
+                line_of(read_points(&corrupted.join("\n"), InputFormat::Text).unwrap_err());
+            assert_eq!(line, data_lines[k], "{m}");
+            assert!(m.contains(bad), "{m}");
+        }
+    }
+
+    #[test]
     fn node_files() {
         let text = "# comment\n4 2 1 1\n1 0 0 7 1\n2 1 0 7 1\n3 1 1 7 0\n4 0 1 7 1\n";
         assert_eq!(

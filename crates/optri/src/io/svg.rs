@@ -274,6 +274,9 @@ pub fn triangulation_to_svg(t: &Triangulation, title: &str) -> String {
 
 /// A picture of a plain edge set over `points` (edges are index pairs into
 /// `points`), e.g. a proximity graph.
+///
+/// # Panics
+/// If an edge refers to an index outside `points`.
 pub fn graph_to_svg(points: &[Point], edges: &[[u32; 2]], title: &str) -> String {
     let total: f64 = edges
         .iter()

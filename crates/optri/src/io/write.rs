@@ -186,6 +186,9 @@ pub fn graph_to_json(points: &[Point], edges: &[[u32; 2]]) -> Value {
 
 /// A GeoJSON `FeatureCollection`: one `LineString` per edge (property
 /// `edge: [a, b]`), then one `Point` per point (property `index`).
+///
+/// # Panics
+/// If an edge refers to an index outside `points`.
 pub fn graph_to_geojson(points: &[Point], edges: &[[u32; 2]]) -> Value {
     let mut features: Vec<Value> = edges
         .iter()
@@ -258,6 +261,9 @@ pub fn write_triangulation_titled(
 /// # Errors
 /// [`Error::Unsupported`] for `.ele` and unknown extensions, [`Error::Io`]
 /// naming the path when writing fails.
+///
+/// # Panics
+/// If an edge refers to an index outside `points`.
 pub fn write_graph(points: &[Point], edges: &[[u32; 2]], title: &str, path: &Path) -> Result<()> {
     match OutputFormat::from_path(path)? {
         OutputFormat::Json => write_file(path, &pretty(&graph_to_json(points, edges))),
