@@ -190,6 +190,17 @@ fn emit(text: &str) -> CliResult<()> {
     }
 }
 
+/// A rounded measure for the summary: plain notation for everyday
+/// magnitudes, scientific otherwise (so 1e60 and 1e-30 stay readable).
+fn number(v: f64) -> String {
+    let a = v.abs();
+    if a == 0.0 || (1e-4..1e9).contains(&a) {
+        format!("{v}")
+    } else {
+        format!("{v:.6e}")
+    }
+}
+
 fn duplicates_note(points: &PointSet) -> String {
     match points.duplicates().len() {
         0 => String::new(),
@@ -265,7 +276,7 @@ fn triangulate(args: TriangulateArgs) -> CliResult<()> {
          points: {} input, {} distinct{}\n\
          triangles: {}, edges: {}, hull points: {}\n\
          edge length: max {}, total {}\n\
-         angles: min {:.4}°, max {:.4}°\n\
+         angles: min {}°, max {}°\n\
          areas: min {}, max {}\n\
          time: {}\n",
         criterion.name(),
@@ -277,12 +288,12 @@ fn triangulate(args: TriangulateArgs) -> CliResult<()> {
         stats.triangles,
         stats.edges,
         stats.hull_points,
-        stats.max_edge_length,
-        stats.total_edge_length,
-        stats.min_angle_deg,
-        stats.max_angle_deg,
-        stats.min_area,
-        stats.max_area,
+        number(stats.max_edge_length),
+        number(stats.total_edge_length),
+        number(stats.min_angle_deg),
+        number(stats.max_angle_deg),
+        number(stats.min_area),
+        number(stats.max_area),
         timing_text(&phases),
     );
     for path in &written {
@@ -348,7 +359,7 @@ fn graph(args: GraphArgs) -> CliResult<()> {
         point_set.len(),
         duplicates_note(&point_set),
         edges.len(),
-        total,
+        number(total),
         timing_text(&phases),
     );
     for path in &args.output {
