@@ -14,19 +14,17 @@ struct Exact<T> {
 }
 
 impl<T: Ring> Exact<T> {
-    fn coords(&self, idx: &[usize]) -> Vec<T> {
-        idx.iter()
-            .flat_map(|&i| [self.c[2 * i].clone(), self.c[2 * i + 1].clone()])
-            .collect()
+    fn coords<const N: usize, const M: usize>(&self, idx: [usize; N]) -> [T; M] {
+        std::array::from_fn(|k| self.c[2 * idx[k / 2] + k % 2].clone())
     }
     fn orient(&self, p: usize, q: usize, r: usize) -> Ordering {
-        cross(&self.coords(&[p, q, r])).cmp(&T::zero())
+        cross(&self.coords::<3, 6>([p, q, r])).cmp(&T::zero())
     }
     fn dot(&self, p: usize, q: usize, r: usize) -> Ordering {
-        dot(&self.coords(&[p, q, r])).cmp(&T::zero())
+        dot(&self.coords::<3, 6>([p, q, r])).cmp(&T::zero())
     }
     fn dist2(&self, p: usize, q: usize) -> T {
-        dist2(&self.coords(&[p, q]))
+        dist2(&self.coords::<2, 4>([p, q]))
     }
 }
 
@@ -65,17 +63,33 @@ fn assert_distinct(points: &[Point]) {
     }
 }
 
+/// A fixed pseudo-random permutation of `0..n` (Fisher–Yates with an LCG).
+fn shuffled(n: usize) -> Vec<usize> {
+    let mut v: Vec<usize> = (0..n).collect();
+    let mut state: u64 = 0x9E37_79B9_7F4A_7C15;
+    for i in (1..n).rev() {
+        state = state
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        v.swap(i, (state >> 33) as usize % (i + 1));
+    }
+    v
+}
+
 /// Convex hull edges by definition: `pq` is an edge iff every point lies in
 /// one closed half-plane of line `pq` and no point lies on the open segment
-/// `pq`. Collinear boundary points are thus hull vertices. O(n³).
+/// `pq`. Collinear boundary points are thus hull vertices. O(n³); the third
+/// points are visited in a shuffled order so that spatially sorted inputs
+/// find a witness on each side quickly.
 pub fn convex_hull_edges(points: &[Point]) -> Vec<[u32; 2]> {
     assert_distinct(points);
     fn run<T: Ring>(g: &Exact<T>, n: usize) -> Vec<[u32; 2]> {
+        let order = shuffled(n);
         let mut out = Vec::new();
         for p in 0..n {
             for q in p + 1..n {
                 let (mut left, mut right, mut between) = (false, false, false);
-                for r in 0..n {
+                for &r in &order {
                     match g.orient(p, q, r) {
                         Ordering::Greater => left = true,
                         Ordering::Less => right = true,
