@@ -5,7 +5,8 @@
 //! simplest one that is obviously correct — exhaustive enumeration
 //! ([`all_triangulations`], cross-checked by flip-graph search),
 //! Klincsek's polygon DP ([`klincsek`]), and brute-force definitions of the
-//! proximity graphs ([`graphs`]). Slow by design; inputs are small.
+//! proximity graphs ([`graphs`]), and a polynomial expansion of the
+//! symbolic perturbation ([`symbolic`]). Slow by design; inputs are small.
 //!
 //! Conventions: indices are `u32` into the caller's slice of *distinct*
 //! points; triangles are counter-clockwise with the smallest index first,
@@ -15,6 +16,7 @@ pub mod enumerate;
 pub mod exact;
 pub mod graphs;
 pub mod klincsek;
+pub mod symbolic;
 
 pub use enumerate::{
     all_triangulations, canonical_triangle, canonical_triangulation, edge_length, empty_segments,
@@ -29,3 +31,6 @@ pub use graphs::{
     convex_hull_edges, delaunay_check, gabriel_edges, is_minimum_spanning_tree, rng_edges,
 };
 pub use klincsek::{klincsek, Criterion, MaxMinArea, MinMaxArea, MinMaxLength, MinWeight};
+pub use num_bigint::BigInt;
+pub use num_rational::BigRational;
+pub use symbolic::{compare_lengths_perturbed, orient_perturbed};
