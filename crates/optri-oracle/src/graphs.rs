@@ -273,3 +273,73 @@ pub fn delaunay_check(points: &[Point], tris: &[[u32; 3]]) -> Result<(), String>
     }
     Ok(())
 }
+
+/// The bounded faces of the plane graph `(points, edges)` (straight, pairwise
+/// non-crossing edges), each as a counter-clockwise cycle of point indices
+/// with the face on the left, in the form [`crate::klincsek`] takes. A
+/// dangling edge or tree inside a face is walked on both sides, so vertices
+/// may repeat. A face with holes (a disconnected graph) yields one cycle per
+/// boundary component; only the outer component has positive area, and only
+/// cycles of positive area are returned.
+pub fn bounded_faces(points: &[Point], edges: &[[u32; 2]]) -> Vec<Vec<u32>> {
+    let n = points.len();
+    let mut around: Vec<Vec<u32>> = vec![Vec::new(); n];
+    for &[a, b] in edges {
+        around[a as usize].push(b);
+        around[b as usize].push(a);
+    }
+    // Counter-clockwise angular order from the +x direction, exactly: the
+    // upper half-plane (and the +x ray) first, then by orientation.
+    for (v, nb) in around.iter_mut().enumerate() {
+        let o = points[v];
+        let half = |p: Point| -> u8 {
+            if p[1] > o[1] || (p[1] == o[1] && p[0] > o[0]) {
+                0
+            } else {
+                1
+            }
+        };
+        nb.sort_by(|&a, &b| {
+            let (pa, pb) = (points[a as usize], points[b as usize]);
+            half(pa)
+                .cmp(&half(pb))
+                .then_with(|| 0.cmp(&orient(o, pa, pb)))
+        });
+        nb.dedup();
+    }
+    let mut used: std::collections::HashSet<(u32, u32)> = std::collections::HashSet::new();
+    let mut faces = Vec::new();
+    for u in 0..n as u32 {
+        for &v in &around[u as usize] {
+            if used.contains(&(u, v)) {
+                continue;
+            }
+            // Walk: after u → v, leave v along the edge just clockwise of v → u.
+            let mut cycle = Vec::new();
+            let (mut a, mut b) = (u, v);
+            while used.insert((a, b)) {
+                cycle.push(a);
+                let nb = &around[b as usize];
+                let at = nb.iter().position(|&x| x == a).unwrap();
+                let w = nb[(at + nb.len() - 1) % nb.len()];
+                (a, b) = (b, w);
+            }
+            let area: crate::BigRational = (1..cycle.len().saturating_sub(1))
+                .map(|i| {
+                    let p = |k: usize| points[cycle[k] as usize];
+                    let s = orient(p(0), p(i), p(i + 1));
+                    let a = crate::exact::twice_area(p(0), p(i), p(i + 1));
+                    if s < 0 {
+                        -a
+                    } else {
+                        a
+                    }
+                })
+                .sum();
+            if area > crate::BigRational::from_integer(0.into()) {
+                faces.push(cycle);
+            }
+        }
+    }
+    faces
+}

@@ -28,7 +28,8 @@ pub use exact::{
     squared_length, to_rational, twice_area, Point,
 };
 pub use graphs::{
-    convex_hull_edges, delaunay_check, gabriel_edges, is_minimum_spanning_tree, rng_edges,
+    bounded_faces, convex_hull_edges, delaunay_check, gabriel_edges, is_minimum_spanning_tree,
+    rng_edges,
 };
 pub use klincsek::{klincsek, Criterion, MaxMinArea, MinMaxArea, MinMaxLength, MinWeight};
 pub use num_bigint::BigInt;
