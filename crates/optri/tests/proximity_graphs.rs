@@ -368,3 +368,74 @@ fn tsplib_files_up_to_1100_points() {
         );
     }
 }
+
+/// Cycles up to rotation: the lexicographically smallest rotation.
+fn normalized_cycles(cycles: Vec<Vec<u32>>) -> Vec<Vec<u32>> {
+    let mut out: Vec<Vec<u32>> = cycles
+        .into_iter()
+        .map(|c| {
+            (0..c.len())
+                .map(|k| {
+                    let mut r = c.clone();
+                    r.rotate_left(k);
+                    r
+                })
+                .min()
+                .unwrap()
+        })
+        .collect();
+    out.sort();
+    out
+}
+
+/// `PlanarGraph::bounded_faces` (the regions Klincsek's DP runs on) against
+/// the oracle's face walk, on hull ∪ RNG and on hull ∪ MST (many cracks).
+#[test]
+fn planar_graph_faces_of_hull_with_rng_or_mst() {
+    let mut rng = StdRng::seed_from_u64(31);
+    let mut inputs: Vec<Vec<Point>> = Vec::new();
+    for n in [5, 8, 12, 20, 40, 80] {
+        for side in [6, 30, 1 << 20] {
+            inputs.push(integers(&mut rng, n, side));
+        }
+    }
+    inputs.push(grid(5, 4, 1.0));
+    inputs.push(grid(6, 6, 0.1));
+    inputs.push(circle_points(65));
+    let mut cracked = 0;
+    for (i, input) in inputs.iter().enumerate() {
+        let Ok(ps) = PointSet::new(input) else {
+            continue;
+        };
+        let pts = ps.points();
+        let hull = oracle::convex_hull_edges(pts);
+        let rng_edges = oracle::rng_edges(pts);
+        let mst = to_distinct(&ps, &minimum_spanning_tree(&ps).unwrap());
+        for g in [rng_edges, mst] {
+            let mut edges = g;
+            edges.extend(&hull);
+            edges.sort_unstable();
+            edges.dedup();
+            let expected = normalized_cycles(oracle::bounded_faces(pts, &edges));
+            let graph = optri::planar_graph::PlanarGraph::new(pts, &edges);
+            let got = normalized_cycles(
+                graph
+                    .bounded_faces(pts)
+                    .into_iter()
+                    .map(|f| f.vertices)
+                    .collect(),
+            );
+            assert_eq!(got, expected, "input {i}");
+            cracked += expected
+                .iter()
+                .filter(|f| {
+                    let mut s = f.to_vec();
+                    s.sort_unstable();
+                    s.dedup();
+                    s.len() < f.len()
+                })
+                .count();
+        }
+    }
+    assert!(cracked > 20, "{cracked}");
+}
