@@ -165,3 +165,50 @@ fn segment_order_is_a_total_order_on_grid_segments() {
         }
     }
 }
+
+/// Lune and half-lune membership (exact and symbolic) against their
+/// definitions evaluated by the oracle.
+#[test]
+fn lunes_match_their_definitions() {
+    use optri::kernel::{in_half_lune, in_half_lune_symbolic, in_lune, in_lune_symbolic};
+    let mut checked = 0;
+    let mut boundary = 0;
+    for (label, pts) in degenerate_sets() {
+        let n = pts.len() as u32;
+        let p = |m: u32| pts[m as usize];
+        for a in 0..n {
+            for b in 0..n {
+                for x in 0..n {
+                    if a == b {
+                        continue;
+                    }
+                    let (pa, pb, px) = (p(a), p(b), p(x));
+                    let exact = oracle::compare_squared_lengths(px, pa, pa, pb) == Ordering::Less
+                        && oracle::compare_squared_lengths(px, pb, pa, pb) == Ordering::Less;
+                    assert_eq!(in_lune(pa, pb, px), exact, "{label}: lune({a},{b}) ∋ {x}");
+                    let half = exact && oracle::orient(pa, pb, px) >= 0;
+                    assert_eq!(in_half_lune(pa, pb, px), half, "{label}");
+                    boundary += (oracle::compare_squared_lengths(px, pa, pa, pb) == Ordering::Equal)
+                        as usize;
+                    if x == a || x == b {
+                        assert!(!in_lune_symbolic(&pts, a, b, x));
+                        continue;
+                    }
+                    let sym = oracle::compare_lengths_perturbed(&pts, [x, a], [a, b])
+                        == Ordering::Less
+                        && oracle::compare_lengths_perturbed(&pts, [x, b], [a, b])
+                            == Ordering::Less;
+                    assert_eq!(
+                        in_lune_symbolic(&pts, a, b, x),
+                        sym,
+                        "{label}: symbolic lune"
+                    );
+                    let sym_half = sym && oracle::orient_perturbed(&pts, a, b, x) > 0;
+                    assert_eq!(in_half_lune_symbolic(&pts, a, b, x), sym_half, "{label}");
+                    checked += 1;
+                }
+            }
+        }
+    }
+    assert!(checked > 3000 && boundary > 100, "{checked} {boundary}");
+}
