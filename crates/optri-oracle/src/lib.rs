@@ -3,7 +3,10 @@
 //! Nothing here uses optri: every predicate is exact integer/rational
 //! arithmetic on the `f64` inputs ([`exact`]), and every algorithm is the
 //! simplest one that is obviously correct — exhaustive enumeration
-//! ([`all_triangulations`], cross-checked by flip-graph search),
+//! ([`all_triangulations`], cross-checked by flip-graph search, with
+//! [`optimum_by`] and the keys [`max_edge_squared`], [`total_length`],
+//! [`min_twice_area`], [`max_twice_area`]), the greedy triangulation by
+//! definition ([`greedy_triangulation`]),
 //! Klincsek's polygon DP ([`klincsek`]), and brute-force definitions of the
 //! proximity graphs ([`graphs`]), and a polynomial expansion of the
 //! symbolic perturbation ([`symbolic`]). Slow by design; inputs are small.
@@ -20,8 +23,9 @@ pub mod symbolic;
 
 pub use enumerate::{
     all_triangulations, canonical_triangle, canonical_triangulation, edge_length, empty_segments,
-    flip_graph_triangulations, max_edge_squared, max_twice_area, min_twice_area, optimum_by,
-    total_length, triangle_edges, TotalF64, MAX_ENUMERATION_POINTS,
+    flip_graph_triangulations, greedy_triangulation, max_edge_squared, max_twice_area,
+    min_twice_area, optimum_by, segments_by_perturbed_length, total_length, triangle_edges,
+    TotalF64, MAX_ENUMERATION_POINTS,
 };
 pub use exact::{
     compare_squared_lengths, dot_sign, incircle, on_open_segment, orient, properly_cross,

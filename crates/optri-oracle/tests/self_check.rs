@@ -462,3 +462,28 @@ fn mst_from(pts: &[Point], candidates: &[[u32; 2]]) -> Vec<[u32; 2]> {
     }
     tree
 }
+
+/// The greedy triangulation is the one whose edge list, sorted by the
+/// (perturbed) length order, is lexicographically smallest: an exchange
+/// argument, checked here exhaustively.
+#[test]
+fn greedy_is_the_lexicographically_smallest_triangulation() {
+    let mut rng = Lcg(8);
+    for case in 0..40 {
+        let n = 4 + case % 6;
+        let pts = if case % 5 == 4 {
+            grid(3, 3)
+        } else {
+            rng.points(n, if case % 2 == 0 { 5 } else { 300 })
+        };
+        let order = segments_by_perturbed_length(&pts);
+        let rank = |e: &[u32; 2]| order.iter().position(|s| s == e).unwrap();
+        let (_, best) = optimum_by(&pts, |t| {
+            let mut r: Vec<usize> = triangle_edges(t).iter().map(rank).collect();
+            r.sort_unstable();
+            r
+        });
+        assert_eq!(best.len(), 1, "the perturbed order is total");
+        assert_eq!(greedy_triangulation(&pts), best[0], "case {case}");
+    }
+}
