@@ -276,7 +276,7 @@ pub fn delaunay_check(points: &[Point], tris: &[[u32; 3]]) -> Result<(), String>
 
 /// The bounded faces of the plane graph `(points, edges)` (straight, pairwise
 /// non-crossing edges), each as a counter-clockwise cycle of point indices
-/// with the face on the left, in the form [`crate::klincsek`] takes. A
+/// with the face on the left, in the form [`crate::klincsek()`] takes. A
 /// dangling edge or tree inside a face is walked on both sides, so vertices
 /// may repeat. A face with holes (a disconnected graph) yields one cycle per
 /// boundary component; only the outer component has positive area, and only

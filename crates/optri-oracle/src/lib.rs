@@ -7,7 +7,7 @@
 //! [`optimum_by`] and the keys [`max_edge_squared`], [`total_length`],
 //! [`min_twice_area`], [`max_twice_area`]), the greedy triangulation by
 //! definition ([`greedy_triangulation`]),
-//! Klincsek's polygon DP ([`klincsek`]), and brute-force definitions of the
+//! Klincsek's polygon DP ([`klincsek()`]), brute-force definitions of the
 //! proximity graphs ([`graphs`]), and a polynomial expansion of the
 //! symbolic perturbation ([`symbolic`]). Slow by design; inputs are small.
 //!
