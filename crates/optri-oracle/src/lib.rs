@@ -29,7 +29,7 @@ pub use enumerate::{
 };
 pub use exact::{
     compare_squared_lengths, dot_sign, incircle, on_open_segment, orient, properly_cross,
-    squared_length, to_rational, twice_area, Point,
+    rational_to_f64, squared_length, to_rational, twice_area, Point,
 };
 pub use graphs::{
     bounded_faces, convex_hull_edges, delaunay_check, gabriel_edges, is_minimum_spanning_tree,

@@ -260,3 +260,63 @@ fn flat_triangle_on_collinear_points_is_rejected() {
     // Hull with a collinear point skipped: (0,4,2) is not a triangulation of all points.
     rejected(&ps, vec![[0, 2, 3], [0, 4, 2]], "skips point 1", "run");
 }
+
+fn close(a: f64, b: f64) -> bool {
+    (a - b).abs() <= 1e-12 * a.abs().max(b.abs())
+}
+
+/// `longest_edge` (exact, ties to the smallest pair) and the rounded `stats`
+/// against the oracle's exact keys.
+#[test]
+fn stats_and_longest_edge_match_the_oracle() {
+    use oracle::BigRational;
+    let mut checked = 0;
+    for (label, input) in point_sets() {
+        let ps = PointSet::new(&input).unwrap();
+        let pts = ps.points();
+        let hull_points = oracle::convex_hull_edges(pts).len();
+        let all = oracle::all_triangulations(pts);
+        let step = (all.len() / 40).max(1);
+        for t in all.iter().step_by(step) {
+            let tri = Triangulation::from_triangles(&ps, to_input(&ps, t)).unwrap();
+            let s = tri.stats();
+            let p = |i: u32| pts[i as usize];
+            let longest = oracle::max_edge_squared(pts, t);
+            let first_longest = oracle::triangle_edges(t)
+                .into_iter()
+                .map(|e| e.map(|d| ps.input_index(d)))
+                .map(|[a, b]| [a.min(b), a.max(b)])
+                .filter(|e| {
+                    let d = e.map(|i| ps.distinct_index(i));
+                    oracle::squared_length(p(d[0]), p(d[1])) == longest
+                })
+                .min()
+                .unwrap();
+            assert_eq!(tri.longest_edge(), first_longest, "{label}");
+            assert_eq!(s.longest_edge, first_longest, "{label}");
+            assert!(
+                close(s.max_edge_length, oracle::rational_to_f64(&longest).sqrt()),
+                "{label}"
+            );
+            assert!(
+                close(s.total_edge_length, oracle::total_length(pts, t)),
+                "{label}"
+            );
+            let half = |r: BigRational| oracle::rational_to_f64(&r) / 2.0;
+            assert!(
+                close(s.min_area, half(oracle::min_twice_area(pts, t))),
+                "{label}"
+            );
+            assert!(
+                close(s.max_area, half(oracle::max_twice_area(pts, t))),
+                "{label}"
+            );
+            assert_eq!(s.triangles, t.len());
+            assert_eq!(s.edges, oracle::triangle_edges(t).len());
+            assert_eq!(s.hull_points, hull_points, "{label}");
+            assert!(s.min_angle_deg > 0.0 && s.max_angle_deg < 180.0);
+            checked += 1;
+        }
+    }
+    assert!(checked > 300, "{checked}");
+}
