@@ -439,3 +439,29 @@ fn planar_graph_faces_of_hull_with_rng_or_mst() {
     }
     assert!(cracked > 20, "{cracked}");
 }
+
+/// `triangulate(_, Criterion::Delaunay)` returns an exact, valid Delaunay
+/// triangulation (checked by the oracle), on random and cocircular input.
+#[test]
+fn delaunay_criterion_solution_is_delaunay() {
+    let mut rng = StdRng::seed_from_u64(3);
+    let mut inputs = vec![circle_points(325), grid(7, 5, 0.1)];
+    for n in [10, 50, 200] {
+        inputs.push(integers(&mut rng, n, 30));
+        inputs.push(uniform(&mut rng, n));
+    }
+    for input in inputs {
+        let ps = PointSet::new(&input).unwrap();
+        let s = optri::triangulate(&ps, optri::Criterion::Delaunay).unwrap();
+        assert_eq!(s.criterion, optri::Criterion::Delaunay);
+        assert!(s.exact);
+        s.triangulation.validate().unwrap();
+        let tris: Vec<[u32; 3]> = s
+            .triangulation
+            .triangles()
+            .iter()
+            .map(|t| t.map(|i| ps.distinct_index(i)))
+            .collect();
+        oracle::delaunay_check(ps.points(), &tris).unwrap();
+    }
+}
