@@ -465,3 +465,22 @@ fn delaunay_criterion_solution_is_delaunay() {
         oracle::delaunay_check(ps.points(), &tris).unwrap();
     }
 }
+
+/// Coordinates at the ends of the accepted range, 2^201 and 2^-142, alone
+/// and mixed in one set.
+#[test]
+fn coordinates_at_the_range_limits() {
+    let mut rng = StdRng::seed_from_u64(19);
+    let (top, bottom) = (2f64.powi(201), 2f64.powi(-142));
+    for case in 0..12 {
+        let base = integers(&mut rng, 12 + case, 5);
+        let scale = [top / 4.0, bottom, -top / 4.0, -bottom][case % 4];
+        let mut input: Vec<Point> = base.iter().map(|p| [p[0] * scale, p[1] * scale]).collect();
+        if case >= 4 {
+            // Mixed: tiny points near the origin among huge ones.
+            input.extend([[bottom, 0.0], [0.0, bottom], [bottom * 3.0, bottom * 5.0]]);
+            input.extend([[top, top], [-top, top], [top, 0.0]]);
+        }
+        check(&input, ALL, &format!("range limits {case}"));
+    }
+}

@@ -320,3 +320,21 @@ fn stats_and_longest_edge_match_the_oracle() {
     }
     assert!(checked > 300, "{checked}");
 }
+
+/// Regression: a triangle naming a *dropped* duplicate (not the first
+/// occurrence) used to be accepted, and then `edges()` / `stats().edges`
+/// counted one geometric edge twice ([0, 2] and [2, 4] below).
+#[test]
+fn triangles_must_use_the_first_occurrence_of_a_duplicate() {
+    let input = [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0], [0.0, 0.0]];
+    let ps = PointSet::new(&input).unwrap();
+    let good = Triangulation::from_triangles(&ps, vec![[0, 1, 2], [0, 2, 3]]).unwrap();
+    assert_eq!(good.edges().len(), 5);
+    assert_eq!(good.stats().edges, 5);
+    let err = Triangulation::from_triangles(&ps, vec![[0, 1, 2], [4, 2, 3]]).unwrap_err();
+    assert!(
+        matches!(err, optri::Error::InvalidTriangulation(_)),
+        "{err}"
+    );
+    assert!(err.to_string().contains("duplicate"), "{err}");
+}
