@@ -199,6 +199,31 @@ fn cocircular_pythagorean_sets() {
     }
 }
 
+/// Points on a circle computed in floating point: nearly (not exactly)
+/// cocircular, so every in-circle and lune decision is a near tie.
+#[test]
+fn nearly_cocircular_float_sets() {
+    let mut rng = StdRng::seed_from_u64(23);
+    for case in 0..12 {
+        let n = 8 + 6 * case;
+        let (cx, cy, r) = (
+            rng.gen_range(-1e3..1e3),
+            rng.gen_range(-1e3..1e3),
+            10f64.powi(case as i32 % 5 - 2),
+        );
+        let mut input: Vec<Point> = (0..n)
+            .map(|k| {
+                let th = std::f64::consts::TAU * k as f64 / n as f64;
+                [cx + r * th.cos(), cy + r * th.sin()]
+            })
+            .collect();
+        if case % 2 == 1 {
+            input.push([cx, cy]);
+        }
+        check(&input, ALL, &format!("near-cocircular {case}"));
+    }
+}
+
 #[test]
 fn duplicates_are_merged_and_outputs_use_kept_copies() {
     let mut rng = StdRng::seed_from_u64(13);
