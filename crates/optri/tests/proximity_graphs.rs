@@ -209,7 +209,7 @@ fn nearly_cocircular_float_sets() {
         let (cx, cy, r) = (
             rng.gen_range(-1e3..1e3),
             rng.gen_range(-1e3..1e3),
-            10f64.powi(case as i32 % 5 - 2),
+            10f64.powi(case % 5 - 2),
         );
         let mut input: Vec<Point> = (0..n)
             .map(|k| {
