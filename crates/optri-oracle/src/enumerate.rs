@@ -332,3 +332,40 @@ impl Ord for TotalF64 {
         self.0.total_cmp(&other.0)
     }
 }
+
+/// The segments of [`empty_segments`] sorted by length under the symbolic
+/// perturbation of [`crate::symbolic`] (ties between equal lengths broken as
+/// optri's `kernel::symbolic` specifies, with the indices into `points` as
+/// the perturbation ranks), shortest first.
+pub fn segments_by_perturbed_length(points: &[Point]) -> Vec<[u32; 2]> {
+    let mut segs = empty_segments(points);
+    segs.sort_by(|s, t| crate::symbolic::compare_lengths_perturbed(points, *s, *t));
+    segs
+}
+
+/// The greedy triangulation by its definition: scan the segments that
+/// contain no other point, shortest first (equal lengths in the order of the
+/// symbolic perturbation, see [`segments_by_perturbed_length`]), and keep
+/// each one that does not properly cross a kept one. The kept set is a
+/// maximal non-crossing set, hence a triangulation. Returned like
+/// [`all_triangulations`]' entries. O(n⁴); for small sets.
+///
+/// Unlike a greedy run on the perturbed points, a segment through a third
+/// point is never a candidate (it would bound a flat triangle). For segments
+/// that contain no point, exact proper crossing and crossing after the
+/// perturbation coincide, so no other decision depends on ε.
+pub fn greedy_triangulation(points: &[Point]) -> Vec<[u32; 3]> {
+    assert_distinct(points);
+    let p = |i: u32| points[i as usize];
+    let mut kept: Vec<[u32; 2]> = Vec::new();
+    for s in segments_by_perturbed_length(points) {
+        if kept
+            .iter()
+            .all(|t| !properly_cross(p(s[0]), p(s[1]), p(t[0]), p(t[1])))
+        {
+            kept.push(s);
+        }
+    }
+    kept.sort_unstable();
+    faces_of(points, &kept)
+}

@@ -112,6 +112,12 @@ pub fn to_rational(v: f64) -> BigRational {
     BigRational::from_integer(m) * pow2(e)
 }
 
+/// An exact rational rounded to `f64` (for reporting and tolerance checks).
+pub fn rational_to_f64(r: &BigRational) -> f64 {
+    use num_traits::ToPrimitive;
+    r.to_f64().expect("rational within f64 range")
+}
+
 fn sign<T: Ring>(v: &T) -> i32 {
     if v.is_positive() {
         1

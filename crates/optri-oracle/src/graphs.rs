@@ -14,19 +14,17 @@ struct Exact<T> {
 }
 
 impl<T: Ring> Exact<T> {
-    fn coords(&self, idx: &[usize]) -> Vec<T> {
-        idx.iter()
-            .flat_map(|&i| [self.c[2 * i].clone(), self.c[2 * i + 1].clone()])
-            .collect()
+    fn coords<const N: usize, const M: usize>(&self, idx: [usize; N]) -> [T; M] {
+        std::array::from_fn(|k| self.c[2 * idx[k / 2] + k % 2].clone())
     }
     fn orient(&self, p: usize, q: usize, r: usize) -> Ordering {
-        cross(&self.coords(&[p, q, r])).cmp(&T::zero())
+        cross(&self.coords::<3, 6>([p, q, r])).cmp(&T::zero())
     }
     fn dot(&self, p: usize, q: usize, r: usize) -> Ordering {
-        dot(&self.coords(&[p, q, r])).cmp(&T::zero())
+        dot(&self.coords::<3, 6>([p, q, r])).cmp(&T::zero())
     }
     fn dist2(&self, p: usize, q: usize) -> T {
-        dist2(&self.coords(&[p, q]))
+        dist2(&self.coords::<2, 4>([p, q]))
     }
 }
 
@@ -65,17 +63,33 @@ fn assert_distinct(points: &[Point]) {
     }
 }
 
+/// A fixed pseudo-random permutation of `0..n` (Fisher–Yates with an LCG).
+fn shuffled(n: usize) -> Vec<usize> {
+    let mut v: Vec<usize> = (0..n).collect();
+    let mut state: u64 = 0x9E37_79B9_7F4A_7C15;
+    for i in (1..n).rev() {
+        state = state
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        v.swap(i, (state >> 33) as usize % (i + 1));
+    }
+    v
+}
+
 /// Convex hull edges by definition: `pq` is an edge iff every point lies in
 /// one closed half-plane of line `pq` and no point lies on the open segment
-/// `pq`. Collinear boundary points are thus hull vertices. O(n³).
+/// `pq`. Collinear boundary points are thus hull vertices. O(n³); the third
+/// points are visited in a shuffled order so that spatially sorted inputs
+/// find a witness on each side quickly.
 pub fn convex_hull_edges(points: &[Point]) -> Vec<[u32; 2]> {
     assert_distinct(points);
     fn run<T: Ring>(g: &Exact<T>, n: usize) -> Vec<[u32; 2]> {
+        let order = shuffled(n);
         let mut out = Vec::new();
         for p in 0..n {
             for q in p + 1..n {
                 let (mut left, mut right, mut between) = (false, false, false);
-                for r in 0..n {
+                for &r in &order {
                     match g.orient(p, q, r) {
                         Ordering::Greater => left = true,
                         Ordering::Less => right = true,
@@ -258,4 +272,74 @@ pub fn delaunay_check(points: &[Point], tris: &[[u32; 3]]) -> Result<(), String>
         }
     }
     Ok(())
+}
+
+/// The bounded faces of the plane graph `(points, edges)` (straight, pairwise
+/// non-crossing edges), each as a counter-clockwise cycle of point indices
+/// with the face on the left, in the form [`crate::klincsek()`] takes. A
+/// dangling edge or tree inside a face is walked on both sides, so vertices
+/// may repeat. A face with holes (a disconnected graph) yields one cycle per
+/// boundary component; only the outer component has positive area, and only
+/// cycles of positive area are returned.
+pub fn bounded_faces(points: &[Point], edges: &[[u32; 2]]) -> Vec<Vec<u32>> {
+    let n = points.len();
+    let mut around: Vec<Vec<u32>> = vec![Vec::new(); n];
+    for &[a, b] in edges {
+        around[a as usize].push(b);
+        around[b as usize].push(a);
+    }
+    // Counter-clockwise angular order from the +x direction, exactly: the
+    // upper half-plane (and the +x ray) first, then by orientation.
+    for (v, nb) in around.iter_mut().enumerate() {
+        let o = points[v];
+        let half = |p: Point| -> u8 {
+            if p[1] > o[1] || (p[1] == o[1] && p[0] > o[0]) {
+                0
+            } else {
+                1
+            }
+        };
+        nb.sort_by(|&a, &b| {
+            let (pa, pb) = (points[a as usize], points[b as usize]);
+            half(pa)
+                .cmp(&half(pb))
+                .then_with(|| 0.cmp(&orient(o, pa, pb)))
+        });
+        nb.dedup();
+    }
+    let mut used: std::collections::HashSet<(u32, u32)> = std::collections::HashSet::new();
+    let mut faces = Vec::new();
+    for u in 0..n as u32 {
+        for &v in &around[u as usize] {
+            if used.contains(&(u, v)) {
+                continue;
+            }
+            // Walk: after u → v, leave v along the edge just clockwise of v → u.
+            let mut cycle = Vec::new();
+            let (mut a, mut b) = (u, v);
+            while used.insert((a, b)) {
+                cycle.push(a);
+                let nb = &around[b as usize];
+                let at = nb.iter().position(|&x| x == a).unwrap();
+                let w = nb[(at + nb.len() - 1) % nb.len()];
+                (a, b) = (b, w);
+            }
+            let area: crate::BigRational = (1..cycle.len().saturating_sub(1))
+                .map(|i| {
+                    let p = |k: usize| points[cycle[k] as usize];
+                    let s = orient(p(0), p(i), p(i + 1));
+                    let a = crate::exact::twice_area(p(0), p(i), p(i + 1));
+                    if s < 0 {
+                        -a
+                    } else {
+                        a
+                    }
+                })
+                .sum();
+            if area > crate::BigRational::from_integer(0.into()) {
+                faces.push(cycle);
+            }
+        }
+    }
+    faces
 }

@@ -340,36 +340,150 @@ fn graphs_hold_their_inclusions_on_random_sets() {
             let r = rng_edges(&pts);
             let g = gabriel_edges(&pts);
             assert!(r.iter().all(|e| g.contains(e)));
-            // Kruskal over RNG edges (exact order) gives an MST.
-            let mut sorted = r.clone();
-            sorted.sort_by(|e, f| {
-                compare_squared_lengths(
-                    pts[e[0] as usize],
-                    pts[e[1] as usize],
-                    pts[f[0] as usize],
-                    pts[f[1] as usize],
-                )
-            });
-            let mut parent: Vec<usize> = (0..n).collect();
-            fn find(p: &mut Vec<usize>, x: usize) -> usize {
-                if p[x] != x {
-                    let r = find(p, p[x]);
-                    p[x] = r;
-                }
-                p[x]
-            }
-            let mut tree = Vec::new();
-            for e in sorted {
-                let (a, b) = (
-                    find(&mut parent, e[0] as usize),
-                    find(&mut parent, e[1] as usize),
-                );
-                if a != b {
-                    parent[a] = b;
-                    tree.push(e);
-                }
-            }
+            let tree = mst_from(&pts, &r);
             is_minimum_spanning_tree(&pts, &tree).unwrap();
         }
+    }
+}
+
+/// Klincsek over the (weakly simple) faces of hull ∪ RNG, combined, equals
+/// the exhaustive optimum over triangulations containing those edges.
+#[test]
+fn klincsek_on_faces_of_hull_and_rng_equals_constrained_optimum() {
+    let mut rng = Lcg(21);
+    let mut cracked = 0;
+    for case in 0..60 {
+        let n = 5 + case % 5;
+        let mut pts = rng.points(n, if case % 2 == 0 { 6 } else { 200 });
+        if case % 3 == 1 {
+            // A big triangle around the points: most are interior.
+            pts.truncate(n - 3);
+            pts.extend([[-1000.0, -1000.0], [1000.0, -1000.0], [0.0, 1000.0]]);
+        }
+        // hull ∪ RNG, or hull ∪ MST (a tree: many cracks).
+        let mut g = rng_edges(&pts);
+        if case % 3 == 1 {
+            g = mst_from(&pts, &g);
+        }
+        g.extend(convex_hull_edges(&pts));
+        g.sort_unstable();
+        g.dedup();
+        let faces = bounded_faces(&pts, &g);
+        let k_total: usize = faces.iter().map(|f| f.len() - 2).sum();
+        cracked += faces
+            .iter()
+            .filter(|f| {
+                let mut s = f.to_vec();
+                s.sort_unstable();
+                s.dedup();
+                s.len() < f.len()
+            })
+            .count();
+        let constrained: Vec<Vec<[u32; 3]>> = all_triangulations(&pts)
+            .into_iter()
+            .filter(|t| {
+                let e = triangle_edges(t);
+                g.iter().all(|x| e.contains(x))
+            })
+            .collect();
+        assert!(!constrained.is_empty());
+        assert_eq!(k_total, constrained[0].len(), "faces must tile the hull");
+
+        let union = |c: &dyn Fn(&[u32]) -> Vec<[u32; 3]>| {
+            let mut all: Vec<[u32; 3]> = faces.iter().flat_map(|f| c(f)).collect();
+            all.sort_unstable();
+            all
+        };
+        // Bottleneck: the max over faces.
+        let best = constrained
+            .iter()
+            .map(|t| max_edge_squared(&pts, t))
+            .min()
+            .unwrap();
+        let dp = faces
+            .iter()
+            .map(|f| klincsek(&pts, f, MinMaxLength).unwrap().0)
+            .max()
+            .unwrap();
+        assert_eq!(dp, best, "case {case}");
+        let t = union(&|f| klincsek(&pts, f, MinMaxLength).unwrap().1);
+        assert!(constrained.contains(&t));
+        assert_eq!(max_edge_squared(&pts, &t), best);
+        // Minmax and maxmin area.
+        let best = constrained
+            .iter()
+            .map(|t| max_twice_area(&pts, t))
+            .min()
+            .unwrap();
+        let t = union(&|f| klincsek(&pts, f, MinMaxArea).unwrap().1);
+        assert!(constrained.contains(&t));
+        assert_eq!(max_twice_area(&pts, &t), best, "case {case}");
+        let best = constrained
+            .iter()
+            .map(|t| min_twice_area(&pts, t))
+            .max()
+            .unwrap();
+        let t = union(&|f| klincsek(&pts, f, MaxMinArea).unwrap().1);
+        assert!(constrained.contains(&t));
+        assert_eq!(min_twice_area(&pts, &t), best, "case {case}");
+    }
+    assert!(cracked > 5, "{cracked} faces with cracks");
+}
+
+/// Kruskal over `candidates` in exact length order (an MST if they contain one).
+fn mst_from(pts: &[Point], candidates: &[[u32; 2]]) -> Vec<[u32; 2]> {
+    let mut sorted = candidates.to_vec();
+    sorted.sort_by(|e, f| {
+        compare_squared_lengths(
+            pts[e[0] as usize],
+            pts[e[1] as usize],
+            pts[f[0] as usize],
+            pts[f[1] as usize],
+        )
+    });
+    fn find(p: &mut [usize], x: usize) -> usize {
+        if p[x] != x {
+            let r = find(p, p[x]);
+            p[x] = r;
+        }
+        p[x]
+    }
+    let mut parent: Vec<usize> = (0..pts.len()).collect();
+    let mut tree = Vec::new();
+    for e in sorted {
+        let (a, b) = (
+            find(&mut parent, e[0] as usize),
+            find(&mut parent, e[1] as usize),
+        );
+        if a != b {
+            parent[a] = b;
+            tree.push(e);
+        }
+    }
+    tree
+}
+
+/// The greedy triangulation is the one whose edge list, sorted by the
+/// (perturbed) length order, is lexicographically smallest: an exchange
+/// argument, checked here exhaustively.
+#[test]
+fn greedy_is_the_lexicographically_smallest_triangulation() {
+    let mut rng = Lcg(8);
+    for case in 0..40 {
+        let n = 4 + case % 6;
+        let pts = if case % 5 == 4 {
+            grid(3, 3)
+        } else {
+            rng.points(n, if case % 2 == 0 { 5 } else { 300 })
+        };
+        let order = segments_by_perturbed_length(&pts);
+        let rank = |e: &[u32; 2]| order.iter().position(|s| s == e).unwrap();
+        let (_, best) = optimum_by(&pts, |t| {
+            let mut r: Vec<usize> = triangle_edges(t).iter().map(rank).collect();
+            r.sort_unstable();
+            r
+        });
+        assert_eq!(best.len(), 1, "the perturbed order is total");
+        assert_eq!(greedy_triangulation(&pts), best[0], "case {case}");
     }
 }
