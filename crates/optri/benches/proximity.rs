@@ -9,7 +9,9 @@ use rand::{rngs::StdRng, Rng, SeedableRng};
 
 fn uniform(n: usize, seed: u64) -> Vec<[f64; 2]> {
     let mut rng = StdRng::seed_from_u64(seed);
-    (0..n).map(|_| [rng.gen::<f64>(), rng.gen::<f64>()]).collect()
+    (0..n)
+        .map(|_| [rng.gen::<f64>(), rng.gen::<f64>()])
+        .collect()
 }
 
 fn proximity(c: &mut Criterion) {
@@ -21,20 +23,29 @@ fn proximity(c: &mut Criterion) {
         group.bench_with_input(BenchmarkId::new("spade_delaunay", n), &ps, |b, ps| {
             b.iter(|| optri::delaunay(ps).unwrap())
         });
-        let dpts: Vec<delaunator::Point> = points.iter().map(|p| delaunator::Point { x: p[0], y: p[1] }).collect();
-        group.bench_with_input(BenchmarkId::new("delaunator", n), &dpts, |b, d| b.iter(|| delaunator::triangulate(d)));
+        let dpts: Vec<delaunator::Point> = points
+            .iter()
+            .map(|p| delaunator::Point { x: p[0], y: p[1] })
+            .collect();
+        group.bench_with_input(BenchmarkId::new("delaunator", n), &dpts, |b, d| {
+            b.iter(|| delaunator::triangulate(d))
+        });
         group.bench_with_input(BenchmarkId::new("delaunay_edges", n), &ps, |b, ps| {
             b.iter(|| optri::delaunay_edges(ps).unwrap())
         });
-        group.bench_with_input(BenchmarkId::new("relative_neighborhood_graph", n), &ps, |b, ps| {
-            b.iter(|| optri::relative_neighborhood_graph(ps).unwrap())
-        });
+        group.bench_with_input(
+            BenchmarkId::new("relative_neighborhood_graph", n),
+            &ps,
+            |b, ps| b.iter(|| optri::relative_neighborhood_graph(ps).unwrap()),
+        );
         group.bench_with_input(BenchmarkId::new("gabriel_graph", n), &ps, |b, ps| {
             b.iter(|| optri::gabriel_graph(ps).unwrap())
         });
-        group.bench_with_input(BenchmarkId::new("minimum_spanning_tree", n), &ps, |b, ps| {
-            b.iter(|| optri::minimum_spanning_tree(ps).unwrap())
-        });
+        group.bench_with_input(
+            BenchmarkId::new("minimum_spanning_tree", n),
+            &ps,
+            |b, ps| b.iter(|| optri::minimum_spanning_tree(ps).unwrap()),
+        );
     }
     group.finish();
 }

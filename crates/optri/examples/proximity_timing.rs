@@ -48,16 +48,24 @@ fn non_delaunay_edges(points: &[[f64; 2]], triangles: &[[usize; 3]]) -> usize {
 }
 
 fn delaunator_triangles(points: &[[f64; 2]]) -> Vec<[usize; 3]> {
-    let pts: Vec<delaunator::Point> = points.iter().map(|p| delaunator::Point { x: p[0], y: p[1] }).collect();
+    let pts: Vec<delaunator::Point> = points
+        .iter()
+        .map(|p| delaunator::Point { x: p[0], y: p[1] })
+        .collect();
     let t = delaunator::triangulate(&pts);
     // delaunator's triangles are clockwise in a y-up frame; orientation is irrelevant here.
     t.triangles.chunks(3).map(|c| [c[0], c[1], c[2]]).collect()
 }
 
 fn main() {
-    let n: usize = std::env::args().nth(1).and_then(|s| s.parse().ok()).unwrap_or(1_000_000);
+    let n: usize = std::env::args()
+        .nth(1)
+        .and_then(|s| s.parse().ok())
+        .unwrap_or(1_000_000);
     let mut rng = StdRng::seed_from_u64(2026);
-    let points: Vec<[f64; 2]> = (0..n).map(|_| [rng.gen::<f64>(), rng.gen::<f64>()]).collect();
+    let points: Vec<[f64; 2]> = (0..n)
+        .map(|_| [rng.gen::<f64>(), rng.gen::<f64>()])
+        .collect();
     let ps = PointSet::new(&points).expect("valid points");
     println!("uniform random points: n = {n}");
     let (dt, t_spade) = secs(|| optri::delaunay(&ps).unwrap());
@@ -66,8 +74,16 @@ fn main() {
     let (rng_edges, t_rng) = secs(|| optri::relative_neighborhood_graph(&ps).unwrap());
     let (gabriel, t_gabriel) = secs(|| optri::gabriel_graph(&ps).unwrap());
     let (mst, t_mst) = secs(|| optri::minimum_spanning_tree(&ps).unwrap());
-    println!("  spade Delaunay (optri::delaunay)   {:8.3} s  ({} triangles)", t_spade, dt.triangles().len());
-    println!("  delaunator                         {:8.3} s  ({} triangles)", t_delaunator, dtor.len());
+    println!(
+        "  spade Delaunay (optri::delaunay)   {:8.3} s  ({} triangles)",
+        t_spade,
+        dt.triangles().len()
+    );
+    println!(
+        "  delaunator                         {:8.3} s  ({} triangles)",
+        t_delaunator,
+        dtor.len()
+    );
     println!("  Delaunay graph (edges + adjacency) {:8.3} s", t_dt_edges);
     println!(
         "  RNG (Delaunay graph + lune search) {:8.3} s  ({} edges); RNG alone ≈ {:.3} s = {:.2}× the Delaunay graph",
@@ -76,8 +92,16 @@ fn main() {
         t_rng - t_dt_edges,
         (t_rng - t_dt_edges) / t_dt_edges
     );
-    println!("  Gabriel graph                      {:8.3} s  ({} edges)", t_gabriel, gabriel.len());
-    println!("  minimum spanning tree              {:8.3} s  ({} edges)", t_mst, mst.len());
+    println!(
+        "  Gabriel graph                      {:8.3} s  ({} edges)",
+        t_gabriel,
+        gabriel.len()
+    );
+    println!(
+        "  minimum spanning tree              {:8.3} s  ({} edges)",
+        t_mst,
+        mst.len()
+    );
 
     let m = 100_000;
     let mut rng = StdRng::seed_from_u64(7);
