@@ -431,3 +431,96 @@ fn the_tests_exercise_every_branch() {
     let c = |i: usize| COUNTERS[i].load(std::sync::atomic::Ordering::Relaxed);
     assert!(c(CASE_1) > 0 && c(CASE_2) > 0 && c(FLAT_TRIANGLES) > 0);
 }
+
+// ---- against the independent oracle crate (exact rationals) ----
+
+use optri_oracle::{
+    all_triangulations, bounded_faces, convex_hull_edges, klincsek, max_edge_squared, rng_edges,
+    MinMaxLength,
+};
+
+/// Squared longest edge of `t`, exactly, by the oracle's rational arithmetic.
+fn oracle_max_edge(t: &Triangulation) -> optri_oracle::BigRational {
+    max_edge_squared(t.point_set().input_points(), t.triangles())
+}
+
+#[test]
+fn oracle_exhaustive_enumeration_agrees() {
+    let mut rng = StdRng::seed_from_u64(7);
+    for round in 0..400 {
+        let n = rng.gen_range(3..=8);
+        let pts: Vec<Point> = if round % 2 == 0 {
+            (0..n)
+                .map(|_| [rng.gen_range(0..4) as f64, rng.gen_range(0..3) as f64])
+                .collect()
+        } else {
+            (0..n)
+                .map(|_| [rng.gen_range(-50.0..50.0), rng.gen_range(-50.0..50.0)])
+                .collect()
+        };
+        let Ok(ps) = PointSet::new(&pts) else {
+            continue;
+        };
+        let best = all_triangulations(ps.points())
+            .iter()
+            .map(|t| max_edge_squared(ps.points(), t))
+            .min()
+            .unwrap();
+        for t in [minmax_length(&ps).unwrap(), quadratic_only(&ps)] {
+            t.validate().unwrap();
+            assert_eq!(oracle_max_edge(&t), best, "{pts:?}");
+        }
+    }
+}
+
+/// The oracle's Klincsek program on the faces of its own hull ∪ RNG(S)
+/// (the unperturbed, strict-lune RNG; literature.md §a reports this forced
+/// subgraph keeps the optimum): an independent cubic reference.
+fn oracle_cubic(points: &[Point]) -> optri_oracle::BigRational {
+    let ps = PointSet::new(points).unwrap();
+    let p = ps.points();
+    let mut edges = convex_hull_edges(p);
+    edges.extend(rng_edges(p));
+    edges.sort_unstable();
+    edges.dedup();
+    bounded_faces(p, &edges)
+        .iter()
+        .map(|f| klincsek(p, f, MinMaxLength).expect("face triangulable").0)
+        .max()
+        .unwrap()
+}
+
+#[test]
+fn oracle_cubic_reference_agrees_on_random_sets_and_grids() {
+    let mut rng = StdRng::seed_from_u64(8);
+    for round in 0..30 {
+        let n = rng.gen_range(10..=60);
+        let pts: Vec<Point> = if round % 2 == 0 {
+            (0..n)
+                .map(|_| [rng.gen_range(0..7) as f64, rng.gen_range(0..7) as f64])
+                .collect()
+        } else {
+            (0..n)
+                .map(|_| [rng.gen::<f64>(), rng.gen::<f64>()])
+                .collect()
+        };
+        let ps = PointSet::new(&pts).unwrap();
+        let want = oracle_cubic(&pts);
+        for t in [minmax_length(&ps).unwrap(), quadratic_only(&ps)] {
+            assert_eq!(oracle_max_edge(&t), want, "{pts:?}");
+        }
+    }
+}
+
+#[test]
+fn oracle_cubic_reference_agrees_on_small_tsplib_files() {
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../../shared/data/tsplib");
+    for name in ["berlin52", "kroA100", "ch150", "ts225"] {
+        let pts = read_tsp(&dir.join(format!("{name}.tsp")));
+        let ps = PointSet::new(&pts).unwrap();
+        let want = oracle_cubic(&pts);
+        for t in [minmax_length(&ps).unwrap(), quadratic_only(&ps)] {
+            assert_eq!(oracle_max_edge(&t), want, "{name}");
+        }
+    }
+}
