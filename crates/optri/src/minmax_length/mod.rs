@@ -311,8 +311,7 @@ pub(crate) fn minmax_length_timed(
 }
 
 /// The method's name, as reported by [`crate::triangulate`].
-const ALGORITHM: &str =
-    "Edelsbrunner–Tan: hull ∪ RNG(perturbed) decomposition, §5.1/§5.3/§6 polygon algorithm on the symbolic perturbation, §5.4 flat-triangle repair";
+const ALGORITHM: &str = "Edelsbrunner–Tan O(n²): hull ∪ RNG(S′) regions; §5.1 incomplete and §5.3/§6 complete rng-polygons on the symbolic perturbation (exact cubic DP for regions under 12 corners, cubic DP on S′ for §6 Case 2 remainders); §5.4 flat-triangle repair";
 
 /// The quadratic algorithm on every region with at least `cubic_below`
 /// corners (0 or 4: on all of them). For tests and benchmarks.
