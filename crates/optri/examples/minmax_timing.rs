@@ -121,6 +121,18 @@ fn main() {
                 );
             }
         }
+        "cutoff" => {
+            // cutoff N c…: the product's polygon phase with the quadratic
+            // algorithm on regions of at least c corners.
+            let n = sizes.first().copied().unwrap_or(200_000);
+            let mut rng = StdRng::seed_from_u64(1);
+            let pts: Vec<[f64; 2]> = (0..n).map(|_| [rng.gen(), rng.gen()]).collect();
+            let ps = PointSet::new(&pts).unwrap();
+            for &c in &sizes[1..] {
+                let (_, t) = secs(|| optri::minmax_length::minmax_length_with(&ps, c).unwrap());
+                println!("uniform n={n}, quadratic from {c} corners: {t:.3} s");
+            }
+        }
         _ => eprintln!("modes: uniform N | convex N... | cubic N..."),
     }
     println!("peak memory: {}", peak_memory());
