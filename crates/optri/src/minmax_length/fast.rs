@@ -200,18 +200,6 @@ pub(crate) struct FastRegion<'a> {
     geo: Region<'a>,
 }
 
-/// Packed rows of bits: `row[a]` bit `b` = "the half-lune `η_{ab}` holds no vertex".
-struct Bits {
-    words: usize,
-    data: Vec<u64>,
-}
-
-impl Bits {
-    fn get(&self, a: usize, b: usize) -> bool {
-        self.data[a * self.words + b / 64] >> (b % 64) & 1 == 1
-    }
-}
-
 impl<'a> FastRegion<'a> {
     pub fn new(points: &'a [Point], v: &'a [u32], mesh: &'a Mesh<'a>) -> Res<Self> {
         let k = v.len();
@@ -435,65 +423,51 @@ impl<'a> FastRegion<'a> {
                 None => std::borrow::Cow::Owned(self.visible(a)),
             }
         };
-        let words = k.div_ceil(64);
         // Step 1: per corner, the stack scan over its diagonals in angular
         // order; what remains on the stack has an empty half-lune.
-        let rows: Vec<(Vec<u64>, Vec<u32>)> =
-            map_corners::<_, Vec<_>>(k, |a| -> Res<(Vec<u64>, Vec<u32>)> {
-                let vis = visible(a);
-                let o = self.v[a];
-                let mut stack: Vec<usize> = Vec::new();
-                for &b in vis.iter() {
-                    let x = self.v[b];
-                    while let Some(&top) = stack.last() {
-                        if x != self.v[top] && in_half_lune_symbolic(self.points, o, self.v[top], x)
-                        {
-                            stack.pop();
-                        } else {
-                            break;
-                        }
+        let ccw_of: Vec<Vec<u32>> = map_corners::<_, Vec<_>>(k, |a| -> Vec<u32> {
+            let vis = visible(a);
+            let o = self.v[a];
+            let mut stack: Vec<usize> = Vec::new();
+            for &b in vis.iter() {
+                let x = self.v[b];
+                while let Some(&top) = stack.last() {
+                    if x != self.v[top] && in_half_lune_symbolic(self.points, o, self.v[top], x) {
+                        stack.pop();
+                    } else {
+                        break;
                     }
-                    stack.push(b);
                 }
-                let mut row = vec![0u64; words];
-                for &b in &stack {
-                    row[b / 64] |= 1 << (b % 64);
-                }
-                // Edges and 1-edges with their beneath side counter-clockwise
-                // (towards later diagonals), as offsets; the boundary edge
-                // a → a+1 starts the scan whatever its type (§6 step 2).
-                let mut ccw: Vec<u32> = stack.iter().map(|&b| self.off(a, b) as u32).collect();
-                if ccw.first() != Some(&1) {
-                    ccw.insert(0, 1);
-                }
-                Ok((row, ccw))
-            })
-            .into_iter()
-            .collect::<Res<_>>()?;
-        let mut empty = Bits {
-            words,
-            data: Vec::with_capacity(k * words),
-        };
-        let mut ccw_of = Vec::with_capacity(k);
-        for (row, ccw) in rows {
-            empty.data.extend_from_slice(&row);
-            ccw_of.push(ccw);
+                stack.push(b);
+            }
+            // Edges and 1-edges with their beneath side counter-clockwise
+            // (towards later diagonals), as offsets in increasing order; the
+            // boundary edge a → a+1 starts the scan whatever its type (§6 step 2).
+            let mut ccw: Vec<u32> = stack.iter().map(|&b| self.off(a, b) as u32).collect();
+            if ccw.first() != Some(&1) {
+                ccw.insert(0, 1);
+            }
+            ccw
+        });
+        // `η_{ab}` is empty iff `off(a, b)` is in `ccw_of[a]`.
+        let left_empty =
+            |a: usize, b: usize| ccw_of[a].binary_search(&(self.off(a, b) as u32)).is_ok();
+        // Step 2 (the clockwise half): at b, the diagonals bc whose clockwise
+        // side is empty, i.e. η_{cb} empty — the transpose of the lists above.
+        let mut cw_of: Vec<Vec<u32>> = vec![Vec::new(); k];
+        for (a, list) in ccw_of.iter().enumerate() {
+            for &o in list {
+                let b = self.at(a, o as usize);
+                cw_of[b].push(self.off(b, a) as u32);
+            }
         }
-        // Step 2 (the clockwise half): 1-edges with their beneath side clockwise.
-        let cw_of: Vec<Vec<u32>> = map_corners::<_, Vec<_>>(k, |a| -> Res<Vec<u32>> {
-            let mut cw: Vec<u32> = visible(a)
-                .iter()
-                .copied()
-                .filter(|&c| empty.get(c, a))
-                .map(|c| self.off(a, c) as u32)
-                .collect();
+        for cw in &mut cw_of {
+            cw.sort_unstable();
+            cw.dedup();
             if cw.last() != Some(&(k as u32 - 1)) {
                 cw.push(k as u32 - 1);
             }
-            Ok(cw)
-        })
-        .into_iter()
-        .collect::<Res<_>>()?;
+        }
         // Predecessor / successor offsets in a sorted list.
         let below = |list: &[u32], x: usize| -> usize {
             let i = list.partition_point(|&o| (o as usize) < x);
@@ -509,7 +483,7 @@ impl<'a> FastRegion<'a> {
                 let mut best: Option<[usize; 6]> = None;
                 for &b in visible(a).iter() {
                     let ob = self.off(a, b);
-                    if b < a || ob < 2 || ob > k - 2 || empty.get(a, b) || empty.get(b, a) {
+                    if b < a || ob < 2 || ob > k - 2 || left_empty(a, b) || left_empty(b, a) {
                         continue;
                     }
                     let oa = self.off(b, a);

@@ -91,14 +91,14 @@ use crate::criterion::{timed, Phase};
 use crate::delaunay::{delaunay_graph, DelaunayGraph};
 use crate::error::Result;
 use crate::kernel::orient_sign;
-use crate::kernel::{compare_lengths, in_lune_symbolic, Point};
+use crate::kernel::{compare_lengths, in_lune, in_lune_symbolic, Point};
 use crate::planar_graph::PlanarGraph;
 use crate::point_set::PointSet;
 use crate::triangulation::Triangulation;
 use fast::{FastRegion, Mesh};
 use polygon::Region;
 use rayon::prelude::*;
-use std::cmp::Ordering::Greater;
+use std::cmp::Ordering::{Greater, Less};
 use std::collections::HashMap;
 use std::sync::atomic::{AtomicUsize, Ordering as AtomicOrdering};
 
@@ -126,11 +126,22 @@ fn perturbed_lune_is_occupied(
                 continue;
             }
             seen[x as usize] = stamp;
-            if compare_lengths(points[x as usize], pp, pp, pq) == Greater {
-                continue;
+            let px = points[x as usize];
+            let to_p = compare_lengths(px, pp, pp, pq);
+            if to_p == Greater {
+                continue; // outside the closed disc around p: not expanded
             }
-            if x != q && in_lune_symbolic(points, p, q, x) {
-                return true;
+            if x != q {
+                let to_q = compare_lengths(px, pq, pp, pq);
+                let inside = match (to_p, to_q) {
+                    (Less, Less) => true,
+                    (_, Greater) => false,
+                    // On the lune's boundary: the perturbation decides.
+                    _ => in_lune_symbolic(points, p, q, x),
+                };
+                if inside {
+                    return true;
+                }
             }
             stack.push(x);
         }
@@ -151,10 +162,11 @@ pub(crate) fn rng_perturbed(points: &[Point], g: &DelaunayGraph) -> Vec<[u32; 2]
             || (vec![0u32; n], 0u32, Vec::new()),
             |(seen, stamp, stack), &([u, v], apexes)| {
                 // An apex strictly in the lune settles most non-RNG edges.
+                let (pu, pv) = (points[u as usize], points[v as usize]);
                 if apexes
                     .iter()
                     .flatten()
-                    .any(|&a| in_lune_symbolic(points, u, v, a))
+                    .any(|&a| in_lune(pu, pv, points[a as usize]))
                 {
                     return None;
                 }
@@ -375,10 +387,10 @@ fn repair_flat_triangles(points: &[Point], triangles: Vec<[u32; 3]>) -> Vec<[u32
     }
     // Points of each component, sorted along its line (lexicographic order
     // is an order along any line).
+    let root: Vec<usize> = (0..flat.len()).map(|i| find(&mut parent, i)).collect();
     let mut members: HashMap<usize, Vec<u32>> = HashMap::new();
     for (i, t) in flat.iter().enumerate() {
-        let root = find(&mut parent, i);
-        members.entry(root).or_default().extend_from_slice(t);
+        members.entry(root[i]).or_default().extend_from_slice(t);
     }
     let lex = |a: &u32, b: &u32| {
         let (pa, pb) = (p(*a), p(*b));
@@ -394,7 +406,7 @@ fn repair_flat_triangles(points: &[Point], triangles: Vec<[u32; 3]>) -> Vec<[u32
         let split = (0..3).find_map(|j| {
             let (u, w, y) = (t[j], t[(j + 1) % 3], t[(j + 2) % 3]);
             let &f = by_edge.get(&key(u, w))?;
-            let line = &members[&find(&mut parent.clone(), f)];
+            let line = &members[&root[f]];
             let iu = line.iter().position(|&m| m == u)?;
             let iw = line.iter().position(|&m| m == w)?;
             (iu.abs_diff(iw) > 1).then(|| {
