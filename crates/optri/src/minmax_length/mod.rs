@@ -126,22 +126,24 @@ fn perturbed_lune_is_occupied(
                 continue;
             }
             seen[x as usize] = stamp;
+            if x == q {
+                stack.push(x); // on the disc's boundary; comparing |qp| with itself is moot
+                continue;
+            }
             let px = points[x as usize];
             let to_p = compare_lengths(px, pp, pp, pq);
             if to_p == Greater {
                 continue; // outside the closed disc around p: not expanded
             }
-            if x != q {
-                let to_q = compare_lengths(px, pq, pp, pq);
-                let inside = match (to_p, to_q) {
-                    (Less, Less) => true,
-                    (_, Greater) => false,
-                    // On the lune's boundary: the perturbation decides.
-                    _ => in_lune_symbolic(points, p, q, x),
-                };
-                if inside {
-                    return true;
-                }
+            let to_q = compare_lengths(px, pq, pp, pq);
+            let inside = match (to_p, to_q) {
+                (Less, Less) => true,
+                (_, Greater) => false,
+                // On the lune's boundary: the perturbation decides.
+                _ => in_lune_symbolic(points, p, q, x),
+            };
+            if inside {
+                return true;
             }
             stack.push(x);
         }

@@ -47,6 +47,9 @@ impl<'a> Region<'a> {
     /// Compares `|ab|` with `|cd|` (indices).
     #[inline]
     pub fn compare_lengths(&self, ab: [u32; 2], cd: [u32; 2]) -> Ordering {
+        if (ab[0] == cd[0] && ab[1] == cd[1]) || (ab[0] == cd[1] && ab[1] == cd[0]) {
+            return Ordering::Equal; // the same segment: skip the exact fallback
+        }
         if self.symbolic {
             compare_lengths_symbolic(self.points, ab, cd)
         } else {
