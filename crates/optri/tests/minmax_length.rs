@@ -427,9 +427,10 @@ fn the_tests_exercise_every_branch() {
             .collect();
         same_optimum(&pts, "6x6 grid");
     }
-    use optri::minmax_length::{CASE_1, CASE_2, COUNTERS, FLAT_TRIANGLES};
+    use optri::minmax_length::{CASE_1, CASE_2, CASE_2_HULL_FALLBACKS, COUNTERS, FLAT_TRIANGLES};
     let c = |i: usize| COUNTERS[i].load(std::sync::atomic::Ordering::Relaxed);
     assert!(c(CASE_1) > 0 && c(CASE_2) > 0 && c(FLAT_TRIANGLES) > 0);
+    assert_eq!(c(CASE_2_HULL_FALLBACKS), 0);
 }
 
 // ---- against the independent oracle crate (exact rationals) ----

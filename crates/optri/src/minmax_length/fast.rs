@@ -547,26 +547,92 @@ impl<'a> FastRegion<'a> {
             return self.incomplete(ns, self.off(ns, e), out);
         }
         let (vs, ve, vne) = (self.v[s], self.v[e], self.v[ne]);
-        let rest: Vec<u32> = if self.geo.compare_lengths([vne, vs], [vne, ve]) == Ordering::Less {
+        super::count(super::CASE_2, 1);
+        // §6 Case 2 step 1 beyond the shorter-side 1-edge, then steps 2–3 on
+        // the rest: (apex, from … to) is (q, p … q″), or the mirror image.
+        let (apex, from, to) = if self.geo.compare_lengths([vne, vs], [vne, ve]) == Ordering::Less {
             self.incomplete(ne, self.off(ne, e), out)?;
-            (0..=self.off(s, ne))
-                .map(|i| self.v[self.at(s, i)])
-                .chain([ve])
-                .collect()
+            (e, s, ne)
         } else {
             self.incomplete(s, self.off(s, ns), out)?;
-            std::iter::once(vs)
-                .chain((0..=self.off(ns, e)).map(|i| self.v[self.at(ns, i)]))
-                .collect()
+            (s, ns, e)
         };
-        super::count(super::CASE_2, 1);
-        super::count(super::CASE_2_REMAINDER_VERTICES, rest.len());
-        let region = Region {
-            points: self.points,
-            vertices: &rest,
-            symbolic: true,
-        };
-        out.extend(region.minmax_triangulation_cubic());
+        let mark = out.len();
+        if self.hull_fan(apex, from, to, out).is_err() {
+            // Not expected; the whole remainder by the cubic program instead.
+            super::count(super::CASE_2_HULL_FALLBACKS, 1);
+            out.truncate(mark);
+            let rest: Vec<u32> = (0..=self.off(from, to))
+                .map(|i| self.v[self.at(from, i)])
+                .chain([self.v[apex]])
+                .collect();
+            super::count(super::CASE_2_REMAINDER_VERTICES, rest.len());
+            let region = Region {
+                points: self.points,
+                vertices: &rest,
+                symbolic: true,
+            };
+            out.extend(region.minmax_triangulation_cubic());
+        }
+        Ok(())
+    }
+
+    /// §6 Case 2 steps 2–3 on the polygon `from … to` plus `apex`: the convex
+    /// hull `C` of the chain vertices inside the triangle `(apex, from, to)`
+    /// together with `from` and `to`; the side of `C` facing the apex is
+    /// fanned from the apex (Claim 1: shorter than `|pq|`), and each pocket
+    /// between an edge of `C` and the boundary is triangulated by the cubic
+    /// program on `S′` (the paper's §5.1-plus-fan-out construction of step 3,
+    /// Claims 2–5, shows a triangulation with edges shorter than `|pq|`
+    /// exists, so the pocket's optimum is no worse).
+    fn hull_fan(&self, apex: usize, from: usize, to: usize, out: &mut Vec<[u32; 3]>) -> Res<()> {
+        let (va, vf, vt) = (self.v[apex], self.v[from], self.v[to]);
+        let side = self.geo.orient(vf, vt, va);
+        if side == 0 {
+            return Err(Inconsistent("flat Case 2 triangle"));
+        }
+        let span = self.off(from, to);
+        let inside: Vec<usize> = (1..span)
+            .map(|i| self.at(from, i))
+            .filter(|&pos| {
+                let x = self.v[pos];
+                self.geo.orient(vf, vt, x) == side
+                    && self.geo.orient(vt, va, x) == side
+                    && self.geo.orient(va, vf, x) == side
+            })
+            .collect();
+        // Gift wrapping from `from` to `to` along the side facing the apex.
+        let mut chain = vec![from];
+        let mut c = from;
+        while c != to {
+            let mut w = to;
+            for &cand in &inside {
+                if self.geo.orient(self.v[c], self.v[w], self.v[cand]) == side {
+                    w = cand;
+                }
+            }
+            if self.off(from, w) <= self.off(from, c) || chain.len() > inside.len() + 1 {
+                return Err(Inconsistent("hull chain not in boundary order"));
+            }
+            chain.push(w);
+            c = w;
+        }
+        for pair in chain.windows(2) {
+            let (u, w) = (pair[0], pair[1]);
+            out.push([va, self.v[u], self.v[w]]);
+            if self.off(u, w) >= 2 {
+                let pocket: Vec<u32> = (0..=self.off(u, w))
+                    .map(|i| self.v[self.at(u, i)])
+                    .collect();
+                super::count(super::CASE_2_REMAINDER_VERTICES, pocket.len());
+                let region = Region {
+                    points: self.points,
+                    vertices: &pocket,
+                    symbolic: true,
+                };
+                out.extend(region.minmax_triangulation_cubic());
+            }
+        }
         Ok(())
     }
 

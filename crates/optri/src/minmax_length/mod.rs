@@ -234,10 +234,11 @@ pub const SMALL_REGION: usize = 12;
 pub static FALLBACKS: AtomicUsize = AtomicUsize::new(0);
 
 /// Diagnostics for tests and benchmarks: how often §6 Case 1 and Case 2
-/// occurred, the total size of the Case 2 remainders handed to the cubic
-/// program, and how many flat triangles §5.4 removed.
+/// occurred, the total size of the Case 2 pockets handed to the cubic
+/// program, how many flat triangles §5.4 removed, and Case 2 hull fallbacks.
 #[doc(hidden)]
-pub static COUNTERS: [AtomicUsize; 4] = [
+pub static COUNTERS: [AtomicUsize; 5] = [
+    AtomicUsize::new(0),
     AtomicUsize::new(0),
     AtomicUsize::new(0),
     AtomicUsize::new(0),
@@ -255,6 +256,10 @@ pub const CASE_2_REMAINDER_VERTICES: usize = 2;
 /// Index into [`COUNTERS`].
 #[doc(hidden)]
 pub const FLAT_TRIANGLES: usize = 3;
+/// Index into [`COUNTERS`]: §6 Case 2 hull constructions that failed a check
+/// and were replaced by the cubic program on the whole remainder.
+#[doc(hidden)]
+pub const CASE_2_HULL_FALLBACKS: usize = 4;
 
 pub(crate) fn count(which: usize, by: usize) {
     COUNTERS[which].fetch_add(by, AtomicOrdering::Relaxed);
