@@ -621,6 +621,19 @@ impl<'a> FastRegion<'a> {
             let (u, w) = (pair[0], pair[1]);
             out.push([va, self.v[u], self.v[w]]);
             if self.off(u, w) >= 2 {
+                // Step 3.1 with u_L = w: if uw is a 1-edge with pq beneath it
+                // (its half-lune on the apex side holds no vertex), §5.1
+                // triangulates the whole pocket with edges shorter than |uw|.
+                let (vu, vw) = (self.v[u], self.v[w]);
+                let beneath_empty = !self
+                    .v
+                    .iter()
+                    .any(|&x| x != vu && x != vw && in_half_lune_symbolic(self.points, vu, vw, x));
+                if beneath_empty {
+                    super::count(super::CASE_2_POCKETS_BY_5_1, 1);
+                    self.incomplete(u, self.off(u, w), out)?;
+                    continue;
+                }
                 let pocket: Vec<u32> = (0..=self.off(u, w))
                     .map(|i| self.v[self.at(u, i)])
                     .collect();

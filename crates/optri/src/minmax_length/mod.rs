@@ -237,13 +237,7 @@ pub static FALLBACKS: AtomicUsize = AtomicUsize::new(0);
 /// occurred, the total size of the Case 2 pockets handed to the cubic
 /// program, how many flat triangles §5.4 removed, and Case 2 hull fallbacks.
 #[doc(hidden)]
-pub static COUNTERS: [AtomicUsize; 5] = [
-    AtomicUsize::new(0),
-    AtomicUsize::new(0),
-    AtomicUsize::new(0),
-    AtomicUsize::new(0),
-    AtomicUsize::new(0),
-];
+pub static COUNTERS: [AtomicUsize; 6] = [const { AtomicUsize::new(0) }; 6];
 /// Index into [`COUNTERS`].
 #[doc(hidden)]
 pub const CASE_1: usize = 0;
@@ -260,6 +254,10 @@ pub const FLAT_TRIANGLES: usize = 3;
 /// and were replaced by the cubic program on the whole remainder.
 #[doc(hidden)]
 pub const CASE_2_HULL_FALLBACKS: usize = 4;
+/// Index into [`COUNTERS`]: §6 Case 2 pockets closed by a 1-edge with `pq`
+/// beneath it, triangulated by §5.1 (step 3.1 with `u_L = v`).
+#[doc(hidden)]
+pub const CASE_2_POCKETS_BY_5_1: usize = 5;
 
 pub(crate) fn count(which: usize, by: usize) {
     COUNTERS[which].fetch_add(by, AtomicOrdering::Relaxed);
