@@ -9,6 +9,7 @@
 //! | [`FastRegion::visible`] | diagonals at a vertex in angular order (§6 step 1) |
 //! | [`FastRegion::shortest_expandable_2_edge`] | §6 steps 1–3 (stack scan, `p′ p″ q′ q″`, Crossing Lemma) |
 //! | [`FastRegion::triangulate_side`] | §5.3 step 2 and §6 Cases 1–2 (Expandability Lemma) |
+//! | [`FastRegion::hull_fan`] | §6 Case 2 steps 2–3.1 (Claim 1; pockets otherwise by the cubic program) |
 //!
 //! Visibility uses the Delaunay triangles inside the region as a polygon
 //! triangulation: they are non-degenerate in `S`, so they keep their
@@ -528,10 +529,7 @@ impl<'a> FastRegion<'a> {
     ///
     /// Case 1 (`ns = ne = r`): triangle `s r e` and §5.1 beyond `sr` and `re`.
     /// Case 2 (`s·ns` crosses `e·ne`): with `|ne s| < |ne e|` (else the mirror
-    /// image) §5.1 triangulates beyond `e·ne`; the rest, `s … ne` plus `e`, is
-    /// triangulated by the symbolic cubic program (the paper's hull-and-pocket
-    /// construction of §6 Case 2 is not implemented; any optimal triangulation
-    /// of that part is no worse than it, so optimality is kept).
+    /// image) §5.1 beyond `e·ne`, then [`Self::hull_fan`] on the rest.
     pub fn triangulate_side(
         &self,
         s: usize,

@@ -61,15 +61,20 @@
 //!   (inside §6 Case 2, below).
 //!
 //! # Deviation from the paper
-//! §6 Case 2 (the partners `pp′` and `qq″` cross): the part beyond `qq″` is
-//! triangulated by §5.1 as in step 1 of the paper, but the remaining polygon
-//! (`p … q″` plus `q`) is triangulated by the cubic program on `S′` instead of
-//! the paper's hull-of-`V`, pocket and fan-out construction (§5.2). The
-//! Expandability Lemma guarantees that some triangulation of that polygon
-//! uses only edges shorter than `|pq|`, so the optimal one does too and the
-//! result is still optimal; the cost is cubic in the size of that remainder
-//! (a handful of vertices on the inputs measured, see the diagnostics
-//! [`COUNTERS`]).
+//! §6 Case 2 (the partners `pp′` and `qq″` cross) follows steps 1–2 of the
+//! paper: §5.1 beyond `qq″` (or the mirror image), the convex hull `C` of the
+//! vertices inside triangle `pqq″` together with `p, q″`, fanned from `q`.
+//! Of step 3, a pocket closed by an edge `uv` of `C` that is a 1-edge with
+//! `pq` beneath it is triangulated by §5.1 (`u_L = v`). Other pockets (the
+//! paper's search for `u_L`, §5.1 clipped to the pocket, then the §5.2
+//! fan-out) are triangulated by the cubic program on `S′` instead: Claims
+//! 2–5 show a triangulation of the pocket with edges shorter than `|pq|`
+//! exists, so the pocket's optimum is no worse and the result stays optimal.
+//! That costs cubic time in those pockets' sizes (on 2·10⁵ uniform points:
+//! 10 913 Case 2 regions, 5 983 pockets by §5.1, 1 632 vertices in pockets
+//! left to the cubic program; see [`COUNTERS`]). Should the hull chain ever
+//! fail its boundary-order check, the whole remainder goes to the cubic
+//! program (counted in [`CASE_2_HULL_FALLBACKS`]; zero in all tests).
 //!
 //! # Functions and the paper
 //! | function | paper |
@@ -80,6 +85,7 @@
 //! | `fast::FastRegion::visible` | §6 step 1 (diagonals in angular order) |
 //! | `fast::FastRegion::shortest_expandable_2_edge` | §6 steps 1–3, Containment and Crossing Lemmas |
 //! | `fast::FastRegion::triangulate_side` | §5.3 step 2, §6 Cases 1–2, Expandability Lemma |
+//! | `fast::FastRegion::hull_fan` | §6 Case 2 steps 2–3.1, Claim 1 |
 //! | `polygon::Region::minmax_triangulation_cubic` | §3 dynamic program (Klincsek) |
 //! | `repair_flat_triangles` | §5.4, Δ-Lemma |
 
@@ -328,7 +334,7 @@ pub(crate) fn minmax_length_timed(
 }
 
 /// The method's name, as reported by [`crate::triangulate`].
-const ALGORITHM: &str = "Edelsbrunner–Tan O(n²): hull ∪ RNG(S′) regions; §5.1 incomplete and §5.3/§6 complete rng-polygons on the symbolic perturbation (exact cubic DP for regions under 12 corners, cubic DP on S′ for §6 Case 2 remainders); §5.4 flat-triangle repair";
+const ALGORITHM: &str = "Edelsbrunner–Tan O(n²): hull ∪ RNG(S′) regions; §5.1 incomplete and §5.3/§6 complete rng-polygons on the symbolic perturbation (exact cubic DP for regions under 12 corners, cubic DP on S′ for the §6 Case 2 pockets that §5.1 does not cover); §5.4 flat-triangle repair";
 
 /// The quadratic algorithm on every region with at least `cubic_below`
 /// corners (0 or 4: on all of them). For tests and benchmarks.
