@@ -725,14 +725,14 @@ mod tests {
 }
 
 #[cfg(test)]
-mod debug_tests {
+mod consistency_tests {
     use super::*;
     use crate::convex_hull::hull_distinct;
     use crate::delaunay::delaunay_graph;
     use crate::minmax_length::{regions, rng_perturbed};
 
     #[test]
-    fn debug_small() {
+    fn random_regions_never_hit_an_inconsistency() {
         let pts: Vec<Point> = vec![[0.0, 0.0], [4.0, 0.1], [4.2, 3.0], [0.3, 2.9], [2.0, 1.4]];
         let mut s = 7u64;
         let mut next = || {
