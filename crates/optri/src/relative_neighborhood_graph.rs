@@ -76,6 +76,11 @@ impl LocalGraph {
             let w = inside[next];
             next += 1;
             for &x in self.neighbors(w) {
+                // q is on the disc's boundary; testing it would be an exact tie
+                // that always takes the slow path of the predicate.
+                if x == q {
+                    continue;
+                }
                 let px = self.points[x as usize];
                 if compare_lengths(px, pp, pp, pq) != Less || inside.contains(&x) {
                     continue; // outside the open disc around p, or already expanded
@@ -125,23 +130,25 @@ pub(crate) fn rng_from_delaunay(points: &[Point], g: &DelaunayGraph) -> Vec<[u32
     let n = points.len() as u32;
     (0..n)
         .into_par_iter()
-        .with_min_len(1024)
-        .map_init(Vec::new, |inside, p| {
-            let mut kept = Vec::new();
-            for &q in local.neighbors(p) {
-                // Each edge once, searched from its lower-degree endpoint.
-                let (dp, dq) = (local.neighbors(p).len(), local.neighbors(q).len());
-                if (dp, p) > (dq, q) {
-                    continue;
+        .with_min_len(4096)
+        .fold(
+            || (Vec::new(), Vec::new()),
+            |(mut kept, mut inside), p| {
+                for &q in local.neighbors(p) {
+                    // Each edge once, searched from its lower-degree endpoint.
+                    let (dp, dq) = (local.neighbors(p).len(), local.neighbors(q).len());
+                    if (dp, p) < (dq, q) && !local.lune_is_occupied(p, q, &mut inside) {
+                        kept.push([local.original[p as usize], local.original[q as usize]]);
+                    }
                 }
-                if !local.lune_is_occupied(p, q, inside) {
-                    kept.push([local.original[p as usize], local.original[q as usize]]);
-                }
-            }
-            kept
+                (kept, inside)
+            },
+        )
+        .map(|(kept, _)| kept)
+        .reduce(Vec::new, |mut a, mut b| {
+            a.append(&mut b);
+            a
         })
-        .flatten_iter()
-        .collect()
 }
 
 /// The relative neighbourhood graph: edges as sorted `[min, max]` input-index pairs.
