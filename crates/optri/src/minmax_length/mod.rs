@@ -57,24 +57,25 @@
 //!   exactly optimal.
 //! * The cubic program (`polygon::Region::minmax_triangulation_cubic`) runs
 //!   either exactly on `S` (small regions, and the test reference
-//!   [`minmax_length_cubic`]) — it needs no general position — or on `S′`
-//!   (inside §6 Case 2, below).
+//!   [`minmax_length_cubic`]) — it needs no general position — or, only as
+//!   a counted safety net inside §6 Case 2 (below), on `S′`.
 //!
-//! # Deviation from the paper
-//! §6 Case 2 (the partners `pp′` and `qq″` cross) follows steps 1–2 of the
-//! paper: §5.1 beyond `qq″` (or the mirror image), the convex hull `C` of the
-//! vertices inside triangle `pqq″` together with `p, q″`, fanned from `q`.
-//! Of step 3, a pocket closed by an edge `uv` of `C` that is a 1-edge with
-//! `pq` beneath it is triangulated by §5.1 (`u_L = v`). Other pockets (the
-//! paper's search for `u_L`, §5.1 clipped to the pocket, then the §5.2
-//! fan-out) are triangulated by the cubic program on `S′` instead: Claims
-//! 2–5 show a triangulation of the pocket with edges shorter than `|pq|`
-//! exists, so the pocket's optimum is no worse and the result stays optimal.
-//! That costs cubic time in those pockets' sizes (on 2·10⁵ uniform points:
-//! 10 913 Case 2 regions, 5 983 pockets by §5.1, 1 632 vertices in pockets
-//! left to the cubic program; see [`COUNTERS`]). Should the hull chain ever
-//! fail its boundary-order check, the whole remainder goes to the cubic
-//! program (counted in [`CASE_2_HULL_FALLBACKS`]; zero in all tests).
+//! # §6 Case 2
+//! Case 2 (the partners `pp′` and `qq″` cross) follows the paper's three
+//! steps: §5.1 beyond `qq″` (or the mirror image), the convex hull `C` of the
+//! vertices inside triangle `pqq″` together with `p, q″`, fanned from `q`,
+//! and for each pocket `Y_uv` behind an edge `uv` of `C`: step 3.1 finds
+//! `u_L` (`v` itself if `uv` is a 1-edge with `pq` beneath, else the nearest
+//! vertex past `v` meeting Claim 2's conditions), 3.2 keeps the triangles of
+//! §5.1 beyond `uu_L` that lie in the pocket, and 3.3 fans the rest out from
+//! `v` (§5.2). Each pocket's result is checked (triangle count, orientation,
+//! every new edge shorter than `|pq|`, as Claims 1–5 promise); a pocket
+//! failing the check would go to the cubic program on `S′`, counted in
+//! [`CASE_2_POCKET_FALLBACKS`] and [`FALLBACKS`] — zero in all tests. On
+//! 2·10⁵ uniform points: 10 913 Case 2 regions, 5 983 pockets with
+//! `u_L = v`, 294 with the `u_L` search and the fan-out. Should the hull
+//! chain fail its boundary-order check, the whole remainder goes to the
+//! cubic program (counted in [`CASE_2_HULL_FALLBACKS`]; zero in all tests).
 //!
 //! # Functions and the paper
 //! | function | paper |
@@ -85,7 +86,9 @@
 //! | `fast::FastRegion::visible` | §6 step 1 (diagonals in angular order) |
 //! | `fast::FastRegion::shortest_expandable_2_edge` | §6 steps 1–3, Containment and Crossing Lemmas |
 //! | `fast::FastRegion::triangulate_side` | §5.3 step 2, §6 Cases 1–2, Expandability Lemma |
-//! | `fast::FastRegion::hull_fan` | §6 Case 2 steps 2–3.1, Claim 1 |
+//! | `fast::FastRegion::hull_fan` | §6 Case 2 step 2, Claim 1 |
+//! | `fast::FastRegion::pocket` | §6 Case 2 steps 3.1–3.2, Claims 2–5 |
+//! | `fast::FastRegion::fan_out` | §5.2 fan-out triangulation, Fan-Out Lemma |
 //! | `polygon::Region::minmax_triangulation_cubic` | §3 dynamic program (Klincsek) |
 //! | `repair_flat_triangles` | §5.4, Δ-Lemma |
 
@@ -240,10 +243,11 @@ pub const SMALL_REGION: usize = 12;
 pub static FALLBACKS: AtomicUsize = AtomicUsize::new(0);
 
 /// Diagnostics for tests and benchmarks: how often §6 Case 1 and Case 2
-/// occurred, the total size of the Case 2 pockets handed to the cubic
-/// program, how many flat triangles §5.4 removed, and Case 2 hull fallbacks.
+/// occurred, how their pockets were triangulated, the total size of Case 2
+/// parts handed to the cubic safety net, how many flat triangles §5.4
+/// removed, and the safety nets' use.
 #[doc(hidden)]
-pub static COUNTERS: [AtomicUsize; 6] = [const { AtomicUsize::new(0) }; 6];
+pub static COUNTERS: [AtomicUsize; 8] = [const { AtomicUsize::new(0) }; 8];
 /// Index into [`COUNTERS`].
 #[doc(hidden)]
 pub const CASE_1: usize = 0;
@@ -264,6 +268,15 @@ pub const CASE_2_HULL_FALLBACKS: usize = 4;
 /// beneath it, triangulated by §5.1 (step 3.1 with `u_L = v`).
 #[doc(hidden)]
 pub const CASE_2_POCKETS_BY_5_1: usize = 5;
+/// Index into [`COUNTERS`]: §6 Case 2 pockets triangulated by steps 3.1–3.3
+/// (a `u_L ≠ v`, §5.1 clipped to the pocket, the §5.2 fan-out).
+#[doc(hidden)]
+pub const CASE_2_POCKETS_BY_FAN_OUT: usize = 6;
+/// Index into [`COUNTERS`]: §6 Case 2 pockets whose step-3 triangulation
+/// failed a check and were handed to the cubic program on `S′` (also counted
+/// in [`FALLBACKS`]; a bug indicator, asserted zero in tests).
+#[doc(hidden)]
+pub const CASE_2_POCKET_FALLBACKS: usize = 7;
 
 pub(crate) fn count(which: usize, by: usize) {
     COUNTERS[which].fetch_add(by, AtomicOrdering::Relaxed);
@@ -334,7 +347,7 @@ pub(crate) fn minmax_length_timed(
 }
 
 /// The method's name, as reported by [`crate::triangulate`].
-const ALGORITHM: &str = "Edelsbrunner–Tan O(n²): hull ∪ RNG(S′) regions; §5.1 incomplete and §5.3/§6 complete rng-polygons on the symbolic perturbation (exact cubic DP for regions under 12 corners, cubic DP on S′ for the §6 Case 2 pockets that §5.1 does not cover); §5.4 flat-triangle repair";
+const ALGORITHM: &str = "Edelsbrunner–Tan O(n²): hull ∪ RNG(S′) regions; §5.1 incomplete and §5.3/§6 complete rng-polygons on the symbolic perturbation (exact cubic DP for regions under 12 corners; §6 Case 2 pockets by u_L search, clipped §5.1 and §5.2 fan-out); §5.4 flat-triangle repair";
 
 /// The quadratic algorithm on every region with at least `cubic_below`
 /// corners (0 or 4: on all of them). For tests and benchmarks.
