@@ -103,6 +103,7 @@ use crate::kernel::orient_sign;
 use crate::kernel::{compare_lengths, in_lune, in_lune_symbolic, Point};
 use crate::planar_graph::PlanarGraph;
 use crate::point_set::PointSet;
+use crate::relative_neighborhood_graph::morton_order;
 use crate::triangulation::Triangulation;
 use fast::{FastRegion, Mesh};
 use polygon::Region;
@@ -121,22 +122,23 @@ fn perturbed_lune_is_occupied(
     g: &DelaunayGraph,
     p: u32,
     q: u32,
-    seen: &mut [u32],
-    stamp: u32,
-    stack: &mut Vec<u32>,
+    inside: &mut Vec<u32>,
 ) -> bool {
     let (pp, pq) = (points[p as usize], points[q as usize]);
-    stack.clear();
-    stack.push(p);
-    seen[p as usize] = stamp;
-    while let Some(w) = stack.pop() {
+    // The disc holds O(1) points on typical data: a short list of the
+    // visited vertices beats an n-sized "seen" array.
+    inside.clear();
+    inside.push(p);
+    let mut next = 0;
+    while next < inside.len() {
+        let w = inside[next];
+        next += 1;
         for &x in g.neighbors(w) {
-            if seen[x as usize] == stamp {
+            if inside.contains(&x) {
                 continue;
             }
-            seen[x as usize] = stamp;
             if x == q {
-                stack.push(x); // on the disc's boundary; comparing |qp| with itself is moot
+                inside.push(x); // on the disc's boundary; comparing |qp| with itself is moot
                 continue;
             }
             let px = points[x as usize];
@@ -145,16 +147,16 @@ fn perturbed_lune_is_occupied(
                 continue; // outside the closed disc around p: not expanded
             }
             let to_q = compare_lengths(px, pq, pp, pq);
-            let inside = match (to_p, to_q) {
+            let occupied = match (to_p, to_q) {
                 (Less, Less) => true,
                 (_, Greater) => false,
                 // On the lune's boundary: the perturbation decides.
                 _ => in_lune_symbolic(points, p, q, x),
             };
-            if inside {
+            if occupied {
                 return true;
             }
-            stack.push(x);
+            inside.push(x);
         }
     }
     false
@@ -166,31 +168,26 @@ fn perturbed_lune_is_occupied(
 /// Delaunay edges suffices. One search per edge decides both the exact
 /// (strict-lune) test and its perturbed tie-break.
 pub(crate) fn rng_perturbed(points: &[Point], g: &DelaunayGraph) -> Vec<[u32; 2]> {
-    let n = points.len();
     g.edges
         .par_iter()
-        .map_init(
-            || (vec![0u32; n], 0u32, Vec::new()),
-            |(seen, stamp, stack), &([u, v], apexes)| {
-                // An apex strictly in the lune settles most non-RNG edges.
-                let (pu, pv) = (points[u as usize], points[v as usize]);
-                if apexes
-                    .iter()
-                    .flatten()
-                    .any(|&a| in_lune(pu, pv, points[a as usize]))
-                {
-                    return None;
-                }
-                let (p, q) = if g.neighbors(u).len() <= g.neighbors(v).len() {
-                    (u, v)
-                } else {
-                    (v, u)
-                };
-                *stamp += 1;
-                (!perturbed_lune_is_occupied(points, g, p, q, seen, *stamp, stack))
-                    .then_some([u, v])
-            },
-        )
+        .with_min_len(1024)
+        .map_init(Vec::new, |inside, &([u, v], apexes)| {
+            // An apex strictly in the lune settles most non-RNG edges.
+            let (pu, pv) = (points[u as usize], points[v as usize]);
+            if apexes
+                .iter()
+                .flatten()
+                .any(|&a| in_lune(pu, pv, points[a as usize]))
+            {
+                return None;
+            }
+            let (p, q) = if g.neighbors(u).len() <= g.neighbors(v).len() {
+                (u, v)
+            } else {
+                (v, u)
+            };
+            (!perturbed_lune_is_occupied(points, g, p, q, inside)).then_some([u, v])
+        })
         .flatten()
         .collect()
 }
@@ -283,7 +280,13 @@ pub(crate) fn count(which: usize, by: usize) {
 }
 
 fn run(points: &PointSet, method: PolygonMethod, phases: &mut Vec<Phase>) -> Result<Triangulation> {
-    let pts = points.points();
+    // Renumber along a Z-order curve so that every phase (lune searches,
+    // face walks, region flood fills) touches nearby memory. The symbolic
+    // perturbation S′ depends on the numbering; any numbering gives one
+    // consistent S′, which is all the argument above needs.
+    let order = timed(phases, "z-order", || morton_order(points.points()));
+    let local: Vec<Point> = order.iter().map(|&o| points.points()[o as usize]).collect();
+    let pts = local.as_slice();
     let g = timed(phases, "delaunay", || delaunay_graph(pts))?;
     let rng = timed(phases, "rng", || rng_perturbed(pts, &g));
     let hull = hull_distinct(pts);
@@ -323,7 +326,13 @@ fn run(points: &PointSet, method: PolygonMethod, phases: &mut Vec<Phase>) -> Res
             })
             .collect()
     });
-    let triangles = timed(phases, "repair", || repair_flat_triangles(pts, triangles));
+    let triangles = timed(phases, "repair", || {
+        let mut t = repair_flat_triangles(pts, triangles);
+        for c in t.iter_mut().flatten() {
+            *c = order[*c as usize];
+        }
+        t
+    });
     Ok(Triangulation::from_distinct(points, triangles))
 }
 
