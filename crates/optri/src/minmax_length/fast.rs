@@ -159,6 +159,42 @@ impl<'a> Mesh<'a> {
         self.slot(u, v).map_or(true, |s| self.constraint[s] != 0)
     }
 
+    /// The longest diagonal (vertex indices) of the Delaunay triangles inside
+    /// the region whose boundary contains the directed edge `v[0] → v[1]`:
+    /// the non-constraint edges met by a flood fill from that edge's left
+    /// triangle. `None` if the region needs no diagonal or the fill fails.
+    pub fn longest_delaunay_diagonal(&self, points: &[Point], v: &[u32]) -> Option<[u32; 2]> {
+        let first = self.left_of(v[0], v[1])?;
+        let mut seen = vec![first];
+        let mut next = 0;
+        let mut longest: Option<[u32; 2]> = None;
+        while next < seen.len() {
+            let tri = self.g.triangles[seen[next] as usize];
+            next += 1;
+            for j in 0..3 {
+                let (x, y) = (tri[j], tri[(j + 1) % 3]);
+                if self.is_constraint(x, y) {
+                    continue;
+                }
+                let t = self.left_of(y, x)?;
+                if seen.contains(&t) {
+                    continue;
+                }
+                seen.push(t);
+                if seen.len() > 2 * v.len() {
+                    return None;
+                }
+                let p = |m: u32| points[m as usize];
+                if longest.map_or(true, |[a, b]| {
+                    crate::kernel::compare_lengths(p(x), p(y), p(a), p(b)) == Ordering::Greater
+                }) {
+                    longest = Some([x, y]);
+                }
+            }
+        }
+        longest
+    }
+
     /// Is `u v` a hull edge that is not in `rng(S′)`?
     pub fn is_hull_only(&self, u: u32, v: u32) -> bool {
         self.slot(u, v).is_some_and(|s| self.constraint[s] == 2)

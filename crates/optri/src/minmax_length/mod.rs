@@ -23,8 +23,10 @@
 //!   `fast::FastRegion::triangulate_side`);
 //! * regions with fewer than [`SMALL_REGION`] corners (most regions of
 //!   typical inputs) are solved by the exact cubic program instead, which is
-//!   cheaper there; tests run the quadratic algorithm on every region too
-//!   ([`minmax_length_with`]).
+//!   cheaper there, restricted to chords no longer than the longest Delaunay
+//!   diagonal inside the region (the Delaunay triangles are a feasible
+//!   triangulation, so the optimum uses no longer chord); tests run the
+//!   quadratic algorithm on every region too ([`minmax_length_with`]).
 //!
 //! # Degeneracy
 //! §4–§6 assume no two equal lengths and no three collinear points. optri's
@@ -223,16 +225,17 @@ enum PolygonMethod {
     Quadratic { cubic_below: usize },
 }
 
-/// The product's method. Regions of up to 11 corners (most regions of
-/// typical inputs) are solved by the exact cubic program, which is faster
-/// there; the quadratic algorithm handles the larger ones.
+/// The product's method. Regions of up to 31 corners (nearly all regions of
+/// typical inputs) are solved by the exact cubic program with the Delaunay
+/// bound, which measured faster there (10⁶ uniform points: 2.8 s → see
+/// `BENCHMARKS.md`); the quadratic algorithm handles the larger ones.
 const PRODUCT: PolygonMethod = PolygonMethod::Quadratic {
     cubic_below: SMALL_REGION,
 };
 
 /// Regions with fewer corners than this use the cubic program in the product.
 #[doc(hidden)]
-pub const SMALL_REGION: usize = 12;
+pub const SMALL_REGION: usize = 32;
 
 /// How often the quadratic algorithm met an inconsistency and fell back to
 /// the cubic program for a region (a bug indicator; tests assert it stays 0).
@@ -321,6 +324,9 @@ fn run(points: &PointSet, method: PolygonMethod, phases: &mut Vec<Phase>) -> Res
                             }
                         }
                     }
+                    (_, Some(mesh)) => region.minmax_triangulation_bounded(
+                        mesh.longest_delaunay_diagonal(pts, vertices),
+                    ),
                     _ => region.minmax_triangulation_cubic(),
                 }
             })
@@ -356,7 +362,7 @@ pub(crate) fn minmax_length_timed(
 }
 
 /// The method's name, as reported by [`crate::triangulate`].
-const ALGORITHM: &str = "Edelsbrunner–Tan O(n²): hull ∪ RNG(S′) regions; §5.1 incomplete and §5.3/§6 complete rng-polygons on the symbolic perturbation (exact cubic DP for regions under 12 corners; §6 Case 2 pockets by u_L search, clipped §5.1 and §5.2 fan-out); §5.4 flat-triangle repair";
+const ALGORITHM: &str = "Edelsbrunner–Tan O(n²): hull ∪ RNG(S′) regions; §5.1 incomplete and §5.3/§6 complete rng-polygons on the symbolic perturbation (exact cubic DP, pruned by the regions' Delaunay diagonals, for regions under 32 corners; §6 Case 2 pockets by u_L search, clipped §5.1 and §5.2 fan-out); §5.4 flat-triangle repair";
 
 /// The quadratic algorithm on every region with at least `cubic_below`
 /// corners (0 or 4: on all of them). For tests and benchmarks.
