@@ -324,9 +324,11 @@ fn run(points: &PointSet, method: PolygonMethod, phases: &mut Vec<Phase>) -> Res
                             }
                         }
                     }
-                    (_, Some(mesh)) => region.minmax_triangulation_bounded(
-                        mesh.longest_delaunay_diagonal(pts, vertices),
-                    ),
+                    (_, Some(mesh)) => region.quadrilateral().unwrap_or_else(|| {
+                        region.minmax_triangulation_bounded(
+                            mesh.longest_delaunay_diagonal(pts, vertices),
+                        )
+                    }),
                     _ => region.minmax_triangulation_cubic(),
                 }
             })

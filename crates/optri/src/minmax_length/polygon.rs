@@ -164,6 +164,26 @@ impl<'a> Region<'a> {
         self.minmax_triangulation_bounded(None)
     }
 
+    /// The optimum of a simple quadrilateral (positions 0..4): a chord is a
+    /// diagonal iff the other two corners lie strictly on opposite sides of
+    /// it; of two diagonals the shorter wins. `None` if neither qualifies.
+    pub fn quadrilateral(&self) -> Option<Vec<[u32; 3]>> {
+        let [a, b, c, d] = <[u32; 4]>::try_from(self.vertices).ok()?;
+        let ac = self.orient(a, c, b) < 0 && self.orient(a, c, d) > 0;
+        let bd = self.orient(b, d, c) < 0 && self.orient(b, d, a) > 0;
+        let use_ac = match (ac, bd) {
+            (true, true) => self.compare_lengths([a, c], [b, d]) != Ordering::Greater,
+            (true, false) => true,
+            (false, true) => false,
+            (false, false) => return None,
+        };
+        Some(if use_ac {
+            vec![[a, b, c], [a, c, d]]
+        } else {
+            vec![[b, c, d], [b, d, a]]
+        })
+    }
+
     /// [`Self::minmax_triangulation_cubic`] using only chords no longer than
     /// `bound` (vertex indices), the longest diagonal of some triangulation of
     /// the region: that triangulation stays feasible, so the optimum, and
