@@ -227,8 +227,10 @@ enum PolygonMethod {
 
 /// The product's method. Regions of up to 31 corners (nearly all regions of
 /// typical inputs) are solved by the exact cubic program with the Delaunay
-/// bound, which measured faster there (10⁶ uniform points: 2.8 s → see
-/// `BENCHMARKS.md`); the quadratic algorithm handles the larger ones.
+/// bound (quadrilaterals by one comparison), which measured faster there
+/// than the quadratic algorithm (2·10⁵ uniform points, whole run: 1.04 s with
+/// the quadratic algorithm from 12 corners, 0.85 s from 30); the quadratic
+/// algorithm handles the larger ones.
 const PRODUCT: PolygonMethod = PolygonMethod::Quadratic {
     cubic_below: SMALL_REGION,
 };
