@@ -3,6 +3,8 @@
 //! short as possible, in O(n²) time (O(n log n) plus O(k²) per region).
 //!
 //! # The algorithm (§3)
+//! 0. Renumber the points along a Z-order curve (cache locality for every
+//!    later phase; the perturbation `S′` below is defined on this numbering).
 //! 1. Build the Delaunay triangulation, the relative neighbourhood graph
 //!    (`rng_perturbed`) and the convex hull.
 //! 2. Cut the hull into the polygonal regions of `ch ∪ rng` (`regions`),
