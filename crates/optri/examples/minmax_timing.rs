@@ -13,8 +13,8 @@
 //! Peak resident memory (VmHWM) is printed at the end.
 
 use optri::minmax_length::{
-    CASE_1, CASE_2, CASE_2_HULL_FALLBACKS, CASE_2_POCKETS_BY_5_1, CASE_2_REMAINDER_VERTICES,
-    COUNTERS, FALLBACKS, FLAT_TRIANGLES,
+    CASE_1, CASE_2, CASE_2_HULL_FALLBACKS, CASE_2_POCKETS_BY_5_1, CASE_2_POCKETS_BY_FAN_OUT,
+    CASE_2_POCKET_FALLBACKS, CASE_2_REMAINDER_VERTICES, COUNTERS, FALLBACKS, FLAT_TRIANGLES,
 };
 use optri::{Criterion, PointSet};
 use rand::{rngs::StdRng, Rng, SeedableRng};
@@ -51,10 +51,12 @@ fn peak_memory() -> String {
 
 fn counters() -> String {
     format!(
-        "case1={} case2={} case2_pockets_by_5_1={} case2_dp_pocket_vertices={} flat={} case2_hull_fallbacks={} fallbacks={}",
+        "case1={} case2={} case2_pockets_by_5_1={} case2_pockets_by_fan_out={} case2_pocket_fallbacks={} case2_dp_vertices={} flat={} case2_hull_fallbacks={} fallbacks={}",
         COUNTERS[CASE_1].load(Relaxed),
         COUNTERS[CASE_2].load(Relaxed),
         COUNTERS[CASE_2_POCKETS_BY_5_1].load(Relaxed),
+        COUNTERS[CASE_2_POCKETS_BY_FAN_OUT].load(Relaxed),
+        COUNTERS[CASE_2_POCKET_FALLBACKS].load(Relaxed),
         COUNTERS[CASE_2_REMAINDER_VERTICES].load(Relaxed),
         COUNTERS[FLAT_TRIANGLES].load(Relaxed),
         COUNTERS[CASE_2_HULL_FALLBACKS].load(Relaxed),

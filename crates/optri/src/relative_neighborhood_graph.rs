@@ -96,7 +96,7 @@ impl LocalGraph {
 }
 
 /// Indices of `points` sorted by the Z-order (Morton) key of a 2¹⁶ × 2¹⁶ grid.
-fn morton_order(points: &[Point]) -> Vec<u32> {
+pub(crate) fn morton_order(points: &[Point]) -> Vec<u32> {
     let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
     for p in points {
         for k in 0..2 {

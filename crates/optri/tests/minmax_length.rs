@@ -427,10 +427,36 @@ fn the_tests_exercise_every_branch() {
             .collect();
         same_optimum(&pts, "6x6 grid");
     }
-    use optri::minmax_length::{CASE_1, CASE_2, CASE_2_HULL_FALLBACKS, COUNTERS, FLAT_TRIANGLES};
+    // Sparser 10×10 grids hit the §5.4 repair of flat triangles under the
+    // Z-order numbering's perturbation (about one set in 40).
+    for _ in 0..400 {
+        let n = rng.gen_range(5..40);
+        let pts: Vec<Point> = (0..n)
+            .map(|_| [rng.gen_range(0..10) as f64, rng.gen_range(0..10) as f64])
+            .collect();
+        same_optimum(&pts, "10x10 grid");
+    }
+    // Uniform sets hit the §6 Case 2 step-3 pockets (u_L ≠ v, fan-out).
+    for seed in 0..4 {
+        let mut rng = StdRng::seed_from_u64(100 + seed);
+        let pts: Vec<Point> = (0..3000)
+            .map(|_| [rng.gen::<f64>(), rng.gen::<f64>()])
+            .collect();
+        same_optimum(&pts, "uniform 3000 for Case 2 pockets");
+    }
+    use optri::minmax_length::{
+        CASE_1, CASE_2, CASE_2_HULL_FALLBACKS, CASE_2_POCKETS_BY_5_1, CASE_2_POCKETS_BY_FAN_OUT,
+        CASE_2_POCKET_FALLBACKS, COUNTERS, FLAT_TRIANGLES,
+    };
     let c = |i: usize| COUNTERS[i].load(std::sync::atomic::Ordering::Relaxed);
     assert!(c(CASE_1) > 0 && c(CASE_2) > 0 && c(FLAT_TRIANGLES) > 0);
+    assert!(c(CASE_2_POCKETS_BY_5_1) > 0, "no pocket closed by a 1-edge");
+    assert!(
+        c(CASE_2_POCKETS_BY_FAN_OUT) > 0,
+        "no pocket needed the u_L search and the fan-out"
+    );
     assert_eq!(c(CASE_2_HULL_FALLBACKS), 0);
+    assert_eq!(c(CASE_2_POCKET_FALLBACKS), 0);
 }
 
 // ---- against the independent oracle crate (exact rationals) ----

@@ -9,7 +9,9 @@
 //! | [`FastRegion::visible`] | diagonals at a vertex in angular order (§6 step 1) |
 //! | [`FastRegion::shortest_expandable_2_edge`] | §6 steps 1–3 (stack scan, `p′ p″ q′ q″`, Crossing Lemma) |
 //! | [`FastRegion::triangulate_side`] | §5.3 step 2 and §6 Cases 1–2 (Expandability Lemma) |
-//! | [`FastRegion::hull_fan`] | §6 Case 2 steps 2–3.1 (Claim 1; pockets otherwise by the cubic program) |
+//! | [`FastRegion::hull_fan`] | §6 Case 2 step 2 (Claim 1) |
+//! | [`FastRegion::pocket`] | §6 Case 2 steps 3.1–3.3 (Claims 2–5) |
+//! | [`FastRegion::fan_out`] | §5.2 fan-out triangulation (Fan-Out Lemma) |
 //!
 //! Visibility uses the Delaunay triangles inside the region as a polygon
 //! triangulation: they are non-degenerate in `S`, so they keep their
@@ -155,6 +157,42 @@ impl<'a> Mesh<'a> {
 
     fn is_constraint(&self, u: u32, v: u32) -> bool {
         self.slot(u, v).map_or(true, |s| self.constraint[s] != 0)
+    }
+
+    /// The longest diagonal (vertex indices) of the Delaunay triangles inside
+    /// the region whose boundary contains the directed edge `v[0] → v[1]`:
+    /// the non-constraint edges met by a flood fill from that edge's left
+    /// triangle. `None` if the region needs no diagonal or the fill fails.
+    pub fn longest_delaunay_diagonal(&self, points: &[Point], v: &[u32]) -> Option<[u32; 2]> {
+        let first = self.left_of(v[0], v[1])?;
+        let mut seen = vec![first];
+        let mut next = 0;
+        let mut longest: Option<[u32; 2]> = None;
+        while next < seen.len() {
+            let tri = self.g.triangles[seen[next] as usize];
+            next += 1;
+            for j in 0..3 {
+                let (x, y) = (tri[j], tri[(j + 1) % 3]);
+                if self.is_constraint(x, y) {
+                    continue;
+                }
+                let t = self.left_of(y, x)?;
+                if seen.contains(&t) {
+                    continue;
+                }
+                seen.push(t);
+                if seen.len() > 2 * v.len() {
+                    return None;
+                }
+                let p = |m: u32| points[m as usize];
+                if longest.map_or(true, |[a, b]| {
+                    crate::kernel::compare_lengths(p(x), p(y), p(a), p(b)) == Ordering::Greater
+                }) {
+                    longest = Some([x, y]);
+                }
+            }
+        }
+        longest
     }
 
     /// Is `u v` a hull edge that is not in `rng(S′)`?
@@ -368,6 +406,16 @@ impl<'a> FastRegion<'a> {
     /// 1-Edge Lemma the two new edges are 1-edges (or region edges) with the
     /// rest beyond them, and all are shorter than the closing edge.
     pub fn incomplete(&self, s: usize, m: usize, out: &mut Vec<[u32; 3]>) -> Res<()> {
+        self.incomplete_positions(s, m, |a, b, c| out.push([self.v[a], self.v[b], self.v[c]]))
+    }
+
+    /// [`Self::incomplete`], reporting each triangle as three positions.
+    fn incomplete_positions(
+        &self,
+        s: usize,
+        m: usize,
+        mut emit: impl FnMut(usize, usize, usize),
+    ) -> Res<()> {
         let mut stack = vec![(s, m)];
         while let Some((s, m)) = stack.pop() {
             if m < 2 {
@@ -399,8 +447,8 @@ impl<'a> FastRegion<'a> {
                     best = Some((i, x));
                 }
             }
-            let (i, x) = best.ok_or(Inconsistent("site9"))?;
-            out.push([p, x, q]);
+            let (i, _) = best.ok_or(Inconsistent("site9"))?;
+            emit(s, self.at(s, i), self.at(s, m));
             stack.push((s, i));
             stack.push((self.at(s, i), m - i));
         }
@@ -548,15 +596,16 @@ impl<'a> FastRegion<'a> {
         super::count(super::CASE_2, 1);
         // §6 Case 2 step 1 beyond the shorter-side 1-edge, then steps 2–3 on
         // the rest: (apex, from … to) is (q, p … q″), or the mirror image.
-        let (apex, from, to) = if self.geo.compare_lengths([vne, vs], [vne, ve]) == Ordering::Less {
-            self.incomplete(ne, self.off(ne, e), out)?;
-            (e, s, ne)
-        } else {
-            self.incomplete(s, self.off(s, ns), out)?;
-            (s, ns, e)
-        };
+        let (apex, from, to, forward) =
+            if self.geo.compare_lengths([vne, vs], [vne, ve]) == Ordering::Less {
+                self.incomplete(ne, self.off(ne, e), out)?;
+                (e, s, ne, true)
+            } else {
+                self.incomplete(s, self.off(s, ns), out)?;
+                (s, ns, e, false)
+            };
         let mark = out.len();
-        if self.hull_fan(apex, from, to, out).is_err() {
+        if self.hull_fan(apex, from, to, forward, out).is_err() {
             // Not expected; the whole remainder by the cubic program instead.
             super::count(super::CASE_2_HULL_FALLBACKS, 1);
             out.truncate(mark);
@@ -579,16 +628,23 @@ impl<'a> FastRegion<'a> {
     /// hull `C` of the chain vertices inside the triangle `(apex, from, to)`
     /// together with `from` and `to`; the side of `C` facing the apex is
     /// fanned from the apex (Claim 1: shorter than `|pq|`), and each pocket
-    /// between an edge of `C` and the boundary is triangulated by the cubic
-    /// program on `S′` (the paper's §5.1-plus-fan-out construction of step 3,
-    /// Claims 2–5, shows a triangulation with edges shorter than `|pq|`
-    /// exists, so the pocket's optimum is no worse).
-    fn hull_fan(&self, apex: usize, from: usize, to: usize, out: &mut Vec<[u32; 3]>) -> Res<()> {
+    /// between an edge of `C` and the boundary is triangulated by step 3
+    /// ([`Self::pocket`]). `forward` says whether the paper's `p` is `from`
+    /// (the 2-edge is `from → apex`) or, in the mirror image, `to`.
+    fn hull_fan(
+        &self,
+        apex: usize,
+        from: usize,
+        to: usize,
+        forward: bool,
+        out: &mut Vec<[u32; 3]>,
+    ) -> Res<()> {
         let (va, vf, vt) = (self.v[apex], self.v[from], self.v[to]);
         let side = self.geo.orient(vf, vt, va);
         if side == 0 {
             return Err(Inconsistent("flat Case 2 triangle"));
         }
+        let pq = if forward { [vf, va] } else { [va, vt] };
         let span = self.off(from, to);
         let inside: Vec<usize> = (1..span)
             .map(|i| self.at(from, i))
@@ -615,25 +671,31 @@ impl<'a> FastRegion<'a> {
             chain.push(w);
             c = w;
         }
-        for pair in chain.windows(2) {
-            let (u, w) = (pair[0], pair[1]);
-            out.push([va, self.v[u], self.v[w]]);
-            if self.off(u, w) >= 2 {
-                // Step 3.1 with u_L = w: if uw is a 1-edge with pq beneath it
-                // (its half-lune on the apex side holds no vertex), §5.1
-                // triangulates the whole pocket with edges shorter than |uw|.
-                let (vu, vw) = (self.v[u], self.v[w]);
-                let beneath_empty = !self
-                    .v
-                    .iter()
-                    .any(|&x| x != vu && x != vw && in_half_lune_symbolic(self.points, vu, vw, x));
-                if beneath_empty {
-                    super::count(super::CASE_2_POCKETS_BY_5_1, 1);
-                    self.incomplete(u, self.off(u, w), out)?;
-                    continue;
+        let h = chain.len();
+        for (i, pair) in chain.windows(2).enumerate() {
+            let (a, b) = (pair[0], pair[1]);
+            out.push([va, self.v[a], self.v[b]]);
+            if self.off(a, b) < 2 {
+                continue;
+            }
+            // The paper's `u` and its neighbours on the closed polygon `C`.
+            let iu = if forward { i } else { i + 1 };
+            let cone =
+                (h > 2).then(|| [self.v[chain[(iu + h - 1) % h]], self.v[chain[(iu + 1) % h]]]);
+            let mark = out.len();
+            let done = self
+                .pocket(a, b, apex, forward, pq, cone, out)
+                .and_then(|()| self.check_pocket(a, b, pq, &out[mark..]));
+            if let Err(e) = done {
+                if std::env::var_os("OPTRI_DEBUG").is_some() {
+                    eprintln!("pocket fallback ({}) at {a}..{b} of {:?}", e.0, self.v);
                 }
-                let pocket: Vec<u32> = (0..=self.off(u, w))
-                    .map(|i| self.v[self.at(u, i)])
+                // Not expected (Claims 2–5): the pocket by the cubic program.
+                super::FALLBACKS.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+                super::count(super::CASE_2_POCKET_FALLBACKS, 1);
+                out.truncate(mark);
+                let pocket: Vec<u32> = (0..=self.off(a, b))
+                    .map(|i| self.v[self.at(a, i)])
                     .collect();
                 super::count(super::CASE_2_REMAINDER_VERTICES, pocket.len());
                 let region = Region {
@@ -642,6 +704,171 @@ impl<'a> FastRegion<'a> {
                     symbolic: true,
                 };
                 out.extend(region.minmax_triangulation_cubic());
+            }
+        }
+        Ok(())
+    }
+
+    /// Is no vertex of the region in the half-lune of the chord between
+    /// positions `x` and `y` on the side away from the chain `x … y`?
+    fn beneath_is_empty(&self, x: usize, y: usize) -> bool {
+        let (vx, vy) = (self.v[x], self.v[y]);
+        !self
+            .v
+            .iter()
+            .any(|&w| w != vx && w != vy && in_half_lune_symbolic(self.points, vx, vy, w))
+    }
+
+    /// §6 Case 2 step 3 for the pocket `Y_uv`: the chain `a … b` (positions)
+    /// behind the edge `ab` of `C`. The paper's `u` is `a` if `forward`, else
+    /// `b`; `v` is the other one. `cone` holds `u`'s two neighbours on `C`.
+    ///
+    /// 3.1: `u_L = v` if `uv` is a 1-edge with `pq` beneath (then §5.1 does
+    /// the whole pocket); otherwise the vertex nearest to `u` past `v` (away
+    /// from `u`, before the apex) with `|u u_L| < |pq|`, `u u_L` a diagonal
+    /// and a 1-edge with `pq` beneath, not entering `C` (Claim 2 shows one
+    /// exists). 3.2: §5.1 beyond `u u_L`, keeping the triangles whose corners
+    /// all lie on the pocket's chain. 3.3: the rest `X_uv` (the pocket's part
+    /// covered by the dropped triangles, which cross `uv`) is fanned out from
+    /// `v` ([`Self::fan_out`]); Claims 3–5 and the Fan-Out Lemma bound its
+    /// edges by `|pq|`.
+    #[allow(clippy::too_many_arguments)]
+    fn pocket(
+        &self,
+        a: usize,
+        b: usize,
+        apex: usize,
+        forward: bool,
+        pq: [u32; 2],
+        cone: Option<[u32; 2]>,
+        out: &mut Vec<[u32; 3]>,
+    ) -> Res<()> {
+        let span = self.off(a, b);
+        if self.beneath_is_empty(a, b) {
+            super::count(super::CASE_2_POCKETS_BY_5_1, 1);
+            return self.incomplete(a, span, out);
+        }
+        let (u, v) = if forward { (a, b) } else { (b, a) };
+        let vu = self.v[u];
+        // Step 3.1: candidates past v, shortest first.
+        let mut candidates: Vec<usize> = Vec::new();
+        for i in 1..self.k {
+            let j = if forward {
+                self.at(v, i)
+            } else {
+                self.at(v, self.k - i)
+            };
+            if j == apex {
+                break;
+            }
+            if self.v[j] != vu && self.geo.compare_lengths([vu, self.v[j]], pq) == Ordering::Less {
+                candidates.push(j);
+            }
+        }
+        candidates.sort_by(|&x, &y| self.geo.compare_lengths([vu, self.v[x]], [vu, self.v[y]]));
+        let enters_c = |x: u32| {
+            cone.is_some_and(|[c1, c2]| {
+                self.geo.orient(vu, c1, x) == self.geo.orient(vu, c1, c2)
+                    && self.geo.orient(vu, c2, x) == self.geo.orient(vu, c2, c1)
+            })
+        };
+        let ul = candidates
+            .into_iter()
+            .find(|&j| {
+                let (x, y) = if forward { (u, j) } else { (j, u) };
+                !enters_c(self.v[j]) && self.geo.is_diagonal(u, j) && self.beneath_is_empty(x, y)
+            })
+            .ok_or(Inconsistent("no u_L (Claim 2)"))?;
+        super::count(super::CASE_2_POCKETS_BY_FAN_OUT, 1);
+        // Step 3.2: §5.1 beyond u u_L, clipped to the pocket.
+        let (x, y) = if forward { (u, ul) } else { (ul, u) };
+        let in_pocket = |pos: usize| self.off(a, pos) <= span;
+        let mut on_x = vec![false; span + 1];
+        on_x[0] = true;
+        on_x[span] = true;
+        self.incomplete_positions(x, self.off(x, y), |p1, p2, p3| {
+            if in_pocket(p1) && in_pocket(p2) && in_pocket(p3) {
+                out.push([self.v[p1], self.v[p2], self.v[p3]]);
+            } else {
+                for pos in [p1, p2, p3] {
+                    if in_pocket(pos) {
+                        on_x[self.off(a, pos)] = true;
+                    }
+                }
+            }
+        })?;
+        // Step 3.3: the fan-out of X_uv from v.
+        let xs: Vec<u32> = (0..=span)
+            .filter(|&i| on_x[i])
+            .map(|i| self.v[self.at(a, i)])
+            .collect();
+        let center = if forward { xs.len() - 1 } else { 0 };
+        self.fan_out(xs, center, out);
+        Ok(())
+    }
+
+    /// §5.2's fan-out triangulation `f_c(X)` of the polygon `xs`
+    /// (counter-clockwise vertex indices) with centre position `center`:
+    /// connect the centre to every visible vertex, close each pair of
+    /// angularly adjacent neighbours by a cut-off edge, and recurse in the
+    /// pocket behind it, centred at the cut-off edge's endpoint whose other
+    /// pocket edge is hidden from the centre. O(m²) diagonal tests per pocket.
+    fn fan_out(&self, xs: Vec<u32>, center: usize, out: &mut Vec<[u32; 3]>) {
+        let mut stack = vec![(xs, center)];
+        while let Some((poly, c)) = stack.pop() {
+            let m = poly.len();
+            if m < 3 {
+                continue;
+            }
+            let region = Region {
+                points: self.points,
+                vertices: &poly,
+                symbolic: true,
+            };
+            // Visible vertices in counter-clockwise angular order, which is
+            // boundary order for a polygonal region.
+            let neighbours: Vec<usize> = (1..m)
+                .filter(|&o| o == 1 || o == m - 1 || region.is_diagonal(c, (c + o) % m))
+                .map(|o| (c + o) % m)
+                .collect();
+            for w in neighbours.windows(2) {
+                let (x, y) = (w[0], w[1]);
+                out.push([poly[c], poly[x], poly[y]]);
+                let gap = (y + m - x) % m;
+                if gap >= 2 {
+                    let sub: Vec<u32> = (0..=gap).map(|i| poly[(x + i) % m]).collect();
+                    // The edge x → x+1 is partly visible iff it turns
+                    // counter-clockwise from the ray c → x; then y is the
+                    // pocket's centre, else x.
+                    let partly_visible = region.orient(poly[c], poly[x], poly[(x + 1) % m]) > 0;
+                    stack.push((sub, if partly_visible { gap } else { 0 }));
+                }
+            }
+        }
+    }
+
+    /// Safety net for step 3: the pocket `a … b` got `span − 1` triangles, and
+    /// every new diagonal is shorter than `|pq|` (Claims 1–5).
+    fn check_pocket(&self, a: usize, b: usize, pq: [u32; 2], tris: &[[u32; 3]]) -> Res<()> {
+        let span = self.off(a, b);
+        if tris.len() != span - 1 {
+            return Err(Inconsistent("pocket triangle count"));
+        }
+        let is_chain_edge = |x: u32, y: u32| {
+            (0..span).any(|i| {
+                let (s, t) = (self.v[self.at(a, i)], self.v[self.at(a, i + 1)]);
+                (s == x && t == y) || (s == y && t == x)
+            })
+        };
+        for t in tris {
+            if self.geo.orient(t[0], t[1], t[2]) <= 0 {
+                return Err(Inconsistent("pocket triangle not counter-clockwise"));
+            }
+            for j in 0..3 {
+                let (x, y) = (t[j], t[(j + 1) % 3]);
+                if self.geo.compare_lengths([x, y], pq) != Ordering::Less && !is_chain_edge(x, y) {
+                    return Err(Inconsistent("pocket edge not shorter than pq"));
+                }
             }
         }
         Ok(())

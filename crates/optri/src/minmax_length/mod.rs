@@ -3,6 +3,8 @@
 //! short as possible, in O(n²) time (O(n log n) plus O(k²) per region).
 //!
 //! # The algorithm (§3)
+//! 0. Renumber the points along a Z-order curve (cache locality for every
+//!    later phase; the perturbation `S′` below is defined on this numbering).
 //! 1. Build the Delaunay triangulation, the relative neighbourhood graph
 //!    (`rng_perturbed`) and the convex hull.
 //! 2. Cut the hull into the polygonal regions of `ch ∪ rng` (`regions`),
@@ -23,8 +25,10 @@
 //!   `fast::FastRegion::triangulate_side`);
 //! * regions with fewer than [`SMALL_REGION`] corners (most regions of
 //!   typical inputs) are solved by the exact cubic program instead, which is
-//!   cheaper there; tests run the quadratic algorithm on every region too
-//!   ([`minmax_length_with`]).
+//!   cheaper there, restricted to chords no longer than the longest Delaunay
+//!   diagonal inside the region (the Delaunay triangles are a feasible
+//!   triangulation, so the optimum uses no longer chord); tests run the
+//!   quadratic algorithm on every region too ([`minmax_length_with`]).
 //!
 //! # Degeneracy
 //! §4–§6 assume no two equal lengths and no three collinear points. optri's
@@ -57,24 +61,25 @@
 //!   exactly optimal.
 //! * The cubic program (`polygon::Region::minmax_triangulation_cubic`) runs
 //!   either exactly on `S` (small regions, and the test reference
-//!   [`minmax_length_cubic`]) — it needs no general position — or on `S′`
-//!   (inside §6 Case 2, below).
+//!   [`minmax_length_cubic`]) — it needs no general position — or, only as
+//!   a counted safety net inside §6 Case 2 (below), on `S′`.
 //!
-//! # Deviation from the paper
-//! §6 Case 2 (the partners `pp′` and `qq″` cross) follows steps 1–2 of the
-//! paper: §5.1 beyond `qq″` (or the mirror image), the convex hull `C` of the
-//! vertices inside triangle `pqq″` together with `p, q″`, fanned from `q`.
-//! Of step 3, a pocket closed by an edge `uv` of `C` that is a 1-edge with
-//! `pq` beneath it is triangulated by §5.1 (`u_L = v`). Other pockets (the
-//! paper's search for `u_L`, §5.1 clipped to the pocket, then the §5.2
-//! fan-out) are triangulated by the cubic program on `S′` instead: Claims
-//! 2–5 show a triangulation of the pocket with edges shorter than `|pq|`
-//! exists, so the pocket's optimum is no worse and the result stays optimal.
-//! That costs cubic time in those pockets' sizes (on 2·10⁵ uniform points:
-//! 10 913 Case 2 regions, 5 983 pockets by §5.1, 1 632 vertices in pockets
-//! left to the cubic program; see [`COUNTERS`]). Should the hull chain ever
-//! fail its boundary-order check, the whole remainder goes to the cubic
-//! program (counted in [`CASE_2_HULL_FALLBACKS`]; zero in all tests).
+//! # §6 Case 2
+//! Case 2 (the partners `pp′` and `qq″` cross) follows the paper's three
+//! steps: §5.1 beyond `qq″` (or the mirror image), the convex hull `C` of the
+//! vertices inside triangle `pqq″` together with `p, q″`, fanned from `q`,
+//! and for each pocket `Y_uv` behind an edge `uv` of `C`: step 3.1 finds
+//! `u_L` (`v` itself if `uv` is a 1-edge with `pq` beneath, else the nearest
+//! vertex past `v` meeting Claim 2's conditions), 3.2 keeps the triangles of
+//! §5.1 beyond `uu_L` that lie in the pocket, and 3.3 fans the rest out from
+//! `v` (§5.2). Each pocket's result is checked (triangle count, orientation,
+//! every new edge shorter than `|pq|`, as Claims 1–5 promise); a pocket
+//! failing the check would go to the cubic program on `S′`, counted in
+//! [`CASE_2_POCKET_FALLBACKS`] and [`FALLBACKS`] — zero in all tests. On
+//! 2·10⁵ uniform points: 10 913 Case 2 regions, 5 983 pockets with
+//! `u_L = v`, 294 with the `u_L` search and the fan-out. Should the hull
+//! chain fail its boundary-order check, the whole remainder goes to the
+//! cubic program (counted in [`CASE_2_HULL_FALLBACKS`]; zero in all tests).
 //!
 //! # Functions and the paper
 //! | function | paper |
@@ -85,7 +90,9 @@
 //! | `fast::FastRegion::visible` | §6 step 1 (diagonals in angular order) |
 //! | `fast::FastRegion::shortest_expandable_2_edge` | §6 steps 1–3, Containment and Crossing Lemmas |
 //! | `fast::FastRegion::triangulate_side` | §5.3 step 2, §6 Cases 1–2, Expandability Lemma |
-//! | `fast::FastRegion::hull_fan` | §6 Case 2 steps 2–3.1, Claim 1 |
+//! | `fast::FastRegion::hull_fan` | §6 Case 2 step 2, Claim 1 |
+//! | `fast::FastRegion::pocket` | §6 Case 2 steps 3.1–3.2, Claims 2–5 |
+//! | `fast::FastRegion::fan_out` | §5.2 fan-out triangulation, Fan-Out Lemma |
 //! | `polygon::Region::minmax_triangulation_cubic` | §3 dynamic program (Klincsek) |
 //! | `repair_flat_triangles` | §5.4, Δ-Lemma |
 
@@ -100,6 +107,7 @@ use crate::kernel::orient_sign;
 use crate::kernel::{compare_lengths, in_lune, in_lune_symbolic, Point};
 use crate::planar_graph::PlanarGraph;
 use crate::point_set::PointSet;
+use crate::relative_neighborhood_graph::morton_order;
 use crate::triangulation::Triangulation;
 use fast::{FastRegion, Mesh};
 use polygon::Region;
@@ -118,22 +126,23 @@ fn perturbed_lune_is_occupied(
     g: &DelaunayGraph,
     p: u32,
     q: u32,
-    seen: &mut [u32],
-    stamp: u32,
-    stack: &mut Vec<u32>,
+    inside: &mut Vec<u32>,
 ) -> bool {
     let (pp, pq) = (points[p as usize], points[q as usize]);
-    stack.clear();
-    stack.push(p);
-    seen[p as usize] = stamp;
-    while let Some(w) = stack.pop() {
+    // The disc holds O(1) points on typical data: a short list of the
+    // visited vertices beats an n-sized "seen" array.
+    inside.clear();
+    inside.push(p);
+    let mut next = 0;
+    while next < inside.len() {
+        let w = inside[next];
+        next += 1;
         for &x in g.neighbors(w) {
-            if seen[x as usize] == stamp {
+            if inside.contains(&x) {
                 continue;
             }
-            seen[x as usize] = stamp;
             if x == q {
-                stack.push(x); // on the disc's boundary; comparing |qp| with itself is moot
+                inside.push(x); // on the disc's boundary; comparing |qp| with itself is moot
                 continue;
             }
             let px = points[x as usize];
@@ -142,16 +151,16 @@ fn perturbed_lune_is_occupied(
                 continue; // outside the closed disc around p: not expanded
             }
             let to_q = compare_lengths(px, pq, pp, pq);
-            let inside = match (to_p, to_q) {
+            let occupied = match (to_p, to_q) {
                 (Less, Less) => true,
                 (_, Greater) => false,
                 // On the lune's boundary: the perturbation decides.
                 _ => in_lune_symbolic(points, p, q, x),
             };
-            if inside {
+            if occupied {
                 return true;
             }
-            stack.push(x);
+            inside.push(x);
         }
     }
     false
@@ -163,31 +172,26 @@ fn perturbed_lune_is_occupied(
 /// Delaunay edges suffices. One search per edge decides both the exact
 /// (strict-lune) test and its perturbed tie-break.
 pub(crate) fn rng_perturbed(points: &[Point], g: &DelaunayGraph) -> Vec<[u32; 2]> {
-    let n = points.len();
     g.edges
         .par_iter()
-        .map_init(
-            || (vec![0u32; n], 0u32, Vec::new()),
-            |(seen, stamp, stack), &([u, v], apexes)| {
-                // An apex strictly in the lune settles most non-RNG edges.
-                let (pu, pv) = (points[u as usize], points[v as usize]);
-                if apexes
-                    .iter()
-                    .flatten()
-                    .any(|&a| in_lune(pu, pv, points[a as usize]))
-                {
-                    return None;
-                }
-                let (p, q) = if g.neighbors(u).len() <= g.neighbors(v).len() {
-                    (u, v)
-                } else {
-                    (v, u)
-                };
-                *stamp += 1;
-                (!perturbed_lune_is_occupied(points, g, p, q, seen, *stamp, stack))
-                    .then_some([u, v])
-            },
-        )
+        .with_min_len(1024)
+        .map_init(Vec::new, |inside, &([u, v], apexes)| {
+            // An apex strictly in the lune settles most non-RNG edges.
+            let (pu, pv) = (points[u as usize], points[v as usize]);
+            if apexes
+                .iter()
+                .flatten()
+                .any(|&a| in_lune(pu, pv, points[a as usize]))
+            {
+                return None;
+            }
+            let (p, q) = if g.neighbors(u).len() <= g.neighbors(v).len() {
+                (u, v)
+            } else {
+                (v, u)
+            };
+            (!perturbed_lune_is_occupied(points, g, p, q, inside)).then_some([u, v])
+        })
         .flatten()
         .collect()
 }
@@ -223,16 +227,19 @@ enum PolygonMethod {
     Quadratic { cubic_below: usize },
 }
 
-/// The product's method. Regions of up to 11 corners (most regions of
-/// typical inputs) are solved by the exact cubic program, which is faster
-/// there; the quadratic algorithm handles the larger ones.
+/// The product's method. Regions of up to 31 corners (nearly all regions of
+/// typical inputs) are solved by the exact cubic program with the Delaunay
+/// bound (quadrilaterals by one comparison), which measured faster there
+/// than the quadratic algorithm (2·10⁵ uniform points, whole run: 1.04 s with
+/// the quadratic algorithm from 12 corners, 0.85 s from 30); the quadratic
+/// algorithm handles the larger ones.
 const PRODUCT: PolygonMethod = PolygonMethod::Quadratic {
     cubic_below: SMALL_REGION,
 };
 
 /// Regions with fewer corners than this use the cubic program in the product.
 #[doc(hidden)]
-pub const SMALL_REGION: usize = 12;
+pub const SMALL_REGION: usize = 32;
 
 /// How often the quadratic algorithm met an inconsistency and fell back to
 /// the cubic program for a region (a bug indicator; tests assert it stays 0).
@@ -240,10 +247,11 @@ pub const SMALL_REGION: usize = 12;
 pub static FALLBACKS: AtomicUsize = AtomicUsize::new(0);
 
 /// Diagnostics for tests and benchmarks: how often §6 Case 1 and Case 2
-/// occurred, the total size of the Case 2 pockets handed to the cubic
-/// program, how many flat triangles §5.4 removed, and Case 2 hull fallbacks.
+/// occurred, how their pockets were triangulated, the total size of Case 2
+/// parts handed to the cubic safety net, how many flat triangles §5.4
+/// removed, and the safety nets' use.
 #[doc(hidden)]
-pub static COUNTERS: [AtomicUsize; 6] = [const { AtomicUsize::new(0) }; 6];
+pub static COUNTERS: [AtomicUsize; 8] = [const { AtomicUsize::new(0) }; 8];
 /// Index into [`COUNTERS`].
 #[doc(hidden)]
 pub const CASE_1: usize = 0;
@@ -264,13 +272,28 @@ pub const CASE_2_HULL_FALLBACKS: usize = 4;
 /// beneath it, triangulated by §5.1 (step 3.1 with `u_L = v`).
 #[doc(hidden)]
 pub const CASE_2_POCKETS_BY_5_1: usize = 5;
+/// Index into [`COUNTERS`]: §6 Case 2 pockets triangulated by steps 3.1–3.3
+/// (a `u_L ≠ v`, §5.1 clipped to the pocket, the §5.2 fan-out).
+#[doc(hidden)]
+pub const CASE_2_POCKETS_BY_FAN_OUT: usize = 6;
+/// Index into [`COUNTERS`]: §6 Case 2 pockets whose step-3 triangulation
+/// failed a check and were handed to the cubic program on `S′` (also counted
+/// in [`FALLBACKS`]; a bug indicator, asserted zero in tests).
+#[doc(hidden)]
+pub const CASE_2_POCKET_FALLBACKS: usize = 7;
 
 pub(crate) fn count(which: usize, by: usize) {
     COUNTERS[which].fetch_add(by, AtomicOrdering::Relaxed);
 }
 
 fn run(points: &PointSet, method: PolygonMethod, phases: &mut Vec<Phase>) -> Result<Triangulation> {
-    let pts = points.points();
+    // Renumber along a Z-order curve so that every phase (lune searches,
+    // face walks, region flood fills) touches nearby memory. The symbolic
+    // perturbation S′ depends on the numbering; any numbering gives one
+    // consistent S′, which is all the argument above needs.
+    let order = timed(phases, "z-order", || morton_order(points.points()));
+    let local: Vec<Point> = order.iter().map(|&o| points.points()[o as usize]).collect();
+    let pts = local.as_slice();
     let g = timed(phases, "delaunay", || delaunay_graph(pts))?;
     let rng = timed(phases, "rng", || rng_perturbed(pts, &g));
     let hull = hull_distinct(pts);
@@ -305,12 +328,23 @@ fn run(points: &PointSet, method: PolygonMethod, phases: &mut Vec<Phase>) -> Res
                             }
                         }
                     }
+                    (_, Some(mesh)) => region.quadrilateral().unwrap_or_else(|| {
+                        region.minmax_triangulation_bounded(
+                            mesh.longest_delaunay_diagonal(pts, vertices),
+                        )
+                    }),
                     _ => region.minmax_triangulation_cubic(),
                 }
             })
             .collect()
     });
-    let triangles = timed(phases, "repair", || repair_flat_triangles(pts, triangles));
+    let triangles = timed(phases, "repair", || {
+        let mut t = repair_flat_triangles(pts, triangles);
+        for c in t.iter_mut().flatten() {
+            *c = order[*c as usize];
+        }
+        t
+    });
     Ok(Triangulation::from_distinct(points, triangles))
 }
 
@@ -334,7 +368,7 @@ pub(crate) fn minmax_length_timed(
 }
 
 /// The method's name, as reported by [`crate::triangulate`].
-const ALGORITHM: &str = "Edelsbrunner–Tan O(n²): hull ∪ RNG(S′) regions; §5.1 incomplete and §5.3/§6 complete rng-polygons on the symbolic perturbation (exact cubic DP for regions under 12 corners, cubic DP on S′ for the §6 Case 2 pockets that §5.1 does not cover); §5.4 flat-triangle repair";
+const ALGORITHM: &str = "Edelsbrunner–Tan O(n²): hull ∪ RNG(S′) regions; §5.1 incomplete and §5.3/§6 complete rng-polygons on the symbolic perturbation (exact cubic DP, pruned by the regions' Delaunay diagonals, for regions under 32 corners; §6 Case 2 pockets by u_L search, clipped §5.1 and §5.2 fan-out); §5.4 flat-triangle repair";
 
 /// The quadratic algorithm on every region with at least `cubic_below`
 /// corners (0 or 4: on all of them). For tests and benchmarks.

@@ -122,8 +122,23 @@ impl<'a> Region<'a> {
         if !wedge_ok(a, vb) || !wedge_ok(b, va) {
             return false;
         }
+        // Bounding boxes (exact coordinate comparisons) skip the boundary
+        // edges far from the chord: a vertex on the chord lies in its box, and
+        // a crossing edge's box meets it.
+        let p = |m: u32| self.points[m as usize];
+        let (pa, pb) = (p(va), p(vb));
+        let lo = [pa[0].min(pb[0]), pa[1].min(pb[1])];
+        let hi = [pa[0].max(pb[0]), pa[1].max(pb[1])];
         for i in 0..k {
             let (u, w) = (v[i], v[(i + 1) % k]);
+            let (pu, pw) = (p(u), p(w));
+            if (pu[0] < lo[0] && pw[0] < lo[0])
+                || (pu[0] > hi[0] && pw[0] > hi[0])
+                || (pu[1] < lo[1] && pw[1] < lo[1])
+                || (pu[1] > hi[1] && pw[1] > hi[1])
+            {
+                continue;
+            }
             if self.strictly_between(va, vb, u) {
                 return false;
             }
@@ -146,6 +161,35 @@ impl<'a> Region<'a> {
     /// The sub-problem `(i, j)` is the sub-polygon of positions `i..=j` closed
     /// by the chord `ij`; its value is the longest diagonal used inside it.
     pub fn minmax_triangulation_cubic(&self) -> Vec<[u32; 3]> {
+        self.minmax_triangulation_bounded(None)
+    }
+
+    /// The optimum of a simple quadrilateral (positions 0..4): a chord is a
+    /// diagonal iff the other two corners lie strictly on opposite sides of
+    /// it; of two diagonals the shorter wins. `None` if neither qualifies.
+    pub fn quadrilateral(&self) -> Option<Vec<[u32; 3]>> {
+        let [a, b, c, d] = <[u32; 4]>::try_from(self.vertices).ok()?;
+        let ac = self.orient(a, c, b) < 0 && self.orient(a, c, d) > 0;
+        let bd = self.orient(b, d, c) < 0 && self.orient(b, d, a) > 0;
+        let use_ac = match (ac, bd) {
+            (true, true) => self.compare_lengths([a, c], [b, d]) != Ordering::Greater,
+            (true, false) => true,
+            (false, true) => false,
+            (false, false) => return None,
+        };
+        Some(if use_ac {
+            vec![[a, b, c], [a, c, d]]
+        } else {
+            vec![[b, c, d], [b, d, a]]
+        })
+    }
+
+    /// [`Self::minmax_triangulation_cubic`] using only chords no longer than
+    /// `bound` (vertex indices), the longest diagonal of some triangulation of
+    /// the region: that triangulation stays feasible, so the optimum, and
+    /// every chord it uses, is no longer than `bound`. Skipping the longer
+    /// chords saves their O(k) diagonal tests.
+    pub fn minmax_triangulation_bounded(&self, bound: Option<[u32; 2]>) -> Vec<[u32; 3]> {
         let k = self.len();
         if k == 3 {
             return vec![[self.vertices[0], self.vertices[1], self.vertices[2]]];
@@ -156,8 +200,15 @@ impl<'a> Region<'a> {
         let mut usable = vec![false; k * k];
         for i in 0..k {
             for j in i + 1..k {
-                usable[idx(i, j)] =
-                    j == i + 1 || (i == 0 && j == k - 1) || convex || self.is_diagonal(i, j);
+                let short_enough = || {
+                    bound.map_or(true, |b| {
+                        self.compare_lengths([self.vertices[i], self.vertices[j]], b)
+                            != Ordering::Greater
+                    })
+                };
+                usable[idx(i, j)] = j == i + 1
+                    || (i == 0 && j == k - 1)
+                    || (short_enough() && (convex || self.is_diagonal(i, j)));
             }
         }
         const NONE: u32 = u32::MAX;
