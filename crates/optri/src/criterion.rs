@@ -13,6 +13,10 @@ use std::time::Instant;
 pub enum Criterion {
     /// The Delaunay triangulation (maximises the smallest angle).
     Delaunay,
+    /// The greedy triangulation (shortest compatible segment first).
+    Greedy,
+    /// Minimum total edge length (convex position only, for now).
+    MinWeight,
 }
 
 /// One timed phase of an algorithm run.
@@ -41,12 +45,15 @@ pub struct Solution {
 
 impl Criterion {
     /// Every implemented criterion, in display order.
-    pub const ALL: &'static [Criterion] = &[Criterion::Delaunay];
+    pub const ALL: &'static [Criterion] =
+        &[Criterion::Delaunay, Criterion::Greedy, Criterion::MinWeight];
 
     /// The command-line name, e.g. `"delaunay"`, `"minmax-length"`.
     pub fn name(self) -> &'static str {
         match self {
             Criterion::Delaunay => "delaunay",
+            Criterion::Greedy => "greedy",
+            Criterion::MinWeight => "min-weight",
         }
     }
 
@@ -54,6 +61,12 @@ impl Criterion {
     pub fn description(self) -> &'static str {
         match self {
             Criterion::Delaunay => "maximises the smallest angle (empty circumcircles)",
+            Criterion::Greedy => {
+                "greedy: repeatedly adds the shortest segment crossing no earlier one"
+            }
+            Criterion::MinWeight => {
+                "minimises the total edge length (points in convex position only)"
+            }
         }
     }
 
@@ -97,6 +110,32 @@ pub fn triangulate(points: &PointSet, criterion: Criterion) -> Result<Solution> 
                 t,
                 true,
                 "spade bulk-load Delaunay (exact predicates)".to_string(),
+            )
+        }
+        Criterion::Greedy => {
+            let (t, algorithm) = timed(&mut phases, "greedy", || {
+                crate::greedy::greedy_triangulation(points)
+            })?;
+            let how = match algorithm {
+                crate::greedy::GreedyAlgorithm::Semicircular => {
+                    "semicircular polygon: ear heap (Levcopoulos-Lingas Thm 4.3), O(n log n)"
+                }
+                crate::greedy::GreedyAlgorithm::Convex => {
+                    "convex position: recursive splitting (Levcopoulos-Lingas Thm 4.2), O(n) space"
+                }
+                crate::greedy::GreedyAlgorithm::General => {
+                    "general: exact length rounds with closed-vertex retirement"
+                }
+            };
+            (t, true, format!("{}: {how}", algorithm.name()))
+        }
+        Criterion::MinWeight => {
+            let t = timed(&mut phases, "min-weight", || crate::min_weight(points))?;
+            (
+                t,
+                false,
+                "Klincsek dynamic program, O(n^3); optimal up to floating-point rounding of sums"
+                    .to_string(),
             )
         }
     };
