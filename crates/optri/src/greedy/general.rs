@@ -113,18 +113,16 @@ impl Grid {
         let (xlo_seg, xhi_seg) = (a[0].min(b[0]), a[0].max(b[0]));
         let (ylo_seg, yhi_seg) = (a[1].min(b[1]), a[1].max(b[1]));
         let dx = b[0] - a[0];
-        let columns: Box<dyn Iterator<Item = usize>> = if ca <= cb {
-            Box::new(ca..=cb)
-        } else {
-            Box::new((cb..=ca).rev())
-        };
-        for c in columns {
-            let (ylo, yhi) = if ca == cb || dx == 0.0 {
+        let slope = if dx == 0.0 { 0.0 } else { (b[1] - a[1]) / dx };
+        let columns = ca.abs_diff(cb) + 1;
+        let upward = b[1] >= a[1];
+        for step in 0..columns {
+            let c = if ca <= cb { ca + step } else { ca - step };
+            let (ylo, yhi) = if columns == 1 || dx == 0.0 {
                 (ylo_seg, yhi_seg)
             } else {
                 let xl = (self.x0 + c as f64 * self.cell - self.slack_x).max(xlo_seg);
                 let xr = (self.x0 + (c + 1) as f64 * self.cell + self.slack_x).min(xhi_seg);
-                let slope = (b[1] - a[1]) / dx;
                 let (yl, yr) = (a[1] + (xl - a[0]) * slope, a[1] + (xr - a[0]) * slope);
                 (
                     yl.min(yr).max(ylo_seg).min(yhi_seg),
@@ -132,17 +130,10 @@ impl Grid {
                 )
             };
             let (r0, r1) = (self.cy(ylo - self.slack_y), self.cy(yhi + self.slack_y));
-            if b[1] >= a[1] {
-                for r in r0..=r1 {
-                    if f(r * self.nx + c) {
-                        return true;
-                    }
-                }
-            } else {
-                for r in (r0..=r1).rev() {
-                    if f(r * self.nx + c) {
-                        return true;
-                    }
+            for k in 0..=r1 - r0 {
+                let r = if upward { r0 + k } else { r1 - k };
+                if f(r * self.nx + c) {
+                    return true;
                 }
             }
         }
@@ -256,14 +247,11 @@ impl<'a> Partial<'a> {
         let id = self.edges.len() as u32;
         self.edges.push([a, b]);
         let (pa, pb) = (self.p(a), self.p(b));
-        let mut cells = Vec::new();
-        self.grid.walk(pa, pb, |c| {
-            cells.push(c);
+        let (grid, cell_edges) = (&self.grid, &mut self.cell_edges);
+        grid.walk(pa, pb, |c| {
+            cell_edges[c].push(id);
             false
         });
-        for c in cells {
-            self.cell_edges[c].push(id);
-        }
         true
     }
 
@@ -299,7 +287,87 @@ fn shorter_than(p: Point, q: Point, t: f64) -> bool {
 }
 
 /// GT edges of `points` (distinct, not all collinear).
-pub(super) fn greedy_general(points: &[Point]) -> Vec<[u32; 2]> {
+///
+/// Works on a copy renumbered along a Morton (Z-order) curve of grid cells,
+/// so that neighbouring vertices sit close in memory; ties are broken on the
+/// original indices, because the symbolic perturbation depends on them: the
+/// renumbered copy is only used where an index never decides a tie.
+pub(super) fn greedy_general(original: &[Point]) -> Vec<[u32; 2]> {
+    let n = original.len();
+    let bbox = bounding_box(original);
+    let grid = Grid::new(bbox, mean_spacing(bbox, n));
+    let morton = |p: Point| {
+        let spread = |mut v: u64| {
+            v &= 0xffff_ffff;
+            v = (v | (v << 16)) & 0x0000_ffff_0000_ffff;
+            v = (v | (v << 8)) & 0x00ff_00ff_00ff_00ff;
+            v = (v | (v << 4)) & 0x0f0f_0f0f_0f0f_0f0f;
+            v = (v | (v << 2)) & 0x3333_3333_3333_3333;
+            (v | (v << 1)) & 0x5555_5555_5555_5555
+        };
+        spread(grid.cx(p[0]) as u64) | (spread(grid.cy(p[1]) as u64) << 1)
+    };
+    let mut to_original: Vec<u32> = (0..n as u32).collect();
+    to_original.sort_by_cached_key(|&v| morton(original[v as usize]));
+    let mut to_local = vec![0u32; n];
+    for (local, &v) in to_original.iter().enumerate() {
+        to_local[v as usize] = local as u32;
+    }
+    let local: Vec<Point> = to_original.iter().map(|&v| original[v as usize]).collect();
+    let renumbering = Renumbering {
+        original,
+        to_original: &to_original,
+        to_local: &to_local,
+    };
+    greedy_rounds(&local, &renumbering)
+        .into_iter()
+        .map(|[a, b]| [to_original[a as usize], to_original[b as usize]])
+        .collect()
+}
+
+/// Local (memory-friendly) numbering versus the caller's, which decides ties.
+struct Renumbering<'a> {
+    original: &'a [Point],
+    to_original: &'a [u32],
+    to_local: &'a [u32],
+}
+
+impl Renumbering<'_> {
+    /// Sorts local-index segments by the global order on original indices.
+    fn sort(&self, segments: &mut Vec<[u32; 2]>) {
+        for s in segments.iter_mut() {
+            *s = s.map(|v| self.to_original[v as usize]);
+        }
+        sort_segments(self.original, segments);
+        for s in segments.iter_mut() {
+            *s = s.map(|v| self.to_local[v as usize]);
+        }
+    }
+}
+
+fn bounding_box(points: &[Point]) -> [f64; 4] {
+    let mut bbox = [
+        f64::INFINITY,
+        f64::INFINITY,
+        f64::NEG_INFINITY,
+        f64::NEG_INFINITY,
+    ];
+    for p in points {
+        bbox[0] = bbox[0].min(p[0]);
+        bbox[1] = bbox[1].min(p[1]);
+        bbox[2] = bbox[2].max(p[0]);
+        bbox[3] = bbox[3].max(p[1]);
+    }
+    bbox
+}
+
+/// About one point per cell; a flat box still gets a sensible cell.
+fn mean_spacing(bbox: [f64; 4], n: usize) -> f64 {
+    let (w, h) = (bbox[2] - bbox[0], bbox[3] - bbox[1]);
+    ((w.max(h * 1e-6) * h.max(w * 1e-6)) / n as f64).sqrt()
+}
+
+fn greedy_rounds(points: &[Point], renumbering: &Renumbering) -> Vec<[u32; 2]> {
     let n = points.len();
     let mut bbox = [
         f64::INFINITY,
@@ -328,7 +396,8 @@ pub(super) fn greedy_general(points: &[Point]) -> Vec<[u32; 2]> {
     let cells = grid.nx * grid.ny;
     let mut g = Partial {
         points,
-        adjacency: vec![Vec::new(); n],
+        // Allocated in vertex order, so lists of nearby vertices are close in memory.
+        adjacency: (0..n).map(|_| Vec::with_capacity(8)).collect(),
         edges: Vec::with_capacity(3 * n),
         hull_prev,
         hull_next,
@@ -357,9 +426,26 @@ pub(super) fn greedy_general(points: &[Point]) -> Vec<[u32; 2]> {
             }
         }
     }
-    sort_segments(points, &mut candidates);
+    let trace = std::env::var_os("OPTRI_GREEDY_TRACE").is_some();
+    let clock = std::time::Instant::now();
+    renumbering.sort(&mut candidates);
+    if trace {
+        eprintln!(
+            "round 0: {} candidates, sorted at {:?}",
+            candidates.len(),
+            clock.elapsed()
+        );
+    }
     for &[a, b] in &candidates {
         g.try_add(a, b);
+    }
+    if trace {
+        let max_degree = g.adjacency.iter().map(Vec::len).max().unwrap_or(0);
+        eprintln!(
+            "round 0: {} edges at {:?}, max degree {max_degree}",
+            g.edges.len(),
+            clock.elapsed()
+        );
     }
     let mut open: Vec<u32> = (0..n as u32).filter(|&v| !g.closed(v)).collect();
 
@@ -405,11 +491,20 @@ pub(super) fn greedy_general(points: &[Point]) -> Vec<[u32; 2]> {
                 }
             }
         }
-        sort_segments(points, &mut candidates);
+        renumbering.sort(&mut candidates);
         for &[a, b] in &candidates {
             g.try_add(a, b);
         }
         open.retain(|&v| !g.closed(v));
+        if trace {
+            eprintln!(
+                "round to {threshold:.3e}: {} candidates, {} edges, {} open at {:?}",
+                candidates.len(),
+                g.edges.len(),
+                open.len(),
+                clock.elapsed()
+            );
+        }
         if last {
             break;
         }
