@@ -2,11 +2,12 @@
 //!
 //! ```text
 //! cargo run --release -p optri --example greedy_bench -- uniform 1000000
-//! cargo run --release -p optri --example greedy_bench -- convex 100000
+//! cargo run --release -p optri --example greedy_bench -- convex 10000
 //! cargo run --release -p optri --example greedy_bench -- semicircular 1000000
 //! ```
 //! `uniform` reports GT time as a ratio to the Delaunay time of the same
-//! run; every mode reports the peak resident set size (`VmHWM`).
+//! run; every mode reports the peak resident set size (`VmHWM`) before and
+//! after GT.
 
 use optri::greedy::greedy_triangulation;
 use optri::{delaunay, PointSet};
@@ -24,25 +25,35 @@ fn peak_rss_mib() -> f64 {
         .map_or(f64::NAN, |kb| kb / 1024.0)
 }
 
-/// `n` points on a circle-like strictly convex curve (an ellipse, rounded).
+/// `n` points in strictly convex position, exactly: a lens of the integer
+/// parabolas `y = x²` and `y = 2m² - x²`, `|x| ≤ m`, with distinct random
+/// abscissae (not semicircular: both lens corners are sharp).
 fn convex_points(rng: &mut StdRng, n: usize) -> Vec<[f64; 2]> {
-    let mut angles: Vec<f64> = (0..n)
-        .map(|_| rng.gen_range(0.0..std::f64::consts::TAU))
-        .collect();
-    angles.sort_by(f64::total_cmp);
-    angles
-        .iter()
-        .map(|a| [1e6 * a.cos(), 6e5 * a.sin()])
-        .collect()
+    let m = 2 * n as i64;
+    let side = |rng: &mut StdRng, k: usize| -> Vec<i64> {
+        rand::seq::index::sample(rng, (2 * m - 1) as usize, k)
+            .into_iter()
+            .map(|i| i as i64 - m + 1)
+            .collect()
+    };
+    let mut pts: Vec<[f64; 2]> = vec![[-m as f64, (m * m) as f64], [m as f64, (m * m) as f64]];
+    let lower = side(rng, (n - 2) / 2);
+    pts.extend(lower.iter().map(|&x| [x as f64, (x * x) as f64]));
+    let upper = side(rng, n - 2 - (n - 2) / 2);
+    pts.extend(
+        upper
+            .iter()
+            .map(|&x| [x as f64, (2 * m * m - x * x) as f64]),
+    );
+    pts
 }
 
-/// `n` points on a flat arc: semicircular (base = the chord's endpoints).
+/// `n` points on the integer parabola `y = x²`: semicircular (the base joins
+/// the two extreme points, and every other point sees it at an obtuse angle).
 fn semicircular_points(rng: &mut StdRng, n: usize) -> Vec<[f64; 2]> {
-    let mut angles: Vec<f64> = (0..n).map(|_| rng.gen_range(0.2..2.9)).collect();
-    angles.sort_by(f64::total_cmp);
-    angles
-        .iter()
-        .map(|a| [1e6 * a.cos(), 1e6 * a.sin()])
+    rand::seq::index::sample(rng, 4 * n, n)
+        .into_iter()
+        .map(|x| [x as f64, (x as f64) * (x as f64)])
         .collect()
 }
 
@@ -57,7 +68,7 @@ fn main() {
             .collect(),
         "convex" => convex_points(&mut rng, n),
         "semicircular" => semicircular_points(&mut rng, n),
-        other => panic!("unknown mode {other}"),
+        other => panic!("unknown mode {other} (uniform | convex | semicircular)"),
     };
     let ps = PointSet::new(&pts).expect("valid points");
     let rss_before = peak_rss_mib();
@@ -67,7 +78,8 @@ fn main() {
     let rss_gt = peak_rss_mib();
     let total = t.stats().total_edge_length;
     print!(
-        "{mode} n={} algorithm={} gt={gt_s:.3}s total_length={total:.6e} peak_rss_before={rss_before:.1}MiB peak_rss_after={rss_gt:.1}MiB",
+        "{mode} n={} algorithm={} gt={gt_s:.3}s total_length={total:.6e} \
+         peak_rss_before={rss_before:.1}MiB peak_rss_after={rss_gt:.1}MiB",
         ps.len(),
         algorithm.name()
     );

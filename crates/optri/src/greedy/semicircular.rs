@@ -37,6 +37,8 @@ pub(super) fn base_rotation(points: &[Point], polygon: &[u32]) -> Option<Vec<u32
 
 struct Ear<'a> {
     points: &'a [Point],
+    /// Rounded squared length: decides unless two keys are within rounding.
+    key: f64,
     diagonal: [u32; 2],
     /// Position (in the rotated polygon) of the vertex the diagonal cuts off.
     apex: u32,
@@ -56,8 +58,16 @@ impl PartialOrd for Ear<'_> {
 impl Ord for Ear<'_> {
     /// Reversed, so the max-heap pops the shortest diagonal.
     fn cmp(&self, other: &Self) -> Ordering {
-        compare_lengths_symbolic(self.points, other.diagonal, self.diagonal)
-            .then(other.apex.cmp(&self.apex))
+        // Rounded keys carry relative error < 4·2⁻⁵³: far apart keys decide.
+        let (a, b) = (self.key, other.key);
+        let by_key = if a < b * (1.0 - 1e-12) {
+            Ordering::Less
+        } else if b < a * (1.0 - 1e-12) {
+            Ordering::Greater
+        } else {
+            compare_lengths_symbolic(self.points, self.diagonal, other.diagonal)
+        };
+        by_key.reverse().then(other.apex.cmp(&self.apex))
     }
 }
 
@@ -74,13 +84,17 @@ pub(super) fn greedy_semicircular(points: &[Point], polygon: &[u32]) -> Vec<[u32
     let mut prev: Vec<u32> = (0..k as u32).map(|i| i.wrapping_sub(1)).collect();
     let mut next: Vec<u32> = (1..=k as u32).collect();
     let mut alive = vec![true; k];
-    let ear = |prev: &[u32], next: &[u32], i: u32| Ear {
-        points,
-        diagonal: [
-            polygon[prev[i as usize] as usize],
-            polygon[next[i as usize] as usize],
-        ],
-        apex: i,
+    // Coordinates in polygon order, so the heap work touches memory locally.
+    let local: Vec<Point> = polygon.iter().map(|&v| points[v as usize]).collect();
+    let ear = |prev: &[u32], next: &[u32], i: u32| {
+        let (l, r) = (prev[i as usize] as usize, next[i as usize] as usize);
+        let (dx, dy) = (local[l][0] - local[r][0], local[l][1] - local[r][1]);
+        Ear {
+            points,
+            key: dx * dx + dy * dy,
+            diagonal: [polygon[l], polygon[r]],
+            apex: i,
+        }
     };
     let mut heap: BinaryHeap<Ear> = (1..k as u32 - 1).map(|i| ear(&prev, &next, i)).collect();
     let mut remaining = k;
