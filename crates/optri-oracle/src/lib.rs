@@ -1,1 +1,41 @@
-//! Test oracles for optri.
+//! Independent reference implementations for testing optri (tests only).
+//!
+//! Nothing here uses optri: every predicate is exact integer/rational
+//! arithmetic on the `f64` inputs ([`exact`]), and every algorithm is the
+//! simplest one that is obviously correct — exhaustive enumeration
+//! ([`all_triangulations`], cross-checked by flip-graph search, with
+//! [`optimum_by`] and the keys [`max_edge_squared`], [`total_length`],
+//! [`min_twice_area`], [`max_twice_area`]), the greedy triangulation by
+//! definition ([`greedy_triangulation`]),
+//! Klincsek's polygon DP ([`klincsek()`]), brute-force definitions of the
+//! proximity graphs ([`graphs`]), and a polynomial expansion of the
+//! symbolic perturbation ([`symbolic`]). Slow by design; inputs are small.
+//!
+//! Conventions: indices are `u32` into the caller's slice of *distinct*
+//! points; triangles are counter-clockwise with the smallest index first,
+//! lists of triangles and of `[min, max]` edges are sorted.
+
+pub mod enumerate;
+pub mod exact;
+pub mod graphs;
+pub mod klincsek;
+pub mod symbolic;
+
+pub use enumerate::{
+    all_triangulations, canonical_triangle, canonical_triangulation, edge_length, empty_segments,
+    flip_graph_triangulations, greedy_triangulation, max_edge_squared, max_twice_area,
+    min_twice_area, optimum_by, segments_by_perturbed_length, total_length, triangle_edges,
+    TotalF64, MAX_ENUMERATION_POINTS,
+};
+pub use exact::{
+    compare_squared_lengths, dot_sign, incircle, on_open_segment, orient, properly_cross,
+    rational_to_f64, squared_length, to_rational, twice_area, Point,
+};
+pub use graphs::{
+    bounded_faces, convex_hull_edges, delaunay_check, gabriel_edges, is_minimum_spanning_tree,
+    rng_edges,
+};
+pub use klincsek::{klincsek, Criterion, MaxMinArea, MinMaxArea, MinMaxLength, MinWeight};
+pub use num_bigint::BigInt;
+pub use num_rational::BigRational;
+pub use symbolic::{compare_lengths_perturbed, orient_perturbed};

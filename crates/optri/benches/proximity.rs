@@ -1,1 +1,54 @@
-fn main() {}
+//! Criterion benchmarks: Delaunay crates (spade via optri, delaunator) and
+//! optri's proximity graphs on uniform random points.
+//!
+//! `cargo bench -p optri --bench proximity`
+
+use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
+use optri::PointSet;
+use rand::{rngs::StdRng, Rng, SeedableRng};
+
+fn uniform(n: usize, seed: u64) -> Vec<[f64; 2]> {
+    let mut rng = StdRng::seed_from_u64(seed);
+    (0..n)
+        .map(|_| [rng.gen::<f64>(), rng.gen::<f64>()])
+        .collect()
+}
+
+fn proximity(c: &mut Criterion) {
+    let mut group = c.benchmark_group("proximity");
+    group.sample_size(10);
+    for &n in &[10_000usize, 100_000] {
+        let points = uniform(n, 1);
+        let ps = PointSet::new(&points).unwrap();
+        group.bench_with_input(BenchmarkId::new("spade_delaunay", n), &ps, |b, ps| {
+            b.iter(|| optri::delaunay(ps).unwrap())
+        });
+        let dpts: Vec<delaunator::Point> = points
+            .iter()
+            .map(|p| delaunator::Point { x: p[0], y: p[1] })
+            .collect();
+        group.bench_with_input(BenchmarkId::new("delaunator", n), &dpts, |b, d| {
+            b.iter(|| delaunator::triangulate(d))
+        });
+        group.bench_with_input(BenchmarkId::new("delaunay_edges", n), &ps, |b, ps| {
+            b.iter(|| optri::delaunay_edges(ps).unwrap())
+        });
+        group.bench_with_input(
+            BenchmarkId::new("relative_neighborhood_graph", n),
+            &ps,
+            |b, ps| b.iter(|| optri::relative_neighborhood_graph(ps).unwrap()),
+        );
+        group.bench_with_input(BenchmarkId::new("gabriel_graph", n), &ps, |b, ps| {
+            b.iter(|| optri::gabriel_graph(ps).unwrap())
+        });
+        group.bench_with_input(
+            BenchmarkId::new("minimum_spanning_tree", n),
+            &ps,
+            |b, ps| b.iter(|| optri::minimum_spanning_tree(ps).unwrap()),
+        );
+    }
+    group.finish();
+}
+
+criterion_group!(benches, proximity);
+criterion_main!(benches);

@@ -4,7 +4,7 @@
 //!
 //! For cocircular points spade picks one Delaunay completion; every consumer
 //! in optri is correct for *any* completion (see the lemmas cited in
-//! [`crate::relative_neighborhood_graph`] and [`crate::gabriel_graph`]).
+//! [`mod@crate::relative_neighborhood_graph`] and [`mod@crate::gabriel_graph`]).
 
 use crate::error::{Error, Result};
 use crate::kernel::Point;

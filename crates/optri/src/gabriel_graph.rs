@@ -38,7 +38,20 @@ pub(crate) fn gabriel_from_delaunay(points: &[Point], g: &DelaunayGraph) -> Vec<
 /// that the chosen completion does not contain.
 fn cocircular_diameters(points: &[Point], g: &DelaunayGraph) -> Vec<[u32; 2]> {
     let p = |i: u32| points[i as usize];
-    // Union the triangles on both sides of every edge with cocircular apexes.
+    // Edges whose two apexes are cocircular with them join one Delaunay cell.
+    let cocircular: Vec<[[u32; 3]; 2]> = g
+        .edges
+        .iter()
+        .filter_map(|&([u, v], apexes)| match apexes {
+            [Some(l), Some(r)] if incircle_sign(p(u), p(v), p(l), p(r)) == 0 => {
+                Some([[u, v, l], [v, u, r]])
+            }
+            _ => None,
+        })
+        .collect();
+    if cocircular.is_empty() {
+        return Vec::new();
+    }
     let tri_of: HashMap<[u32; 3], usize> = g
         .triangles
         .iter()
@@ -53,19 +66,10 @@ fn cocircular_diameters(points: &[Point], g: &DelaunayGraph) -> Vec<[u32; 2]> {
         }
         x
     }
-    let mut any = false;
-    for &([u, v], apexes) in &g.edges {
-        if let [Some(l), Some(r)] = apexes {
-            if incircle_sign(p(u), p(v), p(l), p(r)) == 0 {
-                let (a, b) = (tri_of[&canonical([u, v, l])], tri_of[&canonical([v, u, r])]);
-                let (ra, rb) = (find(&mut parent, a), find(&mut parent, b));
-                parent[ra] = rb;
-                any = true;
-            }
-        }
-    }
-    if !any {
-        return Vec::new();
+    for [t1, t2] in cocircular {
+        let (a, b) = (tri_of[&canonical(t1)], tri_of[&canonical(t2)]);
+        let (ra, rb) = (find(&mut parent, a), find(&mut parent, b));
+        parent[ra] = rb;
     }
     let mut cells: HashMap<usize, HashSet<u32>> = HashMap::new();
     for (i, t) in g.triangles.iter().enumerate() {

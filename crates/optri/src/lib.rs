@@ -10,7 +10,7 @@
 //! |---|---|
 //! | geometry kernel | [`kernel`]: exact predicates, symbolic tie-break, lunes, metrics |
 //! | data structures | [`PointSet`], [`planar_graph`], [`Triangulation`] |
-//! | algorithms | [`delaunay`], [`convex_hull`], [`relative_neighborhood_graph`], [`gabriel_graph`], [`minimum_spanning_tree`], [`greedy`], [`min_weight`] |
+//! | algorithms | [`mod@delaunay`], [`mod@convex_hull`], [`mod@relative_neighborhood_graph`], [`mod@gabriel_graph`], [`mod@minimum_spanning_tree`], [`mod@greedy`], [`mod@min_weight`] |
 //! | I/O | [`io`] |
 //!
 //! ```

@@ -13,11 +13,8 @@ use crate::point_set::PointSet;
 use crate::relative_neighborhood_graph::rng_from_delaunay;
 
 /// Kruskal over candidate edges (distinct indices) in the symbolic length order.
-pub(crate) fn kruskal(
-    points: &[crate::kernel::Point],
-    mut candidates: Vec<[u32; 2]>,
-) -> Vec<[u32; 2]> {
-    candidates.sort_unstable_by(segment_order(points));
+pub(crate) fn kruskal(points: &[crate::kernel::Point], candidates: Vec<[u32; 2]>) -> Vec<[u32; 2]> {
+    let candidates = sort_by_length(points, candidates);
     let mut parent: Vec<u32> = (0..points.len() as u32).collect();
     fn find(parent: &mut [u32], mut x: u32) -> u32 {
         while parent[x as usize] != x {
@@ -35,6 +32,35 @@ pub(crate) fn kruskal(
         }
     }
     tree
+}
+
+/// Sorts segments by the symbolic length order.
+///
+/// Keys are rounded squared lengths; each carries relative error below 4u
+/// (u = 2⁻⁵³), so two keys that differ by more than 16u of their sum are
+/// ordered correctly, and only near-ties pay for the exact comparison.
+pub(crate) fn sort_by_length(
+    points: &[crate::kernel::Point],
+    segments: Vec<[u32; 2]>,
+) -> Vec<[u32; 2]> {
+    const GAP: f64 = 16.0 * f64::EPSILON * 0.5;
+    let exact = segment_order(points);
+    let mut keyed: Vec<(f64, [u32; 2])> = segments
+        .into_iter()
+        .map(|s| {
+            let (a, b) = (points[s[0] as usize], points[s[1] as usize]);
+            let (dx, dy) = (a[0] - b[0], a[1] - b[1]);
+            (dx * dx + dy * dy, s)
+        })
+        .collect();
+    keyed.sort_unstable_by(|x, y| {
+        if (x.0 - y.0).abs() > GAP * (x.0 + y.0) {
+            x.0.total_cmp(&y.0)
+        } else {
+            exact(&x.1, &y.1)
+        }
+    });
+    keyed.into_iter().map(|(_, s)| s).collect()
 }
 
 /// The Euclidean minimum spanning tree: `n - 1` edges as sorted `[min, max]`

@@ -17,81 +17,130 @@
 
 use crate::delaunay::{delaunay_graph, to_input_edges, DelaunayGraph};
 use crate::error::Result;
-use crate::kernel::{compare_lengths, in_lune, Point};
+use crate::kernel::{compare_lengths, Point};
 use crate::point_set::PointSet;
 use rayon::prelude::*;
 use std::cmp::Ordering::Less;
 
-/// Does some point lie strictly inside the lune of the Delaunay edge `pq`?
-fn lune_is_occupied(
-    points: &[Point],
-    g: &DelaunayGraph,
-    p: u32,
-    q: u32,
-    apexes: [Option<u32>; 2],
-    scratch: &mut Search,
-) -> bool {
-    let (pp, pq) = (points[p as usize], points[q as usize]);
-    // Fast path: an apex in the lune settles it (always so for non-Gabriel edges).
-    if apexes
-        .iter()
-        .flatten()
-        .any(|&a| in_lune(pp, pq, points[a as usize]))
-    {
-        return true;
-    }
-    scratch.stamp += 1;
-    let stamp = scratch.stamp;
-    scratch.stack.clear();
-    scratch.stack.push(p);
-    scratch.seen[p as usize] = stamp;
-    while let Some(w) = scratch.stack.pop() {
-        for &x in g.neighbors(w) {
-            if scratch.seen[x as usize] == stamp {
-                continue;
-            }
-            scratch.seen[x as usize] = stamp;
-            let px = points[x as usize];
-            if compare_lengths(px, pp, pp, pq) != Less {
-                continue; // outside the open disc around p: not expanded
-            }
-            if compare_lengths(px, pq, pp, pq) == Less {
-                return true;
-            }
-            scratch.stack.push(x);
-        }
-    }
-    false
+/// The Delaunay graph renumbered along a Z-order curve, so that points close
+/// in the plane are close in memory: the lune searches are memory-bound, and
+/// input order scatters neighbours across the whole point array.
+struct LocalGraph {
+    points: Vec<Point>,
+    offsets: Vec<u32>,
+    adjacency: Vec<u32>,
+    /// `original[local]` is the index in the caller's numbering.
+    original: Vec<u32>,
 }
 
-struct Search {
-    seen: Vec<u32>,
-    stack: Vec<u32>,
-    stamp: u32,
+impl LocalGraph {
+    fn new(points: &[Point], g: &DelaunayGraph) -> Self {
+        let original = morton_order(points);
+        let mut local = vec![0u32; points.len()];
+        for (l, &o) in original.iter().enumerate() {
+            local[o as usize] = l as u32;
+        }
+        let mut offsets = Vec::with_capacity(points.len() + 1);
+        let mut adjacency = Vec::with_capacity(g.adjacency.len());
+        offsets.push(0);
+        for &o in &original {
+            adjacency.extend(g.neighbors(o).iter().map(|&x| local[x as usize]));
+            offsets.push(adjacency.len() as u32);
+        }
+        Self {
+            points: original.iter().map(|&o| points[o as usize]).collect(),
+            offsets,
+            adjacency,
+            original,
+        }
+    }
+
+    #[inline]
+    fn neighbors(&self, v: u32) -> &[u32] {
+        &self.adjacency[self.offsets[v as usize] as usize..self.offsets[v as usize + 1] as usize]
+    }
+
+    /// Does some point lie strictly inside the lune of the Delaunay edge `pq`?
+    ///
+    /// By the greedy-routing lemma the points of the open disc `D(p, |pq|)`
+    /// and `p` induce a connected subgraph, so a search from `p` that only
+    /// expands vertices inside the disc meets every point of the lune.
+    fn lune_is_occupied(&self, p: u32, q: u32, inside: &mut Vec<u32>) -> bool {
+        let (pp, pq) = (self.points[p as usize], self.points[q as usize]);
+        // The disc holds O(1) points on typical data, so a short list of the
+        // expanded vertices beats an n-sized "seen" array.
+        inside.clear();
+        inside.push(p);
+        let mut next = 0;
+        while next < inside.len() {
+            let w = inside[next];
+            next += 1;
+            for &x in self.neighbors(w) {
+                let px = self.points[x as usize];
+                if compare_lengths(px, pp, pp, pq) != Less || inside.contains(&x) {
+                    continue; // outside the open disc around p, or already expanded
+                }
+                if compare_lengths(px, pq, pp, pq) == Less {
+                    return true;
+                }
+                inside.push(x);
+            }
+        }
+        false
+    }
+}
+
+/// Indices of `points` sorted by the Z-order (Morton) key of a 2¹⁶ × 2¹⁶ grid.
+fn morton_order(points: &[Point]) -> Vec<u32> {
+    let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
+    for p in points {
+        for k in 0..2 {
+            lo[k] = lo[k].min(p[k]);
+            hi[k] = hi[k].max(p[k]);
+        }
+    }
+    let spread = |mut v: u64| {
+        v = (v | (v << 8)) & 0x00FF_00FF;
+        v = (v | (v << 4)) & 0x0F0F_0F0F;
+        v = (v | (v << 2)) & 0x3333_3333;
+        (v | (v << 1)) & 0x5555_5555
+    };
+    let cell = |p: &Point, k: usize| {
+        // Scale by the extent; the result only orders the work, never decides.
+        let t = (p[k] - lo[k]) / (hi[k] - lo[k]);
+        ((t * 65535.0) as u64).min(65535)
+    };
+    let mut keyed: Vec<u64> = points
+        .iter()
+        .enumerate()
+        .map(|(i, p)| ((spread(cell(p, 0)) | (spread(cell(p, 1)) << 1)) << 32) | i as u64)
+        .collect();
+    keyed.sort_unstable();
+    keyed.into_iter().map(|k| k as u32).collect()
 }
 
 /// RNG edges as distinct-index pairs, from a Delaunay graph.
 pub(crate) fn rng_from_delaunay(points: &[Point], g: &DelaunayGraph) -> Vec<[u32; 2]> {
-    let n = points.len();
-    g.edges
-        .par_iter()
-        .map_init(
-            || Search {
-                seen: vec![0; n],
-                stack: Vec::new(),
-                stamp: 0,
-            },
-            |scratch, &([u, v], apexes)| {
-                // Search from the endpoint of smaller degree: fewer disc neighbours.
-                let (p, q) = if g.neighbors(u).len() <= g.neighbors(v).len() {
-                    (u, v)
-                } else {
-                    (v, u)
-                };
-                (!lune_is_occupied(points, g, p, q, apexes, scratch)).then_some([u, v])
-            },
-        )
-        .flatten()
+    let local = LocalGraph::new(points, g);
+    let n = points.len() as u32;
+    (0..n)
+        .into_par_iter()
+        .with_min_len(1024)
+        .map_init(Vec::new, |inside, p| {
+            let mut kept = Vec::new();
+            for &q in local.neighbors(p) {
+                // Each edge once, searched from its lower-degree endpoint.
+                let (dp, dq) = (local.neighbors(p).len(), local.neighbors(q).len());
+                if (dp, p) > (dq, q) {
+                    continue;
+                }
+                if !local.lune_is_occupied(p, q, inside) {
+                    kept.push([local.original[p as usize], local.original[q as usize]]);
+                }
+            }
+            kept
+        })
+        .flatten_iter()
         .collect()
 }
 

@@ -166,7 +166,8 @@ impl Triangulation {
 
     /// Checks exactly that this is a triangulation of the point set.
     ///
-    /// Verified: every triangle is strictly counter-clockwise (no flat
+    /// Verified: indices are in range and name first occurrences of merged
+    /// duplicates; every triangle is strictly counter-clockwise (no flat
     /// triangles); no directed edge is used twice; the unpaired edges are
     /// exactly the convex hull's edges (collinear hull points included);
     /// around every vertex the triangles form one fan that turns once (interior)
@@ -188,6 +189,18 @@ impl Triangulation {
                 ));
             }
             let d = t.map(|i| ps.distinct_index(i));
+            // Indices must be first occurrences: a dropped duplicate's index
+            // would make `edges()` list one geometric edge under two names.
+            if let Some(&i) = t
+                .iter()
+                .find(|&&i| ps.input_index(ps.distinct_index(i)) != i)
+            {
+                return bad(format!(
+                    "triangle {ti} {t:?} uses input point {i}, a duplicate of point {}; \
+                     use the first occurrence",
+                    ps.input_index(ps.distinct_index(i))
+                ));
+            }
             if d[0] == d[1] || d[1] == d[2] || d[0] == d[2] {
                 return bad(format!("triangle {ti} {t:?} repeats a point"));
             }

@@ -1,0 +1,458 @@
+//! End-to-end tests of the `optri` binary: results are checked against the
+//! library (triangles re-validated exactly), errors for their message, line
+//! and exit code.
+
+use optri::{PointSet, Triangulation};
+use serde_json::Value;
+use std::io::Write;
+use std::path::PathBuf;
+use std::process::{Command, Output, Stdio};
+
+const BIN: &str = env!("CARGO_BIN_EXE_optri");
+/// The repository root is two levels above this crate; `shared/` is beside it.
+const TSPLIB: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../../../shared/data/tsplib/");
+
+/// A fresh directory for one test's files.
+fn scratch(test: &str) -> PathBuf {
+    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join(format!("cli-{test}"));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+fn write(dir: &std::path::Path, name: &str, contents: &str) -> String {
+    let path = dir.join(name);
+    std::fs::write(&path, contents).unwrap();
+    path.to_str().unwrap().to_string()
+}
+
+fn run(args: &[&str]) -> Output {
+    Command::new(BIN).args(args).output().unwrap()
+}
+
+fn run_stdin(args: &[&str], input: &str) -> Output {
+    let mut child = Command::new(BIN)
+        .args(args)
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    child
+        .stdin
+        .take()
+        .unwrap()
+        .write_all(input.as_bytes())
+        .unwrap();
+    child.wait_with_output().unwrap()
+}
+
+fn stdout_json(out: &Output) -> Value {
+    assert!(
+        out.status.success(),
+        "stderr: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    serde_json::from_slice(&out.stdout).unwrap()
+}
+
+/// Checks the JSON `triangles` form a valid triangulation of `points`.
+fn check_triangulation(json: &Value, points: &[[f64; 2]]) -> Triangulation {
+    let triangles: Vec<[u32; 3]> = serde_json::from_value(json["triangles"].clone()).unwrap();
+    let ps = PointSet::new(points).unwrap();
+    let t = Triangulation::from_triangles(&ps, triangles).unwrap();
+    assert_eq!(json["points"], points.len());
+    assert_eq!(json["stats"]["triangles"], t.triangles().len());
+    assert_eq!(json["stats"]["edges"], t.edges().len());
+    t
+}
+
+/// Asserts a clean failure whose stderr contains every one of `needles`.
+fn assert_fails(out: &Output, needles: &[&str]) {
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(1), "stderr: {err}");
+    assert!(err.starts_with("optri: error: "), "{err}");
+    assert!(!err.contains("panicked"), "{err}");
+    for n in needles {
+        assert!(err.contains(n), "expected {n:?} in {err:?}");
+    }
+}
+
+const SQUARE: &str = "x,y\n0,0\n4,0\n4,4\n0,4\n1,1\n3,2\n";
+const SQUARE_POINTS: [[f64; 2]; 6] = [
+    [0.0, 0.0],
+    [4.0, 0.0],
+    [4.0, 4.0],
+    [0.0, 4.0],
+    [1.0, 1.0],
+    [3.0, 2.0],
+];
+
+#[test]
+fn triangulate_json_from_a_file() {
+    let dir = scratch("json");
+    let input = write(&dir, "square.csv", SQUARE);
+    let json = stdout_json(&run(&["triangulate", &input, "--json"]));
+    let t = check_triangulation(&json, &SQUARE_POINTS);
+    assert_eq!(json["criterion"], "delaunay");
+    assert_eq!(json["exact"], true);
+    assert!(json["algorithm"].is_string());
+    assert_eq!(json["duplicates"], serde_json::json!([]));
+    // Same triangles as the library's Delaunay triangulation.
+    let lib = optri::delaunay(&PointSet::new(&SQUARE_POINTS).unwrap()).unwrap();
+    assert_eq!(t.triangles(), lib.triangles());
+    let stats = &json["stats"];
+    for key in [
+        "max_edge_length",
+        "total_edge_length",
+        "min_area",
+        "max_area",
+        "min_angle_deg",
+        "max_angle_deg",
+        "hull_points",
+    ] {
+        assert!(stats[key].is_number(), "{key}");
+    }
+    assert_eq!(stats["hull_points"], 4);
+    for key in ["read", "total", "delaunay"] {
+        assert!(json["timing_ms"][key].as_f64().unwrap() >= 0.0, "{key}");
+    }
+}
+
+#[test]
+fn triangulate_from_stdin_and_human_summary() {
+    let json = stdout_json(&run_stdin(&["triangulate", "-", "--json"], SQUARE));
+    check_triangulation(&json, &SQUARE_POINTS);
+    let out = run_stdin(&["triangulate", "-"], "0 0\n1 0\n0 1\n0 0\n1 1\n0 1\n");
+    assert!(out.status.success());
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(text.contains("merged 2 duplicate points"), "{text}");
+    assert!(text.contains("criterion: delaunay"), "{text}");
+    assert!(text.contains("triangles: 2"), "{text}");
+    // Parse errors on stdin are named too.
+    assert_fails(
+        &run_stdin(&["triangulate", "-"], "0 0\n1 x\n"),
+        &["<stdin>:2:", "'x'"],
+    );
+}
+
+#[test]
+fn duplicates_are_reported_with_input_indices() {
+    let dir = scratch("dups");
+    let input = write(&dir, "d.txt", "0 0\n2 0\n0 2\n2 0\n2 2\n0 0\n");
+    let json = stdout_json(&run(&["triangulate", &input, "--json"]));
+    assert_eq!(json["duplicates"], serde_json::json!([[3, 1], [5, 0]]));
+    let points = [
+        [0.0, 0.0],
+        [2.0, 0.0],
+        [0.0, 2.0],
+        [2.0, 0.0],
+        [2.0, 2.0],
+        [0.0, 0.0],
+    ];
+    let t = check_triangulation(&json, &points);
+    assert!(t.triangles().iter().flatten().all(|&i| i != 3 && i != 5));
+}
+
+#[test]
+fn tsplib_file_with_a_duplicate_and_outputs() {
+    let dir = scratch("tsplib");
+    let input = format!("{TSPLIB}a280.tsp");
+    let svg = dir.join("a280.svg");
+    let ele = dir.join("a280.ele");
+    let geojson = dir.join("a280.geojson");
+    let out_json = dir.join("a280.json");
+    let out = run(&[
+        "triangulate",
+        &input,
+        "--json",
+        "--output",
+        svg.to_str().unwrap(),
+        "-o",
+        ele.to_str().unwrap(),
+        "-o",
+        geojson.to_str().unwrap(),
+        "-o",
+        out_json.to_str().unwrap(),
+    ]);
+    let json = stdout_json(&out);
+    let points = optri::io::read_points_file(std::path::Path::new(&input), None).unwrap();
+    assert_eq!(points.len(), 280);
+    let t = check_triangulation(&json, &points);
+    // Nodes 171 and 172 (input indices 170, 171) coincide.
+    assert_eq!(json["duplicates"], serde_json::json!([[171, 170]]));
+    assert_eq!(json["stats"]["hull_points"], 44);
+    let svg = std::fs::read_to_string(svg).unwrap();
+    assert!(svg.starts_with("<svg"));
+    assert_eq!(svg.matches("<line class=\"edge\"").count(), t.edges().len());
+    let node = std::fs::read_to_string(dir.join("a280.node")).unwrap();
+    assert_eq!(
+        optri::io::read_points(&node, optri::io::InputFormat::Node).unwrap(),
+        points
+    );
+    assert!(std::fs::read_to_string(ele)
+        .unwrap()
+        .contains(&format!("\n{} 3 0\n", t.triangles().len())));
+    let written: Value = serde_json::from_str(&std::fs::read_to_string(out_json).unwrap()).unwrap();
+    let back = optri::io::triangulation_from_json(&written).unwrap();
+    assert_eq!(back.triangles(), t.triangles());
+    let g: Value = serde_json::from_str(&std::fs::read_to_string(geojson).unwrap()).unwrap();
+    assert_eq!(
+        g["features"].as_array().unwrap().len(),
+        t.triangles().len() + 280
+    );
+}
+
+#[test]
+fn bad_inputs_fail_cleanly_with_the_line() {
+    let dir = scratch("bad");
+    let cases: &[(&str, &str, &[&str])] = &[
+        ("nan.txt", "0 0\n1 0\nNaN 1\n", &["nan.txt:3:", "finite"]),
+        ("inf.txt", "0 0\n1 inf\n0 1\n", &["inf.txt:2:", "finite"]),
+        (
+            "garbage.txt",
+            "0 0\n1 0\n0 1\nhello world\n",
+            &["garbage.txt:4:", "'hello'"],
+        ),
+        ("empty.txt", "", &["empty.txt", "no points"]),
+        (
+            "comments.txt",
+            "# nothing\n\n",
+            &["comments.txt", "no points"],
+        ),
+        (
+            "two.txt",
+            "0 0\n1 1\n",
+            &["two.txt", "at least 3 distinct", "has 2"],
+        ),
+        ("dup3.txt", "0 0\n1 1\n0 0\n", &["at least 3 distinct"]),
+        (
+            "collinear.txt",
+            "0 0\n1 1\n2 2\n3 3\n",
+            &["collinear.txt", "collinear"],
+        ),
+        (
+            "ragged.txt",
+            "0 0\n1 0\n0 1 5\n",
+            &["ragged.txt:3:", "columns"],
+        ),
+        (
+            "range.txt",
+            "0 0\n1 0\n0 1e300\n",
+            &["range.txt:3:", "range"],
+        ),
+        (
+            "bad.tsp",
+            "DIMENSION: 4\nNODE_COORD_SECTION\n1 0 0\n2 1 0\n3 0 1\nEOF\n",
+            &["bad.tsp:1:", "DIMENSION is 4"],
+        ),
+        (
+            "bad.geojson",
+            "{\"type\":\"LineString\",\"coordinates\":[[0,0],[1,1]]}",
+            &["bad.geojson", "LineString"],
+        ),
+    ];
+    for (name, contents, needles) in cases {
+        let path = write(&dir, name, contents);
+        assert_fails(&run(&["triangulate", &path]), needles);
+        assert_fails(&run(&["triangulate", &path, "--json"]), needles);
+        assert_fails(&run(&["graph", &path, "--kind", "rng"]), needles);
+    }
+}
+
+#[test]
+fn bad_arguments_fail_cleanly() {
+    let dir = scratch("args");
+    let input = write(&dir, "ok.txt", SQUARE);
+    assert_fails(
+        &run(&["triangulate", &input, "--criterion", "prettiest"]),
+        &["unknown criterion 'prettiest'", "delaunay"],
+    );
+    let png = dir.join("out.png");
+    assert_fails(
+        &run(&["triangulate", &input, "-o", png.to_str().unwrap()]),
+        &["out.png", ".svg", ".json", ".ele", ".geojson"],
+    );
+    assert!(!png.exists());
+    let missing = dir.join("missing.txt");
+    assert_fails(
+        &run(&["triangulate", missing.to_str().unwrap()]),
+        &["missing.txt"],
+    );
+    assert_fails(
+        &run(&["triangulate", &input, "--input-format", "xml"]),
+        &["unknown input format 'xml'", "tsplib"],
+    );
+    let unwritable = dir.join("no/such/dir/out.svg");
+    assert_fails(
+        &run(&["triangulate", &input, "-o", unwritable.to_str().unwrap()]),
+        &["no/such/dir/out.svg"],
+    );
+    let ele = dir.join("g.ele");
+    assert_fails(
+        &run(&[
+            "graph",
+            &input,
+            "--kind",
+            "mst",
+            "-o",
+            ele.to_str().unwrap(),
+        ]),
+        &["g.ele", "not a triangulation"],
+    );
+    // Usage errors are clap's (exit 2), still without a panic.
+    let out = run(&["graph", &input, "--kind", "voronoi"]);
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.contains("gabriel") && !err.contains("panicked"),
+        "{err}"
+    );
+}
+
+#[test]
+fn explicit_input_format_overrides_the_extension() {
+    let dir = scratch("format");
+    let input = write(&dir, "points.dat", "3 2 0 0\n1 0 0\n2 5 0\n3 0 5\n");
+    let json = stdout_json(&run(&[
+        "triangulate",
+        &input,
+        "--input-format",
+        "node",
+        "--json",
+    ]));
+    check_triangulation(&json, &[[0.0, 0.0], [5.0, 0.0], [0.0, 5.0]]);
+    // Unknown extension, no flag: read by content as text, so the header row
+    // of a .node file is a ragged row.
+    assert_fails(
+        &run(&["triangulate", &input]),
+        &["points.dat:2:", "columns"],
+    );
+}
+
+#[test]
+fn graph_kinds_match_the_library() {
+    let dir = scratch("graph");
+    let text = "0 0\n4 0\n4 4\n0 4\n1 1\n3 2\n2 0\n1 1\n2 3.5\n";
+    let input = write(&dir, "g.txt", text);
+    let points = optri::io::read_points(text, optri::io::InputFormat::Text).unwrap();
+    let ps = PointSet::new(&points).unwrap();
+    let sorted = |mut e: Vec<[u32; 2]>| {
+        for x in &mut e {
+            x.sort_unstable();
+        }
+        e.sort_unstable();
+        e
+    };
+    let expected = [
+        ("hull", sorted(optri::convex_hull_edges(&ps))),
+        (
+            "rng",
+            sorted(optri::relative_neighborhood_graph(&ps).unwrap()),
+        ),
+        ("gabriel", sorted(optri::gabriel_graph(&ps).unwrap())),
+        ("mst", sorted(optri::minimum_spanning_tree(&ps).unwrap())),
+        ("delaunay", sorted(optri::delaunay_edges(&ps).unwrap())),
+    ];
+    for (kind, edges) in &expected {
+        let json = stdout_json(&run(&["graph", &input, "--kind", kind, "--json"]));
+        assert_eq!(json["kind"], *kind);
+        assert_eq!(json["points"], 9);
+        assert_eq!(json["duplicates"], serde_json::json!([[7, 4]]));
+        let got: Vec<[u32; 2]> = serde_json::from_value(json["edges"].clone()).unwrap();
+        assert_eq!(&sorted(got), edges, "{kind}");
+        assert!(json["timing_ms"]["total"].is_number());
+    }
+    // The hull includes the collinear point (2, 0); the MST is a tree.
+    let hull = &expected[0].1;
+    assert_eq!(hull.len(), 5);
+    assert_eq!(expected[3].1.len(), 7);
+    let svg = dir.join("mst.svg");
+    let out = run(&[
+        "graph",
+        &input,
+        "--kind",
+        "mst",
+        "-o",
+        svg.to_str().unwrap(),
+    ]);
+    assert!(out.status.success());
+    let svg = std::fs::read_to_string(svg).unwrap();
+    assert_eq!(svg.matches("<line class=\"edge\"").count(), 7);
+}
+
+#[test]
+fn demo_draws_every_criterion() {
+    let dir = scratch("demo");
+    let out = Command::new(BIN)
+        .arg("demo")
+        .current_dir(&dir)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let svg = std::fs::read_to_string(dir.join("demo.svg")).unwrap();
+    assert!(svg.starts_with("<svg"));
+    let text = String::from_utf8_lossy(&out.stdout);
+    // Criteria that do not support the demo set say so and get no panel.
+    let skipped = text.matches(": skipped: ").count();
+    assert_eq!(
+        svg.matches("<g class=\"panel\"").count(),
+        optri::Criterion::ALL.len() - skipped
+    );
+    assert!(text.contains("merged 1 duplicate point"), "{text}");
+    for c in optri::Criterion::ALL {
+        assert!(text.contains(c.name()), "{text}");
+    }
+    let custom = dir.join("d2.svg");
+    assert!(run(&["demo", "-o", custom.to_str().unwrap()])
+        .status
+        .success());
+    assert!(custom.exists());
+    assert_fails(
+        &run(&["demo", "-o", dir.join("d.json").to_str().unwrap()]),
+        &["d.json", ".svg"],
+    );
+}
+
+#[test]
+fn every_tsplib_file_matches_its_readme_counts() {
+    // (file, DIMENSION, duplicate coords, hull points incl. collinear) from
+    // shared/data/tsplib/README.md, computed there independently.
+    let expected = [
+        ("berlin52", 52, 0, 8),
+        ("kroA100", 100, 0, 12),
+        ("ch150", 150, 0, 15),
+        ("a280", 280, 1, 44),
+        ("lin318", 318, 0, 11),
+        ("pr1002", 1002, 0, 31),
+        ("u1060", 1060, 0, 24),
+        ("vm1084", 1084, 0, 380),
+        ("pcb3038", 3038, 0, 10),
+        ("fl1577", 1577, 0, 85),
+        ("fnl4461", 4461, 0, 21),
+        ("att532", 532, 0, 12),
+        ("ali535", 535, 29, 10),
+        ("ts225", 225, 0, 96),
+    ];
+    for (name, n, duplicates, hull) in expected {
+        let input = format!("{TSPLIB}{name}.tsp");
+        let json = stdout_json(&run(&["triangulate", &input, "--json"]));
+        assert_eq!(json["points"], n, "{name}");
+        assert_eq!(
+            json["duplicates"].as_array().unwrap().len(),
+            duplicates,
+            "{name}"
+        );
+        assert_eq!(json["stats"]["hull_points"], hull, "{name}");
+        // 2n - h - 2 triangles over the distinct points.
+        assert_eq!(
+            json["stats"]["triangles"],
+            2 * (n - duplicates) - hull - 2,
+            "{name}"
+        );
+    }
+}
