@@ -172,8 +172,7 @@ fn read_tsp(path: &std::path::Path) -> Vec<Point> {
     pts
 }
 
-#[test]
-fn tsplib_files_match_the_naive_reference() {
+fn tsplib_files() -> Vec<std::path::PathBuf> {
     let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../../shared/data/tsplib");
     let mut files: Vec<_> = std::fs::read_dir(&dir)
         .unwrap_or_else(|e| panic!("{}: {e}", dir.display()))
@@ -182,11 +181,33 @@ fn tsplib_files_match_the_naive_reference() {
         .collect();
     files.sort();
     assert!(files.len() >= 14, "expected the 14 TSPLIB files");
-    for path in files {
+    files
+}
+
+fn check_tsplib(small: bool) {
+    for path in tsplib_files() {
         let pts = read_tsp(&path);
         assert!(pts.len() > 50, "{}", path.display());
+        if (pts.len() <= 1100) != small {
+            continue;
+        }
+        let start = std::time::Instant::now();
         check_against_naive(&pts, &path.display().to_string());
+        eprintln!("{}: {} points, {:?}", path.display(), pts.len(), start.elapsed());
     }
+}
+
+#[test]
+fn tsplib_files_match_the_naive_reference() {
+    check_tsplib(true);
+}
+
+/// The three TSPLIB files above 1100 points (1577, 3038, 4461): minutes in
+/// the test profile; `cargo test --release -p optri --test greedy -- --ignored`.
+#[test]
+#[ignore]
+fn large_tsplib_files_match_the_naive_reference() {
+    check_tsplib(false);
 }
 
 /// `n` points in strictly convex position, exactly: a lens of the integer
