@@ -193,7 +193,12 @@ fn check_tsplib(small: bool) {
         }
         let start = std::time::Instant::now();
         check_against_naive(&pts, &path.display().to_string());
-        eprintln!("{}: {} points, {:?}", path.display(), pts.len(), start.elapsed());
+        eprintln!(
+            "{}: {} points, {:?}",
+            path.display(),
+            pts.len(),
+            start.elapsed()
+        );
     }
 }
 

@@ -18,7 +18,12 @@
 //!   belongs to *every* Delaunay triangulation of `Q`'s vertices, so `e` is a
 //!   diagonal of the Delaunay triangulation of `Q`, whatever completion it
 //!   picks for cocircular points.
-//! The Delaunay triangulation of `Q` is rebuilt per subpolygon.
+//!
+//! The Delaunay triangulation of `Q` is rebuilt per subpolygon (spade,
+//! O(|Q| log |Q|)), so this implementation takes O(n² log n) time in the worst
+//! case — a log factor above Thm 4.2 — and O(n) space. Replacing the rebuild
+//! by an O(|Q|) Delaunay triangulation of a convex polygon (Chew's randomised
+//! algorithm, literature.md §e) would give the theorem's O(n²).
 
 use crate::delaunay::delaunay_graph;
 use crate::kernel::{compare_lengths_symbolic, Point};

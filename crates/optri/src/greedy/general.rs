@@ -426,26 +426,9 @@ fn greedy_rounds(points: &[Point], renumbering: &Renumbering) -> Vec<[u32; 2]> {
             }
         }
     }
-    let trace = std::env::var_os("OPTRI_GREEDY_TRACE").is_some();
-    let clock = std::time::Instant::now();
     renumbering.sort(&mut candidates);
-    if trace {
-        eprintln!(
-            "round 0: {} candidates, sorted at {:?}",
-            candidates.len(),
-            clock.elapsed()
-        );
-    }
     for &[a, b] in &candidates {
         g.try_add(a, b);
-    }
-    if trace {
-        let max_degree = g.adjacency.iter().map(Vec::len).max().unwrap_or(0);
-        eprintln!(
-            "round 0: {} edges at {:?}, max degree {max_degree}",
-            g.edges.len(),
-            clock.elapsed()
-        );
     }
     let mut open: Vec<u32> = (0..n as u32).filter(|&v| !g.closed(v)).collect();
 
@@ -496,15 +479,6 @@ fn greedy_rounds(points: &[Point], renumbering: &Renumbering) -> Vec<[u32; 2]> {
             g.try_add(a, b);
         }
         open.retain(|&v| !g.closed(v));
-        if trace {
-            eprintln!(
-                "round to {threshold:.3e}: {} candidates, {} edges, {} open at {:?}",
-                candidates.len(),
-                g.edges.len(),
-                open.len(),
-                clock.elapsed()
-            );
-        }
         if last {
             break;
         }
