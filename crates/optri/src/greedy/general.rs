@@ -208,22 +208,24 @@ impl<'a> Partial<'a> {
             .partition_point(|&n| compare_angles(pa, self.points[n as usize], pb) == Ordering::Less)
     }
 
-    /// May an edge leave `a` towards `b`? False if the direction is taken or
-    /// falls into a closed triangular gap (module docs, Lemma).
-    fn gap_open(&self, a: u32, b: u32) -> bool {
+    /// May an edge leave `a` towards `b`? `None` if the direction is taken
+    /// or falls into a closed triangular gap (module docs, Lemma); otherwise
+    /// the position at which `b` sorts into `a`'s neighbour list.
+    fn gap_open(&self, a: u32, b: u32) -> Option<usize> {
         let list = &self.adjacency[a as usize];
         let len = list.len();
         let pos = self.angular_position(a, b);
         let pa = self.p(a);
         if pos < len && compare_angles(pa, self.p(list[pos]), self.p(b)) == Ordering::Equal {
-            return false;
+            return None;
         }
         if len < 2 {
-            return true;
+            return Some(pos);
         }
         let u = list[(pos + len - 1) % len];
         let w = list[pos % len];
-        !(orient_sign(pa, self.p(u), self.p(w)) > 0 && self.has_edge(u, w))
+        let closed = orient_sign(pa, self.p(u), self.p(w)) > 0 && self.has_edge(u, w);
+        (!closed).then_some(pos)
     }
 
     fn crosses_an_edge(&self, a: u32, b: u32) -> bool {
@@ -237,13 +239,17 @@ impl<'a> Partial<'a> {
     }
 
     fn try_add(&mut self, a: u32, b: u32) -> bool {
-        if !self.gap_open(a, b) || !self.gap_open(b, a) || self.crosses_an_edge(a, b) {
+        let Some(at_a) = self.gap_open(a, b) else {
+            return false;
+        };
+        let Some(at_b) = self.gap_open(b, a) else {
+            return false;
+        };
+        if self.crosses_an_edge(a, b) {
             return false;
         }
-        let pos = self.angular_position(a, b);
-        self.adjacency[a as usize].insert(pos, b);
-        let pos = self.angular_position(b, a);
-        self.adjacency[b as usize].insert(pos, a);
+        self.adjacency[a as usize].insert(at_a, b);
+        self.adjacency[b as usize].insert(at_b, a);
         let id = self.edges.len() as u32;
         self.edges.push([a, b]);
         let (pa, pb) = (self.p(a), self.p(b));
@@ -444,8 +450,8 @@ fn greedy_rounds(points: &[Point], renumbering: &Renumbering) -> Vec<[u32; 2]> {
             let (pa, pb) = (points[a as usize], points[b as usize]);
             !shorter_than(pa, pb, lower)
                 && (last || shorter_than(pa, pb, threshold))
-                && g.gap_open(a, b)
-                && g.gap_open(b, a)
+                && g.gap_open(a, b).is_some()
+                && g.gap_open(b, a).is_some()
         };
         if last {
             for (i, &a) in open.iter().enumerate() {
