@@ -118,16 +118,16 @@ pub fn triangulate(points: &PointSet, criterion: Criterion) -> Result<Solution> 
             })?;
             let how = match algorithm {
                 crate::greedy::GreedyAlgorithm::Semicircular => {
-                    "semicircular polygon: ear heap (Levcopoulos-Lingas Thm 4.3), O(n log n)"
+                    "ear heap for semicircular polygons, Levcopoulos-Lingas Thm 4.3, O(n log n)"
                 }
                 crate::greedy::GreedyAlgorithm::Convex => {
-                    "convex position: recursive splitting (Levcopoulos-Lingas Thm 4.2), O(n) space"
+                    "recursive splitting for convex position, Levcopoulos-Lingas Thm 4.2, O(n) space"
                 }
                 crate::greedy::GreedyAlgorithm::General => {
-                    "general: exact length rounds with closed-vertex retirement"
+                    "exact length rounds with closed-vertex retirement"
                 }
             };
-            (t, true, format!("{}: {how}", algorithm.name()))
+            (t, true, format!("{} ({how})", algorithm.name()))
         }
         Criterion::MinWeight => {
             let t = timed(&mut phases, "min-weight", || crate::min_weight(points))?;
