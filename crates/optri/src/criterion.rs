@@ -15,6 +15,10 @@ pub enum Criterion {
     Delaunay,
     /// Minimises the longest edge (Edelsbrunner–Tan).
     MinmaxLength,
+    /// The greedy triangulation (shortest compatible segment first).
+    Greedy,
+    /// Minimum total edge length (convex position only, for now).
+    MinWeight,
 }
 
 /// One timed phase of an algorithm run.
@@ -43,13 +47,20 @@ pub struct Solution {
 
 impl Criterion {
     /// Every implemented criterion, in display order.
-    pub const ALL: &'static [Criterion] = &[Criterion::Delaunay, Criterion::MinmaxLength];
+    pub const ALL: &'static [Criterion] = &[
+        Criterion::Delaunay,
+        Criterion::MinmaxLength,
+        Criterion::Greedy,
+        Criterion::MinWeight,
+    ];
 
     /// The command-line name, e.g. `"delaunay"`, `"minmax-length"`.
     pub fn name(self) -> &'static str {
         match self {
             Criterion::Delaunay => "delaunay",
             Criterion::MinmaxLength => "minmax-length",
+            Criterion::Greedy => "greedy",
+            Criterion::MinWeight => "min-weight",
         }
     }
 
@@ -58,6 +69,12 @@ impl Criterion {
         match self {
             Criterion::Delaunay => "maximises the smallest angle (empty circumcircles)",
             Criterion::MinmaxLength => "minimises the longest edge",
+            Criterion::Greedy => {
+                "greedy: repeatedly adds the shortest segment crossing no earlier one"
+            }
+            Criterion::MinWeight => {
+                "minimises the total edge length (points in convex position only)"
+            }
         }
     }
 
@@ -106,6 +123,32 @@ pub fn triangulate(points: &PointSet, criterion: Criterion) -> Result<Solution> 
         Criterion::MinmaxLength => {
             let (t, algorithm) = crate::minmax_length::minmax_length_timed(points, &mut phases)?;
             (t, true, algorithm)
+        }
+        Criterion::Greedy => {
+            let (t, algorithm) = timed(&mut phases, "greedy", || {
+                crate::greedy::greedy_triangulation(points)
+            })?;
+            let how = match algorithm {
+                crate::greedy::GreedyAlgorithm::Semicircular => {
+                    "ear heap for semicircular polygons, Levcopoulos-Lingas Thm 4.3, O(n log n)"
+                }
+                crate::greedy::GreedyAlgorithm::Convex => {
+                    "recursive splitting for convex position, Levcopoulos-Lingas Thm 4.2, O(n) space"
+                }
+                crate::greedy::GreedyAlgorithm::General => {
+                    "exact length rounds with closed-vertex retirement"
+                }
+            };
+            (t, true, format!("{} ({how})", algorithm.name()))
+        }
+        Criterion::MinWeight => {
+            let t = timed(&mut phases, "min-weight", || crate::min_weight(points))?;
+            (
+                t,
+                false,
+                "Klincsek dynamic program, O(n^3); optimal up to floating-point rounding of sums"
+                    .to_string(),
+            )
         }
     };
     Ok(Solution {

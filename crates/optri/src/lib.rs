@@ -10,7 +10,7 @@
 //! |---|---|
 //! | geometry kernel | [`kernel`]: exact predicates, symbolic tie-break, lunes, metrics |
 //! | data structures | [`PointSet`], [`planar_graph`], [`Triangulation`] |
-//! | algorithms | [`mod@minmax_length`], [`mod@delaunay`], [`mod@convex_hull`], [`mod@relative_neighborhood_graph`], [`mod@gabriel_graph`], [`mod@minimum_spanning_tree`] |
+//! | algorithms | [`mod@delaunay`], [`mod@convex_hull`], [`mod@relative_neighborhood_graph`], [`mod@gabriel_graph`], [`mod@minimum_spanning_tree`], [`mod@minmax_length`], [`mod@greedy`], [`mod@min_weight`] |
 //! | I/O | [`io`] |
 //!
 //! ```
@@ -29,8 +29,10 @@ mod criterion;
 pub mod delaunay;
 mod error;
 pub mod gabriel_graph;
+pub mod greedy;
 pub mod io;
 pub mod kernel;
+pub mod min_weight;
 pub mod minimum_spanning_tree;
 pub mod minmax_length;
 pub mod planar_graph;
@@ -43,6 +45,8 @@ pub use criterion::{triangulate, Criterion, Phase, Solution};
 pub use delaunay::{delaunay, delaunay_edges};
 pub use error::{Error, Result};
 pub use gabriel_graph::gabriel_graph;
+pub use greedy::greedy;
+pub use min_weight::min_weight;
 pub use minimum_spanning_tree::minimum_spanning_tree;
 pub use minmax_length::minmax_length;
 #[doc(hidden)]

@@ -1,0 +1,94 @@
+//! Greedy-triangulation timings (seeded inputs), printed as one line each:
+//!
+//! ```text
+//! cargo run --release -p optri --example greedy_bench -- uniform 1000000
+//! cargo run --release -p optri --example greedy_bench -- convex 10000
+//! cargo run --release -p optri --example greedy_bench -- semicircular 1000000
+//! ```
+//! `uniform` reports GT time as a ratio to the Delaunay time of the same
+//! run; every mode reports the peak resident set size (`VmHWM`) before and
+//! after GT.
+
+use optri::greedy::greedy_triangulation;
+use optri::{delaunay, PointSet};
+use rand::rngs::StdRng;
+use rand::{Rng, SeedableRng};
+use std::time::Instant;
+
+fn peak_rss_mib() -> f64 {
+    let status = std::fs::read_to_string("/proc/self/status").unwrap_or_default();
+    status
+        .lines()
+        .find(|l| l.starts_with("VmHWM:"))
+        .and_then(|l| l.split_whitespace().nth(1))
+        .and_then(|kb| kb.parse::<f64>().ok())
+        .map_or(f64::NAN, |kb| kb / 1024.0)
+}
+
+/// `n` points in strictly convex position, exactly: a lens of the integer
+/// parabolas `y = x²` and `y = 2m² - x²`, `|x| ≤ m`, with distinct random
+/// abscissae (not semicircular: both lens corners are sharp).
+fn convex_points(rng: &mut StdRng, n: usize) -> Vec<[f64; 2]> {
+    let m = 2 * n as i64;
+    let side = |rng: &mut StdRng, k: usize| -> Vec<i64> {
+        rand::seq::index::sample(rng, (2 * m - 1) as usize, k)
+            .into_iter()
+            .map(|i| i as i64 - m + 1)
+            .collect()
+    };
+    let mut pts: Vec<[f64; 2]> = vec![[-m as f64, (m * m) as f64], [m as f64, (m * m) as f64]];
+    let lower = side(rng, (n - 2) / 2);
+    pts.extend(lower.iter().map(|&x| [x as f64, (x * x) as f64]));
+    let upper = side(rng, n - 2 - (n - 2) / 2);
+    pts.extend(
+        upper
+            .iter()
+            .map(|&x| [x as f64, (2 * m * m - x * x) as f64]),
+    );
+    pts
+}
+
+/// `n` points on the integer parabola `y = x²`: semicircular (the base joins
+/// the two extreme points, and every other point sees it at an obtuse angle).
+fn semicircular_points(rng: &mut StdRng, n: usize) -> Vec<[f64; 2]> {
+    rand::seq::index::sample(rng, 4 * n, n)
+        .into_iter()
+        .map(|x| [x as f64, (x as f64) * (x as f64)])
+        .collect()
+}
+
+fn main() {
+    let args: Vec<String> = std::env::args().collect();
+    let mode = args.get(1).map_or("uniform", String::as_str);
+    let n: usize = args.get(2).and_then(|s| s.parse().ok()).unwrap_or(100_000);
+    let mut rng = StdRng::seed_from_u64(2024);
+    let pts = match mode {
+        "uniform" => (0..n)
+            .map(|_| [rng.gen_range(0.0..1.0), rng.gen_range(0.0..1.0)])
+            .collect(),
+        "convex" => convex_points(&mut rng, n),
+        "semicircular" => semicircular_points(&mut rng, n),
+        other => panic!("unknown mode {other} (uniform | convex | semicircular)"),
+    };
+    let ps = PointSet::new(&pts).expect("valid points");
+    let rss_before = peak_rss_mib();
+    let start = Instant::now();
+    let (t, algorithm) = greedy_triangulation(&ps).expect("greedy");
+    let gt_s = start.elapsed().as_secs_f64();
+    let rss_gt = peak_rss_mib();
+    let total = t.stats().total_edge_length;
+    print!(
+        "{mode} n={} algorithm={} gt={gt_s:.3}s total_length={total:.6e} \
+         peak_rss_before={rss_before:.1}MiB peak_rss_after={rss_gt:.1}MiB",
+        ps.len(),
+        algorithm.name()
+    );
+    if mode == "uniform" {
+        let start = Instant::now();
+        let d = delaunay(&ps).expect("delaunay");
+        let dt_s = start.elapsed().as_secs_f64();
+        assert_eq!(d.triangles().len(), t.triangles().len());
+        print!(" delaunay={dt_s:.3}s ratio={:.2}", gt_s / dt_s);
+    }
+    println!();
+}

@@ -1,0 +1,239 @@
+//! The greedy triangulation GT(S) (seed `003_4db77bcb30d376e0.txt` §1;
+//! seed 004 Definition 16): repeatedly add the shortest segment between two
+//! points that crosses no segment already added and passes through no other
+//! point.
+//!
+//! # Order and ties
+//! Segments are ordered by [`crate::kernel::segment_order`]: exact squared
+//! length, ties broken by the simulation-of-simplicity perturbation of
+//! [`crate::kernel::symbolic`]. That is a total order on segments, so GT is
+//! unique and every algorithm here returns the same edges. A segment with
+//! another point on its open interior is never added (exact orientation plus a
+//! betweenness test), so collinear points never produce overlapping edges.
+//!
+//! # Algorithms (dispatched by [`greedy_triangulation`])
+//! | input | algorithm | module |
+//! |---|---|---|
+//! | semicircular convex polygon (§1 conditions (i), (ii)) | ear heap, Thm 4.3, O(n log n) | [`semicircular`](self) |
+//! | strictly convex position | recursive splitting, Thm 4.2, O(n) space | [`convex`](self) |
+//! | anything else | length rounds with closed-vertex retirement | [`general`](self) |
+//!
+//! The result is the same in every case; the tests check that edge for edge.
+
+mod convex;
+mod general;
+mod semicircular;
+
+use crate::convex_hull::hull_distinct;
+use crate::error::Result;
+use crate::kernel::{dot_sign, orient_sign, Point};
+use crate::planar_graph::PlanarGraph;
+use crate::point_set::PointSet;
+use crate::triangulation::Triangulation;
+
+/// Which greedy-triangulation algorithm ran.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum GreedyAlgorithm {
+    /// Heap of ear diagonals for semicircular convex polygons (Thm 4.3).
+    Semicircular,
+    /// Recursive splitting along shortest diagonals (Thm 4.2).
+    Convex,
+    /// Length rounds over candidate pairs with closed-vertex retirement.
+    General,
+}
+
+impl GreedyAlgorithm {
+    /// Short name used in [`crate::Solution::algorithm`].
+    pub fn name(self) -> &'static str {
+        match self {
+            GreedyAlgorithm::Semicircular => "semicircular",
+            GreedyAlgorithm::Convex => "convex",
+            GreedyAlgorithm::General => "general",
+        }
+    }
+}
+
+/// The greedy triangulation of `points`, with the algorithm chosen by the
+/// shape of the input.
+pub fn greedy_triangulation(points: &PointSet) -> Result<(Triangulation, GreedyAlgorithm)> {
+    let pts = points.points();
+    let (edges, algorithm) = match convex_polygon(pts) {
+        Some(polygon) => match semicircular::base_rotation(pts, &polygon) {
+            Some(rotated) => (
+                semicircular::greedy_semicircular(pts, &rotated),
+                GreedyAlgorithm::Semicircular,
+            ),
+            None => (
+                convex::greedy_convex(pts, &polygon),
+                GreedyAlgorithm::Convex,
+            ),
+        },
+        None => (general::greedy_general(pts), GreedyAlgorithm::General),
+    };
+    Ok((
+        Triangulation::from_distinct(points, triangles_of(pts, &edges)),
+        algorithm,
+    ))
+}
+
+/// The greedy triangulation of `points` (see the module docs).
+pub fn greedy(points: &PointSet) -> Result<Triangulation> {
+    greedy_triangulation(points).map(|(t, _)| t)
+}
+
+/// GT by one named algorithm, as distinct-index edges `[min, max]`, sorted.
+/// `Convex` and `Semicircular` return `None` when the input is not in
+/// strictly convex position / not semicircular. For tests and benchmarks.
+#[doc(hidden)]
+pub fn greedy_edges_by(points: &PointSet, algorithm: GreedyAlgorithm) -> Option<Vec<[u32; 2]>> {
+    let pts = points.points();
+    let edges = match algorithm {
+        GreedyAlgorithm::General => general::greedy_general(pts),
+        GreedyAlgorithm::Convex => convex::greedy_convex(pts, &convex_polygon(pts)?),
+        GreedyAlgorithm::Semicircular => {
+            let rotated = semicircular::base_rotation(pts, &convex_polygon(pts)?)?;
+            semicircular::greedy_semicircular(pts, &rotated)
+        }
+    };
+    Some(normalized(edges))
+}
+
+/// Test reference: sort all segments by the global order and add each one
+/// that crosses no added segment and contains no point, checking against
+/// every added segment. O(n³) worst case, O(n²) memory; distinct-index edges,
+/// sorted. Not for production use.
+#[doc(hidden)]
+pub fn greedy_naive_edges(points: &PointSet) -> Vec<[u32; 2]> {
+    let pts = points.points();
+    let n = pts.len() as u32;
+    let mut segments: Vec<[u32; 2]> = Vec::with_capacity((n as usize) * (n as usize - 1) / 2);
+    for a in 0..n {
+        for b in a + 1..n {
+            segments.push([a, b]);
+        }
+    }
+    sort_segments(pts, &mut segments);
+    let p = |i: u32| pts[i as usize];
+    let mut added: Vec<[u32; 2]> = Vec::new();
+    for [a, b] in segments {
+        // Most long segments cross a recent short edge; scan newest first.
+        let crossing = added
+            .iter()
+            .rev()
+            .any(|&[c, d]| properly_cross(p(a), p(b), p(c), p(d)));
+        if crossing {
+            continue;
+        }
+        if (0..n).any(|z| z != a && z != b && on_open_segment(p(z), p(a), p(b))) {
+            continue;
+        }
+        added.push([a, b]);
+    }
+    normalized(added)
+}
+
+/// Exact: do the open segments `ab` and `cd` cross in a single interior point?
+#[inline]
+pub(crate) fn properly_cross(a: Point, b: Point, c: Point, d: Point) -> bool {
+    let (abc, abd) = (orient_sign(a, b, c), orient_sign(a, b, d));
+    if abc * abd >= 0 {
+        return false;
+    }
+    orient_sign(c, d, a) * orient_sign(c, d, b) < 0
+}
+
+/// Exact: does `z` lie on the open segment `ab`?
+#[inline]
+pub(crate) fn on_open_segment(z: Point, a: Point, b: Point) -> bool {
+    orient_sign(a, b, z) == 0 && dot_sign(z, a, b) < 0
+}
+
+/// Sorts segments by the global order of [`crate::kernel::segment_order`].
+///
+/// A rounded squared length orders almost everything; runs whose rounded
+/// keys are within a relative 10⁻¹² of their neighbours are re-sorted with
+/// the exact symbolic comparator. Rounded keys carry a relative error below
+/// 4·2⁻⁵³, so two segments in the wrong rounded order always have keys that
+/// close, and so does every key between them: they land in one run.
+pub(crate) fn sort_segments(points: &[Point], segments: &mut Vec<[u32; 2]>) {
+    use rayon::prelude::*;
+    let key = |s: &[u32; 2]| {
+        let (p, q) = (points[s[0] as usize], points[s[1] as usize]);
+        let (dx, dy) = (p[0] - q[0], p[1] - q[1]);
+        dx * dx + dy * dy
+    };
+    let mut keyed: Vec<(f64, [u32; 2])> = segments.par_iter().map(|s| (key(s), *s)).collect();
+    keyed.par_sort_unstable_by(|x, y| x.0.total_cmp(&y.0));
+    let order = crate::kernel::segment_order(points);
+    let mut start = 0;
+    while start < keyed.len() {
+        let mut end = start + 1;
+        while end < keyed.len() && keyed[end].0 - keyed[end - 1].0 <= 1e-12 * keyed[end].0 {
+            end += 1;
+        }
+        if end - start > 1 {
+            keyed[start..end].sort_unstable_by(|x, y| order(&x.1, &y.1));
+        }
+        start = end;
+    }
+    segments.clear();
+    segments.extend(keyed.into_iter().map(|(_, s)| s));
+}
+
+/// Edges as sorted `[min, max]` pairs, sorted.
+pub(crate) fn normalized(mut edges: Vec<[u32; 2]>) -> Vec<[u32; 2]> {
+    for e in &mut edges {
+        if e[0] > e[1] {
+            e.swap(0, 1);
+        }
+    }
+    edges.sort_unstable();
+    edges
+}
+
+/// The triangles of a full triangulation given by its edges.
+pub(crate) fn triangles_of(points: &[Point], edges: &[[u32; 2]]) -> Vec<[u32; 3]> {
+    PlanarGraph::new(points, edges)
+        .bounded_faces(points)
+        .into_iter()
+        .map(|f| {
+            debug_assert_eq!(f.vertices.len(), 3, "a greedy face is not a triangle");
+            [f.vertices[0], f.vertices[1], f.vertices[2]]
+        })
+        .collect()
+}
+
+/// The hull as a strictly convex polygon (ccw), or `None` if some point is
+/// not a hull vertex or three hull vertices are collinear.
+///
+/// Collinear boundary points make a degenerate convex polygon; those inputs go
+/// to the general algorithm, since Fact 3.1 and the splitting arguments of
+/// §4 assume no three vertices are collinear.
+pub(crate) fn convex_polygon(points: &[Point]) -> Option<Vec<u32>> {
+    let hull = hull_distinct(points);
+    if hull.len() != points.len() {
+        return None;
+    }
+    let k = hull.len();
+    let strictly_convex = (0..k).all(|i| {
+        orient_sign(
+            points[hull[i] as usize],
+            points[hull[(i + 1) % k] as usize],
+            points[hull[(i + 2) % k] as usize],
+        ) > 0
+    });
+    strictly_convex.then_some(hull)
+}
+
+/// Is every point a vertex of a strictly convex polygon (no three collinear)?
+pub fn is_convex_position(points: &PointSet) -> bool {
+    convex_polygon(points.points()).is_some()
+}
+
+/// Is the input a semicircular convex polygon (seed 003 §1: the two farthest
+/// vertices are the endpoints of an edge, and every other vertex lies strictly
+/// inside the circle with that edge as diameter)?
+pub fn is_semicircular(points: &PointSet) -> bool {
+    let pts = points.points();
+    convex_polygon(pts).is_some_and(|poly| semicircular::base_rotation(pts, &poly).is_some())
+}

@@ -1,0 +1,102 @@
+//! Minimum-weight triangulation (MWT) of points in convex position by
+//! Klincsek's dynamic program (G. T. Klincsek, *Minimal triangulations of
+//! polygonal domains*, Ann. Discrete Math. 9 (1980); seed 003 reference [4]),
+//! O(n³) time, O(n²) memory.
+//!
+//! It is provided so that the approximation ratio |GT| / |MWT| that seed 003
+//! bounds (Thm 2.x, Thm 3.1) can be observed. Points must all lie on their
+//! convex hull; collinear boundary points are allowed (flat triangles are
+//! excluded exactly with the orientation predicate). Other inputs get
+//! [`Error::Unsupported`].
+//!
+//! # Exactness
+//! The weight is a sum of square roots; comparing such sums exactly is out of
+//! scope. Candidate sums are compared in `f64`, so the result is *optimal up
+//! to floating-point rounding of the sums*: when two triangulations' weights
+//! agree to within rounding, either may be returned (the first split vertex
+//! in polygon order wins exact `f64` ties).
+
+use crate::convex_hull::hull_distinct;
+use crate::error::{Error, Result};
+use crate::kernel::metrics::length;
+use crate::kernel::orient_sign;
+use crate::point_set::PointSet;
+use crate::triangulation::Triangulation;
+
+/// Largest number of distinct points [`min_weight`] accepts (O(n²) memory).
+pub const MAX_POINTS: usize = 4000;
+
+/// A minimum-weight triangulation of `points`, which must be in convex
+/// position (see the module docs for the exactness caveat).
+///
+/// # Errors
+/// [`Error::Unsupported`] if some point is not on the convex hull;
+/// [`Error::TooManyPoints`] above [`MAX_POINTS`] distinct points.
+pub fn min_weight(points: &PointSet) -> Result<Triangulation> {
+    let pts = points.points();
+    let polygon = hull_distinct(pts);
+    if polygon.len() != pts.len() {
+        return Err(Error::Unsupported(format!(
+            "min-weight is only supported for points in convex position yet \
+             ({} of {} distinct points are interior to the convex hull)",
+            pts.len() - polygon.len(),
+            pts.len()
+        )));
+    }
+    if pts.len() > MAX_POINTS {
+        return Err(Error::TooManyPoints { count: pts.len() });
+    }
+    let k = polygon.len();
+    let p = |i: usize| pts[polygon[i] as usize];
+    // weight[i*k + j]: least total length of the diagonals inside the
+    // sub-polygon v_i..v_j (j > i), not counting v_i v_j; split: the apex.
+    let mut weight = vec![f64::INFINITY; k * k];
+    let mut split = vec![u32::MAX; k * k];
+    for i in 0..k - 1 {
+        weight[i * k + i + 1] = 0.0;
+    }
+    for gap in 2..k {
+        for i in 0..k - gap {
+            let j = i + gap;
+            let mut best = f64::INFINITY;
+            let mut best_m = u32::MAX;
+            for m in i + 1..j {
+                if orient_sign(p(i), p(m), p(j)) == 0 {
+                    continue; // a flat triangle is not allowed
+                }
+                let (left, right) = (weight[i * k + m], weight[m * k + j]);
+                let mut w = left + right;
+                if m > i + 1 {
+                    w += length(p(i), p(m));
+                }
+                if j > m + 1 {
+                    w += length(p(m), p(j));
+                }
+                if w < best {
+                    best = w;
+                    best_m = m as u32;
+                }
+            }
+            weight[i * k + j] = best;
+            split[i * k + j] = best_m;
+        }
+    }
+    let mut triangles = Vec::with_capacity(k - 2);
+    let mut stack = vec![(0usize, k - 1)];
+    while let Some((i, j)) = stack.pop() {
+        if j < i + 2 {
+            continue;
+        }
+        let m = split[i * k + j];
+        if m == u32::MAX {
+            return Err(Error::InvalidTriangulation(
+                "the convex polygon has no triangulation without flat triangles".into(),
+            ));
+        }
+        let m = m as usize;
+        triangles.push([polygon[i], polygon[m], polygon[j]]);
+        stack.push((i, m));
+        stack.push((m, j));
+    }
+    Ok(Triangulation::from_distinct(points, triangles))
+}
