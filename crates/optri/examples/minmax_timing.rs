@@ -51,7 +51,7 @@ fn peak_memory() -> String {
 
 fn counters() -> String {
     format!(
-        "case1={} case2={} case2_pockets_by_5_1={} case2_pockets_by_fan_out={} case2_pocket_fallbacks={} case2_dp_vertices={} flat={} case2_hull_fallbacks={} fallbacks={}",
+        "case1={} case2={} case2_pockets_by_5_1={} case2_pockets_by_fan_out={} case2_pocket_fallbacks={} case2_dp_vertices={} flat={} case2_hull_fallbacks={} fallbacks={} small_certified={} small_dp={}",
         COUNTERS[CASE_1].load(Relaxed),
         COUNTERS[CASE_2].load(Relaxed),
         COUNTERS[CASE_2_POCKETS_BY_5_1].load(Relaxed),
@@ -60,7 +60,7 @@ fn counters() -> String {
         COUNTERS[CASE_2_REMAINDER_VERTICES].load(Relaxed),
         COUNTERS[FLAT_TRIANGLES].load(Relaxed),
         COUNTERS[CASE_2_HULL_FALLBACKS].load(Relaxed),
-        FALLBACKS.load(Relaxed)
+        FALLBACKS.load(Relaxed), COUNTERS[9].load(Relaxed), COUNTERS[8].load(Relaxed)
     )
 }
 

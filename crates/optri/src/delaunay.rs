@@ -36,7 +36,24 @@ pub(crate) struct DelaunayGraph {
     pub offsets: Vec<u32>,
     /// See `offsets`.
     pub adjacency: Vec<u32>,
+    /// Triangle adjacency, filled by [`delaunay_mesh`] only (empty otherwise).
+    pub topology: Topology,
 }
+
+/// How the triangles of a [`DelaunayGraph`] fit together. Side `j` of
+/// triangle `t` runs from corner `j` to corner `j + 1`.
+#[derive(Default)]
+pub(crate) struct Topology {
+    /// The triangle across each side, [`NO_TRIANGLE`] on the hull.
+    pub neighbours: Vec<[u32; 3]>,
+    /// The index into [`DelaunayGraph::edges`] of each side.
+    pub sides: Vec<[u32; 3]>,
+    /// Per adjacency slot (see [`DelaunayGraph::offsets`]): the edge index.
+    pub slot_edges: Vec<u32>,
+}
+
+/// Marks a hull side in [`Topology::neighbours`].
+pub(crate) const NO_TRIANGLE: u32 = u32::MAX;
 
 impl DelaunayGraph {
     /// Neighbours of vertex `v`.
@@ -48,6 +65,15 @@ impl DelaunayGraph {
 
 /// Builds the Delaunay triangulation of distinct, not-all-collinear points.
 pub(crate) fn delaunay_graph(points: &[Point]) -> Result<DelaunayGraph> {
+    build(points, false)
+}
+
+/// [`delaunay_graph`] with its [`Topology`] filled in.
+pub(crate) fn delaunay_mesh(points: &[Point]) -> Result<DelaunayGraph> {
+    build(points, true)
+}
+
+fn build(points: &[Point], with_topology: bool) -> Result<DelaunayGraph> {
     let vertices: Vec<Vertex> = points
         .iter()
         .enumerate()
@@ -87,17 +113,48 @@ pub(crate) fn delaunay_graph(points: &[Point]) -> Result<DelaunayGraph> {
     }
     let mut fill = offsets.clone();
     let mut adjacency = vec![0u32; offsets[points.len()] as usize];
-    for &([u, v], _) in &edges {
-        adjacency[fill[u as usize] as usize] = v;
-        fill[u as usize] += 1;
-        adjacency[fill[v as usize] as usize] = u;
-        fill[v as usize] += 1;
+    let mut topology = Topology::default();
+    if with_topology {
+        topology.slot_edges = vec![0u32; adjacency.len()];
+    }
+    for (i, &([u, v], _)) in edges.iter().enumerate() {
+        for (a, b) in [(u, v), (v, u)] {
+            let slot = fill[a as usize] as usize;
+            adjacency[slot] = b;
+            if with_topology {
+                topology.slot_edges[slot] = i as u32;
+            }
+            fill[a as usize] += 1;
+        }
+    }
+    if with_topology {
+        // spade numbers the outer face 0 and lists inner faces in index
+        // order, so triangle `t` is face `t + 1`; a face's edge `j` leaves its
+        // vertex `j` (spade's `vertices()` is built from `adjacent_edges()`).
+        topology.neighbours.reserve(triangles.len());
+        topology.sides.reserve(triangles.len());
+        for (t, f) in dt.inner_faces().enumerate() {
+            debug_assert_eq!(f.fix().index(), t + 1);
+            let e = f.adjacent_edges();
+            topology.neighbours.push(e.map(|d| {
+                let across = d.rev().face();
+                if across.is_outer() {
+                    NO_TRIANGLE
+                } else {
+                    across.fix().index() as u32 - 1
+                }
+            }));
+            topology
+                .sides
+                .push(e.map(|d| d.as_undirected().fix().index() as u32));
+        }
     }
     Ok(DelaunayGraph {
         triangles,
         edges,
         offsets,
         adjacency,
+        topology,
     })
 }
 

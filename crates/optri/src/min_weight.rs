@@ -1,6 +1,6 @@
 //! Minimum-weight triangulation (MWT) of points in convex position by
 //! Klincsek's dynamic program (G. T. Klincsek, *Minimal triangulations of
-//! polygonal domains*, Ann. Discrete Math. 9 (1980); seed 003 reference [4]),
+//! polygonal domains*, Ann. Discrete Math. 9 (1980); seed 003 reference \[4\]),
 //! O(n³) time, O(n²) memory.
 //!
 //! It is provided so that the approximation ratio |GT| / |MWT| that seed 003

@@ -446,7 +446,8 @@ fn the_tests_exercise_every_branch() {
     }
     use optri::minmax_length::{
         CASE_1, CASE_2, CASE_2_HULL_FALLBACKS, CASE_2_POCKETS_BY_5_1, CASE_2_POCKETS_BY_FAN_OUT,
-        CASE_2_POCKET_FALLBACKS, COUNTERS, FLAT_TRIANGLES,
+        CASE_2_POCKET_FALLBACKS, COUNTERS, FLAT_TRIANGLES, SMALL_REGIONS_BY_DP,
+        SMALL_REGIONS_CERTIFIED,
     };
     let c = |i: usize| COUNTERS[i].load(std::sync::atomic::Ordering::Relaxed);
     assert!(c(CASE_1) > 0 && c(CASE_2) > 0 && c(FLAT_TRIANGLES) > 0);
@@ -454,6 +455,10 @@ fn the_tests_exercise_every_branch() {
     assert!(
         c(CASE_2_POCKETS_BY_FAN_OUT) > 0,
         "no pocket needed the u_L search and the fan-out"
+    );
+    assert!(
+        c(SMALL_REGIONS_CERTIFIED) > 0 && c(SMALL_REGIONS_BY_DP) > 0,
+        "small regions should take both the certified-Delaunay and the cubic path"
     );
     assert_eq!(c(CASE_2_HULL_FALLBACKS), 0);
     assert_eq!(c(CASE_2_POCKET_FALLBACKS), 0);

@@ -107,97 +107,91 @@ pub(crate) fn height_sign(points: &[Point], p: u32, q: u32, x: u32, y: u32) -> i
 /// boundaries (`ch(S) ∪ rng(S′)`) marked.
 pub(crate) struct Mesh<'a> {
     g: &'a DelaunayGraph,
-    left: Vec<u32>,
-    /// Per directed edge: 0 free, 1 an `rng(S′)` edge, 2 a hull edge only.
-    constraint: Vec<u8>,
+    /// Per Delaunay edge (indexed like `g.edges`): is it in `rng(S′)`?
+    rng: &'a [bool],
+    /// One triangle at each vertex, where turning around it starts.
+    vertex_triangle: Vec<u32>,
 }
 
 impl<'a> Mesh<'a> {
-    pub fn new(g: &'a DelaunayGraph, rng: &[[u32; 2]], hull: &[u32]) -> Self {
-        let slots = g.adjacency.len();
-        let mut mesh = Self {
-            g,
-            left: vec![NONE; slots],
-            constraint: vec![0; slots],
-        };
+    /// `g` must come from [`crate::delaunay::delaunay_mesh`].
+    pub fn new(g: &'a DelaunayGraph, rng: &'a [bool]) -> Self {
+        let mut vertex_triangle = vec![NONE; g.offsets.len() - 1];
         for (t, tri) in g.triangles.iter().enumerate() {
-            for i in 0..3 {
-                if let Some(s) = mesh.slot(tri[i], tri[(i + 1) % 3]) {
-                    mesh.left[s] = t as u32;
-                }
+            for &c in tri {
+                vertex_triangle[c as usize] = t as u32;
             }
         }
-        let hull_edges = (0..hull.len()).map(|i| [hull[i], hull[(i + 1) % hull.len()]]);
-        for ([u, v], kind) in hull_edges
-            .map(|e| (e, 2))
-            .chain(rng.iter().map(|&e| (e, 1)))
-        {
-            for (a, b) in [(u, v), (v, u)] {
-                if let Some(s) = mesh.slot(a, b) {
-                    mesh.constraint[s] = kind;
-                }
-            }
+        Self {
+            g,
+            rng,
+            vertex_triangle,
         }
-        mesh
     }
 
-    fn slot(&self, u: u32, v: u32) -> Option<usize> {
-        let o = self.g.offsets[u as usize] as usize;
-        self.g
-            .neighbors(u)
-            .iter()
-            .position(|&w| w == v)
-            .map(|i| o + i)
+    /// The triangle to the left of `u → v` and the side index of `u → v` in
+    /// it: turn around `u` one way, then, if the hull stops the turn, the
+    /// other way. O(degree of `u`).
+    fn side(&self, u: u32, v: u32) -> Option<(u32, usize)> {
+        let start = self.vertex_triangle[u as usize];
+        let corner = |t: u32| {
+            self.g.triangles[t as usize]
+                .iter()
+                .position(|&c| c == u)
+                .expect("the turn stays at the vertex")
+        };
+        let nb = &self.g.topology.neighbours;
+        let (mut t, mut i) = (start, corner(start));
+        // Counter-clockwise: across the side entering `u`.
+        loop {
+            if self.g.triangles[t as usize][(i + 1) % 3] == v {
+                return Some((t, i));
+            }
+            t = nb[t as usize][(i + 2) % 3];
+            if t == NONE || t == start {
+                break;
+            }
+            i = corner(t);
+        }
+        if t == start {
+            return None;
+        }
+        // Clockwise from the start: across the side leaving `u`.
+        let (mut t, mut i) = (start, corner(start));
+        loop {
+            t = nb[t as usize][i];
+            if t == NONE {
+                return None;
+            }
+            i = corner(t);
+            if self.g.triangles[t as usize][(i + 1) % 3] == v {
+                return Some((t, i));
+            }
+        }
     }
 
     /// The triangle to the left of `u → v`.
     fn left_of(&self, u: u32, v: u32) -> Option<u32> {
-        self.slot(u, v).map(|s| self.left[s]).filter(|&t| t != NONE)
+        self.side(u, v).map(|(t, _)| t)
     }
 
+    /// Is `u v` a region boundary (or no interior Delaunay edge at all)?
     fn is_constraint(&self, u: u32, v: u32) -> bool {
-        self.slot(u, v).map_or(true, |s| self.constraint[s] != 0)
-    }
-
-    /// The longest diagonal (vertex indices) of the Delaunay triangles inside
-    /// the region whose boundary contains the directed edge `v[0] → v[1]`:
-    /// the non-constraint edges met by a flood fill from that edge's left
-    /// triangle. `None` if the region needs no diagonal or the fill fails.
-    pub fn longest_delaunay_diagonal(&self, points: &[Point], v: &[u32]) -> Option<[u32; 2]> {
-        let first = self.left_of(v[0], v[1])?;
-        let mut seen = vec![first];
-        let mut next = 0;
-        let mut longest: Option<[u32; 2]> = None;
-        while next < seen.len() {
-            let tri = self.g.triangles[seen[next] as usize];
-            next += 1;
-            for j in 0..3 {
-                let (x, y) = (tri[j], tri[(j + 1) % 3]);
-                if self.is_constraint(x, y) {
-                    continue;
-                }
-                let t = self.left_of(y, x)?;
-                if seen.contains(&t) {
-                    continue;
-                }
-                seen.push(t);
-                if seen.len() > 2 * v.len() {
-                    return None;
-                }
-                let p = |m: u32| points[m as usize];
-                if longest.map_or(true, |[a, b]| {
-                    crate::kernel::compare_lengths(p(x), p(y), p(a), p(b)) == Ordering::Greater
-                }) {
-                    longest = Some([x, y]);
-                }
-            }
-        }
-        longest
+        self.side(u, v).map_or(true, |(t, j)| {
+            super::regions::is_boundary(self.g, self.rng, t as usize, j)
+        })
     }
 
     /// Is `u v` a hull edge that is not in `rng(S′)`?
     pub fn is_hull_only(&self, u: u32, v: u32) -> bool {
-        self.slot(u, v).is_some_and(|s| self.constraint[s] == 2)
+        let on_hull = |(t, j): (u32, usize)| {
+            let edge = self.g.topology.sides[t as usize][j] as usize;
+            (self.g.topology.neighbours[t as usize][j] == NONE).then_some(edge)
+        };
+        self.side(u, v)
+            .and_then(on_hull)
+            .or_else(|| self.side(v, u).and_then(on_hull))
+            .is_some_and(|edge| !self.rng[edge])
     }
 }
 
@@ -900,8 +894,8 @@ impl<'a> FastRegion<'a> {
 mod tests {
     use super::*;
     use crate::convex_hull::hull_distinct;
-    use crate::delaunay::delaunay_graph;
-    use crate::minmax_length::{regions, rng_perturbed};
+    use crate::delaunay::delaunay_mesh;
+    use crate::minmax_length::{regions, rng_perturbed, rng_perturbed_flags};
 
     fn lcg_points(n: usize, seed: u64, grid: Option<u64>) -> Vec<Point> {
         let mut s = seed;
@@ -929,10 +923,11 @@ mod tests {
     fn visibility_walk_matches_the_diagonal_test() {
         for (seed, grid) in [(1, None), (2, Some(6)), (3, None), (4, Some(10))] {
             let pts = lcg_points(60, seed, grid);
-            let g = delaunay_graph(&pts).unwrap();
+            let g = delaunay_mesh(&pts).unwrap();
             let rng = rng_perturbed(&pts, &g);
+            let flags = rng_perturbed_flags(&pts, &g);
             let hull = hull_distinct(&pts);
-            let mesh = Mesh::new(&g, &rng, &hull);
+            let mesh = Mesh::new(&g, &flags);
             for r in regions(&pts, &rng, &hull) {
                 let f = FastRegion::new(&pts, &r, &mesh).unwrap();
                 let k = r.len();
@@ -955,8 +950,8 @@ mod tests {
 mod consistency_tests {
     use super::*;
     use crate::convex_hull::hull_distinct;
-    use crate::delaunay::delaunay_graph;
-    use crate::minmax_length::{regions, rng_perturbed};
+    use crate::delaunay::delaunay_mesh;
+    use crate::minmax_length::{regions, rng_perturbed, rng_perturbed_flags};
 
     #[test]
     fn random_regions_never_hit_an_inconsistency() {
@@ -974,10 +969,11 @@ mod consistency_tests {
             } else {
                 (0..8).map(|_| [next() * 100.0, next() * 100.0]).collect()
             };
-            let g = delaunay_graph(&pts).unwrap();
+            let g = delaunay_mesh(&pts).unwrap();
             let rng = rng_perturbed(&pts, &g);
+            let flags = rng_perturbed_flags(&pts, &g);
             let hull = hull_distinct(&pts);
-            let mesh = Mesh::new(&g, &rng, &hull);
+            let mesh = Mesh::new(&g, &flags);
             for r in regions(&pts, &rng, &hull) {
                 if r.len() == 3 {
                     continue;

@@ -7,9 +7,12 @@
 //!    later phase; the perturbation `S′` below is defined on this numbering).
 //! 1. Build the Delaunay triangulation, the relative neighbourhood graph
 //!    (`rng_perturbed`) and the convex hull.
-//! 2. Cut the hull into the polygonal regions of `ch ∪ rng` (`regions`),
-//!    cracks traversed on both sides
-//!    ([`crate::planar_graph::PlanarGraph::bounded_faces`]).
+//! 2. Cut the hull into the polygonal regions of `ch ∪ rng` (`regions`):
+//!    the classes of Delaunay triangles joined across sides outside the
+//!    graph, each with its boundary walk (cracks traversed on both sides);
+//!    the planar-graph face walk
+//!    ([`crate::planar_graph::PlanarGraph::bounded_faces`]) is the test
+//!    reference for it.
 //! 3. Triangulate every region independently (rayon), assemble, and undo
 //!    the perturbation (§5.4, `repair_flat_triangles`).
 //!
@@ -29,6 +32,10 @@
 //!   diagonal inside the region (the Delaunay triangles are a feasible
 //!   triangulation, so the optimum uses no longer chord); tests run the
 //!   quadratic algorithm on every region too ([`minmax_length_with`]).
+//!   Before that, a lower bound (`polygon::Region::apex_lower_bound`: every
+//!   boundary edge needs an apex) often certifies the region's Delaunay
+//!   triangles as optimal already — 57% of the small regions of 10⁶
+//!   uniform points — and the program is skipped.
 //!
 //! # Degeneracy
 //! §4–§6 assume no two equal lengths and no three collinear points. optri's
@@ -85,7 +92,7 @@
 //! | function | paper |
 //! |---|---|
 //! | [`minmax_length`] | §3 global algorithm, Subgraph Theorem (§4) |
-//! | `rng_perturbed`, `regions` | §3 steps 1–2, §5.4 (`rng(S′) ⊆ rng(S)`) |
+//! | `rng_perturbed_flags`, `regions::Regions` | §3 steps 1–2, §5.4 (`rng(S′) ⊆ rng(S)`) |
 //! | `fast::FastRegion::incomplete` | §5.1, 1-Edge Lemma, Visibility Lemma |
 //! | `fast::FastRegion::visible` | §6 step 1 (diagonals in angular order) |
 //! | `fast::FastRegion::shortest_expandable_2_edge` | §6 steps 1–3, Containment and Crossing Lemmas |
@@ -94,29 +101,30 @@
 //! | `fast::FastRegion::pocket` | §6 Case 2 steps 3.1–3.2, Claims 2–5 |
 //! | `fast::FastRegion::fan_out` | §5.2 fan-out triangulation, Fan-Out Lemma |
 //! | `polygon::Region::minmax_triangulation_cubic` | §3 dynamic program (Klincsek) |
+//! | `small_region`, `polygon::Region::apex_lower_bound` | §3 (a lower-bound certificate that skips the program) |
 //! | `repair_flat_triangles` | §5.4, Δ-Lemma |
 
 pub(crate) mod fast;
 pub(crate) mod polygon;
+pub(crate) mod regions;
 
-use crate::convex_hull::hull_distinct;
 use crate::criterion::{timed, Phase};
-use crate::delaunay::{delaunay_graph, DelaunayGraph};
+use crate::delaunay::{delaunay_mesh, DelaunayGraph};
 use crate::error::Result;
 use crate::kernel::orient_sign;
-use crate::kernel::{compare_lengths, in_lune, in_lune_symbolic, Point};
-use crate::planar_graph::PlanarGraph;
+use crate::kernel::{compare_lengths, in_lune_symbolic, Point};
 use crate::point_set::PointSet;
 use crate::relative_neighborhood_graph::morton_order;
 use crate::triangulation::Triangulation;
 use fast::{FastRegion, Mesh};
-use polygon::Region;
+use polygon::{ChordLengths, Region};
 use rayon::prelude::*;
+use regions::Regions;
 use std::cmp::Ordering::{Greater, Less};
 use std::collections::HashMap;
 use std::sync::atomic::{AtomicUsize, Ordering as AtomicOrdering};
 
-/// Is some perturbed point inside the perturbed lune of the `rng(S)` edge
+/// Is some perturbed point inside the perturbed lune of the Delaunay edge
 /// `pq`? Such a point lies in the *closed* disc `D(p, |pq|)`; by the
 /// greedy-routing lemma (every vertex `r ≠ p` has a Delaunay neighbour
 /// strictly closer to `p`, `shared/notes/literature.md` §a) the closed disc's
@@ -138,17 +146,15 @@ fn perturbed_lune_is_occupied(
         let w = inside[next];
         next += 1;
         for &x in g.neighbors(w) {
-            if inside.contains(&x) {
-                continue;
-            }
-            if x == q {
-                inside.push(x); // on the disc's boundary; comparing |qp| with itself is moot
+            // q is a lune corner, not a candidate; and no search path needs
+            // it (see below).
+            if x == q || inside.contains(&x) {
                 continue;
             }
             let px = points[x as usize];
             let to_p = compare_lengths(px, pp, pp, pq);
             if to_p == Greater {
-                continue; // outside the closed disc around p: not expanded
+                continue; // outside the closed disc around p
             }
             let to_q = compare_lengths(px, pq, pp, pq);
             let occupied = match (to_p, to_q) {
@@ -160,7 +166,13 @@ fn perturbed_lune_is_occupied(
             if occupied {
                 return true;
             }
-            inside.push(x);
+            // Greedy routing reaches any point x of the closed disc along
+            // vertices strictly closer to p than x, so only points of the
+            // open disc are expanded (a point on the circle may be tested
+            // twice; that is harmless).
+            if to_p == Less {
+                inside.push(x);
+            }
         }
     }
     false
@@ -171,33 +183,59 @@ fn perturbed_lune_is_occupied(
 /// `rng(S)` (§5.4), hence in every Delaunay completion of `S`, so testing the
 /// Delaunay edges suffices. One search per edge decides both the exact
 /// (strict-lune) test and its perturbed tie-break.
+#[cfg(test)]
 pub(crate) fn rng_perturbed(points: &[Point], g: &DelaunayGraph) -> Vec<[u32; 2]> {
-    g.edges
-        .par_iter()
-        .with_min_len(1024)
-        .map_init(Vec::new, |inside, &([u, v], apexes)| {
-            // An apex strictly in the lune settles most non-RNG edges.
-            let (pu, pv) = (points[u as usize], points[v as usize]);
-            if apexes
-                .iter()
-                .flatten()
-                .any(|&a| in_lune(pu, pv, points[a as usize]))
-            {
-                return None;
-            }
-            let (p, q) = if g.neighbors(u).len() <= g.neighbors(v).len() {
-                (u, v)
-            } else {
-                (v, u)
-            };
-            (!perturbed_lune_is_occupied(points, g, p, q, inside)).then_some([u, v])
-        })
-        .flatten()
+    rng_perturbed_slots(points, g)
+        .into_iter()
+        .map(|(p, slot)| [p, g.adjacency[slot as usize]])
         .collect()
 }
 
-/// §3 steps 1–2: the polygonal regions of `ch(S) ∪ rng(S′)` as
-/// counter-clockwise position cycles (cracks repeated).
+/// [`rng_perturbed`] as a flag per Delaunay edge (indexed like
+/// `g.edges`); `g` must come from [`delaunay_mesh`].
+pub(crate) fn rng_perturbed_flags(points: &[Point], g: &DelaunayGraph) -> Vec<bool> {
+    let mut flags = vec![false; g.edges.len()];
+    for (_, slot) in rng_perturbed_slots(points, g) {
+        flags[g.topology.slot_edges[slot as usize] as usize] = true;
+    }
+    flags
+}
+
+/// The `rng(S′)` edges as (search start `p`, adjacency slot of `pq`).
+/// Vertices are visited in index order — Z-order in [`run`] — so that the
+/// disc searches of consecutive vertices share cache lines; each edge is
+/// searched once, from its endpoint of lower degree.
+fn rng_perturbed_slots(points: &[Point], g: &DelaunayGraph) -> Vec<(u32, u32)> {
+    (0..points.len() as u32)
+        .into_par_iter()
+        .with_min_len(4096)
+        .fold(
+            || (Vec::new(), Vec::new()),
+            |(mut kept, mut inside), p| {
+                let dp = g.neighbors(p).len();
+                let first = g.offsets[p as usize];
+                for (i, &q) in g.neighbors(p).iter().enumerate() {
+                    if (dp, p) < (g.neighbors(q).len(), q)
+                        && !perturbed_lune_is_occupied(points, g, p, q, &mut inside)
+                    {
+                        kept.push((p, first + i as u32));
+                    }
+                }
+                (kept, inside)
+            },
+        )
+        .map(|(kept, _)| kept)
+        .reduce(Vec::new, |mut a, mut b| {
+            a.append(&mut b);
+            a
+        })
+}
+
+/// §3 steps 1–2 by the planar-graph face walk: the polygonal regions of
+/// `ch(S) ∪ rng(S′)` as counter-clockwise position cycles (cracks
+/// repeated). The product reads them off the Delaunay triangles instead
+/// ([`regions::Regions`]); this is the independent test reference.
+#[cfg(test)]
 pub(crate) fn regions(points: &[Point], rng: &[[u32; 2]], hull: &[u32]) -> Vec<Vec<u32>> {
     let mut edges = rng.to_vec();
     for i in 0..hull.len() {
@@ -208,7 +246,7 @@ pub(crate) fn regions(points: &[Point], rng: &[[u32; 2]], hull: &[u32]) -> Vec<V
     }
     edges.sort_unstable();
     edges.dedup();
-    let graph = PlanarGraph::new(points, &edges);
+    let graph = crate::planar_graph::PlanarGraph::new(points, &edges);
     graph
         .bounded_faces(points)
         .into_iter()
@@ -251,7 +289,7 @@ pub static FALLBACKS: AtomicUsize = AtomicUsize::new(0);
 /// parts handed to the cubic safety net, how many flat triangles §5.4
 /// removed, and the safety nets' use.
 #[doc(hidden)]
-pub static COUNTERS: [AtomicUsize; 8] = [const { AtomicUsize::new(0) }; 8];
+pub static COUNTERS: [AtomicUsize; 10] = [const { AtomicUsize::new(0) }; 10];
 /// Index into [`COUNTERS`].
 #[doc(hidden)]
 pub const CASE_1: usize = 0;
@@ -282,6 +320,15 @@ pub const CASE_2_POCKETS_BY_FAN_OUT: usize = 6;
 #[doc(hidden)]
 pub const CASE_2_POCKET_FALLBACKS: usize = 7;
 
+/// Index into [`COUNTERS`]: small regions (fewer than [`SMALL_REGION`]
+/// corners, more than four) handed to the cubic program.
+#[doc(hidden)]
+pub const SMALL_REGIONS_BY_DP: usize = 8;
+/// Index into [`COUNTERS`]: small regions whose Delaunay triangles were
+/// certified optimal by [`polygon::Region::apex_lower_bound`].
+#[doc(hidden)]
+pub const SMALL_REGIONS_CERTIFIED: usize = 9;
+
 pub(crate) fn count(which: usize, by: usize) {
     COUNTERS[which].fetch_add(by, AtomicOrdering::Relaxed);
 }
@@ -294,30 +341,29 @@ fn run(points: &PointSet, method: PolygonMethod, phases: &mut Vec<Phase>) -> Res
     let order = timed(phases, "z-order", || morton_order(points.points()));
     let local: Vec<Point> = order.iter().map(|&o| points.points()[o as usize]).collect();
     let pts = local.as_slice();
-    let g = timed(phases, "delaunay", || delaunay_graph(pts))?;
-    let rng = timed(phases, "rng", || rng_perturbed(pts, &g));
-    let hull = hull_distinct(pts);
-    let regions = timed(phases, "regions", || regions(pts, &rng, &hull));
-    let mesh = timed(phases, "mesh", || {
-        matches!(method, PolygonMethod::Quadratic { .. }).then(|| Mesh::new(&g, &rng, &hull))
-    });
+    let g = timed(phases, "delaunay", || delaunay_mesh(pts))?;
+    let rng = timed(phases, "rng", || rng_perturbed_flags(pts, &g));
+    let regions = timed(phases, "regions", || Regions::new(&g, &rng));
+    let mesh = Mesh::new(&g, &rng);
     let triangles: Vec<[u32; 3]> = timed(phases, "polygons", || {
-        regions
-            .par_iter()
-            .flat_map_iter(|vertices| {
+        (0..regions.len())
+            .into_par_iter()
+            .with_min_len(64)
+            .flat_map_iter(|r| {
+                if let [t] = regions.triangles(r) {
+                    return vec![g.triangles[*t as usize]];
+                }
+                let boundary = regions.boundary(pts, &g, &rng, r);
+
+                let vertices = &boundary.corners[..];
                 let region = Region {
                     points: pts,
                     vertices,
                     symbolic: false,
                 };
-                if vertices.len() == 3 {
-                    return vec![[vertices[0], vertices[1], vertices[2]]];
-                }
-                match (method, &mesh) {
-                    (PolygonMethod::Quadratic { cubic_below }, Some(mesh))
-                        if vertices.len() >= cubic_below =>
-                    {
-                        match FastRegion::new(pts, vertices, mesh).and_then(|f| f.triangulate()) {
+                match method {
+                    PolygonMethod::Quadratic { cubic_below } if vertices.len() >= cubic_below => {
+                        match FastRegion::new(pts, vertices, &mesh).and_then(|f| f.triangulate()) {
                             Ok(t) => t,
                             Err(e) => {
                                 if std::env::var_os("OPTRI_DEBUG").is_some() {
@@ -328,12 +374,14 @@ fn run(points: &PointSet, method: PolygonMethod, phases: &mut Vec<Phase>) -> Res
                             }
                         }
                     }
-                    (_, Some(mesh)) => region.quadrilateral().unwrap_or_else(|| {
-                        region.minmax_triangulation_bounded(
-                            mesh.longest_delaunay_diagonal(pts, vertices),
-                        )
+                    PolygonMethod::Quadratic { .. } => small_region(&region, &boundary, || {
+                        regions
+                            .triangles(r)
+                            .iter()
+                            .map(|&t| g.triangles[t as usize])
+                            .collect()
                     }),
-                    _ => region.minmax_triangulation_cubic(),
+                    PolygonMethod::Cubic => region.minmax_triangulation_cubic(),
                 }
             })
             .collect()
@@ -346,6 +394,33 @@ fn run(points: &PointSet, method: PolygonMethod, phases: &mut Vec<Phase>) -> Res
         t
     });
     Ok(Triangulation::from_distinct(points, triangles))
+}
+
+/// A region with fewer than [`SMALL_REGION`] corners. A quadrilateral takes
+/// its shorter diagonal. Otherwise the region's Delaunay triangles are kept
+/// when their longest diagonal is no longer than the apex lower bound (every
+/// triangulation has an edge at least that long, so they are optimal), and
+/// the cubic program runs on chords no longer than that diagonal otherwise.
+fn small_region(
+    region: &Region,
+    boundary: &regions::Boundary,
+    delaunay: impl FnOnce() -> Vec<[u32; 3]>,
+) -> Vec<[u32; 3]> {
+    if let Some(t) = region.quadrilateral() {
+        return t;
+    }
+    let lengths = ChordLengths::new(region);
+    let [a, b] = region.apex_lower_bound(&lengths);
+    let v = region.vertices;
+    let certified = boundary
+        .longest_diagonal
+        .map_or(true, |d| region.compare_lengths(d, [v[a], v[b]]) != Greater);
+    if certified {
+        count(SMALL_REGIONS_CERTIFIED, 1);
+        return delaunay();
+    }
+    count(SMALL_REGIONS_BY_DP, 1);
+    region.minmax_triangulation_with(boundary.longest_diagonal, &lengths)
 }
 
 /// A triangulation of `points` whose longest edge is as short as possible.
@@ -478,6 +553,80 @@ fn repair_flat_triangles(points: &[Point], triangles: Vec<[u32; 3]>) -> Vec<[u32
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::convex_hull::hull_distinct;
+    use crate::delaunay::delaunay_graph;
+
+    /// Canonical form of a cyclic corner sequence: its smallest rotation.
+    fn canonical(cycle: &[u32]) -> Vec<u32> {
+        (0..cycle.len())
+            .map(|r| {
+                cycle[r..]
+                    .iter()
+                    .chain(&cycle[..r])
+                    .copied()
+                    .collect::<Vec<u32>>()
+            })
+            .min()
+            .unwrap_or_default()
+    }
+
+    /// The regions read off the Delaunay triangles (the product) equal the
+    /// faces of the planar graph `ch ∪ rng(S′)` (the reference), cracks and
+    /// pinch points included, and their longest Delaunay diagonal is the
+    /// longest non-boundary side of their triangles.
+    #[test]
+    fn triangle_regions_match_planar_graph_faces() {
+        let mut s = 5u64;
+        let mut next = |m: u64| {
+            s = s
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            (s >> 33) % m
+        };
+        let mut cracks = 0;
+        for round in 0..300 {
+            let (n, grid) = [(12, 4), (30, 7), (60, 1 << 20), (40, 12)][round % 4];
+            let mut pts: Vec<Point> = (0..n)
+                .map(|_| [next(grid) as f64, next(grid) as f64])
+                .collect();
+            pts.sort_by(|a, b| a[0].total_cmp(&b[0]).then(a[1].total_cmp(&b[1])));
+            pts.dedup();
+            let Ok(g) = delaunay_mesh(&pts) else {
+                continue;
+            };
+            if g.triangles.is_empty() {
+                continue;
+            }
+            let flags = rng_perturbed_flags(&pts, &g);
+            let edges = rng_perturbed(&pts, &g);
+            let mut want: Vec<Vec<u32>> = regions(&pts, &edges, &hull_distinct(&pts))
+                .iter()
+                .map(|c| canonical(c))
+                .collect();
+            let product = Regions::new(&g, &flags);
+            let mut got = Vec::new();
+            for r in 0..product.len() {
+                let b = product.boundary(&pts, &g, &flags, r);
+                assert_eq!(
+                    product.triangles(r).len() + 2,
+                    b.corners.len(),
+                    "Euler: {pts:?}"
+                );
+                let mut distinct = b.corners.clone();
+                distinct.sort_unstable();
+                distinct.dedup();
+                cracks += b.corners.len() - distinct.len();
+                got.push(canonical(&b.corners));
+            }
+            want.sort();
+            got.sort();
+            assert_eq!(got, want, "{pts:?}");
+        }
+        assert!(
+            cracks > 0,
+            "the inputs should include cracks or pinch points"
+        );
+    }
 
     /// `rng(S′)` from the Delaunay search equals the brute-force definition
     /// (no perturbed point in the perturbed lune), on degenerate grids.
