@@ -115,42 +115,33 @@ impl<'a> Region<'a> {
         }
     }
 
-    /// Counter-clockwise angle class of direction `x − o` relative to the ray
-    /// `o → r`: 0 on the ray, 1 in (0, π), 2 opposite, 3 in (π, 2π).
-    fn angle_class(&self, o: u32, r: u32, x: u32) -> u8 {
-        match self.orient(o, r, x) {
-            1 => 1,
-            -1 => 3,
-            _ => {
-                let p = |m: u32| self.points[m as usize];
-                if dot_sign(p(o), p(r), p(x)) > 0 {
-                    0
-                } else {
-                    2
-                }
-            }
-        }
-    }
-
     /// Is the direction `x − o` strictly inside the counter-clockwise wedge
     /// that sweeps from ray `o → first` to ray `o → last`? Equal rays mean the
     /// full turn (a crack tip).
     pub fn strictly_inside_wedge(&self, o: u32, first: u32, last: u32, x: u32) -> bool {
-        let cx = self.angle_class(o, first, x);
-        if cx == 0 {
-            return false;
-        }
-        let cl = self.angle_class(o, first, last);
-        if cl == 0 {
-            return true;
-        }
-        cx < cl || (cx == cl && (cx == 1 || cx == 3) && self.orient(o, x, last) > 0)
-    }
-
-    /// Is point `x` strictly inside the open segment `ab`?
-    fn strictly_between(&self, a: u32, b: u32, x: u32) -> bool {
         let p = |m: u32| self.points[m as usize];
-        x != a && x != b && self.orient(a, b, x) == 0 && dot_sign(p(x), p(a), p(b)) < 0
+        let on_ray = |r: u32| self.orient(o, r, x) == 0 && dot_sign(p(o), p(r), p(x)) > 0;
+        if first == last {
+            return !on_ray(first); // a crack tip: all but the crack itself
+        }
+        let left_of_first = self.orient(o, first, x);
+        let left_of_last = self.orient(o, last, x);
+        match self.orient(o, first, last) {
+            // Less than a half turn: left of the first ray, right of the last.
+            1 => left_of_first > 0 && left_of_last < 0,
+            // More than a half turn: outside the closed short wedge from
+            // `last` to `first`.
+            -1 => !(left_of_last >= 0 && left_of_first <= 0),
+            // Collinear rays, not equal: opposite (a half turn), or the same
+            // direction (a full turn minus that ray).
+            _ => {
+                if dot_sign(p(o), p(first), p(last)) < 0 {
+                    left_of_first > 0
+                } else {
+                    !on_ray(first)
+                }
+            }
+        }
     }
 
     /// Is the region a strictly convex polygon (no cracks, every corner a
@@ -181,11 +172,14 @@ impl<'a> Region<'a> {
         }
         // Bounding boxes (exact coordinate comparisons) skip the boundary
         // edges far from the chord: a vertex on the chord lies in its box, and
-        // a crossing edge's box meets it.
+        // a crossing edge's box meets it. The side of each vertex relative to
+        // the chord's line is computed once and carried to the next edge.
         let p = |m: u32| self.points[m as usize];
         let (pa, pb) = (p(va), p(vb));
         let lo = [pa[0].min(pb[0]), pa[1].min(pb[1])];
         let hi = [pa[0].max(pb[0]), pa[1].max(pb[1])];
+        let side = |m: u32| self.orient(va, vb, m);
+        let mut carried: Option<i32> = None;
         for i in 0..k {
             let (u, w) = (v[i], v[(i + 1) % k]);
             let (pu, pw) = (p(u), p(w));
@@ -194,17 +188,20 @@ impl<'a> Region<'a> {
                 || (pu[1] < lo[1] && pw[1] < lo[1])
                 || (pu[1] > hi[1] && pw[1] > hi[1])
             {
+                carried = None;
                 continue;
             }
-            if self.strictly_between(va, vb, u) {
+            let su = carried.unwrap_or_else(|| side(u));
+            let sw = side(w);
+            carried = Some(sw);
+            // u strictly inside the open segment ab?
+            if su == 0 && u != va && u != vb && dot_sign(p(u), pa, pb) < 0 {
                 return false;
             }
             if u == va || u == vb || w == va || w == vb {
                 continue;
             }
-            let s1 = self.orient(va, vb, u) * self.orient(va, vb, w);
-            let s2 = self.orient(u, w, va) * self.orient(u, w, vb);
-            if s1 < 0 && s2 < 0 {
+            if su * sw < 0 && self.orient(u, w, va) * self.orient(u, w, vb) < 0 {
                 return false;
             }
         }
