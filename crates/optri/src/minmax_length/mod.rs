@@ -119,7 +119,7 @@ use crate::triangulation::Triangulation;
 use fast::{FastRegion, Mesh};
 use polygon::{ChordLengths, Region};
 use rayon::prelude::*;
-use regions::Regions;
+use regions::{LocalMesh, Regions};
 use std::cmp::Ordering::{Greater, Less};
 use std::collections::HashMap;
 use std::sync::atomic::{AtomicUsize, Ordering as AtomicOrdering};
@@ -353,7 +353,7 @@ fn run(points: &PointSet, method: PolygonMethod, phases: &mut Vec<Phase>) -> Res
                 if let [t] = regions.triangles(r) {
                     return vec![g.triangles[*t as usize]];
                 }
-                let boundary = regions.boundary(pts, &g, &rng, r);
+                let boundary = regions.boundary(&g, &rng, r);
 
                 let vertices = &boundary.corners[..];
                 let region = Region {
@@ -374,13 +374,9 @@ fn run(points: &PointSet, method: PolygonMethod, phases: &mut Vec<Phase>) -> Res
                             }
                         }
                     }
-                    PolygonMethod::Quadratic { .. } => small_region(&region, &boundary, || {
-                        regions
-                            .triangles(r)
-                            .iter()
-                            .map(|&t| g.triangles[t as usize])
-                            .collect()
-                    }),
+                    PolygonMethod::Quadratic { .. } => {
+                        small_region(&region, || regions.local_mesh(&g, &rng, r))
+                    }
                     PolygonMethod::Cubic => region.minmax_triangulation_cubic(),
                 }
             })
@@ -397,30 +393,31 @@ fn run(points: &PointSet, method: PolygonMethod, phases: &mut Vec<Phase>) -> Res
 }
 
 /// A region with fewer than [`SMALL_REGION`] corners. A quadrilateral takes
-/// its shorter diagonal. Otherwise the region's Delaunay triangles are kept
-/// when their longest diagonal is no longer than the apex lower bound (every
-/// triangulation has an edge at least that long, so they are optimal), and
-/// the cubic program runs on chords no longer than that diagonal otherwise.
-fn small_region(
-    region: &Region,
-    boundary: &regions::Boundary,
-    delaunay: impl FnOnce() -> Vec<[u32; 3]>,
-) -> Vec<[u32; 3]> {
+/// its shorter diagonal. Otherwise every triangulation has an edge at least
+/// as long as the apex lower bound, so a triangulation of the region whose
+/// diagonals are no longer is optimal: first the region's Delaunay
+/// triangles, then the same after flipping its longest diagonal while that
+/// shortens it. Failing both, the cubic program runs on chords no longer
+/// than the flipped triangulation's longest diagonal (a feasible solution,
+/// so the optimum uses no longer chord).
+fn small_region(region: &Region, mesh: impl FnOnce() -> LocalMesh) -> Vec<[u32; 3]> {
     if let Some(t) = region.quadrilateral() {
         return t;
     }
     let lengths = ChordLengths::new(region);
     let [a, b] = region.apex_lower_bound(&lengths);
     let v = region.vertices;
-    let certified = boundary
-        .longest_diagonal
-        .map_or(true, |d| region.compare_lengths(d, [v[a], v[b]]) != Greater);
-    if certified {
+    let lower = [v[a], v[b]];
+    let mut mesh = mesh();
+    let no_longer =
+        |d: Option<[u32; 2]>| d.map_or(true, |d| region.compare_lengths(d, lower) != Greater);
+    let upper = mesh.flip_longest_diagonals(region.points);
+    if no_longer(upper) {
         count(SMALL_REGIONS_CERTIFIED, 1);
-        return delaunay();
+        return mesh.triangles;
     }
     count(SMALL_REGIONS_BY_DP, 1);
-    region.minmax_triangulation_with(boundary.longest_diagonal, &lengths)
+    region.minmax_triangulation_with(upper, &lengths)
 }
 
 /// A triangulation of `points` whose longest edge is as short as possible.
@@ -572,8 +569,7 @@ mod tests {
 
     /// The regions read off the Delaunay triangles (the product) equal the
     /// faces of the planar graph `ch ∪ rng(S′)` (the reference), cracks and
-    /// pinch points included, and their longest Delaunay diagonal is the
-    /// longest non-boundary side of their triangles.
+    /// pinch points included (each region has `corners − 2` triangles).
     #[test]
     fn triangle_regions_match_planar_graph_faces() {
         let mut s = 5u64;
@@ -606,7 +602,7 @@ mod tests {
             let product = Regions::new(&g, &flags);
             let mut got = Vec::new();
             for r in 0..product.len() {
-                let b = product.boundary(&pts, &g, &flags, r);
+                let b = product.boundary(&g, &flags, r);
                 assert_eq!(
                     product.triangles(r).len() + 2,
                     b.corners.len(),

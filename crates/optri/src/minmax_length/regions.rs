@@ -11,7 +11,7 @@
 //! triangulation of it, which bounds the chords its optimum can use.
 
 use crate::delaunay::{DelaunayGraph, NO_TRIANGLE};
-use crate::kernel::{compare_lengths, Point};
+use crate::kernel::{compare_lengths, orient_sign, Point};
 use std::cmp::Ordering;
 
 /// The Delaunay triangles grouped by region.
@@ -20,13 +20,11 @@ pub(crate) struct Regions {
     members: Vec<u32>,
 }
 
-/// The boundary walk of one region and the longest Delaunay edge inside it.
+/// The boundary walk of one region.
 pub(crate) struct Boundary {
     /// Corners in counter-clockwise order (a vertex repeats at a crack or a
     /// pinch point).
     pub corners: Vec<u32>,
-    /// The longest non-boundary side of the region's Delaunay triangles.
-    pub longest_diagonal: Option<[u32; 2]>,
 }
 
 impl Regions {
@@ -77,39 +75,19 @@ impl Regions {
     }
 
     /// Walks the boundary of region `r` counter-clockwise (the region on
-    /// the left), and finds its longest Delaunay diagonal.
+    /// the left).
     ///
     /// From a boundary side `x → y` of triangle `t`, the next boundary side
     /// leaves `y`: turn around `y` through the region's triangles, crossing
     /// non-boundary sides, until a side leaving `y` is a boundary.
-    pub fn boundary(
-        &self,
-        points: &[Point],
-        g: &DelaunayGraph,
-        rng: &[bool],
-        r: usize,
-    ) -> Boundary {
-        let triangles = self.triangles(r);
-        let p = |v: u32| points[v as usize];
-        let mut longest: Option<[u32; 2]> = None;
+    pub fn boundary(&self, g: &DelaunayGraph, rng: &[bool], r: usize) -> Boundary {
         let mut boundary_sides = 0;
         let mut start = None;
-        for &t in triangles {
-            let tri = g.triangles[t as usize];
+        for &t in self.triangles(r) {
             for j in 0..3 {
                 if is_boundary(g, rng, t as usize, j) {
                     boundary_sides += 1;
                     start.get_or_insert((t as usize, j));
-                    continue;
-                }
-                let (x, y) = (tri[j], tri[(j + 1) % 3]);
-                // Each diagonal is seen from both sides; compare it once.
-                if x < y
-                    && longest.map_or(true, |[a, b]| {
-                        compare_lengths(p(x), p(y), p(a), p(b)) == Ordering::Greater
-                    })
-                {
-                    longest = Some([x, y]);
                 }
             }
         }
@@ -138,10 +116,7 @@ impl Regions {
             boundary_sides,
             "one boundary walk per region"
         );
-        Boundary {
-            corners,
-            longest_diagonal: longest,
-        }
+        Boundary { corners }
     }
 }
 
@@ -149,4 +124,98 @@ impl Regions {
 #[inline]
 pub(crate) fn is_boundary(g: &DelaunayGraph, rng: &[bool], t: usize, j: usize) -> bool {
     g.topology.neighbours[t][j] == NO_TRIANGLE || rng[g.topology.sides[t][j] as usize]
+}
+
+/// A region's own triangles with adjacency inside the region
+/// ([`NO_TRIANGLE`] across its boundary), for local edge flips.
+pub(crate) struct LocalMesh {
+    pub triangles: Vec<[u32; 3]>,
+    neighbours: Vec<[u32; 3]>,
+}
+
+impl Regions {
+    /// The Delaunay triangles of region `r` as a [`LocalMesh`].
+    pub fn local_mesh(&self, g: &DelaunayGraph, rng: &[bool], r: usize) -> LocalMesh {
+        let members = self.triangles(r);
+        let local = |t: u32| members.iter().position(|&m| m == t).expect("same region") as u32;
+        let mut neighbours = Vec::with_capacity(members.len());
+        for &t in members {
+            let mut n = [NO_TRIANGLE; 3];
+            for (j, slot) in n.iter_mut().enumerate() {
+                if !is_boundary(g, rng, t as usize, j) {
+                    *slot = local(g.topology.neighbours[t as usize][j]);
+                }
+            }
+            neighbours.push(n);
+        }
+        LocalMesh {
+            triangles: members.iter().map(|&t| g.triangles[t as usize]).collect(),
+            neighbours,
+        }
+    }
+}
+
+impl LocalMesh {
+    /// The longest diagonal (non-boundary side), as (triangle, side).
+    fn longest_diagonal(&self, points: &[Point]) -> Option<(usize, usize)> {
+        let p = |v: u32| points[v as usize];
+        let mut best: Option<(usize, usize)> = None;
+        for (t, tri) in self.triangles.iter().enumerate() {
+            for j in 0..3 {
+                let u = self.neighbours[t][j];
+                // Each diagonal once: from the triangle with the smaller index.
+                if u == NO_TRIANGLE || (u as usize) < t {
+                    continue;
+                }
+                let (x, y) = (tri[j], tri[(j + 1) % 3]);
+                if best.map_or(true, |(bt, bj)| {
+                    let b = self.triangles[bt];
+                    compare_lengths(p(x), p(y), p(b[bj]), p(b[(bj + 1) % 3])) == Ordering::Greater
+                }) {
+                    best = Some((t, j));
+                }
+            }
+        }
+        best
+    }
+
+    /// Flips the longest diagonal while its flip is legal (a strictly
+    /// convex quadrilateral, exact orientations) and strictly shorter; each
+    /// flip shortens the sorted diagonal lengths, so this stops. Returns the
+    /// longest diagonal left: an upper bound on the region's optimum, as the
+    /// result is a triangulation of the region.
+    pub fn flip_longest_diagonals(&mut self, points: &[Point]) -> Option<[u32; 2]> {
+        let p = |v: u32| points[v as usize];
+        loop {
+            let (t, j) = self.longest_diagonal(points)?;
+            let [x, y, a] = [0, 1, 2].map(|o| self.triangles[t][(j + o) % 3]);
+            let u = self.neighbours[t][j] as usize;
+            let i = (0..3)
+                .find(|&i| self.triangles[u][i] == y)
+                .expect("neighbours share the side");
+            let b = self.triangles[u][(i + 2) % 3];
+            let legal = orient_sign(p(a), p(b), p(x)) < 0 && orient_sign(p(a), p(b), p(y)) > 0;
+            if !legal || compare_lengths(p(a), p(b), p(x), p(y)) != Ordering::Less {
+                return Some([x, y]);
+            }
+            // t = (x, y, a), u = (y, x, b) become t = (a, x, b), u = (b, y, a).
+            let n_ya = self.neighbours[t][(j + 1) % 3];
+            let n_ax = self.neighbours[t][(j + 2) % 3];
+            let n_xb = self.neighbours[u][(i + 1) % 3];
+            let n_by = self.neighbours[u][(i + 2) % 3];
+            self.triangles[t] = [a, x, b];
+            self.neighbours[t] = [n_ax, n_xb, u as u32];
+            self.triangles[u] = [b, y, a];
+            self.neighbours[u] = [n_by, n_ya, t as u32];
+            for (n, from, to) in [(n_xb, u, t), (n_ya, t, u)] {
+                if n != NO_TRIANGLE {
+                    for s in self.neighbours[n as usize].iter_mut() {
+                        if *s == from as u32 {
+                            *s = to as u32;
+                        }
+                    }
+                }
+            }
+        }
+    }
 }
