@@ -3,7 +3,9 @@
 //!
 //! Every failure is reported as `optri: error: <message>` on stderr with exit
 //! code 1 (clap's usage errors exit with 2); input errors name the file and,
-//! where there is one, the line (`FILE:LINE: message`).
+//! where there is one, the line (`FILE:LINE: message`). Output goes through
+//! [`emit`], never `print!`, so a closed pipe or a full disk is such a
+//! failure too rather than a panic.
 #![forbid(unsafe_code)]
 
 use clap::{Args, Parser, Subcommand, ValueEnum};
@@ -18,6 +20,9 @@ use std::time::Instant;
 
 /// The built-in point set of `optri demo`.
 const DEMO_POINTS: &str = include_str!("demo_points.txt");
+/// The demo's second, strictly convex point set, for criteria that need
+/// convex position (min-weight, for now).
+const DEMO_CONVEX_POINTS: &str = include_str!("demo_convex_points.txt");
 
 #[derive(Parser)]
 #[command(
@@ -56,7 +61,9 @@ struct TriangulateArgs {
     /// Optimality criterion (see `Criterion::ALL`).
     #[arg(long, default_value = "delaunay")]
     criterion: String,
-    /// Write the triangulation; format by extension: .json .svg .ele (+ .node) .geojson. Repeatable.
+    /// Write the triangulation; format by extension: .json .svg .geojson, or .ele, which
+    /// also writes the points to the .node file beside it (X.ele writes X.node; refused if
+    /// X.node is the input). Repeatable.
     #[arg(long, short, value_name = "FILE")]
     output: Vec<PathBuf>,
     /// Print one JSON object with the result to stdout instead of a summary.
@@ -113,7 +120,10 @@ struct DemoArgs {
 }
 
 fn main() -> ExitCode {
-    let cli = Cli::parse();
+    let cli = match Cli::try_parse() {
+        Ok(cli) => cli,
+        Err(e) => return clap_exit(&e),
+    };
     let result = match cli.command {
         Command::Triangulate(args) => triangulate(args),
         Command::Graph(args) => graph(args),
@@ -121,10 +131,44 @@ fn main() -> ExitCode {
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
-        Err(message) => {
-            eprintln!("optri: error: {message}");
-            ExitCode::FAILURE
+        Err(message) => fail(&message),
+    }
+}
+
+/// Reports `message` on stderr and returns the failure exit code. A failing
+/// stderr is ignored: there is nowhere left to report it, and the exit code
+/// still says something went wrong.
+fn fail(message: &str) -> ExitCode {
+    let _ = writeln!(std::io::stderr().lock(), "optri: error: {message}");
+    ExitCode::FAILURE
+}
+
+/// Prints clap's help, version or usage error like `Error::exit` would, but
+/// a failed write (e.g. `optri --help > /dev/full`) exits with 1 and a
+/// message instead of exit code 0.
+fn clap_exit(e: &clap::Error) -> ExitCode {
+    let written = e.print().and_then(|()| {
+        if e.use_stderr() {
+            std::io::stderr().flush()
+        } else {
+            std::io::stdout().flush()
         }
+    });
+    match written {
+        Ok(()) => ExitCode::from(u8::try_from(e.exit_code()).unwrap_or(1)),
+        Err(w) => fail(&output_error(
+            if e.use_stderr() { "stderr" } else { "stdout" },
+            &w,
+        )),
+    }
+}
+
+/// The message for a failed write to `stream`.
+fn output_error(stream: &str, e: &std::io::Error) -> String {
+    if e.kind() == std::io::ErrorKind::BrokenPipe {
+        format!("cannot write to {stream}: the reading end of the pipe was closed")
+    } else {
+        format!("cannot write to {stream}: {e}")
     }
 }
 
@@ -179,15 +223,46 @@ fn display_name(source: &str) -> String {
         .map_or_else(|| source.to_string(), |n| n.to_string_lossy().into_owned())
 }
 
-/// Writes `text` to stdout; a closed pipe (e.g. `| head`) is not an error.
+/// Writes `text` to stdout. Any failure, a closed pipe included, is an error:
+/// output that did not arrive must not look like success to a script.
 fn emit(text: &str) -> CliResult<()> {
     let mut out = std::io::stdout().lock();
-    match out.write_all(text.as_bytes()).and_then(|()| out.flush()) {
-        Err(e) if e.kind() != std::io::ErrorKind::BrokenPipe => {
-            Err(format!("cannot write to stdout: {e}"))
-        }
-        _ => Ok(()),
+    out.write_all(text.as_bytes())
+        .and_then(|()| out.flush())
+        .map_err(|e| output_error("stdout", &e))
+}
+
+/// Refuses outputs that would overwrite the input file, before any work: an
+/// `.ele` output also writes the `.node` beside it, which is easily the
+/// input. Paths are compared canonicalized, so `./x.node` and `x.node` match.
+fn refuse_overwriting_input(input: &InputArgs, outputs: &[PathBuf]) -> CliResult<()> {
+    if input.input == "-" {
+        return Ok(());
     }
+    // A missing input cannot be overwritten; reading it reports the problem.
+    let Ok(input_path) = std::fs::canonicalize(&input.input) else {
+        return Ok(());
+    };
+    for output in outputs {
+        let format = OutputFormat::from_path(output).map_err(|e| e.to_string())?;
+        for file in format.files_written(output) {
+            if std::fs::canonicalize(&file).is_ok_and(|f| f == input_path) {
+                let companion = if &file == output {
+                    String::new()
+                } else {
+                    format!(
+                        " (writing '{}' also writes the .node beside it)",
+                        output.display()
+                    )
+                };
+                return Err(format!(
+                    "refusing to overwrite the input file '{}'{companion}; choose another output name",
+                    input.input
+                ));
+            }
+        }
+    }
+    Ok(())
 }
 
 /// A rounded measure for the summary: plain notation for everyday
@@ -232,6 +307,7 @@ fn triangulate(args: TriangulateArgs) -> CliResult<()> {
     for path in &args.output {
         OutputFormat::from_path(path).map_err(|e| e.to_string())?;
     }
+    refuse_overwriting_input(&args.input, &args.output)?;
     let mut phases: Vec<(String, f64)> = Vec::new();
     let (points, source) = read_input(&args.input)?;
     phases.push(("read".into(), ms_since(start)));
@@ -312,6 +388,7 @@ fn graph(args: GraphArgs) -> CliResult<()> {
             ));
         }
     }
+    refuse_overwriting_input(&args.input, &args.output)?;
     let mut phases: Vec<(String, f64)> = Vec::new();
     let (points, source) = read_input(&args.input)?;
     phases.push(("read".into(), ms_since(start)));
@@ -368,6 +445,49 @@ fn graph(args: GraphArgs) -> CliResult<()> {
     emit(&text)
 }
 
+/// One triangulation of the demo: which point set, the criterion with
+/// `(exact)` or `(heuristic)`, the panel title (both of those), the result
+/// and its time.
+struct DemoResult {
+    set: &'static str,
+    label: String,
+    title: String,
+    triangulation: Triangulation,
+    ms: f64,
+}
+
+/// Reads a built-in point set (valid by construction; errors are still
+/// reported, not unwrapped).
+fn builtin_points(text: &str, name: &str) -> CliResult<(Vec<Point>, PointSet)> {
+    let points = io::read_points(text, InputFormat::Text).map_err(|e| input_error(name, e))?;
+    let point_set = PointSet::new(&points).map_err(|e| input_error(name, e))?;
+    Ok((points, point_set))
+}
+
+/// Triangulates `point_set` (the demo's point set named `set`) by
+/// `criterion`, timed and titled.
+fn demo_result(
+    point_set: &PointSet,
+    criterion: Criterion,
+    set: &'static str,
+) -> optri::Result<DemoResult> {
+    let t0 = Instant::now();
+    let solution = optri::triangulate(point_set, criterion)?;
+    let ms = ms_since(t0);
+    let label = format!(
+        "{} ({})",
+        criterion.name(),
+        if solution.exact { "exact" } else { "heuristic" }
+    );
+    Ok(DemoResult {
+        set,
+        title: format!("{label} — {set} set"),
+        label,
+        triangulation: solution.triangulation,
+        ms,
+    })
+}
+
 fn demo(args: DemoArgs) -> CliResult<()> {
     if OutputFormat::from_path(&args.output).map_err(|e| e.to_string())? != OutputFormat::Svg {
         return Err(format!(
@@ -375,64 +495,80 @@ fn demo(args: DemoArgs) -> CliResult<()> {
             args.output.display()
         ));
     }
-    // The embedded set is valid by construction; errors would still be reported.
-    let points = io::read_points(DEMO_POINTS, InputFormat::Text)
-        .map_err(|e| input_error("built-in demo points", e))?;
-    let point_set = PointSet::new(&points).map_err(|e| input_error("built-in demo points", e))?;
-    let mut results: Vec<(String, Triangulation, f64)> = Vec::new();
+    let (points, point_set) = builtin_points(DEMO_POINTS, "built-in demo points")?;
+    let mut results: Vec<DemoResult> = Vec::new();
+    // Criteria the demo set does not suit (min-weight needs convex position),
+    // with the reason; they are drawn on the convex set instead.
+    let mut convex_only: Vec<(Criterion, String)> = Vec::new();
     for &criterion in Criterion::ALL {
-        let t0 = Instant::now();
-        let solution = match optri::triangulate(&point_set, criterion) {
-            Ok(s) => s,
-            // e.g. min-weight, which needs points in convex position yet.
-            Err(optri::Error::Unsupported(why)) => {
-                println!("{}: skipped: {why}", criterion.name());
-                continue;
-            }
+        match demo_result(&point_set, criterion, "demo") {
+            Ok(r) => results.push(r),
+            Err(Error::Unsupported(why)) => convex_only.push((criterion, why)),
             Err(e) => return Err(format!("{}: {e}", criterion.name())),
-        };
-        let ms = ms_since(t0);
-        let title = format!(
-            "{} ({})",
-            criterion.name(),
-            if solution.exact { "exact" } else { "heuristic" }
-        );
-        results.push((title, solution.triangulation, ms));
+        }
+    }
+    let mut text = format!(
+        "demo set: {} points ({} distinct{})\n",
+        points.len(),
+        point_set.len(),
+        duplicates_note(&point_set),
+    );
+    if !convex_only.is_empty() {
+        let (convex_points, convex_set) =
+            builtin_points(DEMO_CONVEX_POINTS, "built-in convex demo points")?;
+        text.push_str(&format!(
+            "convex set: {} points in convex position (a jittered ellipse)\n",
+            convex_points.len()
+        ));
+        for (criterion, why) in &convex_only {
+            text.push_str(&format!(
+                "  {} is drawn on the convex set: {why}\n",
+                criterion.name()
+            ));
+        }
+        // Greedy is the classic heuristic for minimum weight: draw it on the
+        // same set for comparison.
+        text.push_str("  greedy is drawn on the convex set too, for comparison\n");
+        let shown = Criterion::ALL
+            .iter()
+            .copied()
+            .filter(|&c| c == Criterion::Greedy || convex_only.iter().any(|(o, _)| *o == c));
+        for criterion in shown {
+            let r = demo_result(&convex_set, criterion, "convex")
+                .map_err(|e| format!("{} on the convex demo set: {e}", criterion.name()))?;
+            results.push(r);
+        }
     }
     let panels: Vec<(&str, &Triangulation)> = results
         .iter()
-        .map(|(title, t, _)| (title.as_str(), t))
+        .map(|r| (r.title.as_str(), &r.triangulation))
         .collect();
     let svg = io::panels_to_svg(&panels);
     std::fs::write(&args.output, svg)
         .map_err(|e| format!("cannot write '{}': {e}", args.output.display()))?;
-    let mut text = format!(
-        "{} points ({} distinct{}), {} {}\n\n",
-        points.len(),
-        point_set.len(),
-        duplicates_note(&point_set),
-        results.len(),
-        if results.len() == 1 {
-            "criterion"
-        } else {
-            "criteria"
-        }
-    );
     text.push_str(&format!(
-        "{:<24} {:>10} {:>12} {:>10} {:>10} {:>10} {:>10}\n",
-        "criterion", "max edge", "total length", "min angle", "min area", "max area", "time ms"
+        "\n{:<24} {:<7} {:>10} {:>12} {:>10} {:>10} {:>10} {:>10}\n",
+        "criterion",
+        "set",
+        "max edge",
+        "total length",
+        "min angle",
+        "min area",
+        "max area",
+        "time ms"
     ));
-    for (title, t, ms) in &results {
-        let s = t.stats();
+    for r in &results {
+        let s = r.triangulation.stats();
         text.push_str(&format!(
-            "{:<24} {:>10.4} {:>12.4} {:>10.4} {:>10.4} {:>10.4} {:>10.3}\n",
-            title,
+            "{:<24} {:<7} {:>10.4} {:>12.4} {:>10.4} {:>10.4} {:>10.4} {:>10.3}\n",
+            r.label,
+            r.set,
             s.max_edge_length,
             s.total_edge_length,
             s.min_angle_deg,
             s.min_area,
             s.max_area,
-            ms
+            r.ms
         ));
     }
     text.push_str(&format!("\nwrote {}\n", args.output.display()));

@@ -38,12 +38,11 @@ fn run_stdin(args: &[&str], input: &str) -> Output {
         .stderr(Stdio::piped())
         .spawn()
         .unwrap();
-    child
-        .stdin
-        .take()
-        .unwrap()
-        .write_all(input.as_bytes())
-        .unwrap();
+    // The child may fail (e.g. on a bad argument) before reading stdin.
+    let written = child.stdin.take().unwrap().write_all(input.as_bytes());
+    if let Err(e) = written {
+        assert_eq!(e.kind(), std::io::ErrorKind::BrokenPipe, "{e}");
+    }
     child.wait_with_output().unwrap()
 }
 
@@ -381,6 +380,17 @@ fn graph_kinds_match_the_library() {
     assert_eq!(svg.matches("<line class=\"edge\"").count(), 7);
 }
 
+/// The panel titles of an SVG written by optri.
+fn svg_titles(svg: &str) -> Vec<String> {
+    svg.split("<text class=\"title\"")
+        .skip(1)
+        .map(|rest| {
+            let text = &rest[rest.find('>').unwrap() + 1..];
+            text[..text.find("</text>").unwrap()].to_string()
+        })
+        .collect()
+}
+
 #[test]
 fn demo_draws_every_criterion() {
     let dir = scratch("demo");
@@ -397,16 +407,52 @@ fn demo_draws_every_criterion() {
     let svg = std::fs::read_to_string(dir.join("demo.svg")).unwrap();
     assert!(svg.starts_with("<svg"));
     let text = String::from_utf8_lossy(&out.stdout);
-    // Criteria that do not support the demo set say so and get no panel.
-    let skipped = text.matches(": skipped: ").count();
-    assert_eq!(
-        svg.matches("<g class=\"panel\"").count(),
-        optri::Criterion::ALL.len() - skipped
-    );
-    assert!(text.contains("merged 1 duplicate point"), "{text}");
+    let titles = svg_titles(&svg);
+    assert_eq!(svg.matches("<g class=\"panel\"").count(), titles.len());
+    // Every registered criterion has a panel (none is skipped), and every
+    // panel says which point set it shows.
     for c in optri::Criterion::ALL {
-        assert!(text.contains(c.name()), "{text}");
+        let prefix = format!("{} (", c.name());
+        assert!(
+            titles.iter().any(|t| t.starts_with(&prefix)),
+            "{} has no panel: {titles:?}",
+            c.name()
+        );
+        assert!(
+            text.lines().any(|l| l.starts_with(&prefix)),
+            "{} has no table row: {text}",
+            c.name()
+        );
     }
+    assert!(
+        titles
+            .iter()
+            .all(|t| t.ends_with("— demo set") || t.ends_with("— convex set")),
+        "{titles:?}"
+    );
+    // Min-weight needs convex position, so it is drawn on the convex set,
+    // next to greedy on the same set; its table row names that set.
+    assert!(
+        titles.contains(&"min-weight (heuristic) — convex set".to_string()),
+        "{titles:?}"
+    );
+    assert!(
+        titles.contains(&"greedy (exact) — convex set".to_string()),
+        "{titles:?}"
+    );
+    let row = |label: &str, set: &str| {
+        text.lines()
+            .any(|l| l.starts_with(label) && l.split_whitespace().nth(2) == Some(set))
+    };
+    assert!(row("min-weight (heuristic)", "convex"), "{text}");
+    assert!(
+        row("greedy (exact)", "convex") && row("greedy (exact)", "demo"),
+        "{text}"
+    );
+    assert!(row("delaunay (exact)", "demo"), "{text}");
+    assert!(!text.contains("skipped"), "{text}");
+    assert!(text.contains("merged 1 duplicate point"), "{text}");
+    assert!(text.contains("convex set: 40 points"), "{text}");
     let custom = dir.join("d2.svg");
     assert!(run(&["demo", "-o", custom.to_str().unwrap()])
         .status
@@ -416,6 +462,79 @@ fn demo_draws_every_criterion() {
         &run(&["demo", "-o", dir.join("d.json").to_str().unwrap()]),
         &["d.json", ".svg"],
     );
+}
+
+/// Runs `args` with stdout (or stderr) on `/dev/full`, where every write fails.
+#[cfg(target_os = "linux")]
+fn run_into_dev_full(args: &[&str], stderr_too: bool) -> Output {
+    let full = || {
+        std::fs::OpenOptions::new()
+            .write(true)
+            .open("/dev/full")
+            .unwrap()
+    };
+    let mut command = Command::new(BIN);
+    command.args(args).stdout(full());
+    if stderr_too {
+        command.stderr(full());
+    }
+    command.output().unwrap()
+}
+
+#[cfg(target_os = "linux")]
+#[test]
+fn a_full_disk_on_stdout_or_stderr_is_a_clean_failure() {
+    let dir = scratch("full");
+    let input = write(&dir, "ok.txt", SQUARE);
+    let svg = dir.join("d.svg");
+    let svg = svg.to_str().unwrap();
+    for args in [
+        &["demo", "-o", svg][..],
+        &["triangulate", &input, "--json"],
+        &["triangulate", &input],
+        &["graph", &input, "--kind", "mst"],
+    ] {
+        assert_fails(
+            &run_into_dev_full(args, false),
+            &["cannot write to stdout", "No space left"],
+        );
+    }
+    // --help is printed by clap, which would otherwise exit 0 regardless.
+    assert_fails(
+        &run_into_dev_full(&["--help"], false),
+        &["cannot write to stdout"],
+    );
+    // With stderr full too there is no message, but still exit code 1, not
+    // a panic's 101.
+    let missing = dir.join("missing.txt");
+    let out = run_into_dev_full(&["triangulate", missing.to_str().unwrap()], true);
+    assert_eq!(out.status.code(), Some(1));
+    let out = run_into_dev_full(&["triangulate", &input, "--json"], true);
+    assert_eq!(out.status.code(), Some(1));
+}
+
+#[test]
+fn a_closed_stdout_pipe_is_a_clean_failure() {
+    // The child blocks on stdin until the reading end of its stdout is
+    // closed, so its write always meets a closed pipe (like `| true`).
+    for args in [&["triangulate", "-", "--json"][..], &["triangulate", "-"]] {
+        let mut child = Command::new(BIN)
+            .args(args)
+            .stdin(Stdio::piped())
+            .stdout(Stdio::piped())
+            .stderr(Stdio::piped())
+            .spawn()
+            .unwrap();
+        drop(child.stdout.take());
+        child
+            .stdin
+            .take()
+            .unwrap()
+            .write_all(SQUARE.as_bytes())
+            .unwrap();
+        let out = child.wait_with_output().unwrap();
+        assert_fails(&out, &["cannot write to stdout", "pipe was closed"]);
+    }
 }
 
 #[test]
@@ -455,4 +574,222 @@ fn every_tsplib_file_matches_its_readme_counts() {
             "{name}"
         );
     }
+}
+
+#[test]
+fn an_ele_output_never_overwrites_the_input_node_file() {
+    let dir = scratch("ele-input");
+    let node_text = "4 2 0 0\n0 0 0\n1 4 0\n2 4 4\n3 1 3\n";
+    let input = write(&dir, "pts.node", node_text);
+    // The same file however it is spelled: canonical paths are compared.
+    let spellings = [
+        dir.join("pts.ele"),
+        dir.join(".").join("pts.ele"),
+        dir.join("sub/../pts.ELE"),
+    ];
+    std::fs::create_dir_all(dir.join("sub")).unwrap();
+    for ele in &spellings {
+        assert_fails(
+            &run(&["triangulate", &input, "-o", ele.to_str().unwrap()]),
+            &[
+                "refusing to overwrite the input file",
+                "pts.node",
+                ".node beside it",
+            ],
+        );
+    }
+    // Relative paths from another working directory, with a harmless output
+    // first: nothing at all is written.
+    let svg = dir.join("first.svg");
+    let out = Command::new(BIN)
+        .args([
+            "triangulate",
+            "pts.node",
+            "-o",
+            svg.to_str().unwrap(),
+            "-o",
+            "pts.ele",
+        ])
+        .current_dir(&dir)
+        .output()
+        .unwrap();
+    assert_fails(&out, &["pts.node"]);
+    assert!(!svg.exists() && !dir.join("pts.ele").exists());
+    assert_eq!(
+        std::fs::read_to_string(dir.join("pts.node")).unwrap(),
+        node_text
+    );
+    // An output that is the input itself is refused as well.
+    let json_input = write(&dir, "t.json", r#"{"points":[[0,0],[1,0],[0,1]]}"#);
+    assert_fails(
+        &run(&["triangulate", &json_input, "-o", &json_input]),
+        &["refusing to overwrite the input file", "t.json"],
+    );
+    assert_fails(
+        &run(&["graph", &json_input, "--kind", "mst", "-o", &json_input]),
+        &["refusing to overwrite the input file"],
+    );
+    // Another name is fine and writes its own .node.
+    let other = dir.join("tri.ele");
+    let out = run(&["triangulate", &input, "-o", other.to_str().unwrap()]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert_eq!(
+        optri::io::read_points_file(&dir.join("tri.node"), None).unwrap(),
+        optri::io::read_points_file(std::path::Path::new(&input), None).unwrap()
+    );
+    // --help says that .ele writes the .node too.
+    let help = String::from_utf8_lossy(&run(&["triangulate", "--help"]).stdout).into_owned();
+    assert!(
+        help.contains(".ele") && help.contains("X.ele writes X.node"),
+        "{help}"
+    );
+}
+
+#[test]
+fn geojson_output_reads_back_as_the_same_points() {
+    let dir = scratch("geojson-round-trip");
+    let input = write(&dir, "d.txt", "0 0\n4 0\n4 4\n0 4\n1 1\n3 2\n4 0\n");
+    let geojson = dir.join("t.geojson");
+    let first = stdout_json(&run(&[
+        "triangulate",
+        &input,
+        "--json",
+        "-o",
+        geojson.to_str().unwrap(),
+    ]));
+    let points = optri::io::read_points_file(std::path::Path::new(&input), None).unwrap();
+    // The triangles (Polygons) are skipped; the Point features give every
+    // input point, duplicate included, in input order.
+    assert_eq!(optri::io::read_points_file(&geojson, None).unwrap(), points);
+    let again = stdout_json(&run(&["triangulate", geojson.to_str().unwrap(), "--json"]));
+    assert_eq!(again["points"], 7);
+    assert_eq!(again["duplicates"], first["duplicates"]);
+    assert_eq!(again["triangles"], first["triangles"]);
+    // A graph's GeoJSON (LineStrings and Points) reads back too.
+    let graph = dir.join("g.geojson");
+    let out = run(&[
+        "graph",
+        &input,
+        "--kind",
+        "rng",
+        "-o",
+        graph.to_str().unwrap(),
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert_eq!(optri::io::read_points_file(&graph, None).unwrap(), points);
+}
+
+/// Points strictly in convex position, not semicircular: a hexagon.
+const HEXAGON: &str = "2 0\n1 1.75\n-1 1.75\n-2 0\n-1 -1.75\n1 -1.75\n";
+/// A semicircular convex polygon: every vertex strictly inside the circle on
+/// the longest edge (points on the parabola y = (16 - x^2) / 8).
+const SEMICIRCULAR: &str = "-4 0\n4 0\n-3 0.875\n-2 1.5\n-1 1.875\n0 2\n1 1.875\n2 1.5\n3 0.875\n";
+
+/// Sum of the edge lengths of the JSON `triangles`, each edge once.
+fn total_length(json: &Value, points: &[[f64; 2]]) -> f64 {
+    let t = check_triangulation(json, points);
+    t.edges()
+        .iter()
+        .map(|&[a, b]| {
+            let (p, q) = (points[a as usize], points[b as usize]);
+            (p[0] - q[0]).hypot(p[1] - q[1])
+        })
+        .sum()
+}
+
+#[test]
+fn greedy_names_its_algorithm_and_matches_the_library() {
+    let cases = [
+        (SQUARE, "general"),
+        (HEXAGON, "convex"),
+        (SEMICIRCULAR, "semicircular"),
+    ];
+    for (text, algorithm) in cases {
+        let json = stdout_json(&run_stdin(
+            &["triangulate", "-", "--criterion", "greedy", "--json"],
+            text,
+        ));
+        assert_eq!(json["criterion"], "greedy");
+        assert_eq!(json["exact"], true);
+        let named = json["algorithm"].as_str().unwrap();
+        assert!(named.starts_with(&format!("{algorithm} (")), "{named}");
+        let points = optri::io::read_points(text, optri::io::InputFormat::Text).unwrap();
+        let lib =
+            optri::triangulate(&PointSet::new(&points).unwrap(), optri::Criterion::Greedy).unwrap();
+        let triangles: Vec<[u32; 3]> = serde_json::from_value(json["triangles"].clone()).unwrap();
+        assert_eq!(triangles, lib.triangulation.triangles(), "{algorithm}");
+        let reported = json["stats"]["total_edge_length"].as_f64().unwrap();
+        let summed = total_length(&json, &points);
+        assert!(
+            (reported - summed).abs() <= 1e-12 * summed,
+            "{reported} {summed}"
+        );
+    }
+}
+
+#[test]
+fn min_weight_needs_convex_position_and_is_not_certified_exact() {
+    assert_fails(
+        &run_stdin(&["triangulate", "-", "--criterion", "min-weight"], SQUARE),
+        &[
+            "min-weight is only supported for points in convex position",
+            "interior",
+        ],
+    );
+    assert_fails(
+        &run_stdin(
+            &["triangulate", "-", "--criterion", "min-weight", "--json"],
+            SQUARE,
+        ),
+        &["convex position"],
+    );
+    let points = optri::io::read_points(HEXAGON, optri::io::InputFormat::Text).unwrap();
+    let json = stdout_json(&run_stdin(
+        &["triangulate", "-", "--criterion", "min-weight", "--json"],
+        HEXAGON,
+    ));
+    assert_eq!(json["criterion"], "min-weight");
+    // Optimal only up to the rounding of the summed lengths.
+    assert_eq!(json["exact"], false);
+    assert_eq!(json["stats"]["triangles"], 4);
+    let weight = json["stats"]["total_edge_length"].as_f64().unwrap();
+    assert!((weight - total_length(&json, &points)).abs() <= 1e-12 * weight);
+    // No triangulation is lighter, the greedy one included.
+    let greedy = stdout_json(&run_stdin(
+        &["triangulate", "-", "--criterion", "greedy", "--json"],
+        HEXAGON,
+    ));
+    assert!(weight <= greedy["stats"]["total_edge_length"].as_f64().unwrap() * (1.0 + 1e-12));
+}
+
+#[test]
+fn criterion_names_are_case_insensitive() {
+    let json = stdout_json(&run_stdin(
+        &["triangulate", "-", "--criterion", "DELAUNAY", "--json"],
+        SQUARE,
+    ));
+    assert_eq!(json["criterion"], "delaunay");
+    let json = stdout_json(&run_stdin(
+        &["triangulate", "-", "--criterion", "MinMax-Length", "--json"],
+        SQUARE,
+    ));
+    assert_eq!(json["criterion"], "minmax-length");
+    let json = stdout_json(&run_stdin(
+        &["triangulate", "-", "--criterion", "Min-Weight", "--json"],
+        HEXAGON,
+    ));
+    assert_eq!(json["criterion"], "min-weight");
+    let available: Vec<&str> = optri::Criterion::ALL.iter().map(|c| c.name()).collect();
+    assert_fails(
+        &run_stdin(&["triangulate", "-", "--criterion", "Prettiest"], SQUARE),
+        &["unknown criterion 'Prettiest'", &available.join(", ")],
+    );
 }

@@ -78,7 +78,8 @@ impl Criterion {
         }
     }
 
-    /// Looks a criterion up by its [`name`](Self::name).
+    /// Looks a criterion up by its [`name`](Self::name), ignoring ASCII case
+    /// (as input-format names do), so `DELAUNAY` is `delaunay`.
     ///
     /// # Errors
     /// [`Error::Unsupported`] listing the available names.
@@ -86,7 +87,7 @@ impl Criterion {
         Self::ALL
             .iter()
             .copied()
-            .find(|c| c.name() == name)
+            .find(|c| c.name().eq_ignore_ascii_case(name))
             .ok_or_else(|| {
                 let names: Vec<&str> = Self::ALL.iter().map(|c| c.name()).collect();
                 Error::Unsupported(format!(
@@ -133,7 +134,7 @@ pub fn triangulate(points: &PointSet, criterion: Criterion) -> Result<Solution> 
                     "ear heap for semicircular polygons, Levcopoulos-Lingas Thm 4.3, O(n log n)"
                 }
                 crate::greedy::GreedyAlgorithm::Convex => {
-                    "recursive splitting for convex position, Levcopoulos-Lingas Thm 4.2, O(n) space"
+                    "recursive splitting for convex position, Levcopoulos-Lingas Thm 4.2, expected O(n^2) time (Chew's convex-polygon Delaunay), O(n) space"
                 }
                 crate::greedy::GreedyAlgorithm::General => {
                     "exact length rounds with closed-vertex retirement"

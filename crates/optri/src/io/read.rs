@@ -22,7 +22,10 @@ pub enum InputFormat {
     /// may precede the data. Every data row must have the same number of
     /// columns (at least two, all numbers). The coordinates are the columns
     /// the header names `x` and `y` (case-insensitive, e.g. `id,x,y`), else
-    /// the first two; other columns are ignored.
+    /// the first two; other columns are ignored. A run of spaces and tabs is
+    /// one separator, but a comma or semicolon always ends a field, so an
+    /// empty field (`1,,0`, or a separator at the start or end of a line) is
+    /// an error rather than a silently shifted column.
     Text,
     /// Triangle's `.node`: a header `n dim attributes boundary_marker`, then
     /// `id x y [attributes…] [marker]` per vertex.
@@ -31,8 +34,10 @@ pub enum InputFormat {
     /// are, also for `GEO` and `ATT` instances).
     Tsplib,
     /// GeoJSON `Point`/`MultiPoint` geometries (bare, in a `Feature`, a
-    /// `FeatureCollection` or a `GeometryCollection`); also optri's own JSON
-    /// output (an object with a `"points"` array).
+    /// `FeatureCollection` or a `GeometryCollection`); the other geometry
+    /// types (`LineString`, `Polygon`, their `Multi` forms) are skipped, so
+    /// optri's own GeoJSON output reads back as its points. Also optri's own
+    /// JSON output (an object with a `"points"` array).
     GeoJson,
 }
 
@@ -189,6 +194,33 @@ fn strip_comment(line: &str) -> &str {
     line.split('#').next().unwrap_or("")
 }
 
+/// The fields of one text line. Whitespace runs separate fields, and so does
+/// each comma or semicolon (with any whitespace around it); an empty field
+/// between two of them, or before or after one, is an error: skipping it
+/// would silently shift the columns (`1,,0` would read as `1 0`).
+fn text_fields(line_text: &str, line: usize) -> Result<Vec<&str>> {
+    let trimmed = line_text.trim();
+    if trimmed.is_empty() {
+        return Ok(Vec::new());
+    }
+    let mut fields = Vec::new();
+    for part in trimmed.split([',', ';']) {
+        let before = fields.len();
+        fields.extend(part.split_whitespace());
+        if fields.len() == before {
+            return Err(parse(
+                line,
+                format!(
+                    "field {} is empty (two separators in a row, or one at the start or end \
+                     of the line); every field must hold a number",
+                    before + 1
+                ),
+            ));
+        }
+    }
+    Ok(fields)
+}
+
 fn read_text(text: &str) -> Result<Vec<Point>> {
     let mut points = Vec::new();
     // Column count of the first data row and its line, to report ragged rows.
@@ -199,10 +231,7 @@ fn read_text(text: &str) -> Result<Vec<Point>> {
     let mut header_columns = None;
     for (i, raw) in text.lines().enumerate() {
         let line = i + 1;
-        let tokens: Vec<&str> = strip_comment(raw)
-            .split(|c: char| c.is_whitespace() || c == ',' || c == ';')
-            .filter(|t| !t.is_empty())
-            .collect();
+        let tokens = text_fields(strip_comment(raw), line)?;
         if tokens.is_empty() {
             continue;
         }
@@ -493,19 +522,46 @@ fn read_geojson(text: &str) -> Result<Vec<Point>> {
     }
     let root: Value =
         serde_json::from_str(text).map_err(|e| parse(e.line(), format!("invalid JSON: {e}")))?;
-    let mut points = Vec::new();
+    let mut found = GeoJsonPoints::default();
     // optri's own JSON output: {"points": [[x, y], ...], ...} without a type.
     if let Some(list) = root.get("points").filter(|_| root.get("type").is_none()) {
-        collect_positions(list, "points", &mut points)?;
-        return Ok(points);
+        collect_positions(list, "points", &mut found.points)?;
+        return Ok(found.points);
     }
-    collect_geojson(&root, "the document", &mut points)?;
-    Ok(points)
+    collect_geojson(&root, "the document", &mut found)?;
+    if found.points.is_empty() {
+        let what = if found.skipped.is_empty() {
+            "no geometries at all".to_string()
+        } else {
+            let counts: Vec<String> = found
+                .skipped
+                .iter()
+                .map(|(kind, n)| format!("{n} {kind}"))
+                .collect();
+            format!("only {}", counts.join(", "))
+        };
+        return Err(parse(
+            0,
+            format!("GeoJSON: no Point or MultiPoint geometry found (the document has {what})"),
+        ));
+    }
+    Ok(found.points)
+}
+
+/// What [`collect_geojson`] gathers: the points, and how many geometries of
+/// each point-less type were skipped (in first-seen order, for the message
+/// when nothing else is found).
+#[derive(Default)]
+struct GeoJsonPoints {
+    points: Vec<Point>,
+    skipped: Vec<(&'static str, usize)>,
 }
 
 /// Appends the points of a GeoJSON object; `at` describes where it is, for
 /// messages (JSON values carry no line numbers, so errors name the path).
-fn collect_geojson(v: &Value, at: &str, out: &mut Vec<Point>) -> Result<()> {
+fn collect_geojson(v: &Value, at: &str, found: &mut GeoJsonPoints) -> Result<()> {
+    /// Valid GeoJSON geometries that hold no points of their own.
+    const POINTLESS: [&str; 4] = ["LineString", "MultiLineString", "Polygon", "MultiPolygon"];
     let bad = |m: String| Err(parse(0, format!("GeoJSON: {at}: {m}")));
     let Some(kind) = v.get("type").and_then(Value::as_str) else {
         return bad(format!(
@@ -523,27 +579,37 @@ fn collect_geojson(v: &Value, at: &str, out: &mut Vec<Point>) -> Result<()> {
                 return bad("\"features\" is not an array".into());
             };
             for (k, f) in features.iter().enumerate() {
-                collect_geojson(f, &format!("features[{k}]"), out)?;
+                collect_geojson(f, &format!("features[{k}]"), found)?;
             }
         }
         "Feature" => match member("geometry")? {
             Value::Null => {}
-            g => collect_geojson(g, &format!("{at}.geometry"), out)?,
+            g => collect_geojson(g, &format!("{at}.geometry"), found)?,
         },
         "GeometryCollection" => {
             let Some(geometries) = member("geometries")?.as_array() else {
                 return bad("\"geometries\" is not an array".into());
             };
             for (k, g) in geometries.iter().enumerate() {
-                collect_geojson(g, &format!("{at}.geometries[{k}]"), out)?;
+                collect_geojson(g, &format!("{at}.geometries[{k}]"), found)?;
             }
         }
-        "Point" => out.push(position(member("coordinates")?, at)?),
-        "MultiPoint" => collect_positions(member("coordinates")?, at, out)?,
+        "Point" => found.points.push(position(member("coordinates")?, at)?),
+        "MultiPoint" => collect_positions(member("coordinates")?, at, &mut found.points)?,
         other => {
-            return bad(format!(
-                "geometry type {other} is not supported (only Point and MultiPoint hold points)"
-            ))
+            // Skipping lines and polygons lets a triangulation's GeoJSON be
+            // read back as its points; an unknown type is more likely a
+            // typo, which must not silently drop points.
+            let Some(&kind) = POINTLESS.iter().find(|&&k| k == other) else {
+                return bad(format!(
+                    "\"{other}\" is not a GeoJSON geometry type (points are read from Point \
+                     and MultiPoint; LineString, Polygon and their Multi forms are skipped)"
+                ));
+            };
+            match found.skipped.iter_mut().find(|(k, _)| *k == kind) {
+                Some((_, n)) => *n += 1,
+                None => found.skipped.push((kind, 1)),
+            }
         }
     }
     Ok(())
@@ -654,6 +720,25 @@ mod tests {
         assert_eq!(
             line_of(read_points("", InputFormat::Text).unwrap_err()).0,
             0
+        );
+    }
+
+    #[test]
+    fn empty_fields_are_errors_but_whitespace_runs_are_one_separator() {
+        for (text, bad_line) in [
+            ("0,0\n1,,0\n0,1\n", 2),
+            ("0,0\n1,0,\n0,1\n", 2),
+            ("0;0\n1;0\n;0;1\n", 3),
+            ("0 , 0\n1 , , 0\n", 2),
+            ("x,,y\n0,0\n", 1),
+        ] {
+            let (line, m) = line_of(read_points(text, InputFormat::Text).unwrap_err());
+            assert_eq!(line, bad_line, "{text:?}: {m}");
+            assert!(m.contains("empty"), "{m}");
+        }
+        assert_eq!(
+            read_points("0 \t 0\n\t1   0  \n0,\t1 # c,,\n", InputFormat::Text).unwrap(),
+            vec![[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]]
         );
     }
 
@@ -832,13 +917,48 @@ mod tests {
             .unwrap(),
             vec![[0.5, -1.0]]
         );
+        // Lines and polygons are skipped; a document without any point names
+        // what it holds instead.
+        assert_eq!(
+            read_points(
+                r#"{"type":"GeometryCollection","geometries":[
+                    {"type":"LineString","coordinates":[[0,0],[1,1]]},
+                    {"type":"Point","coordinates":[2,3]}]}"#,
+                InputFormat::GeoJson
+            )
+            .unwrap(),
+            vec![[2.0, 3.0]]
+        );
         let e = read_points(
-            r#"{"type":"Feature","geometry":{"type":"LineString","coordinates":[[0,0],[1,1]]}}"#,
+            r#"{"type":"FeatureCollection","features":[
+                {"type":"Feature","geometry":{"type":"LineString","coordinates":[[0,0],[1,1]]}},
+                {"type":"Feature","geometry":{"type":"Polygon","coordinates":[[[0,0],[1,0],[0,1],[0,0]]]}},
+                {"type":"Feature","geometry":{"type":"LineString","coordinates":[[0,0],[1,1]]}}]}"#,
             InputFormat::GeoJson,
         )
         .unwrap_err()
         .to_string();
-        assert!(e.contains("LineString"), "{e}");
+        assert!(
+            e.contains("no Point or MultiPoint") && e.contains("2 LineString, 1 Polygon"),
+            "{e}"
+        );
+        let e = read_points(
+            r#"{"type":"FeatureCollection","features":[]}"#,
+            InputFormat::GeoJson,
+        )
+        .unwrap_err()
+        .to_string();
+        assert!(e.contains("no geometries"), "{e}");
+        let e = read_points(
+            r#"{"type":"Piont","coordinates":[1,2]}"#,
+            InputFormat::GeoJson,
+        )
+        .unwrap_err()
+        .to_string();
+        assert!(
+            e.contains("\"Piont\" is not a GeoJSON geometry type"),
+            "{e}"
+        );
         let (line, _) = line_of(read_points("{\n\"type\":\n}", InputFormat::GeoJson).unwrap_err());
         assert_eq!(line, 3);
         let e = read_points(

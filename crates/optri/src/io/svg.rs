@@ -7,8 +7,8 @@
 //! by [`Triangulation::longest_edge`]) and shades the triangle with the
 //! smallest angle (a display choice made on rounded angles).
 //!
-//! Every edge is drawn as exactly one `<line class="edge">`, so tests can
-//! count them.
+//! Every edge is drawn as exactly one `<line class="edge">` and every panel
+//! title as one `<text class="title" …>`, so tests can count and read them.
 
 use crate::kernel::{metrics, Point};
 use crate::triangulation::Triangulation;
@@ -177,7 +177,7 @@ fn draw_panel(out: &mut String, x0: f64, y0: f64, plot_h: f64, panel: &Panel) {
     );
     let _ = writeln!(
         out,
-        r#"<text x="{:.2}" y="{:.2}" font-size="16" font-weight="bold">{}</text>"#,
+        r#"<text class="title" x="{:.2}" y="{:.2}" font-size="16" font-weight="bold">{}</text>"#,
         x0 + MARGIN,
         y0 + 22.0,
         escape(panel.title)
@@ -348,6 +348,7 @@ mod tests {
         assert_eq!(svg.matches("<polygon class=\"worst\"").count(), 1);
         assert_eq!(svg.matches("<circle").count(), 5);
         assert!(svg.contains("a &lt;test&gt; &amp; more"));
+        assert_eq!(svg.matches("<text class=\"title\"").count(), 1);
         // Point (0,0) is the bottom-left corner: larger SVG y than (0,3).
         let cy: Vec<f64> = svg
             .match_indices("cy=\"")

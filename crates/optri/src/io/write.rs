@@ -55,6 +55,16 @@ impl OutputFormat {
             ))),
         }
     }
+
+    /// Every file that writing a triangulation to `path` in this format
+    /// creates or overwrites: `path` itself and, for [`OutputFormat::Triangle`],
+    /// the sibling `.node` (so callers can refuse to overwrite their input).
+    pub fn files_written(self, path: &Path) -> Vec<PathBuf> {
+        match self {
+            OutputFormat::Triangle => vec![path.to_path_buf(), path.with_extension("node")],
+            _ => vec![path.to_path_buf()],
+        }
+    }
 }
 
 /// `{"points": [[x, y], …], "triangles": [[i, j, k], …], "edges": [[a, b], …],
@@ -246,10 +256,10 @@ pub fn write_triangulation_titled(
         OutputFormat::Svg => write_file(path, &triangulation_to_svg(t, title))?,
         OutputFormat::Triangle => {
             let (node, ele) = triangulation_to_triangle_files(t);
-            let node_path = path.with_extension("node");
-            write_file(path, &ele)?;
-            write_file(&node_path, &node)?;
-            return Ok(vec![path.to_path_buf(), node_path]);
+            let files = OutputFormat::Triangle.files_written(path);
+            write_file(&files[0], &ele)?;
+            write_file(&files[1], &node)?;
+            return Ok(files);
         }
     }
     Ok(vec![path.to_path_buf()])
@@ -353,10 +363,19 @@ mod tests {
             read_points(&points_only.to_string(), InputFormat::GeoJson).unwrap(),
             pts
         );
-        // Polygons are not points: the reader says so.
-        let e = read_points(&v.to_string(), InputFormat::GeoJson)
-            .unwrap_err()
-            .to_string();
+        // The whole collection reads back as the points: polygons are skipped.
+        assert_eq!(
+            read_points(&v.to_string(), InputFormat::GeoJson).unwrap(),
+            pts
+        );
+        // Without the point features there are no points, and the reader
+        // says what it found instead.
+        let e = read_points(
+            &triangulation_to_geojson(&t, false).to_string(),
+            InputFormat::GeoJson,
+        )
+        .unwrap_err()
+        .to_string();
         assert!(e.contains("Polygon"), "{e}");
     }
 
@@ -391,6 +410,14 @@ mod tests {
         let t = delaunay(&PointSet::new(&awkward_points()).unwrap()).unwrap();
         let written = write_triangulation(&t, &dir.join("t.ele")).unwrap();
         assert_eq!(written, vec![dir.join("t.ele"), dir.join("t.node")]);
+        assert_eq!(
+            OutputFormat::Triangle.files_written(&dir.join("t.ele")),
+            written
+        );
+        assert_eq!(
+            OutputFormat::Json.files_written(&dir.join("t.json")),
+            vec![dir.join("t.json")]
+        );
         let node = std::fs::read_to_string(dir.join("t.node")).unwrap();
         assert_eq!(read_points(&node, InputFormat::Node).unwrap(), t.points());
         for name in ["t.json", "t.geojson", "t.SVG"] {

@@ -1,0 +1,414 @@
+//! Round trips through optri's readers and writers (text, `.node`, `.tsp`,
+//! GeoJSON, JSON, `.ele` + `.node`) on random and degenerate point sets, and
+//! the errors for bad input, with their line numbers.
+//!
+//! Writers print coordinates in shortest round-trip notation, so every round
+//! trip must give back the identical `f64` values, in input order, with the
+//! same duplicates.
+
+use optri::io::{self, InputFormat, OutputFormat};
+use optri::kernel::{MAX_COORDINATE, MIN_COORDINATE};
+use optri::{delaunay, Error, PointSet, Triangulation};
+use rand::rngs::StdRng;
+use rand::{Rng, SeedableRng};
+use serde_json::Value;
+use std::path::{Path, PathBuf};
+
+type Point = [f64; 2];
+
+/// Random and degenerate sets, each valid for [`PointSet::new`].
+fn point_sets() -> Vec<(String, Vec<Point>)> {
+    let mut rng = StdRng::seed_from_u64(2024);
+    let mut sets = Vec::new();
+    for round in 0..6 {
+        let n = rng.gen_range(3..60);
+        let scale = [1.0, 1e-30, 1e40, 7.0, 2f64.powi(190), 2f64.powi(-120)][round];
+        let mut pts: Vec<Point> = (0..n)
+            .map(|_| {
+                [
+                    rng.gen_range(-1.0..1.0) * scale,
+                    rng.gen_range(-1.0..1.0) * scale,
+                ]
+            })
+            .collect();
+        // A triangle that keeps the set non-collinear whatever n is.
+        pts.extend([[0.0, 0.0], [scale, 0.0], [0.0, scale]]);
+        sets.push((format!("random scale {scale:e}"), pts));
+    }
+    // Duplicates, also of the first and the last point.
+    let mut dups: Vec<Point> = (0..30)
+        .map(|_| [rng.gen_range(-5..5) as f64, rng.gen_range(-5..5) as f64])
+        .collect();
+    dups.extend([dups[0], dups[7], dups[7], [9.0, 9.0], [-9.0, 9.0]]);
+    dups.push(dups[dups.len() - 1]);
+    sets.push(("integer duplicates".into(), dups));
+    // A grid: collinear rows, cocircular quadruples.
+    let grid: Vec<Point> = (0..6)
+        .flat_map(|x| (0..5).map(move |y| [x as f64 * 0.1, y as f64 * 0.1]))
+        .collect();
+    sets.push(("grid 6x5 step 0.1".into(), grid));
+    // The documented range limits, exactly, with zero.
+    let (big, small) = (MAX_COORDINATE, MIN_COORDINATE);
+    sets.push((
+        "range limits".into(),
+        vec![
+            [-big, -big],
+            [big, -big],
+            [big, big],
+            [-big, big],
+            [0.0, 0.0],
+            [small, -small],
+            [-small, 3.0 * small],
+            [1.0, 1.0],
+        ],
+    ));
+    sets
+}
+
+/// A fresh directory for one test's files.
+fn scratch(test: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!(
+        "optri-io-round-trips-{}-{test}",
+        std::process::id()
+    ));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+/// `points` as a text file: `sep` between the columns, an optional header,
+/// comment lines, and plain or exponent notation.
+fn to_text(points: &[Point], sep: &str, header: Option<&str>, exponent: bool) -> String {
+    let mut text = String::from("# written by io_round_trips\n\n");
+    if let Some(h) = header {
+        text.push_str(h);
+        text.push('\n');
+    }
+    for (i, p) in points.iter().enumerate() {
+        let (x, y) = if exponent {
+            (format!("{:e}", p[0]), format!("{:E}", p[1]))
+        } else {
+            (format!("{}", p[0]), format!("{}", p[1]))
+        };
+        if header.is_some_and(|h| h.starts_with("id")) {
+            text.push_str(&format!("{i}{sep}{x}{sep}{y}"));
+        } else {
+            text.push_str(&format!("{x}{sep}{y}"));
+        }
+        text.push_str(if i % 3 == 0 { "  # a note\n" } else { "\n" });
+        if i % 5 == 0 {
+            text.push_str("# between the rows\n");
+        }
+    }
+    text
+}
+
+/// A TSPLIB `.tsp` text with 1-based node ids.
+fn to_tsp(points: &[Point]) -> String {
+    let mut text = format!(
+        "NAME : roundtrip\nTYPE : TSP\nCOMMENT : io_round_trips\nDIMENSION : {}\n\
+         EDGE_WEIGHT_TYPE : EUC_2D\nNODE_COORD_SECTION\n",
+        points.len()
+    );
+    for (i, p) in points.iter().enumerate() {
+        text.push_str(&format!("{} {:e} {:e}\n", i + 1, p[0], p[1]));
+    }
+    text.push_str("EOF\n");
+    text
+}
+
+/// Reads an `.ele` file written by optri: `m 3 0`, then `k a b c` per triangle.
+fn read_ele(text: &str) -> Vec<[u32; 3]> {
+    let rows: Vec<Vec<u32>> = text
+        .lines()
+        .filter(|l| !l.trim_start().starts_with('#') && !l.trim().is_empty())
+        .map(|l| l.split_whitespace().map(|t| t.parse().unwrap()).collect())
+        .collect();
+    assert_eq!(rows[0][1..], [3, 0], "ele header {:?}", rows[0]);
+    assert_eq!(rows[0][0] as usize, rows.len() - 1, "ele triangle count");
+    rows[1..]
+        .iter()
+        .enumerate()
+        .map(|(k, r)| {
+            assert_eq!(r.len(), 4, "ele row {k}");
+            assert_eq!(r[0] as usize, k, "ele ids are 0-based and in order");
+            [r[1], r[2], r[3]]
+        })
+        .collect()
+}
+
+fn parse_error(e: Error) -> (usize, String) {
+    match e {
+        Error::Parse { line, message } => (line, message),
+        other => panic!("expected a parse error, got {other:?}"),
+    }
+}
+
+#[test]
+fn text_files_in_every_style_read_back_exactly() {
+    for (name, pts) in point_sets() {
+        let styles = [
+            (" ", None),
+            ("\t", Some("x y")),
+            (",", Some("x,y")),
+            (", ", Some("X, Y")),
+            (";", Some("id;x;y")),
+            ("   ", Some("id x y")),
+        ];
+        for (sep, header) in styles {
+            for exponent in [false, true] {
+                let text = to_text(&pts, sep, header, exponent);
+                let back = io::read_points(&text, InputFormat::Text)
+                    .unwrap_or_else(|e| panic!("{name} sep {sep:?}: {e}\n{text}"));
+                assert_eq!(back, pts, "{name} sep {sep:?} header {header:?}");
+                // CRLF line ends read the same.
+                let crlf = text.replace('\n', "\r\n");
+                assert_eq!(io::read_points(&crlf, InputFormat::Text).unwrap(), pts);
+            }
+        }
+        // Sniffed as text without an extension.
+        let text = to_text(&pts, ",", Some("x,y"), false);
+        assert_eq!(InputFormat::sniff(&text), InputFormat::Text);
+    }
+}
+
+#[test]
+fn node_and_tsp_files_read_back_exactly() {
+    for (name, pts) in point_sets() {
+        let t = delaunay(&PointSet::new(&pts).unwrap()).unwrap();
+        let (node, _) = io::triangulation_to_triangle_files(&t);
+        assert_eq!(
+            io::read_points(&node, InputFormat::Node).unwrap(),
+            pts,
+            "{name}"
+        );
+        let tsp = to_tsp(&pts);
+        assert_eq!(InputFormat::sniff(&tsp), InputFormat::Tsplib);
+        assert_eq!(
+            io::read_points(&tsp, InputFormat::Tsplib).unwrap(),
+            pts,
+            "{name}"
+        );
+    }
+    // A hand-written .node: 1-based ids, an attribute and boundary markers.
+    let node = "# square\n4 2 1 1\n1 0 0 0.5 1\n2 1 0 0.5 1\n3 1 1 0.5 1\n4 0 1 0.5 1\n";
+    assert_eq!(
+        io::read_points(node, InputFormat::Node).unwrap(),
+        vec![[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]]
+    );
+}
+
+#[test]
+fn geojson_and_json_outputs_read_back_as_their_points() {
+    let dir = scratch("geojson");
+    for (k, (name, pts)) in point_sets().into_iter().enumerate() {
+        let ps = PointSet::new(&pts).unwrap();
+        let t = delaunay(&ps).unwrap();
+        // GeoJSON: triangles (Polygons) are skipped, the Points are the input.
+        let geojson = dir.join(format!("t{k}.geojson"));
+        io::write_triangulation(&t, &geojson).unwrap();
+        let back = io::read_points_file(&geojson, None).unwrap();
+        assert_eq!(back, pts, "{name}");
+        assert_eq!(PointSet::new(&back).unwrap().duplicates(), ps.duplicates());
+        // A graph's GeoJSON (LineStrings and Points) as well.
+        let graph = dir.join(format!("g{k}.geojson"));
+        io::write_graph(&pts, &t.edges(), name.as_str(), &graph).unwrap();
+        assert_eq!(io::read_points_file(&graph, None).unwrap(), pts, "{name}");
+        // JSON: parses back to the same triangulation, and its points read as
+        // a point file.
+        let json = dir.join(format!("t{k}.json"));
+        io::write_triangulation(&t, &json).unwrap();
+        let text = std::fs::read_to_string(&json).unwrap();
+        let value: Value = serde_json::from_str(&text).unwrap();
+        let again = io::triangulation_from_json(&value).unwrap();
+        assert_eq!(again.points(), t.points(), "{name}");
+        assert_eq!(again.triangles(), t.triangles(), "{name}");
+        assert_eq!(again.point_set().duplicates(), ps.duplicates(), "{name}");
+        assert_eq!(value["duplicates"], serde_json::json!(ps.duplicates()));
+        assert_eq!(io::read_points_file(&json, None).unwrap(), pts, "{name}");
+    }
+    // Polygons alone hold no points: the error says what the document has.
+    let pts = &point_sets()[0].1;
+    let t = delaunay(&PointSet::new(pts).unwrap()).unwrap();
+    let polygons_only = io::triangulation_to_geojson(&t, false).to_string();
+    let (_, m) = parse_error(io::read_points(&polygons_only, InputFormat::GeoJson).unwrap_err());
+    assert!(
+        m.contains("no Point or MultiPoint")
+            && m.contains(&format!("{} Polygon", t.triangles().len())),
+        "{m}"
+    );
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn ele_and_node_files_read_back_with_consistent_indices() {
+    let dir = scratch("ele");
+    let with_duplicates = point_sets()
+        .iter()
+        .filter(|(_, p)| !PointSet::new(p).unwrap().duplicates().is_empty())
+        .count();
+    assert!(with_duplicates > 0, "no set exercises duplicates");
+    for (k, (name, pts)) in point_sets().into_iter().enumerate() {
+        let ps = PointSet::new(&pts).unwrap();
+        let t = delaunay(&ps).unwrap();
+        let ele = dir.join(format!("t{k}.ele"));
+        let written = io::write_triangulation(&t, &ele).unwrap();
+        assert_eq!(written, OutputFormat::Triangle.files_written(&ele));
+        let node_points = io::read_points_file(&written[1], None).unwrap();
+        assert_eq!(node_points, pts, "{name}");
+        let triangles = read_ele(&std::fs::read_to_string(&ele).unwrap());
+        assert_eq!(triangles, t.triangles(), "{name}");
+        // The .ele indices are .node ids: every one is in range, no merged
+        // duplicate is used, and together they validate as a triangulation.
+        assert!(triangles
+            .iter()
+            .flatten()
+            .all(|&i| (i as usize) < node_points.len()));
+        let dropped: Vec<u32> = ps.duplicates().iter().map(|d| d[0]).collect();
+        assert!(
+            triangles.iter().flatten().all(|i| !dropped.contains(i)),
+            "{name}"
+        );
+        let node_set = PointSet::new(&node_points).unwrap();
+        assert_eq!(node_set.duplicates(), ps.duplicates());
+        let back = Triangulation::from_triangles(&node_set, triangles).unwrap();
+        assert_eq!(back.edges(), t.edges(), "{name}");
+    }
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn a_shared_tsplib_file_survives_the_round_trip_with_its_duplicate() {
+    let tsp = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../../shared/data/tsplib/a280.tsp");
+    let pts = io::read_points_file(&tsp, None).unwrap();
+    let ps = PointSet::new(&pts).unwrap();
+    // Nodes 171 and 172 coincide (input indices 170, 171).
+    assert_eq!(ps.duplicates(), &[[171, 170]]);
+    let t = delaunay(&ps).unwrap();
+    let dir = scratch("a280");
+    let written = io::write_triangulation(&t, &dir.join("a280.ele")).unwrap();
+    let back = io::read_points_file(&written[1], None).unwrap();
+    assert_eq!(back, pts);
+    assert_eq!(PointSet::new(&back).unwrap().duplicates(), &[[171, 170]]);
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn bad_text_inputs_name_their_line() {
+    let cases: &[(&str, usize, &str)] = &[
+        ("0 0\n1 0\nNaN 1\n", 3, "finite"),
+        ("0 0\n1 inf\n0 1\n", 2, "finite"),
+        ("0 0\n-inf 1\n", 2, "finite"),
+        ("0 0\n1 0\n0 1\nhello world\n", 4, "'hello'"),
+        ("0 0\n1 0\n0 1 5\n", 3, "columns"),
+        ("x,y\n0,0\n1,0,2\n", 3, "columns"),
+        ("0,0\n1,,0\n0,1\n", 2, "empty"),
+        ("0,0\n1,0,\n", 2, "empty"),
+        ("0 0\n1 0\n0 1e300\n", 3, "range"),
+        ("0 0\n1 0\n1e-300 1\n", 3, "range"),
+        ("0 0\n1e400 0\n", 2, "finite"),
+        ("", 0, "no points"),
+        ("# only a comment\n\n", 0, "no points"),
+        ("x y\n", 0, "no points"),
+    ];
+    for &(text, line, needle) in cases {
+        let (got, m) = parse_error(io::read_points(text, InputFormat::Text).unwrap_err());
+        assert_eq!(got, line, "{text:?}: {m}");
+        assert!(m.contains(needle), "{text:?}: {m}");
+    }
+    // The other formats reject out-of-range values too, with their line where
+    // there is one.
+    let (line, m) = parse_error(
+        io::read_points("3 2 0 0\n0 0 0\n1 1e300 0\n2 0 1\n", InputFormat::Node).unwrap_err(),
+    );
+    assert_eq!(line, 3);
+    assert!(m.contains("range"), "{m}");
+    let (line, m) = parse_error(
+        io::read_points(
+            "NODE_COORD_SECTION\n1 0 0\n2 1e-300 0\n",
+            InputFormat::Tsplib,
+        )
+        .unwrap_err(),
+    );
+    assert_eq!(line, 3);
+    assert!(m.contains("range"), "{m}");
+    let (_, m) = parse_error(
+        io::read_points(
+            r#"{"type":"MultiPoint","coordinates":[[0,0],[1e300,1]]}"#,
+            InputFormat::GeoJson,
+        )
+        .unwrap_err(),
+    );
+    assert!(m.contains("range") && m.contains("[1]"), "{m}");
+    for format in InputFormat::ALL {
+        let (line, m) = parse_error(io::read_points("", *format).unwrap_err());
+        assert_eq!(line, 0, "{format:?}");
+        assert!(
+            m.contains("no points") || m.contains("no coordinates"),
+            "{format:?}: {m}"
+        );
+    }
+}
+
+#[test]
+fn the_coordinate_range_is_exactly_the_documented_one() {
+    let above = f64::from_bits(MAX_COORDINATE.to_bits() + 1);
+    let below = f64::from_bits(MIN_COORDINATE.to_bits() - 1);
+    for (value, ok) in [
+        (MAX_COORDINATE, true),
+        (-MAX_COORDINATE, true),
+        (MIN_COORDINATE, true),
+        (-MIN_COORDINATE, true),
+        (0.0, true),
+        (above, false),
+        (-above, false),
+        (below, false),
+        (1e300, false),
+        (1e-300, false),
+    ] {
+        let text = format!("1 1\n2 1\n{value:e} 3\n");
+        let read = io::read_points(&text, InputFormat::Text);
+        assert_eq!(read.is_ok(), ok, "{value:e}: {read:?}");
+        if let Err(e) = read {
+            let (line, m) = parse_error(e);
+            assert_eq!(line, 3);
+            assert!(m.contains("range") && m.contains("rescale"), "{m}");
+        }
+        let direct = PointSet::new(&[[1.0, 1.0], [2.0, 1.0], [value, 3.0]]);
+        match direct {
+            Ok(_) => assert!(ok, "{value:e}"),
+            Err(e) => {
+                assert!(!ok, "{value:e}: {e}");
+                assert_eq!(e, Error::CoordinateOutOfRange { index: 2, value });
+            }
+        }
+    }
+    assert!(matches!(
+        PointSet::new(&[[0.0, 0.0], [f64::NAN, 1.0], [1.0, 0.0]]),
+        Err(Error::NonFiniteCoordinate { index: 1, .. })
+    ));
+}
+
+#[test]
+fn too_few_and_collinear_points_read_but_do_not_triangulate() {
+    let cases: &[(&str, Error)] = &[
+        ("0 0\n1 1\n", Error::TooFewPoints { distinct: 2 }),
+        ("0 0\n1 1\n0 0\n", Error::TooFewPoints { distinct: 2 }),
+        (
+            "0 0\n1 1\n2 2\n3 3\n1 1\n",
+            Error::AllCollinear { distinct: 4 },
+        ),
+        (
+            "1e-30 5\n2e-30 5\n3e-30 5\n",
+            Error::AllCollinear { distinct: 3 },
+        ),
+    ];
+    for (text, expected) in cases {
+        let pts = io::read_points(text, InputFormat::Text).unwrap();
+        let e = PointSet::new(&pts).unwrap_err();
+        assert_eq!(&e, expected, "{text:?}");
+        // The message says what is wrong and how many points there are.
+        let m = e.to_string();
+        assert!(m.contains("distinct") || m.contains("collinear"), "{m}");
+    }
+}
