@@ -19,13 +19,19 @@
 //!   diagonal of the Delaunay triangulation of `Q`, whatever completion it
 //!   picks for cocircular points.
 //!
-//! The Delaunay triangulation of `Q` is rebuilt per subpolygon (spade,
-//! O(|Q| log |Q|)), so this implementation takes O(n² log n) time in the worst
-//! case — a log factor above Thm 4.2 — and O(n) space. Replacing the rebuild
-//! by an O(|Q|) Delaunay triangulation of a convex polygon (Chew's randomised
-//! algorithm, literature.md §e) would give the theorem's O(n²).
+//! The Delaunay triangulation of `Q` is built per subpolygon by Chew's
+//! randomised algorithm for convex polygons
+//! ([`convex_delaunay`](super::convex_delaunay), literature.md §e) in expected
+//! O(|Q|) time; with the O(|Q|) ear scan, a subpolygon costs expected O(|Q|).
+//! There are `n - 3` splits (one per diagonal), each of a subpolygon of at
+//! most `n` vertices, so this implementation takes expected O(n²) time in the
+//! worst case, as in Thm 4.2. The randomness only affects the time: the
+//! shortest diagonal is in every Delaunay completion, so the result is GT
+//! whatever triangulation is built. Space is O(n): the stack of subpolygons
+//! partitions `P`, and the Delaunay buffers are O(|Q|) and reused across
+//! subpolygons.
 
-use crate::delaunay::delaunay_graph;
+use super::convex_delaunay::ConvexDelaunay;
 use crate::kernel::{compare_lengths_symbolic, Point};
 use std::cmp::Ordering;
 
@@ -35,7 +41,7 @@ pub(super) fn greedy_convex(points: &[Point], polygon: &[u32]) -> Vec<[u32; 2]> 
     let k = polygon.len();
     let mut edges: Vec<[u32; 2]> = (0..k).map(|i| [polygon[i], polygon[(i + 1) % k]]).collect();
     let mut stack: Vec<Vec<u32>> = vec![polygon.to_vec()];
-    let mut scratch = Vec::new();
+    let mut scratch = ConvexDelaunay::new();
     while let Some(q) = stack.pop() {
         if q.len() <= 3 {
             continue;
@@ -52,7 +58,7 @@ pub(super) fn greedy_convex(points: &[Point], polygon: &[u32]) -> Vec<[u32; 2]> 
 }
 
 /// Positions `i < j` in `q` of the endpoints of its shortest diagonal.
-fn shortest_diagonal(points: &[Point], q: &[u32], scratch: &mut Vec<Point>) -> (usize, usize) {
+fn shortest_diagonal(points: &[Point], q: &[u32], scratch: &mut ConvexDelaunay) -> (usize, usize) {
     let k = q.len();
     let better = |a: (usize, usize), b: (usize, usize)| {
         compare_lengths_symbolic(points, [q[a.0], q[a.1]], [q[b.0], q[b.1]]) == Ordering::Less
@@ -68,11 +74,8 @@ fn shortest_diagonal(points: &[Point], q: &[u32], scratch: &mut Vec<Point>) -> (
     }
     if k >= 6 {
         // Non-ear diagonals need two vertices on each side, hence k ≥ 6.
-        scratch.clear();
-        scratch.extend(q.iter().map(|&v| points[v as usize]));
-        let dt = delaunay_graph(scratch)
-            .expect("a strictly convex polygon has a Delaunay triangulation");
-        for &([a, b], _) in &dt.edges {
+        scratch.triangulate(points, q);
+        for [a, b] in scratch.diagonals() {
             let (a, b) = (a.min(b) as usize, a.max(b) as usize);
             let gap = b - a;
             if gap < 3 || gap > k - 3 {

@@ -21,6 +21,7 @@
 //! The result is the same in every case; the tests check that edge for edge.
 
 mod convex;
+mod convex_delaunay;
 mod general;
 mod semicircular;
 
