@@ -109,6 +109,39 @@ pub(crate) fn timed<T>(phases: &mut Vec<Phase>, name: &'static str, f: impl FnOn
     out
 }
 
+/// Records consecutive phases: each [`lap`](Self::lap) closes the phase
+/// that started at the previous lap (or at creation).
+pub(crate) struct Stopwatch<'a> {
+    phases: &'a mut Vec<Phase>,
+    start: Instant,
+}
+
+impl<'a> Stopwatch<'a> {
+    pub(crate) fn new(phases: &'a mut Vec<Phase>) -> Self {
+        Self {
+            phases,
+            start: Instant::now(),
+        }
+    }
+
+    /// Runs `f`, which records its own phases; the next lap starts when it
+    /// returns.
+    pub(crate) fn nested<T>(&mut self, f: impl FnOnce(&mut Vec<Phase>) -> T) -> T {
+        let out = f(self.phases);
+        self.start = Instant::now();
+        out
+    }
+
+    pub(crate) fn lap(&mut self, name: &'static str) {
+        let now = Instant::now();
+        self.phases.push(Phase {
+            name,
+            ms: (now - self.start).as_secs_f64() * 1e3,
+        });
+        self.start = now;
+    }
+}
+
 /// Triangulates `points` by `criterion`.
 pub fn triangulate(points: &PointSet, criterion: Criterion) -> Result<Solution> {
     let mut phases = Vec::new();
@@ -126,9 +159,7 @@ pub fn triangulate(points: &PointSet, criterion: Criterion) -> Result<Solution> 
             (t, true, algorithm)
         }
         Criterion::Greedy => {
-            let (t, algorithm) = timed(&mut phases, "greedy", || {
-                crate::greedy::greedy_triangulation(points)
-            })?;
+            let (t, algorithm) = crate::greedy::greedy_triangulation_timed(points, &mut phases)?;
             let how = match algorithm {
                 crate::greedy::GreedyAlgorithm::Semicircular => {
                     "ear heap for semicircular polygons, Levcopoulos-Lingas Thm 4.3, O(n log n)"

@@ -26,6 +26,7 @@ mod general;
 mod semicircular;
 
 use crate::convex_hull::hull_distinct;
+use crate::criterion::{Phase, Stopwatch};
 use crate::error::Result;
 use crate::kernel::{dot_sign, orient_sign, Point};
 use crate::planar_graph::PlanarGraph;
@@ -57,24 +58,38 @@ impl GreedyAlgorithm {
 /// The greedy triangulation of `points`, with the algorithm chosen by the
 /// shape of the input.
 pub fn greedy_triangulation(points: &PointSet) -> Result<(Triangulation, GreedyAlgorithm)> {
+    greedy_triangulation_timed(points, &mut Vec::new())
+}
+
+/// [`greedy_triangulation`], recording its phases.
+pub(crate) fn greedy_triangulation_timed(
+    points: &PointSet,
+    phases: &mut Vec<Phase>,
+) -> Result<(Triangulation, GreedyAlgorithm)> {
+    let mut stopwatch = Stopwatch::new(phases);
     let pts = points.points();
-    let (edges, algorithm) = match convex_polygon(pts) {
+    let (triangles, algorithm) = match convex_polygon(pts) {
         Some(polygon) => match semicircular::base_rotation(pts, &polygon) {
             Some(rotated) => (
-                semicircular::greedy_semicircular(pts, &rotated),
+                triangles_of(pts, &semicircular::greedy_semicircular(pts, &rotated)),
                 GreedyAlgorithm::Semicircular,
             ),
             None => (
-                convex::greedy_convex(pts, &polygon),
+                triangles_of(pts, &convex::greedy_convex(pts, &polygon)),
                 GreedyAlgorithm::Convex,
             ),
         },
-        None => (general::greedy_general(pts), GreedyAlgorithm::General),
+        None => {
+            stopwatch.lap("shape test");
+            let triangles = stopwatch.nested(|phases| general::greedy_general(pts, phases))?;
+            (triangles, GreedyAlgorithm::General)
+        }
     };
-    Ok((
-        Triangulation::from_distinct(points, triangles_of(pts, &edges)),
-        algorithm,
-    ))
+    stopwatch.lap(match algorithm {
+        GreedyAlgorithm::General => "output",
+        _ => "greedy",
+    });
+    Ok((Triangulation::from_distinct(points, triangles), algorithm))
 }
 
 /// The greedy triangulation of `points` (see the module docs).
@@ -89,7 +104,7 @@ pub fn greedy(points: &PointSet) -> Result<Triangulation> {
 pub fn greedy_edges_by(points: &PointSet, algorithm: GreedyAlgorithm) -> Option<Vec<[u32; 2]>> {
     let pts = points.points();
     let edges = match algorithm {
-        GreedyAlgorithm::General => general::greedy_general(pts),
+        GreedyAlgorithm::General => edges_of(&general::greedy_general(pts, &mut Vec::new()).ok()?),
         GreedyAlgorithm::Convex => convex::greedy_convex(pts, &convex_polygon(pts)?),
         GreedyAlgorithm::Semicircular => {
             let rotated = semicircular::base_rotation(pts, &convex_polygon(pts)?)?;
@@ -158,14 +173,30 @@ pub(crate) fn on_open_segment(z: Point, a: Point, b: Point) -> bool {
 /// close, and so does every key between them: they land in one run.
 pub(crate) fn sort_segments(points: &[Point], segments: &mut Vec<[u32; 2]>) {
     use rayon::prelude::*;
-    let key = |s: &[u32; 2]| {
-        let (p, q) = (points[s[0] as usize], points[s[1] as usize]);
-        let (dx, dy) = (p[0] - q[0], p[1] - q[1]);
-        dx * dx + dy * dy
-    };
-    let mut keyed: Vec<(f64, [u32; 2])> = segments.par_iter().map(|s| (key(s), *s)).collect();
-    keyed.par_sort_unstable_by(|x, y| x.0.total_cmp(&y.0));
+    let mut keyed: Vec<(f64, [u32; 2])> = segments
+        .par_iter()
+        .map(|s| {
+            let (p, q) = (points[s[0] as usize], points[s[1] as usize]);
+            let (dx, dy) = (p[0] - q[0], p[1] - q[1]);
+            (dx * dx + dy * dy, *s)
+        })
+        .collect();
     let order = crate::kernel::segment_order(points);
+    sort_keyed_runs(&mut keyed, |x, y| order(x, y));
+    segments.clear();
+    segments.extend(keyed.into_iter().map(|(_, s)| s));
+}
+
+/// Sorts `(rounded squared length, item)` pairs into the exact order
+/// `exact`: by the rounded key first, then runs of keys within a relative
+/// 10⁻¹² of their neighbours by `exact` (see [`sort_segments`] for why that
+/// is enough).
+pub(crate) fn sort_keyed_runs<T: Send>(
+    keyed: &mut [(f64, T)],
+    exact: impl Fn(&T, &T) -> std::cmp::Ordering,
+) {
+    use rayon::prelude::*;
+    keyed.par_sort_unstable_by(|x, y| x.0.total_cmp(&y.0));
     let mut start = 0;
     while start < keyed.len() {
         let mut end = start + 1;
@@ -173,12 +204,22 @@ pub(crate) fn sort_segments(points: &[Point], segments: &mut Vec<[u32; 2]>) {
             end += 1;
         }
         if end - start > 1 {
-            keyed[start..end].sort_unstable_by(|x, y| order(&x.1, &y.1));
+            keyed[start..end].sort_unstable_by(|x, y| exact(&x.1, &y.1));
         }
         start = end;
     }
-    segments.clear();
-    segments.extend(keyed.into_iter().map(|(_, s)| s));
+}
+
+/// The edges of a set of triangles (each once).
+fn edges_of(triangles: &[[u32; 3]]) -> Vec<[u32; 2]> {
+    let mut edges: Vec<[u32; 2]> = triangles
+        .iter()
+        .flat_map(|&[a, b, c]| [[a, b], [b, c], [c, a]])
+        .map(|[u, v]| [u.min(v), u.max(v)])
+        .collect();
+    edges.sort_unstable();
+    edges.dedup();
+    edges
 }
 
 /// Edges as sorted `[min, max]` pairs, sorted.
