@@ -5,7 +5,13 @@
 //! cargo run --release -p optri --example minmax_timing [-- uniform N | convex N... | cubic N...]
 //! ```
 //! * `uniform N` (default N = 1 000 000): Delaunay alone, then minmax-length
-//!   (with its phases), and the ratio.
+//!   (with its phases), and the ratio; then the same with the Length-Lemma
+//!   certificate off, so that every region runs the paper's polygon
+//!   algorithm (unless `SKIP_PURE` is set).
+//! * `boxed N`: N uniform points plus the unit square's boundary sampled at
+//!   the mean spacing (a meshing domain): the hull edges are short, so the
+//!   Length-Lemma bound comes from the RNG and certifies less.
+//! * `tsp FILE…`: the same comparison on TSPLIB files.
 //! * `convex N…`: points on a circle with radius perturbed by 1e-3 (one
 //!   complete rng-polygon), minmax-length time per N and time / N².
 //! * `cubic N…`: the same convex sets, quadratic vs the cubic reference.
@@ -15,6 +21,7 @@
 use optri::minmax_length::{
     CASE_1, CASE_2, CASE_2_HULL_FALLBACKS, CASE_2_POCKETS_BY_5_1, CASE_2_POCKETS_BY_FAN_OUT,
     CASE_2_POCKET_FALLBACKS, CASE_2_REMAINDER_VERTICES, COUNTERS, FALLBACKS, FLAT_TRIANGLES,
+    REGIONS_CERTIFIED_BY_BOUND, SMALL_REGION,
 };
 use optri::{Criterion, PointSet};
 use rand::{rngs::StdRng, Rng, SeedableRng};
@@ -51,7 +58,7 @@ fn peak_memory() -> String {
 
 fn counters() -> String {
     format!(
-        "case1={} case2={} case2_pockets_by_5_1={} case2_pockets_by_fan_out={} case2_pocket_fallbacks={} case2_dp_vertices={} flat={} case2_hull_fallbacks={} fallbacks={} small_certified={} small_dp={}",
+        "case1={} case2={} case2_pockets_by_5_1={} case2_pockets_by_fan_out={} case2_pocket_fallbacks={} case2_dp_vertices={} flat={} case2_hull_fallbacks={} fallbacks={} small_certified={} small_dp={} certified_by_bound={}",
         COUNTERS[CASE_1].load(Relaxed),
         COUNTERS[CASE_2].load(Relaxed),
         COUNTERS[CASE_2_POCKETS_BY_5_1].load(Relaxed),
@@ -60,8 +67,42 @@ fn counters() -> String {
         COUNTERS[CASE_2_REMAINDER_VERTICES].load(Relaxed),
         COUNTERS[FLAT_TRIANGLES].load(Relaxed),
         COUNTERS[CASE_2_HULL_FALLBACKS].load(Relaxed),
-        FALLBACKS.load(Relaxed), COUNTERS[9].load(Relaxed), COUNTERS[8].load(Relaxed)
+        FALLBACKS.load(Relaxed), COUNTERS[9].load(Relaxed), COUNTERS[8].load(Relaxed),
+        COUNTERS[REGIONS_CERTIFIED_BY_BOUND].load(Relaxed)
     )
+}
+
+fn reset_counters() {
+    for c in &COUNTERS {
+        c.store(0, Relaxed);
+    }
+}
+
+/// Delaunay alone, the product, and (unless `SKIP_PURE`) the paper's
+/// polygon algorithm on every region (no Length-Lemma certificate).
+fn compare_with_delaunay(name: &str, ps: &PointSet) {
+    let (_, d) = secs(|| optri::delaunay(ps).unwrap());
+    reset_counters();
+    let (s, m) = secs(|| optri::triangulate(ps, Criterion::MinmaxLength).unwrap());
+    println!(
+        "{name} n={}: delaunay {d:.3} s, minmax-length {m:.3} s, ratio {:.2}",
+        ps.len(),
+        m / d
+    );
+    for p in &s.phases {
+        println!("  phase {:12} {:9.1} ms", p.name, p.ms);
+    }
+    println!("  {}", counters());
+    if std::env::var_os("SKIP_PURE").is_some() {
+        return;
+    }
+    reset_counters();
+    let (_, q) = secs(|| optri::minmax_length::minmax_length_with(ps, SMALL_REGION).unwrap());
+    println!(
+        "  without the certificate (every region by the polygon algorithm): {q:.3} s, ratio {:.2}",
+        q / d
+    );
+    println!("  {}", counters());
 }
 
 fn main() {
@@ -73,23 +114,25 @@ fn main() {
             let n = sizes.first().copied().unwrap_or(1_000_000);
             let mut rng = StdRng::seed_from_u64(1);
             let pts: Vec<[f64; 2]> = (0..n).map(|_| [rng.gen(), rng.gen()]).collect();
-            let ps = PointSet::new(&pts).unwrap();
-            let (_, d) = secs(|| optri::delaunay(&ps).unwrap());
-            let (s, m) = secs(|| optri::triangulate(&ps, Criterion::MinmaxLength).unwrap());
-            println!(
-                "uniform n={n}: delaunay {d:.3} s, minmax-length {m:.3} s, ratio {:.2}",
-                m / d
-            );
-            for p in &s.phases {
-                println!("  phase {:10} {:9.1} ms", p.name, p.ms);
+            compare_with_delaunay("uniform", &PointSet::new(&pts).unwrap());
+        }
+        "boxed" => {
+            let n = sizes.first().copied().unwrap_or(1_000_000);
+            let mut rng = StdRng::seed_from_u64(1);
+            let mut pts: Vec<[f64; 2]> = (0..n).map(|_| [rng.gen(), rng.gen()]).collect();
+            let k = (n as f64).sqrt().ceil() as usize;
+            for i in 0..k {
+                let t = i as f64 / k as f64;
+                pts.extend([[t, 0.0], [1.0, t], [1.0 - t, 1.0], [0.0, 1.0 - t]]);
             }
-            println!("  {}", counters());
-            if std::env::var_os("SKIP_PURE").is_some() {
-                println!("peak memory: {}", peak_memory());
-                return;
+            compare_with_delaunay("boxed", &PointSet::new(&pts).unwrap());
+        }
+        "tsp" => {
+            for path in args.iter().skip(1) {
+                let text = std::fs::read_to_string(path).unwrap();
+                let pts = optri::io::read_points(&text, optri::io::InputFormat::Tsplib).unwrap();
+                compare_with_delaunay(path, &PointSet::new(&pts).unwrap());
             }
-            let (_, q) = secs(|| optri::minmax_length::minmax_length_with(&ps, 0).unwrap());
-            println!("  quadratic algorithm on every region (no small-region cutoff): {q:.3} s, ratio {:.2}", q / d);
         }
         "convex" => {
             for &n in &sizes {
@@ -138,7 +181,7 @@ fn main() {
                 println!("uniform n={n}, quadratic from {c} corners: {t:.3} s");
             }
         }
-        _ => eprintln!("modes: uniform N | convex N... | cubic N..."),
+        _ => eprintln!("modes: uniform N | tsp FILE... | convex N... | cubic N... | cutoff N c..."),
     }
     println!("peak memory: {}", peak_memory());
 }

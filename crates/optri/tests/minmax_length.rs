@@ -406,7 +406,9 @@ fn registered_as_an_exact_criterion() {
     let s = optri::triangulate(&ps, c).unwrap();
     assert!(s.exact);
     assert!(s.algorithm.contains("Edelsbrunner"));
-    assert!(s.phases.iter().any(|p| p.name == "polygons"));
+    // This Delaunay triangulation meets the hull's bound: no region work.
+    assert!(s.phases.iter().any(|p| p.name == "lower bound"));
+    assert!(!s.phases.iter().any(|p| p.name == "polygons"));
     s.triangulation.validate().unwrap();
     assert_eq!(
         cmp_seg(
@@ -446,8 +448,8 @@ fn the_tests_exercise_every_branch() {
     }
     use optri::minmax_length::{
         CASE_1, CASE_2, CASE_2_HULL_FALLBACKS, CASE_2_POCKETS_BY_5_1, CASE_2_POCKETS_BY_FAN_OUT,
-        CASE_2_POCKET_FALLBACKS, COUNTERS, FLAT_TRIANGLES, SMALL_REGIONS_BY_DP,
-        SMALL_REGIONS_CERTIFIED,
+        CASE_2_POCKET_FALLBACKS, COUNTERS, FLAT_TRIANGLES, REGIONS_CERTIFIED_BY_BOUND,
+        SMALL_REGIONS_BY_DP, SMALL_REGIONS_CERTIFIED,
     };
     let c = |i: usize| COUNTERS[i].load(std::sync::atomic::Ordering::Relaxed);
     assert!(c(CASE_1) > 0 && c(CASE_2) > 0 && c(FLAT_TRIANGLES) > 0);
@@ -459,6 +461,10 @@ fn the_tests_exercise_every_branch() {
     assert!(
         c(SMALL_REGIONS_CERTIFIED) > 0 && c(SMALL_REGIONS_BY_DP) > 0,
         "small regions should take both the certified-Delaunay and the cubic path"
+    );
+    assert!(
+        c(REGIONS_CERTIFIED_BY_BOUND) > 0,
+        "the Length-Lemma certificate should keep some Delaunay regions"
     );
     assert_eq!(c(CASE_2_HULL_FALLBACKS), 0);
     assert_eq!(c(CASE_2_POCKET_FALLBACKS), 0);

@@ -16,6 +16,18 @@
 //! 3. Triangulate every region independently (rayon), assemble, and undo
 //!    the perturbation (§5.4, `repair_flat_triangles`).
 //!
+//! Before steps 2–3, the Length Lemma of §4 gives a lower bound on the
+//! optimum: the longest edge of `ch(S) ∪ rng(S′)` (`length_lemma_bound`).
+//! If no Delaunay edge is longer — first tried with the hull edges alone,
+//! before the RNG is built — the Delaunay triangulation is optimal and is
+//! returned; otherwise every region whose Delaunay triangles are no longer
+//! keeps them, and only the others run the polygon algorithms. On uniform
+//! points and on most TSPLIB files the Delaunay triangulation is certified
+//! outright (their hulls have long edges); with the boundary sampled as
+//! finely as the interior, all but a fraction of a percent of the regions
+//! are certified (figures in BENCHMARKS.md). Tests run the polygon
+//! algorithms on every region too ([`minmax_length_with`]).
+//!
 //! The Subgraph Theorem (§4) says some minmax triangulation contains the RNG,
 //! so optimal triangulations of the regions combine into an optimal one.
 //! A region is triangulated by
@@ -261,8 +273,10 @@ enum PolygonMethod {
     Cubic,
     /// §5.1, §5.3 and §6 on the perturbed points, then §5.4's repair;
     /// regions with fewer than `cubic_below` corners use the exact cubic
-    /// program instead (cheaper for tiny regions, equally optimal).
-    Quadratic { cubic_below: usize },
+    /// program instead (cheaper for tiny regions, equally optimal). With
+    /// `certify`, regions whose Delaunay triangles are no longer than the
+    /// Length Lemma's bound keep them (see [`length_lemma_bound`]).
+    Quadratic { cubic_below: usize, certify: bool },
 }
 
 /// The product's method. Regions of up to 31 corners (nearly all regions of
@@ -273,6 +287,7 @@ enum PolygonMethod {
 /// algorithm handles the larger ones.
 const PRODUCT: PolygonMethod = PolygonMethod::Quadratic {
     cubic_below: SMALL_REGION,
+    certify: true,
 };
 
 /// Regions with fewer corners than this use the cubic program in the product.
@@ -289,7 +304,7 @@ pub static FALLBACKS: AtomicUsize = AtomicUsize::new(0);
 /// parts handed to the cubic safety net, how many flat triangles §5.4
 /// removed, and the safety nets' use.
 #[doc(hidden)]
-pub static COUNTERS: [AtomicUsize; 10] = [const { AtomicUsize::new(0) }; 10];
+pub static COUNTERS: [AtomicUsize; 11] = [const { AtomicUsize::new(0) }; 11];
 /// Index into [`COUNTERS`].
 #[doc(hidden)]
 pub const CASE_1: usize = 0;
@@ -328,6 +343,10 @@ pub const SMALL_REGIONS_BY_DP: usize = 8;
 /// certified optimal by [`polygon::Region::apex_lower_bound`].
 #[doc(hidden)]
 pub const SMALL_REGIONS_CERTIFIED: usize = 9;
+/// Index into [`COUNTERS`]: regions (or, counted once, whole inputs) whose
+/// Delaunay triangles met the Length Lemma bound (`length_lemma_bound`).
+#[doc(hidden)]
+pub const REGIONS_CERTIFIED_BY_BOUND: usize = 10;
 
 pub(crate) fn count(which: usize, by: usize) {
     COUNTERS[which].fetch_add(by, AtomicOrdering::Relaxed);
@@ -342,7 +361,42 @@ fn run(points: &PointSet, method: PolygonMethod, phases: &mut Vec<Phase>) -> Res
     let local: Vec<Point> = order.iter().map(|&o| points.points()[o as usize]).collect();
     let pts = local.as_slice();
     let g = timed(phases, "delaunay", || delaunay_mesh(pts))?;
+    let certify = matches!(method, PolygonMethod::Quadratic { certify: true, .. });
+    // The Delaunay triangulation is optimal outright if no edge of it is
+    // longer than the hull's longest edge, a lower bound needing no RNG.
+    let delaunay_meets = |bound: [Point; 2]| {
+        let p = |v: u32| pts[v as usize];
+        g.edges
+            .par_iter()
+            .all(|&([u, v], _)| compare_lengths(p(u), p(v), bound[0], bound[1]) != Greater)
+    };
+    let delaunay_result = || {
+        count(REGIONS_CERTIFIED_BY_BOUND, 1);
+        let mut t = g.triangles.clone();
+        for c in t.iter_mut().flatten() {
+            *c = order[*c as usize];
+        }
+        Ok(Triangulation::from_distinct(points, t))
+    };
+    if certify
+        && timed(phases, "lower bound", || {
+            delaunay_meets(length_lemma_bound(pts, &g, None))
+        })
+    {
+        return delaunay_result();
+    }
     let rng = timed(phases, "rng", || rng_perturbed_flags(pts, &g));
+    let bound = if certify {
+        let bound = timed(phases, "lower bound", || {
+            length_lemma_bound(pts, &g, Some(&rng))
+        });
+        if delaunay_meets(bound) {
+            return delaunay_result();
+        }
+        Some(bound)
+    } else {
+        None
+    };
     let regions = timed(phases, "regions", || Regions::new(&g, &rng));
     let mesh = Mesh::new(&g, &rng);
     let triangles: Vec<[u32; 3]> = timed(phases, "polygons", || {
@@ -353,6 +407,16 @@ fn run(points: &PointSet, method: PolygonMethod, phases: &mut Vec<Phase>) -> Res
                 if let [t] = regions.triangles(r) {
                     return vec![g.triangles[*t as usize]];
                 }
+                if let Some(bound) = bound {
+                    let members = regions.triangles(r);
+                    let e = longest_side(pts, &g, members.iter().copied())
+                        .expect("a region has triangles");
+                    let (a, b) = (pts[e[0] as usize], pts[e[1] as usize]);
+                    if compare_lengths(a, b, bound[0], bound[1]) != Greater {
+                        count(REGIONS_CERTIFIED_BY_BOUND, 1);
+                        return members.iter().map(|&t| g.triangles[t as usize]).collect();
+                    }
+                }
                 let boundary = regions.boundary(&g, &rng, r);
 
                 let vertices = &boundary.corners[..];
@@ -362,7 +426,9 @@ fn run(points: &PointSet, method: PolygonMethod, phases: &mut Vec<Phase>) -> Res
                     symbolic: false,
                 };
                 match method {
-                    PolygonMethod::Quadratic { cubic_below } if vertices.len() >= cubic_below => {
+                    PolygonMethod::Quadratic { cubic_below, .. }
+                        if vertices.len() >= cubic_below =>
+                    {
                         match FastRegion::new(pts, vertices, &mesh).and_then(|f| f.triangulate()) {
                             Ok(t) => t,
                             Err(e) => {
@@ -390,6 +456,54 @@ fn run(points: &PointSet, method: PolygonMethod, phases: &mut Vec<Phase>) -> Res
         t
     });
     Ok(Triangulation::from_distinct(points, triangles))
+}
+
+/// The longest edge of `ch(S) ∪ rng(S′)` (of `ch(S)` alone without `rng`),
+/// as its two endpoints: a lower bound on the optimum. Hull edges are in every triangulation, and by §4's
+/// Length Lemma every triangulation of `S` has an edge at least as long as
+/// the longest edge of `rng(S) ⊇ rng(S′)`. So a triangulation whose edges are
+/// all no longer than this is optimal, and a region whose Delaunay triangles
+/// are no longer than this may keep them: the assembled result's longest edge
+/// is then the largest of this bound and the other regions' optima, each of
+/// which is at most the global optimum. (Regions so kept are not necessarily
+/// minmax triangulations *of the region*; the whole is optimal.)
+fn length_lemma_bound(points: &[Point], g: &DelaunayGraph, rng: Option<&[bool]>) -> [Point; 2] {
+    let p = |v: u32| points[v as usize];
+    g.edges
+        .par_iter()
+        .enumerate()
+        .filter(|(i, (_, apex))| apex.contains(&None) || rng.is_some_and(|r| r[*i]))
+        .map(|(_, &([u, v], _))| [p(u), p(v)])
+        .reduce_with(|x, y| {
+            if compare_lengths(x[0], x[1], y[0], y[1]) == Less {
+                y
+            } else {
+                x
+            }
+        })
+        .expect("a triangulation has hull edges")
+}
+
+/// The longest side of the given Delaunay triangles (exact), as a vertex pair.
+fn longest_side(
+    points: &[Point],
+    g: &DelaunayGraph,
+    triangles: impl Iterator<Item = u32>,
+) -> Option<[u32; 2]> {
+    let p = |v: u32| points[v as usize];
+    let longer = |x: [u32; 2], y: [u32; 2]| {
+        if compare_lengths(p(x[0]), p(x[1]), p(y[0]), p(y[1])) == Less {
+            y
+        } else {
+            x
+        }
+    };
+    triangles
+        .flat_map(|t| {
+            let [a, b, c] = g.triangles[t as usize];
+            [[a, b], [b, c], [c, a]]
+        })
+        .reduce(longer)
 }
 
 /// A region with fewer than [`SMALL_REGION`] corners. A quadrilateral takes
@@ -436,11 +550,16 @@ pub(crate) fn minmax_length_timed(
     phases: &mut Vec<Phase>,
 ) -> Result<(Triangulation, String)> {
     let t = run(points, PRODUCT, phases)?;
-    Ok((t, ALGORITHM.to_string()))
+    let algorithm = if phases.iter().any(|p| p.name == "regions") {
+        ALGORITHM.to_string()
+    } else {
+        format!("{ALGORITHM}; here the Delaunay triangulation met the Length-Lemma lower bound, so it is optimal")
+    };
+    Ok((t, algorithm))
 }
 
 /// The method's name, as reported by [`crate::triangulate`].
-const ALGORITHM: &str = "Edelsbrunner–Tan O(n²): hull ∪ RNG(S′) regions; §5.1 incomplete and §5.3/§6 complete rng-polygons on the symbolic perturbation (exact cubic DP, pruned by the regions' Delaunay diagonals, for regions under 32 corners; §6 Case 2 pockets by u_L search, clipped §5.1 and §5.2 fan-out); §5.4 flat-triangle repair";
+const ALGORITHM: &str = "Edelsbrunner–Tan O(n²): Length-Lemma lower bound (longest hull/RNG edge) certifies Delaunay regions; hull ∪ RNG(S′) regions; §5.1 incomplete and §5.3/§6 complete rng-polygons on the symbolic perturbation (exact cubic DP, pruned by the regions' Delaunay diagonals, for regions under 32 corners; §6 Case 2 pockets by u_L search, clipped §5.1 and §5.2 fan-out); §5.4 flat-triangle repair";
 
 /// The quadratic algorithm on every region with at least `cubic_below`
 /// corners (0 or 4: on all of them). For tests and benchmarks.
@@ -448,7 +567,10 @@ const ALGORITHM: &str = "Edelsbrunner–Tan O(n²): hull ∪ RNG(S′) regions; 
 pub fn minmax_length_with(points: &PointSet, cubic_below: usize) -> Result<Triangulation> {
     run(
         points,
-        PolygonMethod::Quadratic { cubic_below },
+        PolygonMethod::Quadratic {
+            cubic_below,
+            certify: false,
+        },
         &mut Vec::new(),
     )
 }
