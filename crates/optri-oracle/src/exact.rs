@@ -38,7 +38,10 @@ pub(crate) fn scale(values: &[f64], small_bits: u32) -> (Scaled, i32) {
         .map(|v| {
             assert!(v.is_finite(), "optri-oracle: non-finite coordinate {v}");
             let (m, e, s) = v.integer_decode();
-            (m, e as i32, s)
+            // Strip trailing zero bits, so that e.g. integers scale to
+            // themselves and stay on the fast path.
+            let tz = if m == 0 { 0 } else { m.trailing_zeros() };
+            (m >> tz, e as i32 + tz as i32, s)
         })
         .collect();
     let e_min = decoded
@@ -200,11 +203,19 @@ pub fn dot_sign(p: Point, q: Point, r: Point) -> i32 {
     on_scaled!(&flat(&[p, q, r]), 60, f).0
 }
 
+/// The scaled integers as `BigInt`s (also when they would fit the fast
+/// path, e.g. when all of them are zero).
+fn big(s: Scaled) -> Vec<BigInt> {
+    match s {
+        Scaled::Small(v) => v.into_iter().map(BigInt::from).collect(),
+        Scaled::Big(v) => v,
+    }
+}
+
 /// Exact `|pq|²`.
 pub fn squared_length(p: Point, q: Point) -> BigRational {
     let (s, e) = scale(&flat(&[p, q]), 0);
-    let Scaled::Big(c) = s else { unreachable!() };
-    BigRational::from_integer(dist2(&c)) * pow2(2 * e)
+    BigRational::from_integer(dist2(&big(s))) * pow2(2 * e)
 }
 
 /// Exact comparison of `|ab|²` with `|cd|²`.
@@ -218,8 +229,7 @@ pub fn compare_squared_lengths(a: Point, b: Point, c: Point, d: Point) -> Orderi
 /// Exact twice the (unsigned) area of triangle `pqr`.
 pub fn twice_area(p: Point, q: Point, r: Point) -> BigRational {
     let (s, e) = scale(&flat(&[p, q, r]), 0);
-    let Scaled::Big(c) = s else { unreachable!() };
-    BigRational::from_integer(cross(&c).abs()) * pow2(2 * e)
+    BigRational::from_integer(cross(&big(s)).abs()) * pow2(2 * e)
 }
 
 /// Exact in-circle test: `1` if `d` is strictly inside the circle through

@@ -170,83 +170,175 @@ pub fn klincsek<C: Criterion>(
     polygon: &[u32],
     criterion: C,
 ) -> Option<(C::Value, Vec<[u32; 3]>)> {
-    let k = polygon.len();
-    if k < 3 {
-        return None;
-    }
-    let v = |pos: usize| polygon[pos];
-    let usable = |i: usize, j: usize| -> bool {
-        j == i + 1 || (i == 0 && j == k - 1) || is_valid_diagonal(points, polygon, i, j)
-    };
-    let mut ok = vec![false; k * k];
-    for i in 0..k {
-        for j in i + 1..k {
-            ok[i * k + j] = usable(i, j);
-        }
-    }
-    let join = |a: Option<C::Value>, b: Option<C::Value>| match (a, b) {
-        (Some(a), Some(b)) => Some(criterion.combine(a, b)),
-        (a, None) => a,
-        (None, b) => b,
-    };
-    // cost[i][j]: Some(Some(v)) solved with value v, Some(None) solved with no
-    // cost term yet, None infeasible.
-    let mut cost: Vec<Option<Option<C::Value>>> = vec![None; k * k];
-    let mut split = vec![usize::MAX; k * k];
-    for i in 0..k - 1 {
-        cost[i * k + i + 1] = Some(criterion.edge(points, [v(i), v(i + 1)]));
-    }
-    for len in 2..k {
-        for i in 0..k - len {
-            let j = i + len;
-            if !ok[i * k + j] {
-                continue;
-            }
-            let mut best: Option<(Option<C::Value>, usize)> = None;
-            for m in i + 1..j {
-                let (Some(left), Some(right)) = (&cost[i * k + m], &cost[m * k + j]) else {
-                    continue;
-                };
-                let (a, b, c) = (
-                    points[v(i) as usize],
-                    points[v(m) as usize],
-                    points[v(j) as usize],
-                );
-                if orient(a, b, c) <= 0 {
-                    continue;
-                }
-                let mut value = join(left.clone(), right.clone());
-                value = join(value, criterion.triangle(points, [v(i), v(m), v(j)]));
-                value = join(value, criterion.edge(points, [v(i), v(j)]));
-                let better = match &best {
-                    None => true,
-                    Some((b, _)) => value < *b,
-                };
-                if better {
-                    best = Some((value, m));
-                }
-            }
-            if let Some((value, m)) = best {
-                cost[i * k + j] = Some(value);
-                split[i * k + j] = m;
-            }
-        }
-    }
-    let value = cost[k - 1].clone()??;
-    let mut tris = Vec::with_capacity(k - 2);
+    let table = Table::solve(points, polygon, &criterion)?;
+    Some((table.value()?, table.triangles()))
+}
+
+/// [`klincsek()`] plus a certificate of uniqueness: the third value is `true`
+/// iff, in every sub-polygon the returned optimum is assembled from, every
+/// other feasible apex gives a value `v` with `clearly_worse(&v, &best)`.
+/// Then every other triangulation is clearly worse than the returned one (at
+/// the first such sub-polygon where it differs, its apex is worse, and its
+/// halves are at best optimal), so with a `clearly_worse` that allows for
+/// rounding (e.g. `v > best · (1 + 10⁻¹²)` for [`MinWeight`]) the returned
+/// triangles are *the* optimum although the values are rounded.
+pub fn klincsek_unique<C: Criterion>(
+    points: &[Point],
+    polygon: &[u32],
+    criterion: C,
+    clearly_worse: impl Fn(&C::Value, &C::Value) -> bool,
+) -> Option<(C::Value, Vec<[u32; 3]>, bool)> {
+    let table = Table::solve(points, polygon, &criterion)?;
+    let value = table.value()?;
+    let k = table.k;
+    let mut unique = true;
     let mut stack = vec![(0, k - 1)];
     while let Some((i, j)) = stack.pop() {
         if j == i + 1 {
             continue;
         }
-        let m = split[i * k + j];
-        tris.push(crate::enumerate::canonical_triangle(
-            points,
-            [v(i), v(m), v(j)],
-        ));
-        stack.push((i, m));
-        stack.push((m, j));
+        let best_m = table.split[i * k + j];
+        let best = table.candidate(&criterion, i, best_m, j).flatten();
+        for m in (i + 1..j).filter(|&m| m != best_m) {
+            if let Some(v) = table.candidate(&criterion, i, m, j) {
+                match (&v, &best) {
+                    (Some(v), Some(b)) if clearly_worse(v, b) => {}
+                    _ => unique = false,
+                }
+            }
+        }
+        stack.push((i, best_m));
+        stack.push((best_m, j));
     }
-    tris.sort_unstable();
-    Some((value, tris))
+    Some((value, table.triangles(), unique))
+}
+
+/// The tables of Klincsek's program.
+struct Table<'a, C: Criterion> {
+    points: &'a [Point],
+    polygon: &'a [u32],
+    k: usize,
+    /// `cost[i*k + j]`: `Some(Some(v))` solved with value `v`, `Some(None)`
+    /// solved with no cost term yet, `None` infeasible.
+    cost: Vec<Option<Option<C::Value>>>,
+    /// The apex of the optimum of `i..=j`.
+    split: Vec<usize>,
+    /// `edge[i*k + j]`: the criterion's cost of the chord `(i, j)`, `i < j`.
+    edge: Vec<Option<C::Value>>,
+}
+
+impl<'a, C: Criterion> Table<'a, C> {
+    fn solve(points: &'a [Point], polygon: &'a [u32], criterion: &C) -> Option<Self> {
+        let k = polygon.len();
+        if k < 3 {
+            return None;
+        }
+        let usable = |i: usize, j: usize| -> bool {
+            j == i + 1 || (i == 0 && j == k - 1) || is_valid_diagonal(points, polygon, i, j)
+        };
+        let mut ok = vec![false; k * k];
+        for i in 0..k {
+            for j in i + 1..k {
+                ok[i * k + j] = usable(i, j);
+            }
+        }
+        let mut edge = vec![None; k * k];
+        for i in 0..k {
+            for j in i + 1..k {
+                if ok[i * k + j] {
+                    edge[i * k + j] = criterion.edge(points, [polygon[i], polygon[j]]);
+                }
+            }
+        }
+        let mut t = Table {
+            points,
+            polygon,
+            k,
+            cost: vec![None; k * k],
+            split: vec![usize::MAX; k * k],
+            edge,
+        };
+        for i in 0..k - 1 {
+            t.cost[i * k + i + 1] = Some(t.edge[i * k + i + 1].clone());
+        }
+        for len in 2..k {
+            for i in 0..k - len {
+                let j = i + len;
+                if !ok[i * k + j] {
+                    continue;
+                }
+                let mut best: Option<(Option<C::Value>, usize)> = None;
+                for m in i + 1..j {
+                    let Some(value) = t.candidate(criterion, i, m, j) else {
+                        continue;
+                    };
+                    let better = match &best {
+                        None => true,
+                        Some((b, _)) => value < *b,
+                    };
+                    if better {
+                        best = Some((value, m));
+                    }
+                }
+                if let Some((value, m)) = best {
+                    t.cost[i * k + j] = Some(value);
+                    t.split[i * k + j] = m;
+                }
+            }
+        }
+        Some(t)
+    }
+
+    /// The value of sub-polygon `i..=j` (chord `(i, j)` included) with apex
+    /// `m`, or `None` if a half is infeasible or the triangle is not
+    /// counter-clockwise.
+    fn candidate(&self, criterion: &C, i: usize, m: usize, j: usize) -> Option<Option<C::Value>> {
+        let (k, points) = (self.k, self.points);
+        let v = |pos: usize| self.polygon[pos];
+        let join = |a: Option<C::Value>, b: Option<C::Value>| match (a, b) {
+            (Some(a), Some(b)) => Some(criterion.combine(a, b)),
+            (a, None) => a,
+            (None, b) => b,
+        };
+        let (Some(left), Some(right)) = (&self.cost[i * k + m], &self.cost[m * k + j]) else {
+            return None;
+        };
+        let (a, b, c) = (
+            points[v(i) as usize],
+            points[v(m) as usize],
+            points[v(j) as usize],
+        );
+        if orient(a, b, c) <= 0 {
+            return None;
+        }
+        let mut value = join(left.clone(), right.clone());
+        value = join(value, criterion.triangle(points, [v(i), v(m), v(j)]));
+        value = join(value, self.edge[i * k + j].clone());
+        Some(value)
+    }
+
+    fn value(&self) -> Option<C::Value> {
+        self.cost[self.k - 1].clone()?
+    }
+
+    fn triangles(&self) -> Vec<[u32; 3]> {
+        let k = self.k;
+        let v = |pos: usize| self.polygon[pos];
+        let mut tris = Vec::with_capacity(k - 2);
+        let mut stack = vec![(0, k - 1)];
+        while let Some((i, j)) = stack.pop() {
+            if j == i + 1 {
+                continue;
+            }
+            let m = self.split[i * k + j];
+            tris.push(crate::enumerate::canonical_triangle(
+                self.points,
+                [v(i), v(m), v(j)],
+            ));
+            stack.push((i, m));
+            stack.push((m, j));
+        }
+        tris.sort_unstable();
+        tris
+    }
 }

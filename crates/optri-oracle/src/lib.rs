@@ -6,10 +6,13 @@
 //! ([`all_triangulations`], cross-checked by flip-graph search, with
 //! [`optimum_by`] and the keys [`max_edge_squared`], [`total_length`],
 //! [`min_twice_area`], [`max_twice_area`]), the greedy triangulation by
-//! definition ([`greedy_triangulation`]),
+//! definition ([`greedy_triangulation`], O(n⁴), and the same scan made
+//! scalable with exact float-filtered predicates and grids,
+//! [`greedy_edges`]),
 //! Klincsek's polygon DP ([`klincsek()`]), brute-force definitions of the
 //! proximity graphs ([`graphs`]), and a polynomial expansion of the
-//! symbolic perturbation ([`symbolic`]). Slow by design; inputs are small.
+//! symbolic perturbation ([`symbolic`]). Slow by design; inputs are small
+//! (except [`greedy_edges`]).
 //!
 //! Conventions: indices are `u32` into the caller's slice of *distinct*
 //! points; triangles are counter-clockwise with the smallest index first,
@@ -18,6 +21,7 @@
 pub mod enumerate;
 pub mod exact;
 pub mod graphs;
+pub mod greedy;
 pub mod klincsek;
 pub mod symbolic;
 
@@ -35,7 +39,10 @@ pub use graphs::{
     bounded_faces, convex_hull_edges, delaunay_check, gabriel_edges, is_minimum_spanning_tree,
     rng_edges,
 };
-pub use klincsek::{klincsek, Criterion, MaxMinArea, MinMaxArea, MinMaxLength, MinWeight};
+pub use greedy::greedy_edges;
+pub use klincsek::{
+    klincsek, klincsek_unique, Criterion, MaxMinArea, MinMaxArea, MinMaxLength, MinWeight,
+};
 pub use num_bigint::BigInt;
 pub use num_rational::BigRational;
 pub use symbolic::{compare_lengths_perturbed, orient_perturbed};

@@ -487,3 +487,45 @@ fn greedy_is_the_lexicographically_smallest_triangulation() {
         assert_eq!(greedy_triangulation(&pts), best[0], "case {case}");
     }
 }
+
+#[test]
+fn klincsek_uniqueness_certificate_agrees_with_exhaustive_search() {
+    let mut rng = Lcg(17);
+    let (mut unique, mut tied) = (0, 0);
+    for case in 0..120 {
+        let pts: Vec<Point> = if case % 3 == 0 {
+            // Symmetric parabola points: mirror images weigh the same.
+            let k = 4 + case % 6;
+            (0..k)
+                .map(|i| {
+                    let x = 2 * i as i64 - k as i64 + 1;
+                    [x as f64, (x * x) as f64]
+                })
+                .collect()
+        } else {
+            let all = rng.points(12, 20);
+            let h = hull_polygon(&all);
+            h.iter().map(|&i| all[i as usize]).collect()
+        };
+        if pts.len() < 4 || pts.len() > 10 {
+            continue;
+        }
+        let poly = hull_polygon(&pts);
+        let tol = 1e-12;
+        let (v, t, is_unique) =
+            klincsek_unique(&pts, &poly, MinWeight, |a, b| a.0 > b.0 * (1.0 + tol)).unwrap();
+        assert_eq!((v, t.clone()), klincsek(&pts, &poly, MinWeight).unwrap());
+        let all = all_triangulations(&pts);
+        let near: Vec<_> = all
+            .iter()
+            .filter(|x| total_length(&pts, x) <= v.0 * (1.0 + 1e-13))
+            .collect();
+        if is_unique {
+            assert_eq!(near, vec![&t], "case {case}");
+            unique += 1;
+        } else {
+            tied += 1;
+        }
+    }
+    assert!(unique > 40 && tied > 10, "{unique} {tied}");
+}

@@ -1,15 +1,32 @@
 //! Minimum-weight triangulation of convex inputs against the exhaustive
 //! oracle (n ≤ 9) and the oracle's Klincsek DP; the greedy triangulation
 //! against the oracle's independent greedy; the approximation ratio.
+//!
+//! Inputs are in convex position *by construction* (integer points on a
+//! parabola, on a lens of two parabolas, with or without integer midpoints
+//! of hull edges as collinear boundary points), or rounded circle points that
+//! are regenerated until the oracle's exact hull contains them all; every
+//! generated input is checked, none skipped.
+//!
+//! **Weights** are sums of square roots; optri and the oracle both add
+//! rounded `f64` lengths (relative error below `(E + 1)·2^-52`, under 10⁻¹³
+//! here), so weights are compared with the relative tolerance
+//! [`TOLERANCE`] = 10⁻¹², and only weights. **Triangles** are compared
+//! exactly whenever the oracle certifies the optimum unique beyond that
+//! tolerance ([`optri_oracle::klincsek_unique`], or for n ≤ 9 a single
+//! triangulation within the tolerance in the exhaustive enumeration).
 
 use optri::kernel::Point;
 use optri::{min_weight, triangulate, Criterion, Error, PointSet};
 use optri_oracle::{
-    all_triangulations, canonical_triangulation, klincsek, optimum_by, total_length, MinWeight,
-    TotalF64,
+    all_triangulations, canonical_triangulation, convex_hull_edges, klincsek, klincsek_unique,
+    optimum_by, orient, total_length, MinWeight, TotalF64,
 };
 use rand::rngs::StdRng;
 use rand::{Rng, SeedableRng};
+
+/// Relative tolerance on weights (see the module docs).
+const TOLERANCE: f64 = 1e-12;
 
 /// Triangles of a triangulation as distinct indices.
 fn distinct_triangles(ps: &PointSet, t: &optri::Triangulation) -> Vec<[u32; 3]> {
@@ -19,45 +36,165 @@ fn distinct_triangles(ps: &PointSet, t: &optri::Triangulation) -> Vec<[u32; 3]> 
         .collect()
 }
 
-/// Random points in convex position: integer points on a circle of radius r
-/// (rounded), plus collinear boundary points now and then.
-fn convex_points(rng: &mut StdRng, n: usize, with_collinear: bool) -> Vec<Point> {
-    let r = rng.gen_range(5.0..60.0);
-    let mut pts: Vec<Point> = (0..n)
-        .map(|_| {
-            let a: f64 = rng.gen_range(0.0..std::f64::consts::TAU);
-            [(r * a.cos()).round(), (r * a.sin()).round()]
-        })
-        .collect();
-    if with_collinear && n >= 2 {
-        // Midpoint of two points doubled: stays on the hull only if it is a
-        // hull edge; the convex-position check filters the rest.
-        pts.push([pts[0][0] + pts[1][0], pts[0][1] + pts[1][1]].map(|v| v / 2.0));
-    }
-    pts
-}
-
-fn in_convex_position(ps: &PointSet) -> bool {
-    optri::convex_hull(ps).len() == ps.len()
-}
-
 fn relative_eq(a: f64, b: f64) -> bool {
-    (a - b).abs() <= 1e-12 * a.abs().max(b.abs())
+    (a - b).abs() <= TOLERANCE * a.abs().max(b.abs())
+}
+
+/// `k` distinct integers from `lo..hi`, sorted.
+fn sample_sorted(rng: &mut StdRng, lo: i64, hi: i64, k: usize) -> Vec<i64> {
+    let mut v: Vec<i64> = rand::seq::index::sample(rng, (hi - lo) as usize, k)
+        .into_iter()
+        .map(|i| i as i64 + lo)
+        .collect();
+    v.sort_unstable();
+    v
+}
+
+/// Adds, between consecutive chain points with coordinates of equal parity,
+/// their (integer) midpoint with probability 1/2: a point on the open hull
+/// edge, so the set stays in (non-strictly) convex position.
+fn with_midpoints(rng: &mut StdRng, chain: Vec<[i64; 2]>) -> Vec<[i64; 2]> {
+    let mut out = Vec::new();
+    for w in chain.windows(2) {
+        out.push(w[0]);
+        let (a, b) = (w[0], w[1]);
+        if (a[0] + b[0]) % 2 == 0 && (a[1] + b[1]) % 2 == 0 && rng.gen_bool(0.5) {
+            out.push([(a[0] + b[0]) / 2, (a[1] + b[1]) / 2]);
+        }
+    }
+    out.extend(chain.last());
+    out
+}
+
+/// Convex position by construction, `n ≥ 3` points (more with
+/// `collinear`, which adds midpoints of hull edges):
+/// kind 0: the parabola `y = x²`; kind 1: the lens between `y = x²` and
+/// `y = 2m² − x²`, `|x| ≤ m`.
+fn convex_by_construction(rng: &mut StdRng, n: usize, kind: usize, collinear: bool) -> Vec<Point> {
+    let chains: Vec<Vec<[i64; 2]>> = if kind == 0 {
+        let span = 3 * n as i64;
+        let xs = sample_sorted(rng, -span, span, n);
+        vec![xs.iter().map(|&x| [x, x * x]).collect()]
+    } else {
+        let m = 2 * n as i64;
+        let lower = sample_sorted(rng, -m + 1, m, (n - 2) / 2);
+        let upper = sample_sorted(rng, -m + 1, m, n - 2 - (n - 2) / 2);
+        // Both chains run from corner to corner: (−m, m²) and (m, m²).
+        let corner = |x: i64| [x, m * m];
+        let mut low = vec![corner(-m)];
+        low.extend(lower.iter().map(|&x| [x, x * x]));
+        low.push(corner(m));
+        let mut up = vec![corner(m)];
+        up.extend(upper.iter().rev().map(|&x| [x, 2 * m * m - x * x]));
+        up.push(corner(-m));
+        vec![low, up]
+    };
+    let mut pts: Vec<[i64; 2]> = Vec::new();
+    for chain in chains {
+        let chain = if collinear {
+            with_midpoints(rng, chain)
+        } else {
+            chain
+        };
+        for p in chain {
+            if !pts.contains(&p) {
+                pts.push(p);
+            }
+        }
+    }
+    // Shuffle: the input order is not the polygon order.
+    for i in (1..pts.len()).rev() {
+        pts.swap(i, rng.gen_range(0..=i));
+    }
+    pts.into_iter()
+        .map(|p| [p[0] as f64, p[1] as f64])
+        .collect()
+}
+
+/// Integer-rounded points on a circle, regenerated until all of them are on
+/// the oracle's exact convex hull (collinear boundary points allowed).
+fn rounded_circle_in_convex_position(rng: &mut StdRng, n: usize) -> Vec<Point> {
+    for _ in 0..1000 {
+        // Rounding by ≤ 0.5 must not undo the curvature between close
+        // neighbours (angle gaps down to about 1/n²): radius ~ n⁴.
+        let r = rng.gen_range(0.05..1.0) * (n as f64).powi(4).max(200.0);
+        let pts: Vec<Point> = (0..n)
+            .map(|_| {
+                let a: f64 = rng.gen_range(0.0..std::f64::consts::TAU);
+                [(r * a.cos()).round(), (r * a.sin()).round()]
+            })
+            .collect();
+        let Ok(ps) = PointSet::new(&pts) else {
+            continue;
+        };
+        if convex_hull_edges(ps.points()).len() == ps.len() {
+            return pts;
+        }
+    }
+    panic!("no rounded circle in convex position with {n} points");
+}
+
+/// The points as a counter-clockwise polygon, from the oracle's hull edges
+/// (every point must be a hull vertex, collinear ones included).
+fn oracle_polygon(points: &[Point]) -> Vec<u32> {
+    let edges = convex_hull_edges(points);
+    assert_eq!(edges.len(), points.len(), "not in convex position");
+    let mut next = vec![Vec::new(); points.len()];
+    for &[a, b] in &edges {
+        next[a as usize].push(b);
+        next[b as usize].push(a);
+    }
+    let mut cycle = vec![0u32];
+    let mut prev = u32::MAX;
+    loop {
+        let cur = *cycle.last().unwrap();
+        let nb = next[cur as usize]
+            .iter()
+            .copied()
+            .find(|&v| v != prev)
+            .unwrap();
+        if nb == 0 {
+            break;
+        }
+        prev = cur;
+        cycle.push(nb);
+    }
+    assert_eq!(cycle.len(), points.len());
+    let k = cycle.len();
+    let p = |i: usize| points[cycle[i % k] as usize];
+    let turn = (0..k)
+        .map(|i| orient(p(i), p(i + 1), p(i + 2)))
+        .find(|&o| o != 0)
+        .unwrap();
+    if turn < 0 {
+        cycle.reverse();
+    }
+    cycle
+}
+
+/// A convex input of `n` (or a few more) points of one of five kinds.
+fn convex_input(rng: &mut StdRng, n: usize, case: usize) -> Vec<Point> {
+    match case % 5 {
+        0 => convex_by_construction(rng, n, 0, false),
+        1 => convex_by_construction(rng, n.max(4), 1, false),
+        2 => convex_by_construction(rng, n, 0, true),
+        3 => convex_by_construction(rng, n.max(4), 1, true),
+        _ => rounded_circle_in_convex_position(rng, n),
+    }
 }
 
 #[test]
 fn min_weight_equals_the_exhaustive_optimum_on_small_convex_sets() {
     let mut rng = StdRng::seed_from_u64(11);
-    let mut checked = 0;
+    let (mut checked, mut unique) = (0, 0);
     for case in 0..600 {
-        let n = rng.gen_range(3..10);
-        let pts = convex_points(&mut rng, n, case % 3 == 0);
-        let Ok(ps) = PointSet::new(&pts) else {
-            continue;
-        };
-        if !in_convex_position(&ps) || ps.len() > 9 {
-            continue;
+        let n = rng.gen_range(3..8);
+        let pts = convex_input(&mut rng, n, case);
+        let ps = PointSet::new(&pts).unwrap();
+        if ps.len() > 9 {
+            continue; // midpoints made it too large for the enumeration
         }
+        assert_eq!(optri::convex_hull(&ps).len(), ps.len(), "case {case}");
         let d = ps.points();
         let t = min_weight(&ps).unwrap();
         t.validate().unwrap();
@@ -66,65 +203,99 @@ fn min_weight_equals_the_exhaustive_optimum_on_small_convex_sets() {
         let weight = total_length(d, &mine);
         assert!(
             relative_eq(weight, best.0),
-            "case {case}: {weight} vs {}",
+            "case {case}: {weight} vs {} on {pts:?}",
             best.0
         );
-        // Unless two optima tie within rounding, the triangulation is the optimum.
+        // Unless two optima tie within the tolerance, the triangulation is
+        // the optimum.
         let near_optimal = all_triangulations(d)
             .iter()
             .filter(|tris| relative_eq(total_length(d, tris), best.0))
             .count();
         if near_optimal == 1 {
-            assert_eq!(canonical_triangulation(d, &mine), optimal[0], "case {case}");
+            assert_eq!(
+                canonical_triangulation(d, &mine),
+                optimal[0],
+                "case {case}: {pts:?}"
+            );
+            unique += 1;
         }
         checked += 1;
     }
-    assert!(checked > 300, "{checked}");
+    assert!(checked >= 550 && unique >= 300, "{checked} {unique}");
 }
 
 #[test]
 fn min_weight_equals_the_oracle_dp_and_bounds_the_greedy_triangulation() {
     let mut rng = StdRng::seed_from_u64(12);
-    for case in 0..60 {
-        let n = rng.gen_range(10..120);
-        let pts = convex_points(&mut rng, n, case % 2 == 0);
-        let Ok(ps) = PointSet::new(&pts) else {
-            continue;
-        };
-        if !in_convex_position(&ps) {
-            continue;
-        }
+    let (mut checked, mut unique) = (0, 0);
+    for case in 0..100 {
+        let n = rng.gen_range(10..110);
+        let pts = convex_input(&mut rng, n, case);
+        let ps = PointSet::new(&pts).unwrap();
         let d = ps.points();
-        let polygon: Vec<u32> = optri::convex_hull(&ps)
-            .into_iter()
-            .map(|i| ps.distinct_index(i))
-            .collect();
-        let (oracle, _) = klincsek(d, &polygon, MinWeight).expect("convex polygon");
+        if case % 5 < 2 {
+            assert!(optri::greedy::is_convex_position(&ps), "case {case}");
+        }
+        let polygon = oracle_polygon(d);
+        let (oracle, tris, is_unique) =
+            klincsek_unique(d, &polygon, MinWeight, |a, b| a.0 > b.0 * (1.0 + TOLERANCE))
+                .expect("convex polygon");
         let t = min_weight(&ps).unwrap();
         t.validate().unwrap();
-        let weight = total_length(d, &distinct_triangles(&ps, &t));
+        let mine = distinct_triangles(&ps, &t);
+        let weight = total_length(d, &mine);
         assert!(
             relative_eq(weight, oracle.0),
-            "case {case}: {weight} vs {}",
+            "case {case}: {weight} vs {} on {pts:?}",
             oracle.0
         );
+        if is_unique {
+            assert_eq!(
+                canonical_triangulation(d, &mine),
+                tris,
+                "case {case}: {pts:?}"
+            );
+            unique += 1;
+        }
         // GT is a triangulation too, so it cannot be lighter than the MWT;
         // and the solutions report the total length in their stats.
         let gt = triangulate(&ps, Criterion::Greedy).unwrap().triangulation;
-        let gt_weight = gt.stats().total_edge_length;
-        assert!(gt_weight >= weight * (1.0 - 1e-12), "case {case}");
+        gt.validate().unwrap();
+        let gt_weight = total_length(d, &distinct_triangles(&ps, &gt));
+        assert!(gt_weight >= oracle.0 * (1.0 - TOLERANCE), "case {case}");
         let s = triangulate(&ps, Criterion::MinWeight).unwrap();
+        s.triangulation.validate().unwrap();
         assert!(!s.exact, "sums of square roots are compared in f64");
         assert!(relative_eq(
             s.triangulation.stats().total_edge_length,
-            weight
+            oracle.0
         ));
+        checked += 1;
+    }
+    assert_eq!(checked, 100);
+    assert!(unique >= 50, "only {unique} of {checked} certified unique");
+}
+
+#[test]
+fn klincsek_reference_agrees_with_its_plain_form() {
+    // klincsek_unique is klincsek plus a certificate.
+    let mut rng = StdRng::seed_from_u64(14);
+    for case in 0..20 {
+        let pts = convex_input(&mut rng, 12, case);
+        let ps = PointSet::new(&pts).unwrap();
+        let d = ps.points();
+        let polygon = oracle_polygon(d);
+        let (v, t) = klincsek(d, &polygon, MinWeight).unwrap();
+        let (w, u, _) = klincsek_unique(d, &polygon, MinWeight, |a, b| a > b).unwrap();
+        assert_eq!((v, t), (w, u));
     }
 }
 
 #[test]
 fn greedy_matches_the_oracle_greedy_on_small_sets() {
     let mut rng = StdRng::seed_from_u64(13);
+    let mut checked = 0;
     for case in 0..300 {
         let n = rng.gen_range(3..11);
         let m = if case % 2 == 0 { 5 } else { 1000 };
@@ -136,12 +307,15 @@ fn greedy_matches_the_oracle_greedy_on_small_sets() {
         };
         let d = ps.points();
         let t = optri::greedy(&ps).unwrap();
+        t.validate().unwrap();
         assert_eq!(
             canonical_triangulation(d, &distinct_triangles(&ps, &t)),
             optri_oracle::greedy_triangulation(d),
             "case {case}: {pts:?}"
         );
+        checked += 1;
     }
+    assert!(checked >= 250, "{checked}");
 }
 
 #[test]
