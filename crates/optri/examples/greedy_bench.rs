@@ -9,8 +9,7 @@
 //! run; every mode reports the peak resident set size (`VmHWM`) before and
 //! after GT.
 
-use optri::greedy::greedy_triangulation;
-use optri::{delaunay, PointSet};
+use optri::{delaunay, triangulate, Criterion, PointSet};
 use rand::rngs::StdRng;
 use rand::{Rng, SeedableRng};
 use std::time::Instant;
@@ -73,15 +72,16 @@ fn main() {
     let ps = PointSet::new(&pts).expect("valid points");
     let rss_before = peak_rss_mib();
     let start = Instant::now();
-    let (t, algorithm) = greedy_triangulation(&ps).expect("greedy");
+    let solution = triangulate(&ps, Criterion::Greedy).expect("greedy");
     let gt_s = start.elapsed().as_secs_f64();
     let rss_gt = peak_rss_mib();
+    let t = &solution.triangulation;
     let total = t.stats().total_edge_length;
+    let algorithm = solution.algorithm.split(':').next().unwrap_or_default();
     print!(
-        "{mode} n={} algorithm={} gt={gt_s:.3}s total_length={total:.6e} \
+        "{mode} n={} algorithm={algorithm} gt={gt_s:.3}s total_length={total:.6e} \
          peak_rss_before={rss_before:.1}MiB peak_rss_after={rss_gt:.1}MiB",
         ps.len(),
-        algorithm.name()
     );
     if mode == "uniform" {
         let start = Instant::now();
@@ -91,4 +91,7 @@ fn main() {
         print!(" delaunay={dt_s:.3}s ratio={:.2}", gt_s / dt_s);
     }
     println!();
+    for phase in &solution.phases {
+        println!("  phase {:20} {:9.1} ms", phase.name, phase.ms);
+    }
 }

@@ -168,7 +168,7 @@ pub fn triangulate(points: &PointSet, criterion: Criterion) -> Result<Solution> 
                     "recursive splitting for convex position, Levcopoulos-Lingas Thm 4.2, expected O(n^2) time (Chew's convex-polygon Delaunay), O(n) space"
                 }
                 crate::greedy::GreedyAlgorithm::General => {
-                    "exact length rounds with closed-vertex retirement"
+                    "exact length rounds decided by crossing dependencies (DDMW-style candidates, closed-vertex retirement)"
                 }
             };
             (t, true, format!("{} ({how})", algorithm.name()))

@@ -85,11 +85,12 @@ pub(crate) fn greedy_triangulation_timed(
             (triangles, GreedyAlgorithm::General)
         }
     };
+    let triangulation = Triangulation::from_distinct(points, triangles);
     stopwatch.lap(match algorithm {
         GreedyAlgorithm::General => "output",
         _ => "greedy",
     });
-    Ok((Triangulation::from_distinct(points, triangles), algorithm))
+    Ok((triangulation, algorithm))
 }
 
 /// The greedy triangulation of `points` (see the module docs).
