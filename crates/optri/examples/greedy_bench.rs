@@ -4,7 +4,10 @@
 //! cargo run --release -p optri --example greedy_bench -- uniform 1000000
 //! cargo run --release -p optri --example greedy_bench -- convex 10000
 //! cargo run --release -p optri --example greedy_bench -- semicircular 1000000
+//! cargo run --release -p optri --example greedy_bench -- clustered 1000000
 //! ```
+//! `clustered N`: N points in N/1000 square clusters (at least 20) with
+//! random centres and sizes over two orders of magnitude.
 //! `uniform` reports GT time as a ratio to the Delaunay time of the same
 //! run; every mode reports the peak resident set size (`VmHWM`) before and
 //! after GT.
@@ -67,7 +70,23 @@ fn main() {
             .collect(),
         "convex" => convex_points(&mut rng, n),
         "semicircular" => semicircular_points(&mut rng, n),
-        other => panic!("unknown mode {other} (uniform | convex | semicircular)"),
+        "clustered" => {
+            let clusters = (n / 1000).max(20);
+            let mut pts = Vec::with_capacity(n);
+            for c in 0..clusters {
+                let centre = [rng.gen_range(-1e4..1e4), rng.gen_range(-1e4..1e4)];
+                let r: f64 = rng.gen_range(10.0..2e3);
+                let count = n / clusters + usize::from(c < n % clusters);
+                for _ in 0..count {
+                    pts.push([
+                        centre[0] + rng.gen_range(-r..r),
+                        centre[1] + rng.gen_range(-r..r),
+                    ]);
+                }
+            }
+            pts
+        }
+        other => panic!("unknown mode {other} (uniform | clustered | convex | semicircular)"),
     };
     let ps = PointSet::new(&pts).expect("valid points");
     let rss_before = peak_rss_mib();
@@ -83,12 +102,34 @@ fn main() {
          peak_rss_before={rss_before:.1}MiB peak_rss_after={rss_gt:.1}MiB",
         ps.len(),
     );
-    if mode == "uniform" {
-        let start = Instant::now();
-        let d = delaunay(&ps).expect("delaunay");
-        let dt_s = start.elapsed().as_secs_f64();
-        assert_eq!(d.triangles().len(), t.triangles().len());
-        print!(" delaunay={dt_s:.3}s ratio={:.2}", gt_s / dt_s);
+    if mode == "uniform" || mode == "clustered" {
+        // This machine's timings vary by ±20% from run to run: alternate
+        // Delaunay and GT runs and compare medians.
+        let runs: usize = std::env::var("RUNS")
+            .ok()
+            .and_then(|r| r.parse().ok())
+            .unwrap_or(3);
+        let (mut dts, mut gts) = (Vec::new(), vec![gt_s]);
+        for i in 0..runs {
+            let start = Instant::now();
+            let d = delaunay(&ps).expect("delaunay");
+            dts.push(start.elapsed().as_secs_f64());
+            assert_eq!(d.triangles().len(), t.triangles().len());
+            if i + 1 < runs {
+                let start = Instant::now();
+                triangulate(&ps, Criterion::Greedy).expect("greedy");
+                gts.push(start.elapsed().as_secs_f64());
+            }
+        }
+        let median = |v: &mut Vec<f64>| {
+            v.sort_by(f64::total_cmp);
+            v[v.len() / 2]
+        };
+        let (d, g) = (median(&mut dts), median(&mut gts));
+        print!(
+            " delaunay_runs={dts:.3?} gt_runs={gts:.3?} median_delaunay={d:.3}s median_gt={g:.3}s ratio={:.2}",
+            g / d
+        );
     }
     println!();
     for phase in &solution.phases {

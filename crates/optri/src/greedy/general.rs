@@ -69,97 +69,205 @@ use std::cmp::Ordering;
 
 const NONE: u32 = u32::MAX;
 
-/// A uniform grid over a bounding box. Cell lookups only choose which exact
-/// tests to run; they are padded by a slack that covers their rounding.
-struct Grid {
+/// Square cells over a bounding box, for cell sizes that follow a round's
+/// length scale whatever the spread of the points (clustered inputs): a
+/// table over all cells when there are not many more cells than items,
+/// else only the occupied cells, found by binary search. Cell lookups only
+/// choose which exact tests to run; they are padded by a slack that covers
+/// their rounding.
+struct SparseGrid<T> {
     x0: f64,
     y0: f64,
     inv: f64,
-    nx: usize,
-    ny: usize,
+    /// Columns; a cell's key is `row * columns + column`.
+    columns: u64,
+    rows: u64,
     slack_x: f64,
     slack_y: f64,
+    /// The occupied cells' keys, ascending, and their items' ranges.
+    keys: Vec<u64>,
+    start: Vec<u32>,
+    /// Dense mode: the position in `keys` of every cell's key (`NONE` if
+    /// empty). Empty in sparse mode.
+    table: Vec<u32>,
+    items: Vec<T>,
 }
 
-impl Grid {
-    /// A grid with cells of about `cell`, but never more than `max_cells`.
-    fn new(bbox: [f64; 4], cell: f64, max_cells: usize) -> Self {
+impl<T: Copy + Send + Sync> SparseGrid<T> {
+    /// Buckets items `0..len` (`item(i)`, at `point(i)`) by cell, cells of
+    /// about `cell` (never so small that keys overflow); within a cell, by
+    /// ascending `order`.
+    fn new(
+        bbox: [f64; 4],
+        cell: f64,
+        len: usize,
+        point: impl Fn(usize) -> Point + Sync,
+        item: impl Fn(usize) -> T + Sync,
+        order: impl Fn(usize) -> u32 + Sync,
+    ) -> Self {
         let [x0, y0, x1, y1] = bbox;
         let (w, h) = (x1 - x0, y1 - y0);
-        let cell = cell.max((w * h / max_cells.max(1) as f64).sqrt());
+        let cell = fmax(cell, fmax(w, h) * 2f64.powi(-30));
         let cell = if cell > 0.0 { cell } else { 1.0 };
-        let nx = ((w / cell).floor() as usize + 1).max(1);
-        let ny = ((h / cell).floor() as usize + 1).max(1);
-        let mag_x = x0.abs().max(x1.abs());
-        let mag_y = y0.abs().max(y1.abs());
-        Self {
+        let columns = (w / cell) as u64 + 1;
+        let rows = (h / cell) as u64 + 1;
+        let mag_x = fmax(x0.abs(), x1.abs());
+        let mag_y = fmax(y0.abs(), y1.abs());
+        let mut grid = Self {
             x0,
             y0,
             inv: 1.0 / cell,
-            nx,
-            ny,
+            columns,
+            rows,
             slack_x: 1e-9 * cell + 1e-13 * mag_x,
             slack_y: 1e-9 * cell + 1e-13 * mag_y,
+            keys: Vec::new(),
+            start: Vec::new(),
+            table: Vec::new(),
+            items: Vec::new(),
+        };
+        let keys: Vec<u64> = (0..len)
+            .into_par_iter()
+            .map(|i| grid.key(point(i)))
+            .collect();
+        let cells = columns.saturating_mul(rows);
+        if cells <= 4 * len as u64 + 65536 {
+            // Counting sort over all cells, then each cell by `order`.
+            let cells = cells as usize;
+            let mut count = vec![0u32; cells + 1];
+            for &k in &keys {
+                count[k as usize + 1] += 1;
+            }
+            for c in 0..cells {
+                count[c + 1] += count[c];
+            }
+            let mut fill = count.clone();
+            let mut slots = vec![0u32; len];
+            for (i, &k) in keys.iter().enumerate() {
+                slots[fill[k as usize] as usize] = i as u32;
+                fill[k as usize] += 1;
+            }
+            grid.table = vec![NONE; cells];
+            for c in 0..cells {
+                let (a, b) = (count[c] as usize, count[c + 1] as usize);
+                if a < b {
+                    slots[a..b].sort_unstable_by_key(|&i| order(i as usize));
+                    grid.table[c] = grid.keys.len() as u32;
+                    grid.keys.push(c as u64);
+                    grid.start.push(a as u32);
+                }
+            }
+            grid.start.push(len as u32);
+            grid.items = slots.par_iter().map(|&i| item(i as usize)).collect();
+        } else {
+            let mut keyed: Vec<(u64, u32, u32)> = keys
+                .par_iter()
+                .enumerate()
+                .map(|(i, &k)| (k, order(i), i as u32))
+                .collect();
+            keyed.par_sort_unstable();
+            grid.items = keyed
+                .par_iter()
+                .map(|&(_, _, i)| item(i as usize))
+                .collect();
+            for (i, &(k, _, _)) in keyed.iter().enumerate() {
+                if grid.keys.last() != Some(&k) {
+                    grid.keys.push(k);
+                    grid.start.push(i as u32);
+                }
+            }
+            grid.start.push(keyed.len() as u32);
         }
-    }
-
-    fn cells(&self) -> usize {
-        self.nx * self.ny
+        grid
     }
 
     #[inline]
-    fn cx(&self, x: f64) -> usize {
+    fn column(&self, x: f64) -> u64 {
         // Truncation is the floor for c ≥ 1 (and avoids a libm call).
         let c = (x - self.x0) * self.inv;
         if c >= 1.0 {
-            (c as usize).min(self.nx - 1)
+            (c as u64).min(self.columns - 1)
         } else {
             0
         }
     }
 
     #[inline]
-    fn cy(&self, y: f64) -> usize {
+    fn row(&self, y: f64) -> u64 {
         let c = (y - self.y0) * self.inv;
         if c >= 1.0 {
-            (c as usize).min(self.ny - 1)
+            (c as u64).min(self.rows - 1)
         } else {
             0
         }
     }
 
     #[inline]
-    fn cell_of(&self, p: Point) -> usize {
-        self.cy(p[1]) * self.nx + self.cx(p[0])
+    fn key(&self, p: Point) -> u64 {
+        self.row(p[1]) * self.columns + self.column(p[0])
     }
 
-    /// Calls `f` on every cell meeting the box around `a, b` widened by
-    /// `pad` (and the slack); stops early and returns `true` when `f` does.
+    /// The items of the `k`-th occupied cell.
     #[inline]
-    fn any_cell_near(
-        &self,
-        a: Point,
-        b: Point,
-        pad: f64,
-        mut f: impl FnMut(usize) -> bool,
-    ) -> bool {
-        let (px, py) = (pad + self.slack_x, pad + self.slack_y);
-        let (c0, c1) = (
-            self.cx(fmin(a[0], b[0]) - px),
-            self.cx(fmax(a[0], b[0]) + px),
-        );
-        let (r0, r1) = (
-            self.cy(fmin(a[1], b[1]) - py),
-            self.cy(fmax(a[1], b[1]) + py),
-        );
-        for r in r0..=r1 {
-            for c in c0..=c1 {
-                if f(r * self.nx + c) {
+    fn cell(&self, k: usize) -> &[T] {
+        &self.items[self.start[k] as usize..self.start[k + 1] as usize]
+    }
+
+    /// Calls `f` on the occupied cells (positions in `keys`) of row `r`
+    /// between columns `c0` and `c1`; stops early and returns `true` when
+    /// `f` does.
+    #[inline]
+    fn any_cell_in_row(&self, r: u64, c0: u64, c1: u64, mut f: impl FnMut(usize) -> bool) -> bool {
+        let (lo, hi) = (r * self.columns + c0, r * self.columns + c1);
+        if self.table.is_empty() {
+            let mut k = self.keys.partition_point(|&key| key < lo);
+            while k < self.keys.len() && self.keys[k] <= hi {
+                if f(k) {
+                    return true;
+                }
+                k += 1;
+            }
+        } else {
+            for &k in &self.table[lo as usize..=hi as usize] {
+                if k != NONE && f(k as usize) {
                     return true;
                 }
             }
         }
         false
+    }
+
+    /// Calls `f` on the items of every occupied cell meeting the box around
+    /// `a, b` widened by `pad` (and the slack); stops early and returns
+    /// `true` when `f` does.
+    #[inline]
+    fn any_cell_near(&self, a: Point, b: Point, pad: f64, mut f: impl FnMut(&[T]) -> bool) -> bool {
+        let (px, py) = (pad + self.slack_x, pad + self.slack_y);
+        let (c0, c1) = (
+            self.column(fmin(a[0], b[0]) - px),
+            self.column(fmax(a[0], b[0]) + px),
+        );
+        let (r0, r1) = (
+            self.row(fmin(a[1], b[1]) - py),
+            self.row(fmax(a[1], b[1]) + py),
+        );
+        (r0..=r1).any(|r| self.any_cell_in_row(r, c0, c1, |k| f(self.cell(k))))
+    }
+
+    /// The number of items in the occupied cell `k` and its eight
+    /// neighbours.
+    fn block_len(&self, k: usize) -> usize {
+        let key = self.keys[k];
+        let (row, column) = (key / self.columns, key % self.columns);
+        let (c0, c1) = (column.saturating_sub(1), (column + 1).min(self.columns - 1));
+        let mut len = 0;
+        for r in row.saturating_sub(1)..=(row + 1).min(self.rows - 1) {
+            self.any_cell_in_row(r, c0, c1, |m| {
+                len += self.cell(m).len();
+                false
+            });
+        }
+        len
     }
 }
 
@@ -183,44 +291,12 @@ fn fmax(a: f64, b: f64) -> f64 {
     }
 }
 
-/// Items bucketed by grid cell (CSR); within a cell, in the order given.
-struct Buckets {
-    start: Vec<u32>,
-    items: Vec<u32>,
-}
-
-impl Buckets {
-    fn new(cells: usize, cell_of: &[u32]) -> Self {
-        let mut start = vec![0u32; cells + 1];
-        for &c in cell_of {
-            start[c as usize + 1] += 1;
-        }
-        for c in 0..cells {
-            start[c + 1] += start[c];
-        }
-        let mut fill = start.clone();
-        let mut items = vec![0u32; cell_of.len()];
-        for (i, &c) in cell_of.iter().enumerate() {
-            items[fill[c as usize] as usize] = i as u32;
-            fill[c as usize] += 1;
-        }
-        Self { start, items }
-    }
-
-    #[inline]
-    fn cell(&self, c: usize) -> &[u32] {
-        &self.items[self.start[c] as usize..self.start[c + 1] as usize]
-    }
-}
-
 /// Segments bucketed by the cell of their midpoint: a segment that meets a
 /// point `x` has its midpoint within `reach` (its longest half-length) of
 /// `x`. Each bucket stores its segments' ids and coordinates contiguously, by
 /// ascending id, so that a query reads memory in spatial order.
 struct SegmentIndex {
-    grid: Grid,
-    start: Vec<u32>,
-    items: Vec<Indexed>,
+    grid: SparseGrid<Indexed>,
     reach: f64,
 }
 
@@ -243,11 +319,13 @@ impl Indexed {
     /// first, which needs no `min` in x because `a` is the left endpoint.)
     #[inline]
     fn crosses(&self, q: &Query) -> bool {
-        self.a[0] <= q.hi[0]
-            && self.b[0] >= q.lo[0]
-            && fmin(self.a[1], self.b[1]) <= q.hi[1]
-            && fmax(self.a[1], self.b[1]) >= q.lo[1]
-            && properly_cross(q.a, q.b, self.a, self.b)
+        // One branch for the whole box test (`&`, not `&&`): its outcome is
+        // unpredictable, so fewer branches mispredict less.
+        let boxes_meet = (self.a[0] <= q.hi[0])
+            & (self.b[0] >= q.lo[0])
+            & (fmin(self.a[1], self.b[1]) <= q.hi[1])
+            & (fmax(self.a[1], self.b[1]) >= q.lo[1]);
+        boxes_meet && properly_cross(q.a, q.b, self.a, self.b)
     }
 }
 
@@ -271,8 +349,7 @@ impl Query {
 }
 
 impl SegmentIndex {
-    /// Indexes `segments` (in spatial order, which keeps the reads local),
-    /// tagging each with its entry of `ids`.
+    /// Indexes `segments`, tagging each with its entry of `ids`.
     fn new(points: &[Point], bbox: [f64; 4], segments: &[[u32; 2]], ids: &[u32]) -> Self {
         let p = |v: u32| points[v as usize];
         let reach = segments
@@ -280,56 +357,30 @@ impl SegmentIndex {
             .map(|&[a, b]| half_length(p(a), p(b)))
             .reduce(|| 0.0, fmax)
             * (1.0 + 1e-9);
-        let grid = Grid::new(bbox, reach, 2 * segments.len() + 1);
-        let cells: Vec<u32> = segments
-            .par_iter()
-            .map(|&[a, b]| {
-                let (pa, pb) = (p(a), p(b));
-                grid.cell_of([0.5 * pa[0] + 0.5 * pb[0], 0.5 * pa[1] + 0.5 * pb[1]]) as u32
-            })
-            .collect();
-        let cell_count = grid.cells();
-        let mut start = vec![0u32; cell_count + 1];
-        for &c in &cells {
-            start[c as usize + 1] += 1;
-        }
-        for c in 0..cell_count {
-            start[c + 1] += start[c];
-        }
-        let mut fill = start.clone();
-        let empty = Indexed::new(0, [0.0; 2], [0.0; 2]);
-        let mut items = vec![empty; segments.len()];
-        for ((&c, &[a, b]), &id) in cells.iter().zip(segments).zip(ids) {
-            items[fill[c as usize] as usize] = Indexed::new(id, p(a), p(b));
-            fill[c as usize] += 1;
-        }
-        for c in 0..cell_count {
-            let bucket = &mut items[start[c] as usize..start[c + 1] as usize];
-            if bucket.len() > 1 {
-                bucket.sort_unstable_by_key(|s| s.id);
-            }
-        }
+        let midpoint = |i: usize| {
+            let [a, b] = segments[i];
+            let (pa, pb) = (p(a), p(b));
+            [0.5 * pa[0] + 0.5 * pb[0], 0.5 * pa[1] + 0.5 * pb[1]]
+        };
+        let item = |i: usize| {
+            let [a, b] = segments[i];
+            Indexed::new(ids[i], p(a), p(b))
+        };
         Self {
-            grid,
-            start,
-            items,
+            grid: SparseGrid::new(bbox, reach, segments.len(), midpoint, item, |i| ids[i]),
             reach,
         }
     }
 
-    #[inline]
-    fn cell(&self, c: usize) -> &[Indexed] {
-        &self.items[self.start[c] as usize..self.start[c + 1] as usize]
-    }
-
     /// Calls `f` on every segment *no longer than `ab`* that may meet `ab`
-    /// (and others), cell by cell; `f` returns `true` to stop the scan of the
-    /// current cell. (Their midpoints lie within `|ab| / 2` of `ab`.)
+    /// (and others), cell by cell, in ascending id within a cell; `f`
+    /// returns `true` to stop the scan of the current cell. (Their midpoints
+    /// lie within `|ab| / 2` of `ab`.)
     #[inline]
     fn scan_near(&self, a: Point, b: Point, mut f: impl FnMut(&Indexed) -> bool) {
         let pad = fmin(self.reach, half_length(a, b) * (1.0 + 1e-9));
-        self.grid.any_cell_near(a, b, pad, |c| {
-            for s in self.cell(c) {
+        self.grid.any_cell_near(a, b, pad, |cell| {
+            for s in cell {
                 if f(s) {
                     break;
                 }
@@ -343,7 +394,7 @@ impl SegmentIndex {
     fn crossed_by(&self, q: &Query) -> bool {
         let pad = fmin(self.reach, half_length(q.a, q.b) * (1.0 + 1e-9));
         self.grid
-            .any_cell_near(q.a, q.b, pad, |c| self.cell(c).iter().any(|s| s.crosses(q)))
+            .any_cell_near(q.a, q.b, pad, |cell| cell.iter().any(|s| s.crosses(q)))
     }
 }
 
@@ -485,20 +536,30 @@ impl<'a> Partial<'a> {
     /// Adds a round's accepted edges (they cross nothing and share no
     /// direction at a vertex, so the angular order is strict).
     fn add(&mut self, accepted: &[[u32; 2]]) {
-        let mut touched = vec![false; self.points.len()];
-        for &[a, b] in accepted {
-            self.adjacency[a as usize].push(b);
-            self.adjacency[b as usize].push(a);
-            touched[a as usize] = true;
-            touched[b as usize] = true;
+        // Half-edges grouped by origin, then every touched list extended and
+        // re-sorted in parallel.
+        let mut half: Vec<[u32; 2]> = accepted
+            .par_iter()
+            .flat_map_iter(|&[a, b]| [[a, b], [b, a]])
+            .collect();
+        half.par_sort_unstable();
+        let mut start = vec![0u32; self.points.len() + 1];
+        for &[a, _] in &half {
+            start[a as usize + 1] += 1;
+        }
+        for v in 0..self.points.len() {
+            start[v + 1] += start[v];
         }
         let points = self.points;
         self.adjacency
             .par_iter_mut()
-            .zip(touched.par_iter())
             .enumerate()
-            .filter(|(_, (_, &t))| t)
-            .for_each(|(v, (list, _))| {
+            .for_each(|(v, list)| {
+                let new = &half[start[v] as usize..start[v + 1] as usize];
+                if new.is_empty() {
+                    return;
+                }
+                list.extend(new.iter().map(|&[_, b]| b));
                 let pv = points[v];
                 list.sort_unstable_by(|&x, &y| {
                     compare_angles(pv, points[x as usize], points[y as usize])
@@ -597,8 +658,6 @@ fn greedy_rounds(
     let n = points.len();
     let bbox = bounding_box(points);
     let (w, h) = (bbox[2] - bbox[0], bbox[3] - bbox[1]);
-    // About one point per cell; a flat box still gets a sensible cell.
-    let spacing = ((w.max(h * 1e-6) * h.max(w * 1e-6)) / n as f64).sqrt();
     let hull = hull_distinct(points);
     let mut hull_prev = vec![NONE; n];
     let mut hull_next = vec![NONE; n];
@@ -607,17 +666,6 @@ fn greedy_rounds(
         hull_prev[v] = hull[(i + hull.len() - 1) % hull.len()];
         hull_next[v] = hull[(i + 1) % hull.len()];
     }
-    let point_grid = Grid::new(bbox, spacing, 2 * n);
-    let point_cells: Vec<u32> = points
-        .par_iter()
-        .map(|&p| point_grid.cell_of(p) as u32)
-        .collect();
-    let point_buckets = Buckets::new(point_grid.cells(), &point_cells);
-    let near = PointsNear {
-        points,
-        grid: &point_grid,
-        buckets: &point_buckets,
-    };
     let mut g = Partial {
         points,
         adjacency: vec![Vec::new(); n],
@@ -626,43 +674,29 @@ fn greedy_rounds(
         edges: 0,
     };
     let target = 3 * n - 3 - hull.len();
-
-    // Round 0: all pairs shorter than T_0, from the point grid.
-    let mut threshold = 1.6 * spacing;
-    let candidates: Vec<[u32; 2]> = (0..n as u32)
-        .into_par_iter()
-        .fold(Vec::new, |mut out, v| {
-            let pv = points[v as usize];
-            point_grid.any_cell_near(pv, pv, threshold, |c| {
-                for &u in point_buckets.cell(c) {
-                    if u > v && shorter_than(pv, points[u as usize], threshold) {
-                        out.push([v, u]);
-                    }
-                }
-                false
-            });
-            out
-        })
-        .flatten()
-        .collect();
-    let rank = renumbering.ranks(points, &candidates);
-    stopwatch.lap("round 0 candidates");
-    let accepted = decide_round(points, bbox, &candidates, &rank, &[], &near);
-    g.add(&accepted);
-    let mut open: Vec<u32> = (0..n as u32)
-        .into_par_iter()
-        .filter(|&v| !g.closed(v))
-        .collect();
-    stopwatch.lap("round 0");
-
-    // Later rounds: only pairs of open vertices, doubling the threshold.
     let diagonal = (w * w + h * h).sqrt();
+    // About 1.6 mean spacings (a flat box still gets a sensible one); the
+    // guard in `round_grid` shrinks it where the points are denser.
+    let spacing = ((fmax(w, h * 1e-6) * fmax(h, w * 1e-6)) / n as f64).sqrt();
+    let mut open: Vec<u32> = (0..n as u32).collect();
+    let mut near: Option<PointsNear> = None;
+    let mut lower = 0.0;
+    let mut round = 0;
     while g.edges < target && !open.is_empty() {
-        let lower = threshold;
-        threshold *= 2.0;
+        let proposed = if round == 0 {
+            1.6 * spacing
+        } else {
+            2.0 * lower
+        };
+        let (threshold, grid) = round_grid(points, bbox, &open, lower, proposed);
         // Once every pair is shorter than the threshold, take all the rest.
         let last = threshold > 1.01 * diagonal;
-        let gaps: Vec<Option<Vec<[u32; 2]>>> = open.par_iter().map(|&v| g.open_gaps(v)).collect();
+        let near = near.get_or_insert_with(|| PointsNear::new(points, bbox, threshold));
+        let gaps: Vec<Option<Vec<[u32; 2]>>> = if round == 0 {
+            vec![None; n]
+        } else {
+            open.par_iter().map(|&v| g.open_gaps(v)).collect()
+        };
         // Pairs `open[i], open[j]` in the length range that may leave both
         // endpoints.
         let keep = |i: usize, j: usize| {
@@ -673,49 +707,30 @@ fn greedy_rounds(
                 && g.leaves_through(a, &gaps[i], b)
                 && g.leaves_through(b, &gaps[j], a)
         };
-        let candidates: Vec<[u32; 2]> = if last {
-            (0..open.len())
-                .into_par_iter()
-                .fold(Vec::new, |mut out, i| {
-                    out.extend(
-                        (i + 1..open.len())
-                            .filter(|&j| keep(i, j))
-                            .map(|j| [open[i], open[j]]),
-                    );
-                    out
-                })
-                .flatten()
-                .collect()
-        } else {
-            // Cells a little wider than the threshold: close pairs sit in
-            // neighbouring cells.
-            let round_grid = Grid::new(bbox, threshold * 1.001, 4 * open.len());
-            let cells: Vec<u32> = open
-                .iter()
-                .map(|&v| round_grid.cell_of(points[v as usize]) as u32)
-                .collect();
-            let buckets = Buckets::new(round_grid.cells(), &cells);
-            (0..open.len())
-                .into_par_iter()
-                .fold(Vec::new, |mut out, i| {
-                    let v = open[i];
-                    let pv = points[v as usize];
-                    let (cx, cy) = (round_grid.cx(pv[0]), round_grid.cy(pv[1]));
-                    for r in cy.saturating_sub(1)..=(cy + 1).min(round_grid.ny - 1) {
-                        for c in cx.saturating_sub(1)..=(cx + 1).min(round_grid.nx - 1) {
-                            for &j in buckets.cell(r * round_grid.nx + c) {
-                                let u = open[j as usize];
-                                if u > v && keep(i, j as usize) {
-                                    out.push([v, u]);
-                                }
+        let candidates: Vec<[u32; 2]> = (0..open.len())
+            .into_par_iter()
+            .chunks(4096)
+            .map(|chunk| {
+                let mut out = Vec::new();
+                for i in chunk {
+                    let (v, pv) = (open[i], points[open[i] as usize]);
+                    // Cells a little wider than the threshold: close pairs
+                    // sit in neighbouring cells (all cells, in the last round).
+                    let reach = if last { diagonal } else { threshold };
+                    grid.any_cell_near(pv, pv, reach, |cell| {
+                        for &j in cell {
+                            if open[j as usize] > v && keep(i, j as usize) {
+                                out.push([v, open[j as usize]]);
                             }
                         }
-                    }
-                    out
-                })
-                .flatten()
-                .collect()
-        };
+                        false
+                    });
+                }
+                out
+            })
+            .collect::<Vec<Vec<[u32; 2]>>>()
+            .concat();
+        drop(grid);
         let rank = renumbering.ranks(points, &candidates);
         let mut is_open = vec![false; n];
         for &v in &open {
@@ -729,12 +744,17 @@ fn greedy_rounds(
             })
             .flatten()
             .collect();
-        let accepted = decide_round(points, bbox, &candidates, &rank, &active, &near);
+        let accepted = decide_round(points, bbox, &candidates, &rank, &active, near, round == 0);
         g.add(&accepted);
         open = open.into_par_iter().filter(|&v| !g.closed(v)).collect();
+        if round == 0 {
+            stopwatch.lap("round 0");
+        }
         if last {
             break;
         }
+        lower = threshold;
+        round += 1;
     }
     stopwatch.lap("later rounds");
     if g.edges != target {
@@ -748,18 +768,80 @@ fn greedy_rounds(
     Ok(triangles)
 }
 
+/// The threshold of the next round, at most `proposed`, and the grid of the
+/// open vertices (indices into `open`) with cells a little wider than it.
+///
+/// Guard: a round enumerates the pairs of open vertices in neighbouring
+/// cells, and its candidates' crossings grow with their square; where points
+/// are much denser than average (clustered inputs) a threshold scaled to the
+/// mean spacing would make that quadratic. So the step above `lower` is
+/// halved until the pair count is linear in the number of open vertices
+/// (only the running time depends on this choice; rounds stay disjoint
+/// length ranges).
+fn round_grid(
+    points: &[Point],
+    bbox: [f64; 4],
+    open: &[u32],
+    lower: f64,
+    proposed: f64,
+) -> (f64, SparseGrid<u32>) {
+    let budget = 48 * open.len() + 4096;
+    let mut threshold = proposed;
+    loop {
+        let grid = SparseGrid::new(
+            bbox,
+            threshold * 1.001,
+            open.len(),
+            |j| points[open[j] as usize],
+            |j| j as u32,
+            |j| j as u32,
+        );
+        let (pairs, worst) = (0..grid.keys.len())
+            .into_par_iter()
+            .map(|k| {
+                let pairs = grid.cell(k).len() * grid.block_len(k);
+                (pairs, pairs)
+            })
+            .reduce(|| (0, 0), |(s1, m1), (s2, m2)| (s1 + s2, m1.max(m2)));
+        let step = threshold - lower;
+        // Both in total and in every cell: one dense cluster's pairs would
+        // cross each other quadratically often.
+        if (pairs <= budget && worst <= MAX_CELL_PAIRS) || step <= 1e-3 * threshold {
+            return (threshold, grid);
+        }
+        threshold = lower + 0.5 * step;
+    }
+}
+
+/// The guard's bound on the pairs a cell and its neighbours make (uniform
+/// points at the first threshold stay well below it).
+const MAX_CELL_PAIRS: usize = 1024;
+
 /// The points, bucketed by a grid of about one point per cell.
 struct PointsNear<'a> {
     points: &'a [Point],
-    grid: &'a Grid,
-    buckets: &'a Buckets,
+    grid: SparseGrid<u32>,
 }
 
-impl PointsNear<'_> {
+impl<'a> PointsNear<'a> {
+    fn new(points: &'a [Point], bbox: [f64; 4], cell: f64) -> Self {
+        Self {
+            points,
+            grid: SparseGrid::new(
+                bbox,
+                cell,
+                points.len(),
+                |i| points[i],
+                |i| i as u32,
+                |i| i as u32,
+            ),
+        }
+    }
+
     /// Does some point lie on the open segment `ab`? (Exact.)
     fn on_segment(&self, a: Point, b: Point) -> bool {
-        self.grid.any_cell_near(a, b, 0.0, |c| {
-            self.buckets.cell(c).iter().any(|&z| {
+        self.grid.any_cell_near(a, b, 0.0, |cell| {
+            cell.iter().any(|&z| {
                 let pz = self.points[z as usize];
                 boxes_meet(a, b, pz, pz) && pz != a && pz != b && on_open_segment(pz, a, b)
             })
@@ -777,9 +859,13 @@ fn scan_chunk(
     index: &SegmentIndex,
     earlier: Option<&SegmentIndex>,
     near: &PointsNear,
+    shortest_at: &[u32],
 ) -> (Vec<u32>, Vec<[u32; 2]>) {
     let (mut blocked, mut deps) = (Vec::new(), Vec::new());
     for (&[a, b], &r) in segments.iter().zip(ranks) {
+        if shortest_at.get(a as usize) == Some(&r) && shortest_at[b as usize] == r {
+            continue; // accepted whatever the others do (see `decide_round`)
+        }
         let q = Query::new(points[a as usize], points[b as usize]);
         if earlier.is_some_and(|e| e.crossed_by(&q)) || near.on_segment(q.a, q.b) {
             blocked.push(r);
@@ -808,11 +894,31 @@ fn decide_round(
     rank: &[u32],
     active: &[[u32; 2]],
     near: &PointsNear,
+    first_round: bool,
 ) -> Vec<[u32; 2]> {
     let m = candidates.len();
     if m == 0 {
         return Vec::new();
     }
+    // In the first round (no earlier edges) every segment shorter than the
+    // threshold is a candidate, so the lowest rank at a vertex is the
+    // shortest segment there. A segment shortest at both ends is a GT edge:
+    // a shorter `cd` crossing `ab` would make, by the □-Lemma,
+    // `|ac| + |bd| < |ab| + |cd| < 2|ab|`, so `ac` or `bd` would be shorter
+    // still; and a point on `ab` would make a shorter segment at `a`. Its
+    // dependencies need not be listed.
+    let shortest_at: Vec<u32> = if active.is_empty() && first_round {
+        let lowest: Vec<std::sync::atomic::AtomicU32> = (0..points.len())
+            .map(|_| std::sync::atomic::AtomicU32::new(NONE))
+            .collect();
+        candidates.par_iter().zip(rank).for_each(|(&[a, b], &r)| {
+            lowest[a as usize].fetch_min(r, std::sync::atomic::Ordering::Relaxed);
+            lowest[b as usize].fetch_min(r, std::sync::atomic::Ordering::Relaxed);
+        });
+        lowest.into_iter().map(|x| x.into_inner()).collect()
+    } else {
+        Vec::new()
+    };
     let index = SegmentIndex::new(points, bbox, candidates, rank);
     let earlier = (!active.is_empty()).then(|| {
         let ids: Vec<u32> = (0..active.len() as u32).collect();
@@ -825,7 +931,15 @@ fn decide_round(
         .par_chunks(CHUNK)
         .zip(rank.par_chunks(CHUNK))
         .map(|(segments, ranks)| {
-            scan_chunk(points, segments, ranks, &index, earlier.as_ref(), near)
+            scan_chunk(
+                points,
+                segments,
+                ranks,
+                &index,
+                earlier.as_ref(),
+                near,
+                &shortest_at,
+            )
         })
         .reduce(
             || (Vec::new(), Vec::new()),
