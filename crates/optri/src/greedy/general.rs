@@ -4,10 +4,15 @@
 //!
 //! # Length rounds
 //! Round `k` takes candidate pairs whose exact length lies in
-//! `[T_{k-1}, T_k)` (`T_0` about 1.6 mean point spacings, `T_k = 2^k T_0`):
-//! in round 0 every pair shorter than `T_0`, later only pairs of still-open
-//! vertices (below). Rounds are disjoint length ranges, so every pair shorter
-//! than `T_{k-1}` has been decided when round `k` starts.
+//! `[T_{k-1}, T_k)`: in round 0 every pair shorter than `T_0`, later only
+//! pairs of still-open vertices (below). Rounds are disjoint length ranges,
+//! so every pair shorter than `T_{k-1}` has been decided when round `k`
+//! starts. `T_0` is about 1.6 mean point spacings and `T_k = 2 T_{k-1}`,
+//! unless a guard (`round_grid`) finds that the pairs within the proposed
+//! threshold are too many — in total, or in one cell and its neighbours, as
+//! in a dense cluster — and halves the step until they are not; the grids
+//! store only occupied cells, so their cells can follow the threshold
+//! however uneven the density. These choices only affect the running time.
 //!
 //! # Deciding a round without following the length order
 //! The naive algorithm accepts a segment iff it contains no point and crosses
@@ -25,6 +30,8 @@
 //! The global order is thus only followed where it matters; the previous
 //! design tested each candidate against the partial GT in length order, a
 //! random walk through memory that cost ~1.4 µs a candidate at 10⁶ points.
+//! In round 0 a segment that is the shortest at both of its endpoints needs
+//! no dependency list: it is a GT edge (`decide_round`).
 //!
 //! # Earlier edges: only the *active* ones
 //! **Lemma (empty triangles).** If every pair shorter than `ℓ` has been
