@@ -22,6 +22,7 @@ pub mod enumerate;
 pub mod exact;
 pub mod graphs;
 pub mod greedy;
+pub mod inputs;
 pub mod klincsek;
 pub mod symbolic;
 
@@ -40,6 +41,7 @@ pub use graphs::{
     rng_edges,
 };
 pub use greedy::greedy_edges;
+pub use inputs::integer_circle_points;
 pub use klincsek::{
     klincsek, klincsek_unique, Criterion, MaxMinArea, MinMaxArea, MinMaxLength, MinWeight,
 };

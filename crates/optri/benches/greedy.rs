@@ -1,6 +1,7 @@
-//! Criterion benchmarks of the greedy triangulation: uniform points (general
-//! algorithm, beside the Delaunay triangulation of the same set), a convex
-//! lens (convex algorithm) and a parabola (semicircular algorithm).
+//! Criterion benchmarks of the greedy triangulation: uniform and clustered
+//! points (general algorithm, beside the Delaunay triangulation of the same
+//! set), a convex lens (convex algorithm) and a parabola (semicircular
+//! algorithm).
 //!
 //! `cargo bench -p optri --bench greedy`; the 10⁶-point figures come from
 //! `cargo run --release -p optri --example greedy_bench -- <mode> <n>`.
@@ -13,6 +14,21 @@ use rand::{rngs::StdRng, Rng, SeedableRng};
 fn uniform(n: usize) -> PointSet {
     let mut rng = StdRng::seed_from_u64(1);
     let pts: Vec<[f64; 2]> = (0..n).map(|_| [rng.gen(), rng.gen()]).collect();
+    PointSet::new(&pts).unwrap()
+}
+
+/// 100 square clusters with random centres and sizes over two orders of
+/// magnitude.
+fn clustered(n: usize) -> PointSet {
+    let mut rng = StdRng::seed_from_u64(2);
+    let mut pts: Vec<[f64; 2]> = Vec::with_capacity(n);
+    for _ in 0..100 {
+        let c = [rng.gen_range(-1e4..1e4), rng.gen_range(-1e4..1e4)];
+        let r: f64 = rng.gen_range(10.0..2e3);
+        for _ in 0..n / 100 {
+            pts.push([c[0] + rng.gen_range(-r..r), c[1] + rng.gen_range(-r..r)]);
+        }
+    }
     PointSet::new(&pts).unwrap()
 }
 
@@ -46,6 +62,17 @@ fn greedy(c: &mut Criterion) {
             b.iter(|| optri::delaunay(ps).unwrap())
         });
     }
+    let ps = clustered(100_000);
+    group.bench_with_input(
+        BenchmarkId::new("general_clustered", 100_000),
+        &ps,
+        |b, ps| b.iter(|| greedy_triangulation(ps).unwrap()),
+    );
+    group.bench_with_input(
+        BenchmarkId::new("delaunay_clustered", 100_000),
+        &ps,
+        |b, ps| b.iter(|| optri::delaunay(ps).unwrap()),
+    );
     let ps = lens(2_000);
     assert!(optri::greedy::is_convex_position(&ps));
     group.bench_with_input(BenchmarkId::new("convex_lens", 2_000), &ps, |b, ps| {

@@ -1,7 +1,10 @@
 //! Criterion benchmarks for the minmax-length triangulation
-//! (Edelsbrunner–Tan): uniform random points against Delaunay alone in the
-//! same group, and points in convex position (one complete rng-polygon, the
-//! O(n²) worst case of §6) against the cubic reference. The larger series
+//! (Edelsbrunner–Tan): uniform random points, alone and with the square's
+//! boundary sampled at the mean spacing ("boxed": short hull edges, so the
+//! Length-Lemma certificate keeps fewer regions), against Delaunay alone in
+//! the same group and against the polygon algorithm run on every region
+//! (certificate off); and points in convex position (one complete
+//! rng-polygon, the O(n²) worst case of §6) against the cubic reference. The larger series
 //! (10⁶ uniform points, convex n = 5k…40k) is in `examples/minmax_timing.rs`.
 //!
 //! `cargo bench -p optri --bench minmax_length`
@@ -29,18 +32,41 @@ fn perturbed_circle(n: usize, seed: u64) -> Vec<[f64; 2]> {
         .collect()
 }
 
+/// `uniform(n)` plus the unit square's boundary sampled at spacing 1/√n.
+fn boxed(n: usize, seed: u64) -> Vec<[f64; 2]> {
+    let mut pts = uniform(n, seed);
+    let k = (n as f64).sqrt().ceil() as usize;
+    for i in 0..k {
+        let t = i as f64 / k as f64;
+        pts.extend([[t, 0.0], [1.0, t], [1.0 - t, 1.0], [0.0, 1.0 - t]]);
+    }
+    pts
+}
+
 fn uniform_points(c: &mut Criterion) {
-    let mut group = c.benchmark_group("minmax_length_uniform");
-    group.sample_size(10);
     let n = 100_000;
-    let ps = PointSet::new(&uniform(n, 1)).unwrap();
-    group.bench_with_input(BenchmarkId::new("delaunay", n), &ps, |b, ps| {
-        b.iter(|| optri::delaunay(ps).unwrap())
-    });
-    group.bench_with_input(BenchmarkId::new("minmax_length", n), &ps, |b, ps| {
-        b.iter(|| optri::minmax_length(ps).unwrap())
-    });
-    group.finish();
+    for (name, pts) in [("uniform", uniform(n, 1)), ("boxed", boxed(n, 1))] {
+        let mut group = c.benchmark_group(format!("minmax_length_{name}"));
+        group.sample_size(10);
+        let ps = PointSet::new(&pts).unwrap();
+        group.bench_with_input(BenchmarkId::new("delaunay", n), &ps, |b, ps| {
+            b.iter(|| optri::delaunay(ps).unwrap())
+        });
+        group.bench_with_input(BenchmarkId::new("minmax_length", n), &ps, |b, ps| {
+            b.iter(|| optri::minmax_length(ps).unwrap())
+        });
+        group.bench_with_input(
+            BenchmarkId::new("polygon_algorithm_on_every_region", n),
+            &ps,
+            |b, ps| {
+                b.iter(|| {
+                    optri::minmax_length::minmax_length_with(ps, optri::minmax_length::SMALL_REGION)
+                        .unwrap()
+                })
+            },
+        );
+        group.finish();
+    }
 }
 
 fn convex_position(c: &mut Criterion) {

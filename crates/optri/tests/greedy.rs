@@ -208,21 +208,7 @@ fn grid_subset(rng: &mut StdRng, w: usize, h: usize, p: f64) -> Vec<Point> {
     pts
 }
 
-/// The integer points on the circle `x² + y² = r²`.
-fn circle(r: i64) -> Vec<Point> {
-    let mut pts = Vec::new();
-    for x in -r..=r {
-        let y2 = r * r - x * x;
-        let y = (y2 as f64).sqrt().round() as i64;
-        if y * y == y2 {
-            pts.push([x as f64, y as f64]);
-            if y != 0 {
-                pts.push([x as f64, -y as f64]);
-            }
-        }
-    }
-    pts
-}
+use optri_oracle::integer_circle_points as circle;
 
 #[test]
 fn random_small_sets_match_the_oracle() {

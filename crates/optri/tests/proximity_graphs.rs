@@ -102,22 +102,7 @@ fn grid(w: usize, h: usize, spacing: f64) -> Vec<Point> {
     v
 }
 
-/// All integer points on the circle of radius `r` about the origin (every
-/// sign and coordinate-swap variant of the Pythagorean triples).
-fn circle_points(r: i64) -> Vec<Point> {
-    let mut v = Vec::new();
-    for x in -r..=r {
-        let y2 = r * r - x * x;
-        let y = (y2 as f64).sqrt().round() as i64;
-        if y * y == y2 {
-            v.push([x as f64, y as f64]);
-            if y != 0 {
-                v.push([x as f64, -y as f64]);
-            }
-        }
-    }
-    v
-}
+use optri_oracle::integer_circle_points as circle_points;
 
 #[test]
 fn random_point_sets() {
