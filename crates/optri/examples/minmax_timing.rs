@@ -81,11 +81,32 @@ fn reset_counters() {
 /// Delaunay alone, the product, and (unless `SKIP_PURE`) the paper's
 /// polygon algorithm on every region (no Length-Lemma certificate).
 fn compare_with_delaunay(name: &str, ps: &PointSet) {
-    let (_, d) = secs(|| optri::delaunay(ps).unwrap());
-    reset_counters();
-    let (s, m) = secs(|| optri::triangulate(ps, Criterion::MinmaxLength).unwrap());
+    // Timings here vary by ±20% from run to run: alternate the runs and
+    // compare medians (RUNS of each, default 3).
+    let runs: usize = std::env::var("RUNS")
+        .ok()
+        .and_then(|r| r.parse().ok())
+        .unwrap_or(3);
+    let median = |mut v: Vec<f64>| {
+        v.sort_by(f64::total_cmp);
+        v[v.len() / 2]
+    };
+    let (mut dts, mut ms, mut qs) = (Vec::new(), Vec::new(), Vec::new());
+    let mut solution = None;
+    for _ in 0..runs {
+        dts.push(secs(|| optri::delaunay(ps).unwrap()).1);
+        reset_counters();
+        let (s, m) = secs(|| optri::triangulate(ps, Criterion::MinmaxLength).unwrap());
+        ms.push(m);
+        solution = Some(s);
+        if std::env::var_os("SKIP_PURE").is_none() {
+            qs.push(secs(|| optri::minmax_length::minmax_length_with(ps, SMALL_REGION).unwrap()).1);
+        }
+    }
+    let s = solution.expect("at least one run");
+    let (d, m) = (median(dts.clone()), median(ms.clone()));
     println!(
-        "{name} n={}: delaunay {d:.3} s, minmax-length {m:.3} s, ratio {:.2}",
+        "{name} n={}: delaunay {dts:.3?} minmax-length {ms:.3?}; medians {d:.3} s and {m:.3} s, ratio {:.2}",
         ps.len(),
         m / d
     );
@@ -93,16 +114,14 @@ fn compare_with_delaunay(name: &str, ps: &PointSet) {
         println!("  phase {:12} {:9.1} ms", p.name, p.ms);
     }
     println!("  {}", counters());
-    if std::env::var_os("SKIP_PURE").is_some() {
+    if qs.is_empty() {
         return;
     }
-    reset_counters();
-    let (_, q) = secs(|| optri::minmax_length::minmax_length_with(ps, SMALL_REGION).unwrap());
+    let q = median(qs.clone());
     println!(
-        "  without the certificate (every region by the polygon algorithm): {q:.3} s, ratio {:.2}",
+        "  without the certificate (every region by the polygon algorithm): {qs:.3?}, median {q:.3} s, ratio {:.2}",
         q / d
     );
-    println!("  {}", counters());
 }
 
 fn main() {

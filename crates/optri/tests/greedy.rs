@@ -634,3 +634,41 @@ fn criterion_registry_reports_the_algorithm_and_total_length() {
         Criterion::MinWeight
     );
 }
+
+/// The scale for the convex-position algorithms: at n = 10⁴ the
+/// convex and semicircular algorithms equal the general one edge for edge
+/// (no oracle here: it would dominate the run).
+#[test]
+fn convex_and_semicircular_equal_general_at_ten_thousand_points() {
+    let mut rng = StdRng::seed_from_u64(12);
+    let n = 10_000;
+    let inputs = [
+        (parabola(&mut rng, n, 4 * n), "parabola", true),
+        (convex_lens(&mut rng, n), "lens", false),
+    ];
+    for (pts, what, semicircular) in inputs {
+        let ps = PointSet::new(&pts).unwrap();
+        let general = greedy_edges_by(&ps, GreedyAlgorithm::General).unwrap();
+        assert_eq!(
+            general.len(),
+            2 * n - 3,
+            "{what}: a triangulation of a convex polygon"
+        );
+        let convex = greedy_edges_by(&ps, GreedyAlgorithm::Convex).expect("convex position");
+        assert_eq!(convex, general, "{what}: convex != general");
+        let semi = greedy_edges_by(&ps, GreedyAlgorithm::Semicircular);
+        assert_eq!(semi.is_some(), semicircular, "{what}");
+        if let Some(semi) = semi {
+            assert_eq!(semi, general, "{what}: semicircular != general");
+        }
+        let (t, algorithm) = greedy_triangulation(&ps).unwrap();
+        t.validate().unwrap();
+        assert_eq!(distinct_edges(&ps, &t), general);
+        let expected = if semicircular {
+            GreedyAlgorithm::Semicircular
+        } else {
+            GreedyAlgorithm::Convex
+        };
+        assert_eq!(algorithm, expected, "{what}");
+    }
+}
