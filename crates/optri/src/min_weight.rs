@@ -30,8 +30,9 @@ pub const MAX_POINTS: usize = 4000;
 /// position (see the module docs for the exactness caveat).
 ///
 /// # Errors
-/// [`Error::Unsupported`] if some point is not on the convex hull;
-/// [`Error::TooManyPoints`] above [`MAX_POINTS`] distinct points.
+/// [`Error::Unsupported`] if some point is not on the convex hull, or above
+/// [`MAX_POINTS`] distinct points (the program's O(n²) tables and O(n³)
+/// time).
 pub fn min_weight(points: &PointSet) -> Result<Triangulation> {
     let pts = points.points();
     let polygon = hull_distinct(pts);
@@ -44,7 +45,11 @@ pub fn min_weight(points: &PointSet) -> Result<Triangulation> {
         )));
     }
     if pts.len() > MAX_POINTS {
-        return Err(Error::TooManyPoints { count: pts.len() });
+        return Err(Error::Unsupported(format!(
+            "min-weight (Klincsek's O(n³) program with O(n²) tables) is limited to {MAX_POINTS} \
+             points; this input has {} distinct points",
+            pts.len()
+        )));
     }
     let k = polygon.len();
     let p = |i: usize| pts[polygon[i] as usize];

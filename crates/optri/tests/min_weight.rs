@@ -332,3 +332,19 @@ fn min_weight_rejects_non_convex_input_clearly() {
         Err(Error::Unsupported(_))
     ));
 }
+
+#[test]
+fn too_many_points_is_a_clear_unsupported_error() {
+    // 4001 integer points on the parabola y = x²: convex position, but past
+    // the cubic program's limit.
+    let pts: Vec<[f64; 2]> = (0..=optri::min_weight::MAX_POINTS as i64)
+        .map(|x| [x as f64, (x * x) as f64])
+        .collect();
+    let ps = optri::PointSet::new(&pts).unwrap();
+    match optri::min_weight(&ps) {
+        Err(optri::Error::Unsupported(why)) => {
+            assert!(why.contains("limited to 4000"), "{why}")
+        }
+        other => panic!("expected an Unsupported error, got {other:?}"),
+    }
+}

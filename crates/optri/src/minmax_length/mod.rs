@@ -104,6 +104,7 @@
 //! | function | paper |
 //! |---|---|
 //! | [`minmax_length`] | §3 global algorithm, Subgraph Theorem (§4) |
+//! | `length_lemma_bound` | §4 Length Lemma (a lower bound certifying Delaunay regions) |
 //! | `rng_perturbed_flags`, `regions::Regions` | §3 steps 1–2, §5.4 (`rng(S′) ⊆ rng(S)`) |
 //! | `fast::FastRegion::incomplete` | §5.1, 1-Edge Lemma, Visibility Lemma |
 //! | `fast::FastRegion::visible` | §6 step 1 (diagonals in angular order) |
