@@ -672,3 +672,24 @@ fn convex_and_semicircular_equal_general_at_ten_thousand_points() {
         assert_eq!(algorithm, expected, "{what}");
     }
 }
+
+/// A cluster far below the resolution of any grid over the bounding box
+/// (spacing 10⁻¹² in a box of 10⁶): the density guard must stop shrinking.
+#[test]
+fn a_cluster_below_the_grid_resolution() {
+    let mut pts: Vec<Point> = (0..100)
+        .map(|i| {
+            [
+                1e-12 * (i % 10) as f64,
+                1e-12 * (i / 10) as f64 + 1e-13 * (i % 3) as f64,
+            ]
+        })
+        .collect();
+    pts.extend([[1e6, 1e6], [1e6, -3e5], [-2e5, 7e5]]);
+    let mut tally = Tally::default();
+    assert_eq!(
+        check(&pts, "cluster below the grid resolution", &mut tally),
+        Some(GreedyAlgorithm::General)
+    );
+    assert_eq!(tally.sets, 1);
+}

@@ -258,6 +258,20 @@ impl<T: Copy + Send + Sync> SparseGrid<T> {
             self.row(fmin(a[1], b[1]) - py),
             self.row(fmax(a[1], b[1]) + py),
         );
+        if self.table.is_empty() && r1 - r0 >= self.keys.len() as u64 {
+            // More rows than occupied cells (a long query on a fine sparse
+            // grid): scan the occupied cells in the key range instead.
+            let (lo, hi) = (r0 * self.columns + c0, r1 * self.columns + c1);
+            let first = self.keys.partition_point(|&key| key < lo);
+            return self.keys[first..]
+                .iter()
+                .take_while(|&&key| key <= hi)
+                .enumerate()
+                .any(|(i, &key)| {
+                    let column = key % self.columns;
+                    (c0..=c1).contains(&column) && f(self.cell(first + i))
+                });
+        }
         (r0..=r1).any(|r| self.any_cell_in_row(r, c0, c1, |k| f(self.cell(k))))
     }
 
@@ -698,7 +712,18 @@ fn greedy_rounds(
         let (threshold, grid) = round_grid(points, bbox, &open, lower, proposed);
         // Once every pair is shorter than the threshold, take all the rest.
         let last = threshold > 1.01 * diagonal;
-        let near = near.get_or_insert_with(|| PointsNear::new(points, bbox, threshold));
+        // The point grid answers "a point on this segment?"; a query costs
+        // about (length / cell)² cells, so coarsen it when the round's
+        // candidates would cost more than rebuilding it (O(n)).
+        let cell = fmin(threshold, diagonal);
+        let coarsen = near.as_ref().is_some_and(|p| {
+            let ratio = cell * p.grid.inv;
+            (ratio * ratio) * (8 * open.len()) as f64 > (4 * n) as f64 && ratio > 4.0
+        });
+        if near.is_none() || coarsen {
+            near = Some(PointsNear::new(points, bbox, cell));
+        }
+        let near = near.as_ref().expect("just built");
         let gaps: Vec<Option<Vec<[u32; 2]>>> = if round == 0 {
             vec![None; n]
         } else {
@@ -812,8 +837,11 @@ fn round_grid(
             .reduce(|| (0, 0), |(s1, m1), (s2, m2)| (s1 + s2, m1.max(m2)));
         let step = threshold - lower;
         // Both in total and in every cell: one dense cluster's pairs would
-        // cross each other quadratically often.
-        if (pairs <= budget && worst <= MAX_CELL_PAIRS) || step <= 1e-3 * threshold {
+        // cross each other quadratically often. Stop shrinking once the step
+        // is tiny or the grid has reached its finest cells (points closer
+        // than that stay together whatever the threshold).
+        let finest = grid.inv * threshold * 1.001 < 0.999;
+        if (pairs <= budget && worst <= MAX_CELL_PAIRS) || step <= 1e-3 * threshold || finest {
             return (threshold, grid);
         }
         threshold = lower + 0.5 * step;
