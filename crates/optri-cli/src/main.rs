@@ -135,6 +135,16 @@ fn main() -> ExitCode {
     }
 }
 
+/// How a result is labelled: `exact` when every decision was exact, else
+/// `uncertified` (e.g. min-weight, optimal up to rounded sums of lengths).
+fn exactness(exact: bool) -> &'static str {
+    if exact {
+        "exact"
+    } else {
+        "uncertified"
+    }
+}
+
 /// Reports `message` on stderr and returns the failure exit code. A failing
 /// stderr is ignored: there is nowhere left to report it, and the exit code
 /// still says something went wrong.
@@ -324,7 +334,7 @@ fn triangulate(args: TriangulateArgs) -> CliResult<()> {
             "{} — {} ({})",
             display_name(&source),
             criterion.name(),
-            if solution.exact { "exact" } else { "heuristic" }
+            exactness(solution.exact)
         );
         written.extend(io::write_triangulation_titled(t, path, &title).map_err(|e| e.to_string())?);
     }
@@ -356,7 +366,7 @@ fn triangulate(args: TriangulateArgs) -> CliResult<()> {
          areas: min {}, max {}\n\
          time: {}\n",
         criterion.name(),
-        if solution.exact { "exact" } else { "heuristic" },
+        exactness(solution.exact),
         solution.algorithm,
         points.len(),
         point_set.len(),
@@ -446,7 +456,7 @@ fn graph(args: GraphArgs) -> CliResult<()> {
 }
 
 /// One triangulation of the demo: which point set, the criterion with
-/// `(exact)` or `(heuristic)`, the panel title (both of those), the result
+/// `(exact)` or `(uncertified)`, the panel title (both of those), the result
 /// and its time.
 struct DemoResult {
     set: &'static str,
@@ -474,11 +484,7 @@ fn demo_result(
     let t0 = Instant::now();
     let solution = optri::triangulate(point_set, criterion)?;
     let ms = ms_since(t0);
-    let label = format!(
-        "{} ({})",
-        criterion.name(),
-        if solution.exact { "exact" } else { "heuristic" }
-    );
+    let label = format!("{} ({})", criterion.name(), exactness(solution.exact));
     Ok(DemoResult {
         set,
         title: format!("{label} — {set} set"),

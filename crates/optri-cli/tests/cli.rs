@@ -433,7 +433,7 @@ fn demo_draws_every_criterion() {
     // Min-weight needs convex position, so it is drawn on the convex set,
     // next to greedy on the same set; its table row names that set.
     assert!(
-        titles.contains(&"min-weight (heuristic) — convex set".to_string()),
+        titles.contains(&"min-weight (uncertified) — convex set".to_string()),
         "{titles:?}"
     );
     assert!(
@@ -444,7 +444,7 @@ fn demo_draws_every_criterion() {
         text.lines()
             .any(|l| l.starts_with(label) && l.split_whitespace().nth(2) == Some(set))
     };
-    assert!(row("min-weight (heuristic)", "convex"), "{text}");
+    assert!(row("min-weight (uncertified)", "convex"), "{text}");
     assert!(
         row("greedy (exact)", "convex") && row("greedy (exact)", "demo"),
         "{text}"
