@@ -509,7 +509,7 @@ fn demo(args: DemoArgs) -> CliResult<()> {
     for &criterion in Criterion::ALL {
         match demo_result(&point_set, criterion, "demo") {
             Ok(r) => results.push(r),
-            Err(Error::Unsupported(why)) => convex_only.push((criterion, why)),
+            Err(e @ Error::Unsupported { .. }) => convex_only.push((criterion, e.to_string())),
             Err(e) => return Err(format!("{}: {e}", criterion.name())),
         }
     }

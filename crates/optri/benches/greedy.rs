@@ -7,7 +7,7 @@
 //! `cargo run --release -p optri --example greedy_bench -- <mode> <n>`.
 
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
-use optri::greedy::greedy_triangulation;
+use optri::internals::greedy_triangulation;
 use optri::PointSet;
 use rand::{rngs::StdRng, Rng, SeedableRng};
 
@@ -74,12 +74,12 @@ fn greedy(c: &mut Criterion) {
         |b, ps| b.iter(|| optri::delaunay(ps).unwrap()),
     );
     let ps = lens(2_000);
-    assert!(optri::greedy::is_convex_position(&ps));
+    assert!(optri::internals::is_convex_position(&ps));
     group.bench_with_input(BenchmarkId::new("convex_lens", 2_000), &ps, |b, ps| {
         b.iter(|| greedy_triangulation(ps).unwrap())
     });
     let ps = parabola(100_000);
-    assert!(optri::greedy::is_semicircular(&ps));
+    assert!(optri::internals::is_semicircular(&ps));
     group.bench_with_input(
         BenchmarkId::new("semicircular_parabola", 100_000),
         &ps,

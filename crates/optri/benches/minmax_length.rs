@@ -60,7 +60,7 @@ fn uniform_points(c: &mut Criterion) {
             &ps,
             |b, ps| {
                 b.iter(|| {
-                    optri::minmax_length::minmax_length_with(ps, optri::minmax_length::SMALL_REGION)
+                    optri::internals::minmax_length_with(ps, optri::internals::SMALL_REGION)
                         .unwrap()
                 })
             },
@@ -80,7 +80,7 @@ fn convex_position(c: &mut Criterion) {
             b.iter(|| optri::minmax_length(ps).unwrap())
         });
         group.bench_with_input(BenchmarkId::new("cubic_reference", n), &ps, |b, ps| {
-            b.iter(|| optri::minmax_length_cubic(ps).unwrap())
+            b.iter(|| optri::internals::minmax_length_cubic(ps).unwrap())
         });
     }
     for &n in &[1_000usize, 2_000] {

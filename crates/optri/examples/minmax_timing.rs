@@ -18,7 +18,7 @@
 //!
 //! Peak resident memory (VmHWM) is printed at the end.
 
-use optri::minmax_length::{
+use optri::internals::{
     CASE_1, CASE_2, CASE_2_HULL_FALLBACKS, CASE_2_POCKETS_BY_5_1, CASE_2_POCKETS_BY_FAN_OUT,
     CASE_2_POCKET_FALLBACKS, CASE_2_REMAINDER_VERTICES, COUNTERS, FALLBACKS, FLAT_TRIANGLES,
     REGIONS_CERTIFIED_BY_BOUND, SMALL_REGION,
@@ -100,7 +100,7 @@ fn compare_with_delaunay(name: &str, ps: &PointSet) {
         ms.push(m);
         solution = Some(s);
         if std::env::var_os("SKIP_PURE").is_none() {
-            qs.push(secs(|| optri::minmax_length::minmax_length_with(ps, SMALL_REGION).unwrap()).1);
+            qs.push(secs(|| optri::internals::minmax_length_with(ps, SMALL_REGION).unwrap()).1);
         }
     }
     let s = solution.expect("at least one run");
@@ -174,7 +174,7 @@ fn main() {
             for &n in &sizes {
                 let ps = PointSet::new(&convex(n, 2)).unwrap();
                 let (t, q) = secs(|| optri::minmax_length(&ps).unwrap());
-                let (r, c) = secs(|| optri::minmax_length_cubic(&ps).unwrap());
+                let (r, c) = secs(|| optri::internals::minmax_length_cubic(&ps).unwrap());
                 let le = |t: &optri::Triangulation| {
                     let e = t.longest_edge();
                     let p = ps.input_points();
@@ -196,7 +196,7 @@ fn main() {
             let pts: Vec<[f64; 2]> = (0..n).map(|_| [rng.gen(), rng.gen()]).collect();
             let ps = PointSet::new(&pts).unwrap();
             for &c in &sizes[1..] {
-                let (_, t) = secs(|| optri::minmax_length::minmax_length_with(&ps, c).unwrap());
+                let (_, t) = secs(|| optri::internals::minmax_length_with(&ps, c).unwrap());
                 println!("uniform n={n}, quadratic from {c} corners: {t:.3} s");
             }
         }

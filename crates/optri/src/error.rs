@@ -1,4 +1,6 @@
-//! The one error type of optri.
+//! The one error type of optri: every fallible function returns
+//! [`Result<T, Error>`](Result), and every variant says what is wrong and
+//! where (the point index, the file line, the polygon edges).
 
 use std::fmt;
 
@@ -35,6 +37,8 @@ pub enum Error {
         /// Number of input points.
         count: usize,
     },
+    /// A polygon given as input is not a simple polygon.
+    InvalidPolygon(PolygonProblem),
     /// A line of an input file could not be read.
     Parse {
         /// 1-based line number (0 when the problem concerns the whole input).
@@ -42,12 +46,79 @@ pub enum Error {
         /// What is wrong, in words.
         message: String,
     },
-    /// Reading or writing a file failed.
+    /// Reading or writing a file failed, or an output cannot be written in
+    /// the requested format.
     Io(String),
-    /// The criterion or algorithm does not support this input.
-    Unsupported(String),
+    /// A name (criterion, graph kind, file format) is not known.
+    UnknownName {
+        /// What was looked up: `"criterion"`, `"graph kind"`, `"input format"`.
+        kind: &'static str,
+        /// The name as given.
+        name: String,
+        /// The names that exist.
+        available: Vec<&'static str>,
+    },
+    /// The criterion does not support this input (yet).
+    Unsupported {
+        /// The criterion's registry name, e.g. `"min-weight"`.
+        criterion: &'static str,
+        /// Why.
+        reason: UnsupportedReason,
+    },
     /// A triangulation failed [`crate::Triangulation::validate`].
     InvalidTriangulation(String),
+    /// An internal consistency check failed: this is a bug in optri, please
+    /// report it with the input.
+    Internal(String),
+}
+
+/// Why a criterion refused an input ([`Error::Unsupported`]).
+#[derive(Clone, Debug, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum UnsupportedReason {
+    /// The algorithm needs every point on the convex hull.
+    NotConvexPosition {
+        /// Distinct points strictly inside the hull.
+        interior: usize,
+        /// All distinct points.
+        distinct: usize,
+    },
+    /// The algorithm's time or memory grows too fast for this many points.
+    TooManyPoints {
+        /// The largest accepted number of distinct points.
+        limit: usize,
+        /// Distinct points of the input.
+        distinct: usize,
+        /// What limits it, e.g. `"Klincsek's O(n³) program with O(n²) tables"`.
+        because: &'static str,
+    },
+}
+
+/// What makes a vertex cycle not a simple polygon ([`Error::InvalidPolygon`]).
+/// Vertices and edges are named by their position in the input ring; edge
+/// `i` joins vertex `i` to vertex `i + 1` (mod n).
+#[derive(Clone, Debug, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum PolygonProblem {
+    /// Fewer than three vertices.
+    TooFewVertices {
+        /// Number of vertices given.
+        count: usize,
+    },
+    /// Two vertices are the same point.
+    RepeatedVertex {
+        /// The earlier position.
+        first: usize,
+        /// The later position.
+        second: usize,
+    },
+    /// Two edges meet other than at the vertex that adjacent edges share.
+    EdgesIntersect {
+        /// The first edge, as `[i, i + 1]` positions.
+        first: [usize; 2],
+        /// The second edge.
+        second: [usize; 2],
+    },
 }
 
 impl fmt::Display for Error {
@@ -76,11 +147,62 @@ impl fmt::Display for Error {
                 "{count} points exceed the u32 index range (at most {} points)",
                 u32::MAX
             ),
+            Error::InvalidPolygon(problem) => write!(f, "not a simple polygon: {problem}"),
             Error::Parse { line, message } if *line > 0 => write!(f, "line {line}: {message}"),
             Error::Parse { message, .. } => write!(f, "{message}"),
             Error::Io(message) => write!(f, "{message}"),
-            Error::Unsupported(message) => write!(f, "{message}"),
+            Error::UnknownName {
+                kind,
+                name,
+                available,
+            } => write!(
+                f,
+                "unknown {kind} '{name}'; available: {}",
+                available.join(", ")
+            ),
+            Error::Unsupported { criterion, reason } => match reason {
+                UnsupportedReason::NotConvexPosition { interior, distinct } => write!(
+                    f,
+                    "{criterion} is only supported for points in convex position yet \
+                     ({interior} of {distinct} distinct points are interior to the convex hull)"
+                ),
+                UnsupportedReason::TooManyPoints {
+                    limit,
+                    distinct,
+                    because,
+                } => write!(
+                    f,
+                    "{criterion} ({because}) is limited to {limit} points; this input has \
+                     {distinct} distinct points"
+                ),
+            },
             Error::InvalidTriangulation(message) => write!(f, "invalid triangulation: {message}"),
+            Error::Internal(message) => write!(
+                f,
+                "internal error (a bug in optri; please report it with the input): {message}"
+            ),
+        }
+    }
+}
+
+impl fmt::Display for PolygonProblem {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            PolygonProblem::TooFewVertices { count } => {
+                write!(
+                    f,
+                    "a polygon needs at least 3 vertices, this one has {count}"
+                )
+            }
+            PolygonProblem::RepeatedVertex { first, second } => write!(
+                f,
+                "vertices {first} and {second} are the same point (a vertex may occur once)"
+            ),
+            PolygonProblem::EdgesIntersect { first, second } => write!(
+                f,
+                "edge {}-{} meets edge {}-{} (the boundary must not touch itself)",
+                first[0], first[1], second[0], second[1]
+            ),
         }
     }
 }

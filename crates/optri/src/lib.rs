@@ -4,53 +4,65 @@
 //! under a stated criterion, exactly, together with the proximity graphs those
 //! algorithms are built from.
 //!
-//! Architecture (dependencies point down):
-//!
-//! | layer | modules |
-//! |---|---|
-//! | geometry kernel | [`kernel`]: exact predicates, symbolic tie-break, lunes, metrics |
-//! | data structures | [`PointSet`], [`planar_graph`], [`Triangulation`] |
-//! | algorithms | [`mod@delaunay`], [`mod@convex_hull`], [`mod@relative_neighborhood_graph`], [`mod@gabriel_graph`], [`mod@minimum_spanning_tree`], [`mod@minmax_length`], [`mod@greedy`], [`mod@min_weight`] |
-//! | I/O | [`io`] |
-//!
 //! ```
-//! use optri::{delaunay, PointSet};
-//! let points = PointSet::new(&[[0.0, 0.0], [1.0, 0.0], [0.0, 1.0], [1.0, 1.0]])?;
-//! let t = delaunay(&points)?;
-//! t.validate()?;
-//! assert_eq!(t.triangles().len(), 2);
+//! use optri::{triangulate, Criterion, PointSet};
+//! let points = PointSet::new(&[[0.0, 0.0], [4.0, 0.0], [0.0, 3.0], [4.0, 3.0], [2.0, 1.0]])?;
+//! let solution = triangulate(&points, Criterion::MinmaxLength)?;
+//! solution.triangulation.validate()?; // exact check that it is a triangulation
+//! assert!(solution.exact);
+//! assert_eq!(solution.triangulation.triangles().len(), 4);
 //! # Ok::<(), optri::Error>(())
 //! ```
+//!
+//! ## Layers
+//! Dependencies point down this table only (`ARCHITECTURE.md` has the rules
+//! and a test enforces them):
+//!
+//! | layer | module (private) | what it holds |
+//! |---|---|---|
+//! | 0 | [`kernel`] | exact predicates, the symbolic tie-break, lunes, reporting metrics |
+//! | — | `error`, `timing`, `parallel` | [`Error`], [`Phase`], the rayon shim |
+//! | 1 | `spatial` | coordinate-only helpers: bounding box, Z-order, hull cycle |
+//! | 2 | `structures` | [`PointSet`], [`SimplePolygon`], [`Triangulation`] and its [`Domain`], Delaunay adjacency, planar graph |
+//! | 3 | `graphs` | [`delaunay`], [`convex_hull`], [`relative_neighborhood_graph`], [`gabriel_graph`], [`minimum_spanning_tree`] |
+//! | 4 | `polygon_program` | Klincsek's polygon dynamic program over an objective |
+//! | 5 | `criteria` | one module per criterion: [`minmax_length`], [`greedy`], [`min_weight`], Delaunay |
+//! | 6 | `registry` | [`Criterion`], [`GraphKind`], [`triangulate`], [`graph`] |
+//! | 7 | [`io`] (feature `io`) | readers, writers, the one JSON result schema |
+//!
+//! ## Features
+//! - `parallel` (default): rayon data parallelism; without it every step runs
+//!   on one thread with identical results.
+//! - `io` (default): file formats and JSON through serde.
+//! - `internals`: test and benchmark hooks in [`internals`]; not a stable API.
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
+#![deny(rustdoc::broken_intra_doc_links)]
 
-pub mod convex_hull;
-mod criterion;
-pub mod delaunay;
+mod criteria;
 mod error;
-pub mod gabriel_graph;
-pub mod greedy;
+mod graphs;
+#[cfg(feature = "internals")]
+pub mod internals;
+#[cfg(feature = "io")]
 pub mod io;
 pub mod kernel;
-pub mod min_weight;
-pub mod minimum_spanning_tree;
-pub mod minmax_length;
-pub mod planar_graph;
-mod point_set;
-pub mod relative_neighborhood_graph;
-mod triangulation;
+mod parallel;
+mod polygon_program;
+mod registry;
+mod spatial;
+mod structures;
+mod timing;
 
-pub use convex_hull::{convex_hull, convex_hull_edges};
-pub use criterion::{triangulate, Criterion, Phase, Solution};
-pub use delaunay::{delaunay, delaunay_edges};
-pub use error::{Error, Result};
-pub use gabriel_graph::gabriel_graph;
-pub use greedy::greedy;
-pub use min_weight::min_weight;
-pub use minimum_spanning_tree::minimum_spanning_tree;
-pub use minmax_length::minmax_length;
-#[doc(hidden)]
-pub use minmax_length::minmax_length_cubic;
-pub use point_set::PointSet;
-pub use relative_neighborhood_graph::relative_neighborhood_graph;
-pub use triangulation::{Stats, Triangulation};
+pub use criteria::greedy::greedy;
+pub use criteria::min_weight::min_weight;
+pub use criteria::minmax_length::minmax_length;
+pub use criteria::{CriterionInfo, Diagnostics, Optimality, Options, Requirement};
+pub use error::{Error, PolygonProblem, Result, UnsupportedReason};
+pub use graphs::{
+    convex_hull, convex_hull_edges, delaunay, delaunay_edges, gabriel_graph, minimum_spanning_tree,
+    relative_neighborhood_graph,
+};
+pub use registry::{graph, triangulate, triangulate_with, Criterion, GraphKind, Solution};
+pub use structures::{Domain, PointSet, SimplePolygon, Stats, Triangulation};
+pub use timing::Phase;

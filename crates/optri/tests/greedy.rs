@@ -10,7 +10,7 @@
 //! optri's own `greedy_naive_edges` shares the sorting and predicates with
 //! the algorithms; it is only cross-checked against the oracle here.
 
-use optri::greedy::{
+use optri::internals::{
     greedy_edges_by, greedy_naive_edges, greedy_triangulation, is_convex_position, is_semicircular,
     GreedyAlgorithm,
 };

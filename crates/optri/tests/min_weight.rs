@@ -235,7 +235,7 @@ fn min_weight_equals_the_oracle_dp_and_bounds_the_greedy_triangulation() {
         let ps = PointSet::new(&pts).unwrap();
         let d = ps.points();
         if case % 5 < 2 {
-            assert!(optri::greedy::is_convex_position(&ps), "case {case}");
+            assert!(optri::internals::is_convex_position(&ps), "case {case}");
         }
         let polygon = oracle_polygon(d);
         let (oracle, tris, is_unique) =
@@ -322,14 +322,15 @@ fn greedy_matches_the_oracle_greedy_on_small_sets() {
 fn min_weight_rejects_non_convex_input_clearly() {
     let ps = PointSet::new(&[[0.0, 0.0], [4.0, 0.0], [0.0, 4.0], [1.0, 1.0]]).unwrap();
     match min_weight(&ps) {
-        Err(Error::Unsupported(msg)) => {
+        Err(e @ Error::Unsupported { .. }) => {
+            let msg = e.to_string();
             assert!(msg.contains("convex position"), "{msg}");
         }
         other => panic!("expected Unsupported, got {other:?}"),
     }
     assert!(matches!(
         triangulate(&ps, Criterion::MinWeight),
-        Err(Error::Unsupported(_))
+        Err(Error::Unsupported { .. })
     ));
 }
 
@@ -337,12 +338,13 @@ fn min_weight_rejects_non_convex_input_clearly() {
 fn too_many_points_is_a_clear_unsupported_error() {
     // 4001 integer points on the parabola y = x²: convex position, but past
     // the cubic program's limit.
-    let pts: Vec<[f64; 2]> = (0..=optri::min_weight::MAX_POINTS as i64)
+    let pts: Vec<[f64; 2]> = (0..=optri::internals::MIN_WEIGHT_MAX_POINTS as i64)
         .map(|x| [x as f64, (x * x) as f64])
         .collect();
     let ps = optri::PointSet::new(&pts).unwrap();
     match optri::min_weight(&ps) {
-        Err(optri::Error::Unsupported(why)) => {
+        Err(e @ optri::Error::Unsupported { .. }) => {
+            let why = e.to_string();
             assert!(why.contains("limited to 4000"), "{why}")
         }
         other => panic!("expected an Unsupported error, got {other:?}"),

@@ -2,8 +2,9 @@
 //! an exhaustive search over all triangulations (n ≤ 9), Delaunay, the
 //! paper's examples, and (for the fast polygon algorithm) the cubic DP.
 
+use optri::internals::minmax_length_cubic;
 use optri::kernel::{compare_lengths, orient_sign, Point};
-use optri::{minmax_length, minmax_length_cubic, PointSet, Triangulation};
+use optri::{minmax_length, PointSet, Triangulation};
 use rand::{rngs::StdRng, Rng, SeedableRng};
 use std::cmp::Ordering;
 
@@ -144,7 +145,7 @@ fn exhaustive_minmax(ps: &PointSet) -> [Point; 2] {
 /// The §5.1/§6 algorithm on every region, however small (the product hands
 /// regions below `SMALL_REGION` corners to the cubic program).
 fn quadratic_only(ps: &PointSet) -> Triangulation {
-    optri::minmax_length::minmax_length_with(ps, 0).unwrap()
+    optri::internals::minmax_length_with(ps, 0).unwrap()
 }
 
 fn check_against_exhaustive(points: &[Point]) {
@@ -170,7 +171,7 @@ fn check_against_exhaustive(points: &[Point]) {
 
 /// The quadratic algorithm never had to fall back to the cubic program.
 fn no_fallbacks(what: impl std::fmt::Debug) {
-    let n = optri::minmax_length::FALLBACKS.load(std::sync::atomic::Ordering::Relaxed);
+    let n = optri::internals::FALLBACKS.load(std::sync::atomic::Ordering::Relaxed);
     assert_eq!(n, 0, "fallbacks to the cubic program (last: {what:?})");
 }
 
@@ -446,7 +447,7 @@ fn the_tests_exercise_every_branch() {
             .collect();
         same_optimum(&pts, "uniform 3000 for Case 2 pockets");
     }
-    use optri::minmax_length::{
+    use optri::internals::{
         CASE_1, CASE_2, CASE_2_HULL_FALLBACKS, CASE_2_POCKETS_BY_5_1, CASE_2_POCKETS_BY_FAN_OUT,
         CASE_2_POCKET_FALLBACKS, COUNTERS, FLAT_TRIANGLES, REGIONS_CERTIFIED_BY_BOUND,
         SMALL_REGIONS_BY_DP, SMALL_REGIONS_CERTIFIED,

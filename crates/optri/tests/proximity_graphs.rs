@@ -427,7 +427,7 @@ fn planar_graph_faces_of_hull_with_rng_or_mst() {
             edges.sort_unstable();
             edges.dedup();
             let expected = normalized_cycles(oracle::bounded_faces(pts, &edges));
-            let graph = optri::planar_graph::PlanarGraph::new(pts, &edges);
+            let graph = optri::internals::PlanarGraph::new(pts, &edges);
             let got = normalized_cycles(
                 graph
                     .bounded_faces(pts)

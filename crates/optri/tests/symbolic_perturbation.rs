@@ -2,7 +2,7 @@
 //! the perturbed predicates as polynomials in ε with exact rational
 //! coefficients (`optri_oracle::symbolic`), on thousands of degenerate cases.
 
-use optri::kernel::symbolic::{compare_lengths_symbolic, orient_symbolic, segment_order};
+use optri::kernel::{compare_lengths_symbolic, orient_symbolic, segment_order};
 use optri_oracle as oracle;
 use rand::rngs::StdRng;
 use rand::seq::SliceRandom;

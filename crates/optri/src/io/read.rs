@@ -10,7 +10,7 @@
 //! [`crate::kernel`] is rejected with its line.
 
 use crate::error::{Error, Result};
-use crate::kernel::{Point, MAX_COORDINATE, MIN_COORDINATE};
+use crate::kernel::{self, CoordinateProblem, Point, MAX_COORDINATE, MIN_COORDINATE};
 use serde_json::Value;
 use std::path::Path;
 
@@ -78,20 +78,18 @@ impl InputFormat {
     /// the aliases `txt`, `tsp`, `json`).
     ///
     /// # Errors
-    /// [`Error::Unsupported`] listing the available names.
+    /// [`Error::UnknownName`] listing the available names.
     pub fn from_name(name: &str) -> Result<Self> {
         match name.to_ascii_lowercase().as_str() {
             "text" | "txt" | "xy" | "csv" => Ok(InputFormat::Text),
             "node" => Ok(InputFormat::Node),
             "tsplib" | "tsp" => Ok(InputFormat::Tsplib),
             "geojson" | "json" => Ok(InputFormat::GeoJson),
-            _ => {
-                let names: Vec<&str> = Self::ALL.iter().map(|f| f.name()).collect();
-                Err(Error::Unsupported(format!(
-                    "unknown input format '{name}'; available: {}",
-                    names.join(", ")
-                )))
-            }
+            _ => Err(Error::UnknownName {
+                kind: "input format",
+                name: name.to_string(),
+                available: Self::ALL.iter().map(|f| f.name()).collect(),
+            }),
         }
     }
 
@@ -170,23 +168,18 @@ fn coordinate(token: &str, line: usize) -> Result<f64> {
 }
 
 fn check_coordinate(value: f64, token: &str, line: usize) -> Result<f64> {
-    if !value.is_finite() {
-        return Err(parse(
-            line,
-            format!("coordinate '{token}' is not a finite number"),
-        ));
-    }
-    let a = value.abs();
-    if a != 0.0 && !(MIN_COORDINATE..=MAX_COORDINATE).contains(&a) {
-        return Err(parse(
+    kernel::check_coordinate(value).map_err(|problem| match problem {
+        CoordinateProblem::NonFinite => {
+            parse(line, format!("coordinate '{token}' is not a finite number"))
+        }
+        CoordinateProblem::OutOfRange => parse(
             line,
             format!(
                 "coordinate '{token}' is outside the exact range (|v| must be 0 or between \
                  {MIN_COORDINATE:e} and {MAX_COORDINATE:e}); rescale the input"
             ),
-        ));
-    }
-    Ok(value)
+        ),
+    })
 }
 
 /// The part of a line before any `#` comment.

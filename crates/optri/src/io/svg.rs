@@ -11,7 +11,7 @@
 //! title as one `<text class="title" …>`, so tests can count and read them.
 
 use crate::kernel::{metrics, Point};
-use crate::triangulation::Triangulation;
+use crate::structures::Triangulation;
 use std::fmt::Write;
 
 /// Plot width of one panel, pixels.

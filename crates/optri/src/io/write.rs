@@ -11,8 +11,8 @@
 use super::svg::{graph_to_svg, triangulation_to_svg};
 use crate::error::{Error, Result};
 use crate::kernel::Point;
-use crate::point_set::PointSet;
-use crate::triangulation::Triangulation;
+use crate::structures::PointSet;
+use crate::structures::Triangulation;
 use serde_json::{json, Value};
 use std::fmt::Write;
 use std::path::{Path, PathBuf};
@@ -49,7 +49,7 @@ impl OutputFormat {
             Some("svg") => Ok(OutputFormat::Svg),
             Some("ele") => Ok(OutputFormat::Triangle),
             Some("geojson") => Ok(OutputFormat::GeoJson),
-            _ => Err(Error::Unsupported(format!(
+            _ => Err(Error::Io(format!(
                 "cannot write '{}': unknown output extension; supported: {SUPPORTED_OUTPUTS}",
                 path.display()
             ))),
@@ -279,7 +279,7 @@ pub fn write_graph(points: &[Point], edges: &[[u32; 2]], title: &str, path: &Pat
         OutputFormat::Json => write_file(path, &pretty(&graph_to_json(points, edges))),
         OutputFormat::GeoJson => write_file(path, &pretty(&graph_to_geojson(points, edges))),
         OutputFormat::Svg => write_file(path, &graph_to_svg(points, edges, title)),
-        OutputFormat::Triangle => Err(Error::Unsupported(format!(
+        OutputFormat::Triangle => Err(Error::Io(format!(
             "cannot write '{}': a graph is not a triangulation; use .svg, .json or .geojson",
             path.display()
         ))),

@@ -98,11 +98,6 @@ impl Expansion {
             Some(_) => -1,
         }
     }
-
-    /// The sum rounded to the nearest `f64` (approximately: components summed).
-    pub fn approximate(&self) -> f64 {
-        self.components.iter().sum()
-    }
 }
 
 /// The exact sign of `terms[0] + terms[1] + …`.

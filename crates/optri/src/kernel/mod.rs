@@ -1,8 +1,10 @@
 //! The exact geometry kernel: predicates, the symbolic tie-break, lunes and
-//! reporting metrics.
+//! reporting metrics. Layer 0: it imports nothing else of the crate.
 //!
 //! Every combinatorial decision in optri (orientation, in-circle, which of two
-//! lengths or areas is larger, lune membership) is made here, exactly.
+//! lengths, areas or angles is larger, lune membership, segment crossings) is
+//! made here, exactly. Signs are `i32` in `{-1, 0, 1}`; comparisons return
+//! [`std::cmp::Ordering`].
 //!
 //! # Coordinate range
 //! Exactness of the expansion arithmetic needs every product of coordinate
@@ -13,11 +15,11 @@
 //! at most 2²⁰², so the degree-4 in-circle expansions stay within
 //! `[2⁻⁷⁷⁶, 2⁸⁰⁸]`, far from the subnormal and overflow limits.
 
-pub mod expansion;
-pub mod lune;
+pub(crate) mod expansion;
+mod lune;
 pub mod metrics;
-pub mod predicates;
-pub mod symbolic;
+mod predicates;
+mod symbolic;
 
 /// A point in the plane, `[x, y]`.
 pub type Point = [f64; 2];
@@ -29,9 +31,31 @@ pub const MIN_COORDINATE: f64 = 1.793662034335766e-43; // 2^-142
 
 pub use lune::{in_half_lune, in_half_lune_symbolic, in_lune, in_lune_symbolic};
 pub use predicates::{
-    compare_areas, compare_lengths, dot_sign, incircle_sign, orient, orient_sign, Orientation,
+    compare_angles, compare_areas, compare_lengths, dot_sign, incircle_sign, on_open_segment,
+    orient_sign, properly_cross, segments_intersect,
 };
-pub use symbolic::{compare_lengths_symbolic, orient_symbolic, segment_order};
+pub use symbolic::{compare_lengths_symbolic, height_sign, orient_symbolic, segment_order};
+
+/// Why a coordinate is not accepted (see the module docs for the range).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum CoordinateProblem {
+    /// NaN or infinite.
+    NonFinite,
+    /// Non-zero with `|v|` below [`MIN_COORDINATE`] or above [`MAX_COORDINATE`].
+    OutOfRange,
+}
+
+/// Checks one coordinate against the exact range of the kernel.
+#[inline]
+pub fn check_coordinate(v: f64) -> Result<f64, CoordinateProblem> {
+    if !v.is_finite() {
+        Err(CoordinateProblem::NonFinite)
+    } else if v != 0.0 && !(MIN_COORDINATE..=MAX_COORDINATE).contains(&v.abs()) {
+        Err(CoordinateProblem::OutOfRange)
+    } else {
+        Ok(v)
+    }
+}
 
 #[cfg(test)]
 mod tests {

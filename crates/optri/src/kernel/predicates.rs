@@ -12,51 +12,17 @@ use std::cmp::Ordering;
 /// Unit roundoff of `f64` (2⁻⁵³).
 const U: f64 = f64::EPSILON * 0.5;
 
-/// Which side of a directed line a point lies on.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum Orientation {
-    /// The point is to the **left** (the three points turn counter-clockwise).
-    CounterClockwise,
-    /// The point is to the **right** (clockwise turn).
-    Clockwise,
-    /// The three points are **collinear**.
-    Collinear,
-}
-
-impl Orientation {
-    /// `1`, `-1` or `0`.
-    pub fn sign(self) -> i32 {
-        match self {
-            Orientation::CounterClockwise => 1,
-            Orientation::Clockwise => -1,
-            Orientation::Collinear => 0,
-        }
-    }
-}
-
 #[inline]
 fn coord(p: Point) -> robust::Coord<f64> {
     robust::Coord { x: p[0], y: p[1] }
-}
-
-/// Exact orientation of `c` relative to the directed line `a → b`.
-#[inline]
-pub fn orient(a: Point, b: Point, c: Point) -> Orientation {
-    let d = robust::orient2d(coord(a), coord(b), coord(c));
-    if d > 0.0 {
-        Orientation::CounterClockwise
-    } else if d < 0.0 {
-        Orientation::Clockwise
-    } else {
-        Orientation::Collinear
-    }
 }
 
 /// Exact sign of the orientation determinant: `1` if `a, b, c` turn
 /// counter-clockwise, `-1` if clockwise, `0` if collinear.
 #[inline]
 pub fn orient_sign(a: Point, b: Point, c: Point) -> i32 {
-    orient(a, b, c).sign()
+    let d = robust::orient2d(coord(a), coord(b), coord(c));
+    (d > 0.0) as i32 - (d < 0.0) as i32
 }
 
 /// Exact in-circle test: `1` if `d` lies strictly inside the circle through
@@ -146,6 +112,62 @@ pub fn compare_areas(tri1: [Point; 3], tri2: [Point; 3]) -> Ordering {
     e.sign().cmp(&0)
 }
 
+/// Exact counter-clockwise angular order of directions `a - o` and `b - o`,
+/// starting from the positive x-axis.
+pub fn compare_angles(o: Point, a: Point, b: Point) -> Ordering {
+    let half = |p: Point| -> u8 {
+        // 0 for angles in [0, π), 1 for [π, 2π).
+        if p[1] > o[1] || (p[1] == o[1] && p[0] > o[0]) {
+            0
+        } else {
+            1
+        }
+    };
+    half(a)
+        .cmp(&half(b))
+        .then_with(|| match orient_sign(o, a, b) {
+            1 => Ordering::Less,
+            -1 => Ordering::Greater,
+            // Same ray (a farther or nearer) or opposite rays already split by half.
+            _ => {
+                debug_assert!(dot_sign(o, a, b) > 0 || half(a) != half(b));
+                Ordering::Equal
+            }
+        })
+}
+
+/// Exact: do the open segments `ab` and `cd` cross in a single interior point?
+#[inline]
+pub fn properly_cross(a: Point, b: Point, c: Point, d: Point) -> bool {
+    let (abc, abd) = (orient_sign(a, b, c), orient_sign(a, b, d));
+    if abc * abd >= 0 {
+        return false;
+    }
+    orient_sign(c, d, a) * orient_sign(c, d, b) < 0
+}
+
+/// Exact: does `z` lie on the open segment `ab`?
+#[inline]
+pub fn on_open_segment(z: Point, a: Point, b: Point) -> bool {
+    orient_sign(a, b, z) == 0 && dot_sign(z, a, b) < 0
+}
+
+/// Exact: do the closed segments `ab` and `cd` share a point? Collinear
+/// segments intersect iff their coordinate intervals overlap (the same test
+/// on x and on y, so vertical segments need no special case).
+pub fn segments_intersect(a: Point, b: Point, c: Point, d: Point) -> bool {
+    let (abc, abd) = (orient_sign(a, b, c), orient_sign(a, b, d));
+    let (cda, cdb) = (orient_sign(c, d, a), orient_sign(c, d, b));
+    if abc * abd > 0 || cda * cdb > 0 {
+        return false;
+    }
+    if abc != 0 || abd != 0 || cda != 0 || cdb != 0 {
+        return true;
+    }
+    // All four collinear: compare the intervals exactly (min/max never round).
+    (0..2).all(|k| a[k].min(b[k]) <= c[k].max(d[k]) && c[k].min(d[k]) <= a[k].max(b[k]))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -157,11 +179,11 @@ mod tests {
         let a = [0.5, 0.5];
         let b = [12.0, 12.0];
         let c = [24.0, 24.0];
-        assert_eq!(orient(a, b, c), Orientation::Collinear);
+        assert_eq!(orient_sign(a, b, c), 0);
         let c_up = [24.0, f64::from_bits(24f64.to_bits() + 1)];
-        assert_eq!(orient(a, b, c_up), Orientation::CounterClockwise);
+        assert_eq!(orient_sign(a, b, c_up), 1);
         let c_down = [24.0, f64::from_bits(24f64.to_bits() - 1)];
-        assert_eq!(orient(a, b, c_down), Orientation::Clockwise);
+        assert_eq!(orient_sign(a, b, c_down), -1);
     }
 
     #[test]

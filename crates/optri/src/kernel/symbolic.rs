@@ -23,7 +23,7 @@
 //! consistent: perturbed lengths are pairwise distinct and perturbed
 //! orientations are never zero, for *distinct* input points.
 
-use super::expansion::sign_of_sum;
+use super::expansion::{sign_of_sum, two_diff, Expansion};
 use super::predicates::{compare_lengths, orient_sign};
 use super::Point;
 use std::cmp::Ordering;
@@ -143,6 +143,80 @@ pub fn compare_lengths_symbolic(points: &[Point], ab: [u32; 2], cd: [u32; 2]) ->
 /// order of the two endpoints.
 pub fn segment_order(points: &[Point]) -> impl Fn(&[u32; 2], &[u32; 2]) -> Ordering + '_ {
     move |s, t| compare_lengths_symbolic(points, *s, *t)
+}
+
+/// Sign of `(q − p) × (x − y)` under the kernel's perturbation `S′`.
+///
+/// For `x`, `y` on the right of `p → q` it is positive iff `x` is closer to
+/// the line `pq` than `y`. Ties are broken by the first non-zero coefficient
+/// of the ε-expansion, monomials ordered as in [`crate::kernel::symbolic`]
+/// (`ε_r = ε^(3^r)`, rank `2m` for `y_m`, `2m + 1` for `x_m`). Needs four
+/// distinct indices, except `x == y` which gives 0.
+pub fn height_sign(points: &[Point], p: u32, q: u32, x: u32, y: u32) -> i32 {
+    if x == y {
+        return 0;
+    }
+    let pt = |m: u32| points[m as usize];
+    let (pp, pq, px, py) = (pt(p), pt(q), pt(x), pt(y));
+    // Floating-point filter: four rounded differences, two products and a
+    // difference stay within 8u of the magnitudes; 1e-15 is a safe margin.
+    let (ab, cd) = (
+        (pq[0] - pp[0]) * (px[1] - py[1]),
+        (pq[1] - pp[1]) * (px[0] - py[0]),
+    );
+    let approx = ab - cd;
+    if approx.abs() > 1e-15 * (ab.abs() + cd.abs()) {
+        return if approx > 0.0 { 1 } else { -1 };
+    }
+    let mut e = Expansion::new();
+    e.add_two_term_product(two_diff(pq[0], pp[0]), two_diff(px[1], py[1]), 1.0);
+    e.add_two_term_product(two_diff(pq[1], pp[1]), two_diff(px[0], py[0]), -1.0);
+    let exact = e.sign();
+    if exact != 0 {
+        return exact;
+    }
+    let ry = |m: u32| 2 * m as u64;
+    let rx = |m: u32| 2 * m as u64 + 1;
+    let sgn = |a: f64, b: f64| (a > b) as i32 - (a < b) as i32;
+    // D = A·B − C·E, A = q_x − p_x, B = x_y − y_y, C = q_y − p_y, E = x_x − y_x.
+    let (a, b) = (sgn(pq[0], pp[0]), sgn(px[1], py[1]));
+    let (c, d) = (sgn(pq[1], pp[1]), sgn(px[0], py[0]));
+    let linear = [
+        (rx(q), b),
+        (rx(p), -b),
+        (ry(x), a),
+        (ry(y), -a),
+        (ry(q), -d),
+        (ry(p), d),
+        (rx(x), -c),
+        (rx(y), c),
+    ];
+    let pairs = [
+        (rx(q), ry(x), 1),
+        (rx(q), ry(y), -1),
+        (rx(p), ry(x), -1),
+        (rx(p), ry(y), 1),
+        (ry(q), rx(x), -1),
+        (ry(q), rx(y), 1),
+        (ry(p), rx(x), 1),
+        (ry(p), rx(y), -1),
+    ];
+    // Exponent order: compare the largest rank first; a single variable
+    // precedes a pair with the same largest rank.
+    let mut best: Option<((u64, Option<u64>), i32)> = None;
+    let mut consider = |key: (u64, Option<u64>), s: i32| {
+        if s != 0 && best.map_or(true, |(k, _)| key < k) {
+            best = Some((key, s));
+        }
+    };
+    for (r, s) in linear {
+        consider((r, None), s);
+    }
+    for (r1, r2, s) in pairs {
+        consider((r1.max(r2), Some(r1.min(r2))), s);
+    }
+    best.expect("distinct points have a non-zero perturbed cross product")
+        .1
 }
 
 #[cfg(test)]

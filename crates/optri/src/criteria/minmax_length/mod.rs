@@ -11,7 +11,7 @@
 //!    the classes of Delaunay triangles joined across sides outside the
 //!    graph, each with its boundary walk (cracks traversed on both sides);
 //!    the planar-graph face walk
-//!    ([`crate::planar_graph::PlanarGraph::bounded_faces`]) is the test
+//!    ([`crate::structures::PlanarGraph::bounded_faces`]) is the test
 //!    reference for it.
 //! 3. Triangulate every region independently (rayon), assemble, and undo
 //!    the perturbation (§5.4, `repair_flat_triangles`).
@@ -121,21 +121,39 @@ pub(crate) mod fast;
 pub(crate) mod polygon;
 pub(crate) mod regions;
 
-use crate::criterion::{timed, Phase};
-use crate::delaunay::{delaunay_mesh, DelaunayGraph};
+use super::{CriterionInfo, Diagnostics, Optimality, Options, Requirement, Solved};
 use crate::error::Result;
-use crate::kernel::orient_sign;
-use crate::kernel::{compare_lengths, in_lune_symbolic, Point};
-use crate::point_set::PointSet;
-use crate::relative_neighborhood_graph::morton_order;
-use crate::triangulation::Triangulation;
+use crate::kernel::{compare_lengths, in_lune_symbolic, orient_sign, Point};
+use crate::parallel::prelude::*;
+use crate::spatial::morton_order;
+use crate::structures::{DelaunayGraph, PointSet, Triangulation};
+use crate::timing::{timed, Phase};
 use fast::{FastRegion, Mesh};
 use polygon::{ChordLengths, Region};
-use rayon::prelude::*;
 use regions::{LocalMesh, Regions};
 use std::cmp::Ordering::{Greater, Less};
 use std::collections::HashMap;
 use std::sync::atomic::{AtomicUsize, Ordering as AtomicOrdering};
+
+pub(crate) const INFO: CriterionInfo = CriterionInfo {
+    name: "minmax-length",
+    description: "minimises the longest edge",
+    optimality: Optimality::Exact,
+    requirement: Requirement::AnyPointSet,
+    options: &[],
+    reference: "H. Edelsbrunner & T. S. Tan, A quadratic time algorithm for the minmax \
+                length triangulation, FOCS 1991 / SIAM J. Comput. 1993",
+};
+
+pub(crate) fn solve(points: &PointSet, _: &Options, phases: &mut Vec<Phase>) -> Result<Solved> {
+    let (triangulation, algorithm) = minmax_length_timed(points, phases)?;
+    Ok(Solved {
+        triangulation,
+        algorithm,
+        optimality: Optimality::Exact,
+        diagnostics: Diagnostics::default(),
+    })
+}
 
 /// Is some perturbed point inside the perturbed lune of the Delaunay edge
 /// `pq`? Such a point lies in the *closed* disc `D(p, |pq|)`; by the
@@ -259,7 +277,7 @@ pub(crate) fn regions(points: &[Point], rng: &[[u32; 2]], hull: &[u32]) -> Vec<V
     }
     edges.sort_unstable();
     edges.dedup();
-    let graph = crate::planar_graph::PlanarGraph::new(points, &edges);
+    let graph = crate::structures::PlanarGraph::new(points, &edges);
     graph
         .bounded_faces(points)
         .into_iter()
@@ -271,6 +289,7 @@ pub(crate) fn regions(points: &[Point], rng: &[[u32; 2]], hull: &[u32]) -> Vec<V
 #[derive(Clone, Copy, PartialEq, Eq, Debug)]
 enum PolygonMethod {
     /// §3's cubic dynamic program.
+    #[cfg_attr(not(any(test, feature = "internals")), allow(dead_code))]
     Cubic,
     /// §5.1, §5.3 and §6 on the perturbed points, then §5.4's repair;
     /// regions with fewer than `cubic_below` corners use the exact cubic
@@ -361,7 +380,7 @@ fn run(points: &PointSet, method: PolygonMethod, phases: &mut Vec<Phase>) -> Res
     let order = timed(phases, "z-order", || morton_order(points.points()));
     let local: Vec<Point> = order.iter().map(|&o| points.points()[o as usize]).collect();
     let pts = local.as_slice();
-    let g = timed(phases, "delaunay", || delaunay_mesh(pts))?;
+    let g = timed(phases, "delaunay", || DelaunayGraph::with_topology(pts))?;
     let certify = matches!(method, PolygonMethod::Quadratic { certify: true, .. });
     // The Delaunay triangulation is optimal outright if no edge of it is
     // longer than the hull's longest edge, a lower bound needing no RNG.
@@ -564,6 +583,7 @@ const ALGORITHM: &str = "Edelsbrunner–Tan O(n²): Length-Lemma lower bound (lo
 
 /// The quadratic algorithm on every region with at least `cubic_below`
 /// corners (0 or 4: on all of them). For tests and benchmarks.
+#[cfg(any(test, feature = "internals"))]
 #[doc(hidden)]
 pub fn minmax_length_with(points: &PointSet, cubic_below: usize) -> Result<Triangulation> {
     run(
@@ -578,6 +598,7 @@ pub fn minmax_length_with(points: &PointSet, cubic_below: usize) -> Result<Trian
 
 /// Test reference, not the product: §3's straightforward method, the cubic
 /// dynamic program on every region of `ch(S) ∪ rng(S′)`, exact comparisons.
+#[cfg(any(test, feature = "internals"))]
 #[doc(hidden)]
 pub fn minmax_length_cubic(points: &PointSet) -> Result<Triangulation> {
     run(points, PolygonMethod::Cubic, &mut Vec::new())
@@ -673,8 +694,8 @@ fn repair_flat_triangles(points: &[Point], triangles: Vec<[u32; 3]>) -> Vec<[u32
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::convex_hull::hull_distinct;
-    use crate::delaunay::delaunay_graph;
+    use crate::spatial::convex_hull_cycle;
+    use crate::structures::DelaunayGraph;
 
     /// Canonical form of a cyclic corner sequence: its smallest rotation.
     fn canonical(cycle: &[u32]) -> Vec<u32> {
@@ -710,7 +731,7 @@ mod tests {
                 .collect();
             pts.sort_by(|a, b| a[0].total_cmp(&b[0]).then(a[1].total_cmp(&b[1])));
             pts.dedup();
-            let Ok(g) = delaunay_mesh(&pts) else {
+            let Ok(g) = DelaunayGraph::with_topology(&pts) else {
                 continue;
             };
             if g.triangles.is_empty() {
@@ -718,7 +739,7 @@ mod tests {
             }
             let flags = rng_perturbed_flags(&pts, &g);
             let edges = rng_perturbed(&pts, &g);
-            let mut want: Vec<Vec<u32>> = regions(&pts, &edges, &hull_distinct(&pts))
+            let mut want: Vec<Vec<u32>> = regions(&pts, &edges, &convex_hull_cycle(&pts))
                 .iter()
                 .map(|c| canonical(c))
                 .collect();
@@ -763,7 +784,7 @@ mod tests {
             let mut pts: Vec<Point> = (0..12).map(|_| [next(g) as f64, next(g) as f64]).collect();
             pts.sort_by(|a, b| a[0].total_cmp(&b[0]).then(a[1].total_cmp(&b[1])));
             pts.dedup();
-            let Ok(dg) = delaunay_graph(&pts) else {
+            let Ok(dg) = DelaunayGraph::new(&pts) else {
                 continue;
             };
             if pts.len() < 3 || dg.triangles.is_empty() {

@@ -1,12 +1,28 @@
-//! The [`Triangulation`] type: triangles over a [`PointSet`], exact
-//! validation, and quality measures.
+//! The [`Triangulation`] type: triangles over a [`PointSet`] covering a
+//! [`Domain`] (the convex hull of the points, or a simple polygon's
+//! interior), exact validation, and quality measures.
 
-use crate::convex_hull::hull_distinct;
 use crate::error::{Error, Result};
 use crate::kernel::{self, compare_lengths, orient_sign, Point};
-use crate::point_set::PointSet;
+use crate::spatial::convex_hull_cycle;
+use crate::structures::{PointSet, SimplePolygon};
+#[cfg(feature = "io")]
 use serde::Serialize;
 use std::collections::HashMap;
+
+/// The region a [`Triangulation`] covers.
+#[derive(Clone, Debug, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum Domain {
+    /// The convex hull of the point set; every distinct point is a vertex.
+    ConvexHull,
+    /// The interior of a simple polygon whose vertices are the point set:
+    /// the boundary cycle as input indices, counter-clockwise.
+    Polygon {
+        /// Ring positions (= input indices) in counter-clockwise order.
+        boundary: Vec<u32>,
+    },
+}
 
 /// A triangulation of a point set.
 ///
@@ -17,10 +33,12 @@ use std::collections::HashMap;
 pub struct Triangulation {
     point_set: PointSet,
     triangles: Vec<[u32; 3]>,
+    domain: Domain,
 }
 
 /// Quality measures of a triangulation (rounded values for reporting).
-#[derive(Clone, Debug, PartialEq, Serialize)]
+#[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "io", derive(Serialize))]
 pub struct Stats {
     /// Length of the longest edge.
     pub max_edge_length: f64,
@@ -40,7 +58,8 @@ pub struct Stats {
     pub triangles: usize,
     /// Number of edges.
     pub edges: usize,
-    /// Number of hull points (collinear boundary points included).
+    /// Number of boundary points: on the convex hull (collinear boundary
+    /// points included), or every vertex of a polygon domain.
     pub hull_points: usize,
 }
 
@@ -64,7 +83,22 @@ impl Triangulation {
         Self {
             point_set: point_set.clone(),
             triangles,
+            domain: Domain::ConvexHull,
         }
+    }
+
+    /// Wraps triangles of a simple polygon given as ring positions,
+    /// orienting each counter-clockwise.
+    #[allow(dead_code)] // the polygon criteria (area, min-weight) use it next
+    pub(crate) fn from_polygon_positions(
+        polygon: &SimplePolygon,
+        triangles: Vec<[u32; 3]>,
+    ) -> Self {
+        let mut t = Self::from_distinct(polygon.point_set(), triangles);
+        t.domain = Domain::Polygon {
+            boundary: polygon.counter_clockwise().to_vec(),
+        };
+        t
     }
 
     /// Builds a triangulation from triangles given as input indices and
@@ -73,9 +107,32 @@ impl Triangulation {
         let t = Self {
             point_set: point_set.clone(),
             triangles,
+            domain: Domain::ConvexHull,
         };
         t.validate()?;
         Ok(t)
+    }
+
+    /// Builds a triangulation of a simple polygon's interior from triangles
+    /// given as ring positions and checks it with [`validate`](Self::validate).
+    pub fn from_polygon_triangles(
+        polygon: &SimplePolygon,
+        triangles: Vec<[u32; 3]>,
+    ) -> Result<Self> {
+        let t = Self {
+            point_set: polygon.point_set().clone(),
+            triangles,
+            domain: Domain::Polygon {
+                boundary: polygon.counter_clockwise().to_vec(),
+            },
+        };
+        t.validate()?;
+        Ok(t)
+    }
+
+    /// The region this triangulation covers.
+    pub fn domain(&self) -> &Domain {
+        &self.domain
     }
 
     /// The validated point set.
@@ -149,7 +206,10 @@ impl Triangulation {
             max_angle_deg: 0.0,
             triangles: self.triangles.len(),
             edges: edges.len(),
-            hull_points: 2 * self.point_set.len() - 2 - self.triangles.len(),
+            hull_points: match &self.domain {
+                Domain::ConvexHull => 2 * self.point_set.len() - 2 - self.triangles.len(),
+                Domain::Polygon { boundary } => boundary.len(),
+            },
         };
         for t in &self.triangles {
             let [a, b, c] = t.map(|i| self.point(i));
@@ -164,17 +224,19 @@ impl Triangulation {
         stats
     }
 
-    /// Checks exactly that this is a triangulation of the point set.
+    /// Checks exactly that this is a triangulation of its [`Domain`].
     ///
     /// Verified: indices are in range and name first occurrences of merged
     /// duplicates; every triangle is strictly counter-clockwise (no flat
     /// triangles); no directed edge is used twice; the unpaired edges are
-    /// exactly the convex hull's edges (collinear hull points included);
-    /// around every vertex the triangles form one fan that turns once (interior)
-    /// or less than once (boundary), so no two triangles overlap; every distinct
-    /// point is a vertex; and the triangle count is `2n - h - 2`. A locally
-    /// injective triangulated disc whose boundary is the hull is embedded, so
-    /// no point can lie inside an edge or a triangle.
+    /// exactly the domain's boundary edges, counter-clockwise (the convex
+    /// hull's, collinear hull points included, or the polygon's); around every
+    /// vertex the triangles form one fan that turns once (interior) or less
+    /// than once (boundary), so no two triangles overlap; every distinct point
+    /// is a vertex; and the triangle count is `2n - h - 2` (`n - 2` for a
+    /// polygon). A locally injective triangulated disc whose boundary maps
+    /// one-to-one onto a simple closed curve is embedded, so no point can lie
+    /// inside an edge or a triangle.
     pub fn validate(&self) -> Result<()> {
         let bad = |m: String| Err(Error::InvalidTriangulation(m));
         let ps = &self.point_set;
@@ -222,7 +284,12 @@ impl Triangulation {
                 }
             }
         }
-        let hull = hull_distinct(pts);
+        let hull = match &self.domain {
+            Domain::ConvexHull => convex_hull_cycle(pts),
+            Domain::Polygon { boundary } => {
+                boundary.iter().map(|&i| ps.distinct_index(i)).collect()
+            }
+        };
         let h = hull.len();
         let mut boundary = 0usize;
         for &(u, v) in apex.keys() {
@@ -234,7 +301,7 @@ impl Triangulation {
             let (u, v) = (hull[i], hull[(i + 1) % h]);
             if !apex.contains_key(&(u, v)) || apex.contains_key(&(v, u)) {
                 return bad(format!(
-                    "hull edge ({}, {}) is not a boundary edge",
+                    "boundary edge ({}, {}) of the domain is not a boundary edge of the triangles",
                     ps.input_index(u),
                     ps.input_index(v)
                 ));
@@ -242,7 +309,7 @@ impl Triangulation {
         }
         if boundary != h {
             return bad(format!(
-                "{boundary} boundary edges, but the convex hull has {h}"
+                "{boundary} boundary edges, but the domain's boundary has {h}"
             ));
         }
         // Fans: at v, each triangle (v, a, b) turns from a to b.

@@ -244,9 +244,9 @@ fn side_towards(nb: &[u32; 3], t: u32) -> usize {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::convex_hull::hull_distinct;
-    use crate::delaunay::delaunay_graph;
     use crate::kernel::orient_sign;
+    use crate::spatial::convex_hull_cycle;
+    use crate::structures::DelaunayGraph;
     use rand::rngs::StdRng;
     use rand::{Rng, SeedableRng};
     use std::collections::HashMap;
@@ -265,7 +265,7 @@ mod tests {
     fn strictly_convex(mut pts: Vec<Point>) -> Vec<Point> {
         pts.sort_unstable_by(|p, q| p[0].total_cmp(&q[0]).then(p[1].total_cmp(&q[1])));
         pts.dedup();
-        let h = hull_distinct(&pts);
+        let h = convex_hull_cycle(&pts);
         let k = h.len();
         let p = |i: usize| pts[h[i % k] as usize];
         (0..k)
@@ -337,7 +337,7 @@ mod tests {
         dt.triangulate(pts, &polygon);
         let ours = check(pts, dt, pts.len() <= 300);
         let k = pts.len() as u32;
-        let mut spade: Vec<[u32; 2]> = delaunay_graph(pts)
+        let mut spade: Vec<[u32; 2]> = DelaunayGraph::new(pts)
             .unwrap()
             .edges
             .iter()

@@ -10,8 +10,8 @@
 //! once per side. The region's Delaunay triangles are also a feasible
 //! triangulation of it, which bounds the chords its optimum can use.
 
-use crate::delaunay::{DelaunayGraph, NO_TRIANGLE};
 use crate::kernel::{compare_lengths, orient_sign, Point};
+use crate::structures::{DelaunayGraph, NO_TRIANGLE};
 use std::cmp::Ordering;
 
 /// The Delaunay triangles grouped by region.

@@ -25,13 +25,34 @@ mod convex_delaunay;
 mod general;
 mod semicircular;
 
-use crate::convex_hull::hull_distinct;
-use crate::criterion::{Phase, Stopwatch};
+use super::{CriterionInfo, Diagnostics, Optimality, Options, Requirement, Solved};
 use crate::error::Result;
-use crate::kernel::{dot_sign, orient_sign, Point};
-use crate::planar_graph::PlanarGraph;
-use crate::point_set::PointSet;
-use crate::triangulation::Triangulation;
+use crate::kernel::{orient_sign, Point};
+use crate::spatial::convex_hull_cycle;
+use crate::structures::{PlanarGraph, PointSet, Triangulation};
+use crate::timing::{Phase, Stopwatch};
+
+pub(crate) const INFO: CriterionInfo = CriterionInfo {
+    name: "greedy",
+    description: "greedy: repeatedly adds the shortest segment crossing no earlier one",
+    optimality: Optimality::Exact,
+    requirement: Requirement::AnyPointSet,
+    options: &[],
+    reference: "C. Levcopoulos & A. Lingas, On approximation behavior of the greedy \
+                triangulation for convex polygons, Algorithmica 1987; M. T. Dickerson, \
+                R. L. S. Drysdale, S. A. McElfresh & E. Welzl, Fast greedy triangulation \
+                algorithms, 1997",
+};
+
+pub(crate) fn solve(points: &PointSet, _: &Options, phases: &mut Vec<Phase>) -> Result<Solved> {
+    let (triangulation, algorithm) = greedy_triangulation_timed(points, phases)?;
+    Ok(Solved {
+        triangulation,
+        algorithm: format!("{} ({})", algorithm.name(), algorithm.description()),
+        optimality: Optimality::Exact,
+        diagnostics: Diagnostics::default(),
+    })
+}
 
 /// Which greedy-triangulation algorithm ran.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -51,6 +72,21 @@ impl GreedyAlgorithm {
             GreedyAlgorithm::Semicircular => "semicircular",
             GreedyAlgorithm::Convex => "convex",
             GreedyAlgorithm::General => "general",
+        }
+    }
+
+    /// What the algorithm does, with its paper and bound.
+    pub fn description(self) -> &'static str {
+        match self {
+            GreedyAlgorithm::Semicircular => {
+                "ear heap for semicircular polygons, Levcopoulos-Lingas Thm 4.3, O(n log n)"
+            }
+            GreedyAlgorithm::Convex => {
+                "recursive splitting for convex position, Levcopoulos-Lingas Thm 4.2, expected O(n^2) time (Chew's convex-polygon Delaunay), O(n) space"
+            }
+            GreedyAlgorithm::General => {
+                "exact length rounds decided by crossing dependencies (DDMW-style candidates, closed-vertex retirement)"
+            }
         }
     }
 }
@@ -101,7 +137,7 @@ pub fn greedy(points: &PointSet) -> Result<Triangulation> {
 /// GT by one named algorithm, as distinct-index edges `[min, max]`, sorted.
 /// `Convex` and `Semicircular` return `None` when the input is not in
 /// strictly convex position / not semicircular. For tests and benchmarks.
-#[doc(hidden)]
+#[cfg(any(test, feature = "internals"))]
 pub fn greedy_edges_by(points: &PointSet, algorithm: GreedyAlgorithm) -> Option<Vec<[u32; 2]>> {
     let pts = points.points();
     let edges = match algorithm {
@@ -119,8 +155,9 @@ pub fn greedy_edges_by(points: &PointSet, algorithm: GreedyAlgorithm) -> Option<
 /// that crosses no added segment and contains no point, checking against
 /// every added segment. O(n³) worst case, O(n²) memory; distinct-index edges,
 /// sorted. Not for production use.
-#[doc(hidden)]
+#[cfg(any(test, feature = "internals"))]
 pub fn greedy_naive_edges(points: &PointSet) -> Vec<[u32; 2]> {
+    use crate::kernel::{on_open_segment, properly_cross};
     let pts = points.points();
     let n = pts.len() as u32;
     let mut segments: Vec<[u32; 2]> = Vec::with_capacity((n as usize) * (n as usize - 1) / 2);
@@ -149,22 +186,6 @@ pub fn greedy_naive_edges(points: &PointSet) -> Vec<[u32; 2]> {
     normalized(added)
 }
 
-/// Exact: do the open segments `ab` and `cd` cross in a single interior point?
-#[inline]
-pub(crate) fn properly_cross(a: Point, b: Point, c: Point, d: Point) -> bool {
-    let (abc, abd) = (orient_sign(a, b, c), orient_sign(a, b, d));
-    if abc * abd >= 0 {
-        return false;
-    }
-    orient_sign(c, d, a) * orient_sign(c, d, b) < 0
-}
-
-/// Exact: does `z` lie on the open segment `ab`?
-#[inline]
-pub(crate) fn on_open_segment(z: Point, a: Point, b: Point) -> bool {
-    orient_sign(a, b, z) == 0 && dot_sign(z, a, b) < 0
-}
-
 /// Sorts segments by the global order of [`crate::kernel::segment_order`].
 ///
 /// A rounded squared length orders almost everything; runs whose rounded
@@ -172,8 +193,9 @@ pub(crate) fn on_open_segment(z: Point, a: Point, b: Point) -> bool {
 /// the exact symbolic comparator. Rounded keys carry a relative error below
 /// 4·2⁻⁵³, so two segments in the wrong rounded order always have keys that
 /// close, and so does every key between them: they land in one run.
+#[cfg(any(test, feature = "internals"))]
 pub(crate) fn sort_segments(points: &[Point], segments: &mut Vec<[u32; 2]>) {
-    use rayon::prelude::*;
+    use crate::parallel::prelude::*;
     let mut keyed: Vec<(f64, [u32; 2])> = segments
         .par_iter()
         .map(|s| {
@@ -196,7 +218,7 @@ pub(crate) fn sort_keyed_runs<T: Send>(
     keyed: &mut [(f64, T)],
     exact: impl Fn(&T, &T) -> std::cmp::Ordering,
 ) {
-    use rayon::prelude::*;
+    use crate::parallel::prelude::*;
     keyed.par_sort_unstable_by(|x, y| x.0.total_cmp(&y.0));
     let mut start = 0;
     while start < keyed.len() {
@@ -212,6 +234,7 @@ pub(crate) fn sort_keyed_runs<T: Send>(
 }
 
 /// The edges of a set of triangles (each once).
+#[cfg(any(test, feature = "internals"))]
 fn edges_of(triangles: &[[u32; 3]]) -> Vec<[u32; 2]> {
     let mut edges: Vec<[u32; 2]> = triangles
         .iter()
@@ -224,6 +247,7 @@ fn edges_of(triangles: &[[u32; 3]]) -> Vec<[u32; 2]> {
 }
 
 /// Edges as sorted `[min, max]` pairs, sorted.
+#[cfg(any(test, feature = "internals"))]
 pub(crate) fn normalized(mut edges: Vec<[u32; 2]>) -> Vec<[u32; 2]> {
     for e in &mut edges {
         if e[0] > e[1] {
@@ -253,7 +277,7 @@ pub(crate) fn triangles_of(points: &[Point], edges: &[[u32; 2]]) -> Vec<[u32; 3]
 /// to the general algorithm, since Fact 3.1 and the splitting arguments of
 /// §4 assume no three vertices are collinear.
 pub(crate) fn convex_polygon(points: &[Point]) -> Option<Vec<u32>> {
-    let hull = hull_distinct(points);
+    let hull = convex_hull_cycle(points);
     if hull.len() != points.len() {
         return None;
     }
@@ -269,6 +293,7 @@ pub(crate) fn convex_polygon(points: &[Point]) -> Option<Vec<u32>> {
 }
 
 /// Is every point a vertex of a strictly convex polygon (no three collinear)?
+#[cfg(any(test, feature = "internals"))]
 pub fn is_convex_position(points: &PointSet) -> bool {
     convex_polygon(points.points()).is_some()
 }
@@ -276,6 +301,7 @@ pub fn is_convex_position(points: &PointSet) -> bool {
 /// Is the input a semicircular convex polygon (seed 003 §1: the two farthest
 /// vertices are the endpoints of an edge, and every other vertex lies strictly
 /// inside the circle with that edge as diameter)?
+#[cfg(any(test, feature = "internals"))]
 pub fn is_semicircular(points: &PointSet) -> bool {
     let pts = points.points();
     convex_polygon(pts).is_some_and(|poly| semicircular::base_rotation(pts, &poly).is_some())

@@ -1,15 +1,12 @@
-//! Delaunay triangulation, through the `spade` crate (exact predicates,
+//! The Delaunay triangulation of distinct points as plain arrays: triangles,
+//! undirected edges with their two apexes, CSR vertex adjacency and (on
+//! request) triangle adjacency. Built by the `spade` crate (exact predicates,
 //! O(n log n) bulk loading; chosen over delaunator, whose in-circle test is
-//! not exact — see BENCHMARKS.md).
-//!
-//! For cocircular points spade picks one Delaunay completion; every consumer
-//! in optri is correct for *any* completion (see the lemmas cited in
-//! [`mod@crate::relative_neighborhood_graph`] and [`mod@crate::gabriel_graph`]).
+//! not exact — see BENCHMARKS.md). For cocircular points spade picks one
+//! Delaunay completion; every consumer in optri is correct for any completion.
 
 use crate::error::{Error, Result};
 use crate::kernel::Point;
-use crate::point_set::PointSet;
-use crate::triangulation::Triangulation;
 use spade::handles::FixedVertexHandle;
 use spade::{DelaunayTriangulation, HasPosition, Point2, Triangulation as _};
 
@@ -36,7 +33,7 @@ pub(crate) struct DelaunayGraph {
     pub offsets: Vec<u32>,
     /// See `offsets`.
     pub adjacency: Vec<u32>,
-    /// Triangle adjacency, filled by [`delaunay_mesh`] only (empty otherwise).
+    /// Triangle adjacency, filled by [`DelaunayGraph::with_topology`] only (empty otherwise).
     pub topology: Topology,
 }
 
@@ -56,21 +53,21 @@ pub(crate) struct Topology {
 pub(crate) const NO_TRIANGLE: u32 = u32::MAX;
 
 impl DelaunayGraph {
+    /// Builds the Delaunay triangulation of distinct, not-all-collinear points.
+    pub fn new(points: &[Point]) -> Result<Self> {
+        build(points, false)
+    }
+
+    /// [`DelaunayGraph::new`] with its [`Topology`] filled in.
+    pub fn with_topology(points: &[Point]) -> Result<Self> {
+        build(points, true)
+    }
+
     /// Neighbours of vertex `v`.
     #[inline]
     pub fn neighbors(&self, v: u32) -> &[u32] {
         &self.adjacency[self.offsets[v as usize] as usize..self.offsets[v as usize + 1] as usize]
     }
-}
-
-/// Builds the Delaunay triangulation of distinct, not-all-collinear points.
-pub(crate) fn delaunay_graph(points: &[Point]) -> Result<DelaunayGraph> {
-    build(points, false)
-}
-
-/// [`delaunay_graph`] with its [`Topology`] filled in.
-pub(crate) fn delaunay_mesh(points: &[Point]) -> Result<DelaunayGraph> {
-    build(points, true)
 }
 
 fn build(points: &[Point], with_topology: bool) -> Result<DelaunayGraph> {
@@ -83,10 +80,10 @@ fn build(points: &[Point], with_topology: bool) -> Result<DelaunayGraph> {
         })
         .collect();
     let dt: DelaunayTriangulation<Vertex> = DelaunayTriangulation::bulk_load(vertices)
-        .map_err(|e| Error::Unsupported(format!("the Delaunay triangulation failed: {e:?}")))?;
+        .map_err(|e| Error::Internal(format!("spade's Delaunay bulk load failed: {e:?}")))?;
     if dt.num_vertices() != points.len() {
-        return Err(Error::Unsupported(format!(
-            "the Delaunay triangulation kept {} of {} distinct points",
+        return Err(Error::Internal(format!(
+            "spade's Delaunay triangulation kept {} of {} distinct points",
             dt.num_vertices(),
             points.len()
         )));
@@ -156,60 +153,4 @@ fn build(points: &[Point], with_topology: bool) -> Result<DelaunayGraph> {
         adjacency,
         topology,
     })
-}
-
-/// The Delaunay triangulation of `points`.
-///
-/// For cocircular points one Delaunay completion is returned (spade's).
-/// Runs in O(n log n) expected time.
-pub fn delaunay(points: &PointSet) -> Result<Triangulation> {
-    let g = delaunay_graph(points.points())?;
-    Ok(Triangulation::from_distinct(points, g.triangles))
-}
-
-/// The Delaunay edges of `points` as `[min, max]` input-index pairs, sorted.
-pub fn delaunay_edges(points: &PointSet) -> Result<Vec<[u32; 2]>> {
-    let g = delaunay_graph(points.points())?;
-    Ok(to_input_edges(points, g.edges.iter().map(|&(e, _)| e)))
-}
-
-/// Maps distinct-index edges to sorted `[min, max]` input-index pairs.
-pub(crate) fn to_input_edges(
-    points: &PointSet,
-    edges: impl Iterator<Item = [u32; 2]>,
-) -> Vec<[u32; 2]> {
-    let mut out: Vec<[u32; 2]> = edges
-        .map(|[u, v]| {
-            let (a, b) = (points.input_index(u), points.input_index(v));
-            [a.min(b), a.max(b)]
-        })
-        .collect();
-    out.sort_unstable();
-    out
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::kernel::incircle_sign;
-
-    #[test]
-    fn delaunay_is_valid_and_locally_delaunay_on_a_grid() {
-        let mut pts = Vec::new();
-        for x in 0..7 {
-            for y in 0..5 {
-                pts.push([x as f64 * 0.1, y as f64 * 0.1]);
-            }
-        }
-        let ps = PointSet::new(&pts).unwrap();
-        let t = delaunay(&ps).unwrap();
-        t.validate().unwrap();
-        let g = delaunay_graph(ps.points()).unwrap();
-        for &([u, v], [l, r]) in &g.edges {
-            if let (Some(l), Some(r)) = (l, r) {
-                let p = |i: u32| ps.points()[i as usize];
-                assert!(incircle_sign(p(u), p(v), p(l), p(r)) <= 0);
-            }
-        }
-    }
 }

@@ -15,11 +15,12 @@
 //! `p` induce a connected subgraph, and a depth-first search from `p` that only
 //! enters that disc visits every candidate of the lune.
 
-use crate::delaunay::{delaunay_graph, to_input_edges, DelaunayGraph};
 use crate::error::Result;
 use crate::kernel::{compare_lengths, Point};
-use crate::point_set::PointSet;
-use rayon::prelude::*;
+use crate::parallel::prelude::*;
+use crate::spatial::morton_order;
+use crate::structures::DelaunayGraph;
+use crate::structures::PointSet;
 use std::cmp::Ordering::Less;
 
 /// The Delaunay graph renumbered along a Z-order curve, so that points close
@@ -95,35 +96,6 @@ impl LocalGraph {
     }
 }
 
-/// Indices of `points` sorted by the Z-order (Morton) key of a 2¹⁶ × 2¹⁶ grid.
-pub(crate) fn morton_order(points: &[Point]) -> Vec<u32> {
-    let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
-    for p in points {
-        for k in 0..2 {
-            lo[k] = lo[k].min(p[k]);
-            hi[k] = hi[k].max(p[k]);
-        }
-    }
-    let spread = |mut v: u64| {
-        v = (v | (v << 8)) & 0x00FF_00FF;
-        v = (v | (v << 4)) & 0x0F0F_0F0F;
-        v = (v | (v << 2)) & 0x3333_3333;
-        (v | (v << 1)) & 0x5555_5555
-    };
-    let cell = |p: &Point, k: usize| {
-        // Scale by the extent; the result only orders the work, never decides.
-        let t = (p[k] - lo[k]) / (hi[k] - lo[k]);
-        ((t * 65535.0) as u64).min(65535)
-    };
-    let mut keyed: Vec<u64> = points
-        .iter()
-        .enumerate()
-        .map(|(i, p)| ((spread(cell(p, 0)) | (spread(cell(p, 1)) << 1)) << 32) | i as u64)
-        .collect();
-    keyed.sort_unstable();
-    keyed.into_iter().map(|k| k as u32).collect()
-}
-
 /// RNG edges as distinct-index pairs, from a Delaunay graph.
 pub(crate) fn rng_from_delaunay(points: &[Point], g: &DelaunayGraph) -> Vec<[u32; 2]> {
     let local = LocalGraph::new(points, g);
@@ -156,7 +128,7 @@ pub(crate) fn rng_from_delaunay(points: &[Point], g: &DelaunayGraph) -> Vec<[u32
 /// Runs in O(n log n) for the Delaunay triangulation plus, per Delaunay edge,
 /// a search over the points of one disc (O(1) on typical data, O(n) worst case).
 pub fn relative_neighborhood_graph(points: &PointSet) -> Result<Vec<[u32; 2]>> {
-    let g = delaunay_graph(points.points())?;
+    let g = DelaunayGraph::new(points.points())?;
     let e = rng_from_delaunay(points.points(), &g);
-    Ok(to_input_edges(points, e.into_iter()))
+    Ok(points.to_input_edges(e.into_iter()))
 }

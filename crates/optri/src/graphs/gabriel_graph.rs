@@ -10,10 +10,10 @@
 //! diameter of the cell's circle is a Gabriel edge (all cell vertices are on
 //! the diametral circle, none inside). Those are added explicitly.
 
-use crate::delaunay::{delaunay_graph, to_input_edges, DelaunayGraph};
 use crate::error::Result;
 use crate::kernel::{dot_sign, incircle_sign, Point};
-use crate::point_set::PointSet;
+use crate::structures::DelaunayGraph;
+use crate::structures::PointSet;
 use std::collections::{HashMap, HashSet};
 
 /// Gabriel edges as distinct-index pairs.
@@ -108,7 +108,7 @@ fn canonical(mut t: [u32; 3]) -> [u32; 3] {
 
 /// The Gabriel graph: edges as sorted `[min, max]` input-index pairs.
 pub fn gabriel_graph(points: &PointSet) -> Result<Vec<[u32; 2]>> {
-    let g = delaunay_graph(points.points())?;
+    let g = DelaunayGraph::new(points.points())?;
     let e = gabriel_from_delaunay(points.points(), &g);
-    Ok(to_input_edges(points, e.into_iter()))
+    Ok(points.to_input_edges(e.into_iter()))
 }

@@ -64,14 +64,14 @@
 //! remaining pairs of open vertices; that is quadratic in their number, which
 //! is why convex inputs go to [`super::convex`].
 
-use super::{on_open_segment, properly_cross, sort_keyed_runs};
-use crate::convex_hull::hull_distinct;
-use crate::criterion::{Phase, Stopwatch};
+use super::sort_keyed_runs;
 use crate::error::{Error, Result};
+use crate::kernel::compare_angles;
 use crate::kernel::{compare_lengths, orient_sign, Point};
-use crate::planar_graph::compare_angles;
-use crate::relative_neighborhood_graph::morton_order;
-use rayon::prelude::*;
+use crate::kernel::{on_open_segment, properly_cross};
+use crate::parallel::prelude::*;
+use crate::spatial::{bounding_box, convex_hull_cycle, morton_order};
+use crate::timing::{Phase, Stopwatch};
 use std::cmp::Ordering;
 
 const NONE: u32 = u32::MAX;
@@ -654,22 +654,6 @@ impl Renumbering<'_> {
     }
 }
 
-fn bounding_box(points: &[Point]) -> [f64; 4] {
-    let mut bbox = [
-        f64::INFINITY,
-        f64::INFINITY,
-        f64::NEG_INFINITY,
-        f64::NEG_INFINITY,
-    ];
-    for p in points {
-        bbox[0] = bbox[0].min(p[0]);
-        bbox[1] = bbox[1].min(p[1]);
-        bbox[2] = bbox[2].max(p[0]);
-        bbox[3] = bbox[3].max(p[1]);
-    }
-    bbox
-}
-
 fn greedy_rounds(
     points: &[Point],
     renumbering: &Renumbering,
@@ -679,7 +663,7 @@ fn greedy_rounds(
     let n = points.len();
     let bbox = bounding_box(points);
     let (w, h) = (bbox[2] - bbox[0], bbox[3] - bbox[1]);
-    let hull = hull_distinct(points);
+    let hull = convex_hull_cycle(points);
     let mut hull_prev = vec![NONE; n];
     let mut hull_next = vec![NONE; n];
     for i in 0..hull.len() {
@@ -790,8 +774,8 @@ fn greedy_rounds(
     }
     stopwatch.lap("later rounds");
     if g.edges != target {
-        return Err(Error::InvalidTriangulation(format!(
-            "internal error: the greedy triangulation has {} of {target} edges; please report this input",
+        return Err(Error::Internal(format!(
+            "the greedy triangulation has {} of {target} edges",
             g.edges
         )));
     }

@@ -16,12 +16,35 @@
 //! agree to within rounding, either may be returned (the first split vertex
 //! in polygon order wins exact `f64` ties).
 
-use crate::convex_hull::hull_distinct;
-use crate::error::{Error, Result};
+use super::{CriterionInfo, Diagnostics, Optimality, Options, Requirement, Solved};
+use crate::error::{Error, Result, UnsupportedReason};
 use crate::kernel::metrics::length;
 use crate::kernel::orient_sign;
-use crate::point_set::PointSet;
-use crate::triangulation::Triangulation;
+use crate::spatial::convex_hull_cycle;
+use crate::structures::PointSet;
+use crate::structures::Triangulation;
+use crate::timing::{timed, Phase};
+
+pub(crate) const INFO: CriterionInfo = CriterionInfo {
+    name: "min-weight",
+    description: "minimises the total edge length (points in convex position only)",
+    optimality: Optimality::UpToRounding,
+    requirement: Requirement::ConvexPosition,
+    options: &[],
+    reference: "G. T. Klincsek, Minimal triangulations of polygonal domains, 1980",
+};
+
+pub(crate) fn solve(points: &PointSet, _: &Options, phases: &mut Vec<Phase>) -> Result<Solved> {
+    let triangulation = timed(phases, "min-weight", || min_weight(points))?;
+    Ok(Solved {
+        triangulation,
+        algorithm:
+            "Klincsek dynamic program, O(n^3); optimal up to floating-point rounding of sums"
+                .to_string(),
+        optimality: Optimality::UpToRounding,
+        diagnostics: Diagnostics::default(),
+    })
+}
 
 /// Largest number of distinct points [`min_weight`] accepts (O(n²) memory).
 pub const MAX_POINTS: usize = 4000;
@@ -35,21 +58,25 @@ pub const MAX_POINTS: usize = 4000;
 /// time).
 pub fn min_weight(points: &PointSet) -> Result<Triangulation> {
     let pts = points.points();
-    let polygon = hull_distinct(pts);
+    let polygon = convex_hull_cycle(pts);
     if polygon.len() != pts.len() {
-        return Err(Error::Unsupported(format!(
-            "min-weight is only supported for points in convex position yet \
-             ({} of {} distinct points are interior to the convex hull)",
-            pts.len() - polygon.len(),
-            pts.len()
-        )));
+        return Err(Error::Unsupported {
+            criterion: "min-weight",
+            reason: UnsupportedReason::NotConvexPosition {
+                interior: pts.len() - polygon.len(),
+                distinct: pts.len(),
+            },
+        });
     }
     if pts.len() > MAX_POINTS {
-        return Err(Error::Unsupported(format!(
-            "min-weight (Klincsek's O(n³) program with O(n²) tables) is limited to {MAX_POINTS} \
-             points; this input has {} distinct points",
-            pts.len()
-        )));
+        return Err(Error::Unsupported {
+            criterion: "min-weight",
+            reason: UnsupportedReason::TooManyPoints {
+                limit: MAX_POINTS,
+                distinct: pts.len(),
+                because: "Klincsek's O(n³) program with O(n²) tables",
+            },
+        });
     }
     let k = polygon.len();
     let p = |i: usize| pts[polygon[i] as usize];
@@ -94,7 +121,7 @@ pub fn min_weight(points: &PointSet) -> Result<Triangulation> {
         }
         let m = split[i * k + j];
         if m == u32::MAX {
-            return Err(Error::InvalidTriangulation(
+            return Err(Error::Internal(
                 "the convex polygon has no triangulation without flat triangles".into(),
             ));
         }

@@ -1,7 +1,7 @@
 //! Validated input points: finite, in the exact range, duplicates merged.
 
 use crate::error::{Error, Result};
-use crate::kernel::{orient_sign, Point, MAX_COORDINATE, MIN_COORDINATE};
+use crate::kernel::{check_coordinate, orient_sign, CoordinateProblem, Point};
 use std::collections::HashMap;
 
 /// A validated set of points in the plane.
@@ -42,12 +42,14 @@ impl PointSet {
         }
         for (index, p) in points.iter().enumerate() {
             for &value in p {
-                if !value.is_finite() {
-                    return Err(Error::NonFiniteCoordinate { index, value });
-                }
-                let a = value.abs();
-                if a != 0.0 && !(MIN_COORDINATE..=MAX_COORDINATE).contains(&a) {
-                    return Err(Error::CoordinateOutOfRange { index, value });
+                match check_coordinate(value) {
+                    Ok(_) => {}
+                    Err(CoordinateProblem::NonFinite) => {
+                        return Err(Error::NonFiniteCoordinate { index, value })
+                    }
+                    Err(CoordinateProblem::OutOfRange) => {
+                        return Err(Error::CoordinateOutOfRange { index, value })
+                    }
                 }
             }
         }
@@ -91,6 +93,18 @@ impl PointSet {
             distinct_index,
             duplicates,
         })
+    }
+
+    /// Maps distinct-index edges to sorted `[min, max]` input-index pairs.
+    pub(crate) fn to_input_edges(&self, edges: impl Iterator<Item = [u32; 2]>) -> Vec<[u32; 2]> {
+        let mut out: Vec<[u32; 2]> = edges
+            .map(|[u, v]| {
+                let (a, b) = (self.input_index(u), self.input_index(v));
+                [a.min(b), a.max(b)]
+            })
+            .collect();
+        out.sort_unstable();
+        out
     }
 
     /// The distinct points, in order of first occurrence.

@@ -6,11 +6,11 @@
 //! ([`crate::kernel::compare_lengths_symbolic`]), so the tree is unique and
 //! reproducible.
 
-use crate::delaunay::{delaunay_graph, to_input_edges};
+use super::relative_neighborhood_graph::rng_from_delaunay;
 use crate::error::Result;
 use crate::kernel::segment_order;
-use crate::point_set::PointSet;
-use crate::relative_neighborhood_graph::rng_from_delaunay;
+use crate::structures::DelaunayGraph;
+use crate::structures::PointSet;
 
 /// Kruskal over candidate edges (distinct indices) in the symbolic length order.
 pub(crate) fn kruskal(points: &[crate::kernel::Point], candidates: Vec<[u32; 2]>) -> Vec<[u32; 2]> {
@@ -66,8 +66,8 @@ pub(crate) fn sort_by_length(
 /// The Euclidean minimum spanning tree: `n - 1` edges as sorted `[min, max]`
 /// input-index pairs (over the distinct points).
 pub fn minimum_spanning_tree(points: &PointSet) -> Result<Vec<[u32; 2]>> {
-    let g = delaunay_graph(points.points())?;
+    let g = DelaunayGraph::new(points.points())?;
     let rng = rng_from_delaunay(points.points(), &g);
     let tree = kruskal(points.points(), rng);
-    Ok(to_input_edges(points, tree.into_iter()))
+    Ok(points.to_input_edges(tree.into_iter()))
 }

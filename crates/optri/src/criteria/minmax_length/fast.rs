@@ -4,7 +4,7 @@
 //!
 //! | function | paper |
 //! |---|---|
-//! | [`height_sign`] | distance of a lune vertex from `pq` (§5.1 step 1) |
+//! | [`crate::kernel::height_sign`] | distance of a lune vertex from `pq` (§5.1 step 1) |
 //! | [`FastRegion::incomplete`] | §5.1, incomplete rng-polygons (1-Edge Lemma) |
 //! | [`FastRegion::visible`] | diagonals at a vertex in angular order (§6 step 1) |
 //! | [`FastRegion::shortest_expandable_2_edge`] | §6 steps 1–3 (stack scan, `p′ p″ q′ q″`, Crossing Lemma) |
@@ -20,88 +20,14 @@
 //! corner's fan, narrowing a wedge — O(k) per corner.
 
 use super::polygon::Region;
-use crate::delaunay::DelaunayGraph;
-use crate::kernel::expansion::{two_diff, Expansion};
+use crate::kernel::height_sign;
 use crate::kernel::{in_half_lune_symbolic, in_lune_symbolic, Point};
-use rayon::prelude::*;
+use crate::parallel::prelude::*;
+use crate::structures::DelaunayGraph;
 use std::cmp::Ordering;
 use std::collections::HashMap;
 
 const NONE: u32 = u32::MAX;
-
-/// Sign of `(q − p) × (x − y)` under the kernel's perturbation `S′`.
-///
-/// For `x`, `y` on the right of `p → q` it is positive iff `x` is closer to
-/// the line `pq` than `y`. Ties are broken by the first non-zero coefficient
-/// of the ε-expansion, monomials ordered as in [`crate::kernel::symbolic`]
-/// (`ε_r = ε^(3^r)`, rank `2m` for `y_m`, `2m + 1` for `x_m`). Needs four
-/// distinct indices, except `x == y` which gives 0.
-pub(crate) fn height_sign(points: &[Point], p: u32, q: u32, x: u32, y: u32) -> i32 {
-    if x == y {
-        return 0;
-    }
-    let pt = |m: u32| points[m as usize];
-    let (pp, pq, px, py) = (pt(p), pt(q), pt(x), pt(y));
-    // Floating-point filter: four rounded differences, two products and a
-    // difference stay within 8u of the magnitudes; 1e-15 is a safe margin.
-    let (ab, cd) = (
-        (pq[0] - pp[0]) * (px[1] - py[1]),
-        (pq[1] - pp[1]) * (px[0] - py[0]),
-    );
-    let approx = ab - cd;
-    if approx.abs() > 1e-15 * (ab.abs() + cd.abs()) {
-        return if approx > 0.0 { 1 } else { -1 };
-    }
-    let mut e = Expansion::new();
-    e.add_two_term_product(two_diff(pq[0], pp[0]), two_diff(px[1], py[1]), 1.0);
-    e.add_two_term_product(two_diff(pq[1], pp[1]), two_diff(px[0], py[0]), -1.0);
-    let exact = e.sign();
-    if exact != 0 {
-        return exact;
-    }
-    let ry = |m: u32| 2 * m as u64;
-    let rx = |m: u32| 2 * m as u64 + 1;
-    let sgn = |a: f64, b: f64| (a > b) as i32 - (a < b) as i32;
-    // D = A·B − C·E, A = q_x − p_x, B = x_y − y_y, C = q_y − p_y, E = x_x − y_x.
-    let (a, b) = (sgn(pq[0], pp[0]), sgn(px[1], py[1]));
-    let (c, d) = (sgn(pq[1], pp[1]), sgn(px[0], py[0]));
-    let linear = [
-        (rx(q), b),
-        (rx(p), -b),
-        (ry(x), a),
-        (ry(y), -a),
-        (ry(q), -d),
-        (ry(p), d),
-        (rx(x), -c),
-        (rx(y), c),
-    ];
-    let pairs = [
-        (rx(q), ry(x), 1),
-        (rx(q), ry(y), -1),
-        (rx(p), ry(x), -1),
-        (rx(p), ry(y), 1),
-        (ry(q), rx(x), -1),
-        (ry(q), rx(y), 1),
-        (ry(p), rx(x), 1),
-        (ry(p), rx(y), -1),
-    ];
-    // Exponent order: compare the largest rank first; a single variable
-    // precedes a pair with the same largest rank.
-    let mut best: Option<((u64, Option<u64>), i32)> = None;
-    let mut consider = |key: (u64, Option<u64>), s: i32| {
-        if s != 0 && best.map_or(true, |(k, _)| key < k) {
-            best = Some((key, s));
-        }
-    };
-    for (r, s) in linear {
-        consider((r, None), s);
-    }
-    for (r1, r2, s) in pairs {
-        consider((r1.max(r2), Some(r1.min(r2))), s);
-    }
-    best.expect("distinct points have a non-zero perturbed cross product")
-        .1
-}
 
 /// Delaunay triangles addressed by directed edge, with the region
 /// boundaries (`ch(S) ∪ rng(S′)`) marked.
@@ -114,7 +40,7 @@ pub(crate) struct Mesh<'a> {
 }
 
 impl<'a> Mesh<'a> {
-    /// `g` must come from [`crate::delaunay::delaunay_mesh`].
+    /// `g` must come from [`DelaunayGraph::with_topology`].
     pub fn new(g: &'a DelaunayGraph, rng: &'a [bool]) -> Self {
         let mut vertex_triangle = vec![NONE; g.offsets.len() - 1];
         for (t, tri) in g.triangles.iter().enumerate() {
@@ -204,7 +130,7 @@ type Res<T> = std::result::Result<T, Inconsistent>;
 
 /// `f` over all corners `0..k`, in parallel for large regions only (rayon's
 /// task overhead dominates on the many small regions of typical inputs).
-fn map_corners<T: Send, R: FromIterator<T> + rayon::iter::FromParallelIterator<T>>(
+fn map_corners<T: Send, R: FromIterator<T> + crate::parallel::prelude::FromParallelIterator<T>>(
     k: usize,
     f: impl Fn(usize) -> T + Sync + Send,
 ) -> R {
@@ -893,9 +819,9 @@ impl<'a> FastRegion<'a> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::convex_hull::hull_distinct;
-    use crate::delaunay::delaunay_mesh;
-    use crate::minmax_length::{regions, rng_perturbed, rng_perturbed_flags};
+    use crate::criteria::minmax_length::{regions, rng_perturbed, rng_perturbed_flags};
+    use crate::spatial::convex_hull_cycle;
+    use crate::structures::DelaunayGraph;
 
     fn lcg_points(n: usize, seed: u64, grid: Option<u64>) -> Vec<Point> {
         let mut s = seed;
@@ -923,10 +849,10 @@ mod tests {
     fn visibility_walk_matches_the_diagonal_test() {
         for (seed, grid) in [(1, None), (2, Some(6)), (3, None), (4, Some(10))] {
             let pts = lcg_points(60, seed, grid);
-            let g = delaunay_mesh(&pts).unwrap();
+            let g = DelaunayGraph::with_topology(&pts).unwrap();
             let rng = rng_perturbed(&pts, &g);
             let flags = rng_perturbed_flags(&pts, &g);
-            let hull = hull_distinct(&pts);
+            let hull = convex_hull_cycle(&pts);
             let mesh = Mesh::new(&g, &flags);
             for r in regions(&pts, &rng, &hull) {
                 let f = FastRegion::new(&pts, &r, &mesh).unwrap();
@@ -949,9 +875,9 @@ mod tests {
 #[cfg(test)]
 mod consistency_tests {
     use super::*;
-    use crate::convex_hull::hull_distinct;
-    use crate::delaunay::delaunay_mesh;
-    use crate::minmax_length::{regions, rng_perturbed, rng_perturbed_flags};
+    use crate::criteria::minmax_length::{regions, rng_perturbed, rng_perturbed_flags};
+    use crate::spatial::convex_hull_cycle;
+    use crate::structures::DelaunayGraph;
 
     #[test]
     fn random_regions_never_hit_an_inconsistency() {
@@ -969,10 +895,10 @@ mod consistency_tests {
             } else {
                 (0..8).map(|_| [next() * 100.0, next() * 100.0]).collect()
             };
-            let g = delaunay_mesh(&pts).unwrap();
+            let g = DelaunayGraph::with_topology(&pts).unwrap();
             let rng = rng_perturbed(&pts, &g);
             let flags = rng_perturbed_flags(&pts, &g);
-            let hull = hull_distinct(&pts);
+            let hull = convex_hull_cycle(&pts);
             let mesh = Mesh::new(&g, &flags);
             for r in regions(&pts, &rng, &hull) {
                 if r.len() == 3 {

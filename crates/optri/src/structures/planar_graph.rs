@@ -6,8 +6,7 @@
 //! their left, so a zero-width crack is traversed on both sides and a vertex
 //! may occur several times in one boundary.
 
-use crate::kernel::{dot_sign, orient_sign, Point};
-use std::cmp::Ordering;
+use crate::kernel::{compare_angles, Point};
 
 /// Half-edge representation of a plane graph on distinct points.
 ///
@@ -31,30 +30,8 @@ pub struct Face {
     pub vertices: Vec<u32>,
 }
 
-/// Exact counter-clockwise angular order of directions `a - o` and `b - o`,
-/// starting from the positive x-axis.
-pub fn compare_angles(o: Point, a: Point, b: Point) -> Ordering {
-    let half = |p: Point| -> u8 {
-        // 0 for angles in [0, π), 1 for [π, 2π).
-        if p[1] > o[1] || (p[1] == o[1] && p[0] > o[0]) {
-            0
-        } else {
-            1
-        }
-    };
-    half(a)
-        .cmp(&half(b))
-        .then_with(|| match orient_sign(o, a, b) {
-            1 => Ordering::Less,
-            -1 => Ordering::Greater,
-            // Same ray (a farther or nearer) or opposite rays already split by half.
-            _ => {
-                debug_assert!(dot_sign(o, a, b) > 0 || half(a) != half(b));
-                Ordering::Equal
-            }
-        })
-}
-
+// The walk accessors serve the tests (`internals`) and future face consumers.
+#[cfg_attr(not(any(test, feature = "internals")), allow(dead_code))]
 impl PlanarGraph {
     /// Builds the half-edge structure of `edges` (distinct-index pairs of a
     /// plane graph on `points`; no duplicate edges, no crossings).

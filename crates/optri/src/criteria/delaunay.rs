@@ -1,0 +1,28 @@
+//! The Delaunay triangulation as a criterion: it maximises the smallest
+//! angle (B. Delaunay, *Sur la sphère vide*, 1934; Sibson 1978). The graph
+//! itself is built in [`crate::graphs`]; this module only registers it.
+
+use super::{CriterionInfo, Diagnostics, Optimality, Options, Requirement, Solved};
+use crate::error::Result;
+use crate::graphs::delaunay;
+use crate::structures::PointSet;
+use crate::timing::{timed, Phase};
+
+pub(crate) const INFO: CriterionInfo = CriterionInfo {
+    name: "delaunay",
+    description: "maximises the smallest angle (empty circumcircles)",
+    optimality: Optimality::Exact,
+    requirement: Requirement::AnyPointSet,
+    options: &[],
+    reference: "B. Delaunay, Sur la sphère vide, 1934; bulk load by spade (exact predicates)",
+};
+
+pub(crate) fn solve(points: &PointSet, _: &Options, phases: &mut Vec<Phase>) -> Result<Solved> {
+    let triangulation = timed(phases, "delaunay", || delaunay(points))?;
+    Ok(Solved {
+        triangulation,
+        algorithm: "spade bulk-load Delaunay (exact predicates)".to_string(),
+        optimality: Optimality::Exact,
+        diagnostics: Diagnostics::default(),
+    })
+}

@@ -1,0 +1,137 @@
+//! Layer 5: one module per optimality criterion, named after it. Each
+//! module owns everything about its criterion — the algorithm, its
+//! [`CriterionInfo`] (name, description, [`Optimality`], [`Requirement`],
+//! citation) and a `solve` entry point with one signature — so that the
+//! registry ([`crate::Criterion`]) only lists them.
+//!
+//! | criterion | module | paper |
+//! |---|---|---|
+//! | `delaunay` | `delaunay` | Delaunay 1934; via spade |
+//! | `minmax-length` | `minmax_length` | Edelsbrunner & Tan 1991 |
+//! | `greedy` | `greedy` | Levcopoulos & Lingas 1990; Dickerson et al. 1997 |
+//! | `min-weight` | `min_weight` | Klincsek 1980 |
+
+pub(crate) mod delaunay;
+pub(crate) mod greedy;
+pub(crate) mod min_weight;
+pub(crate) mod minmax_length;
+
+use crate::error::Result;
+use crate::structures::{PointSet, Triangulation};
+use crate::timing::Phase;
+
+/// How good a criterion's answer is guaranteed to be.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[non_exhaustive]
+pub enum Optimality {
+    /// Provably optimal: every decision was made exactly.
+    Exact,
+    /// Optimal up to floating-point rounding of sums (e.g. of edge lengths):
+    /// when two candidates agree to within rounding either may be returned.
+    UpToRounding,
+    /// An approximation; `bound` states the proven guarantee in words.
+    Approximation {
+        /// The guarantee, e.g. `"within a factor 2 of the optimum"`.
+        bound: &'static str,
+    },
+}
+
+impl Optimality {
+    /// `"exact"`, `"up-to-rounding"` or `"approximation"`.
+    pub fn name(self) -> &'static str {
+        match self {
+            Optimality::Exact => "exact",
+            Optimality::UpToRounding => "up-to-rounding",
+            Optimality::Approximation { .. } => "approximation",
+        }
+    }
+
+    /// Is the result provably optimal?
+    pub fn is_exact(self) -> bool {
+        self == Optimality::Exact
+    }
+}
+
+/// What a criterion needs of its input.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[non_exhaustive]
+pub enum Requirement {
+    /// Any point set with three points not on one line.
+    AnyPointSet,
+    /// Every point on the convex hull (collinear boundary points allowed).
+    ConvexPosition,
+}
+
+/// Everything a front end needs to list and explain a criterion.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[non_exhaustive]
+pub struct CriterionInfo {
+    /// The registry name, e.g. `"minmax-length"`.
+    pub name: &'static str,
+    /// One line saying what is optimised.
+    pub description: &'static str,
+    /// The guarantee of the result on the inputs the criterion accepts.
+    pub optimality: Optimality,
+    /// What the input must satisfy.
+    pub requirement: Requirement,
+    /// Names of the [`Options`] fields the criterion reads (none yet).
+    pub options: &'static [&'static str],
+    /// The paper the algorithm follows: authors, year, title.
+    pub reference: &'static str,
+}
+
+/// Options of a criterion run. Empty today; norms for minmax length arrive
+/// here, so the type is `#[non_exhaustive]`: build it with
+/// `Options::default()`.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+#[non_exhaustive]
+pub struct Options {}
+
+/// Named counters a run reports, e.g. how many regions each method solved.
+/// They are part of the result (never global state), so concurrent runs do
+/// not mix and tests can assert on them.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct Diagnostics {
+    counters: Vec<(&'static str, u64)>,
+}
+
+impl Diagnostics {
+    /// The counter `name`, or `None` if this run did not report it.
+    pub fn get(&self, name: &str) -> Option<u64> {
+        self.counters
+            .iter()
+            .find(|(n, _)| *n == name)
+            .map(|&(_, v)| v)
+    }
+
+    /// All counters in the order the algorithm reported them.
+    pub fn iter(&self) -> impl Iterator<Item = (&'static str, u64)> + '_ {
+        self.counters.iter().copied()
+    }
+
+    /// Is there no counter?
+    pub fn is_empty(&self) -> bool {
+        self.counters.is_empty()
+    }
+
+    /// Adds `value` to the counter `name` (creating it).
+    #[allow(dead_code)] // the minmax-length counters move here next
+    pub(crate) fn add(&mut self, name: &'static str, value: u64) {
+        match self.counters.iter_mut().find(|(n, _)| *n == name) {
+            Some((_, v)) => *v += value,
+            None => self.counters.push((name, value)),
+        }
+    }
+}
+
+/// What a criterion's `solve` returns to the registry.
+pub(crate) struct Solved {
+    pub triangulation: Triangulation,
+    /// The algorithm that ran, in words (it may depend on the input).
+    pub algorithm: String,
+    pub optimality: Optimality,
+    pub diagnostics: Diagnostics,
+}
+
+/// The one signature of every criterion's entry point.
+pub(crate) type Solver = fn(&PointSet, &Options, &mut Vec<Phase>) -> Result<Solved>;

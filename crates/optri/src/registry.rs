@@ -1,0 +1,243 @@
+//! Layer 6: the registry the front ends share (CLI, demo, Python, web). It
+//! lists every criterion and every graph kind with its name and description,
+//! looks them up by name, and runs them: [`triangulate`] and [`graph`].
+//!
+//! Adding a criterion costs one variant of [`Criterion`] and one arm in
+//! [`Criterion::entry`]; everything else lives in the criterion's module.
+
+use crate::criteria::{self, CriterionInfo, Diagnostics, Optimality, Options, Solver};
+use crate::error::{Error, Result};
+use crate::graphs;
+use crate::structures::{PointSet, Triangulation};
+use crate::timing::{timed, Phase};
+
+/// An optimality criterion optri can triangulate by.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[non_exhaustive]
+pub enum Criterion {
+    /// The Delaunay triangulation (maximises the smallest angle).
+    Delaunay,
+    /// Minimises the longest edge (Edelsbrunner–Tan).
+    MinmaxLength,
+    /// The greedy triangulation (shortest compatible segment first).
+    Greedy,
+    /// Minimum total edge length (convex position only, for now).
+    MinWeight,
+}
+
+impl Criterion {
+    /// Every implemented criterion, in display order.
+    pub const ALL: &'static [Criterion] = &[
+        Criterion::Delaunay,
+        Criterion::MinmaxLength,
+        Criterion::Greedy,
+        Criterion::MinWeight,
+    ];
+
+    /// The criterion's description and entry point.
+    fn entry(self) -> (&'static CriterionInfo, Solver) {
+        match self {
+            Criterion::Delaunay => (&criteria::delaunay::INFO, criteria::delaunay::solve),
+            Criterion::MinmaxLength => (
+                &criteria::minmax_length::INFO,
+                criteria::minmax_length::solve,
+            ),
+            Criterion::Greedy => (&criteria::greedy::INFO, criteria::greedy::solve),
+            Criterion::MinWeight => (&criteria::min_weight::INFO, criteria::min_weight::solve),
+        }
+    }
+
+    /// Name, description, guarantee, requirements and reference.
+    pub fn info(self) -> &'static CriterionInfo {
+        self.entry().0
+    }
+
+    /// The command-line name, e.g. `"delaunay"`, `"minmax-length"`.
+    pub fn name(self) -> &'static str {
+        self.info().name
+    }
+
+    /// One line describing what is optimised.
+    pub fn description(self) -> &'static str {
+        self.info().description
+    }
+
+    /// Looks a criterion up by its [`name`](Self::name), ignoring ASCII case
+    /// (as input-format names do), so `DELAUNAY` is `delaunay`.
+    ///
+    /// # Errors
+    /// [`Error::UnknownName`] listing the available names.
+    pub fn from_name(name: &str) -> Result<Self> {
+        Self::ALL
+            .iter()
+            .copied()
+            .find(|c| c.name().eq_ignore_ascii_case(name))
+            .ok_or_else(|| Error::UnknownName {
+                kind: "criterion",
+                name: name.to_string(),
+                available: Self::ALL.iter().map(|c| c.name()).collect(),
+            })
+    }
+}
+
+/// The result of [`triangulate`]: the triangulation and how it was obtained.
+#[derive(Clone, Debug)]
+#[non_exhaustive]
+pub struct Solution {
+    /// The criterion that was optimised.
+    pub criterion: Criterion,
+    /// Whether the result is provably optimal for the criterion
+    /// (`optimality == Optimality::Exact`).
+    pub exact: bool,
+    /// The guarantee of this result.
+    pub optimality: Optimality,
+    /// The algorithm that ran (e.g. `"spade bulk load"`).
+    pub algorithm: String,
+    /// The triangulation.
+    pub triangulation: Triangulation,
+    /// Timed phases, in order.
+    pub phases: Vec<Phase>,
+    /// Counters the algorithm reported (may be empty).
+    pub diagnostics: Diagnostics,
+}
+
+/// Triangulates `points` by `criterion` with default [`Options`].
+pub fn triangulate(points: &PointSet, criterion: Criterion) -> Result<Solution> {
+    triangulate_with(points, criterion, &Options::default())
+}
+
+/// Triangulates `points` by `criterion` with `options`.
+///
+/// # Errors
+/// [`Error::Unsupported`] when the criterion cannot handle the input (see
+/// [`CriterionInfo::requirement`]); [`Error::Internal`] on a bug.
+pub fn triangulate_with(
+    points: &PointSet,
+    criterion: Criterion,
+    options: &Options,
+) -> Result<Solution> {
+    let mut phases = Vec::new();
+    let solved = (criterion.entry().1)(points, options, &mut phases)?;
+    Ok(Solution {
+        criterion,
+        exact: solved.optimality.is_exact(),
+        optimality: solved.optimality,
+        algorithm: solved.algorithm,
+        triangulation: solved.triangulation,
+        phases,
+        diagnostics: solved.diagnostics,
+    })
+}
+
+/// A proximity graph optri computes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[non_exhaustive]
+pub enum GraphKind {
+    /// The convex hull, collinear boundary points included (edges `[a, b]`
+    /// counter-clockwise).
+    Hull,
+    /// The Delaunay triangulation's edges.
+    Delaunay,
+    /// The relative neighbourhood graph.
+    Rng,
+    /// The Gabriel graph.
+    Gabriel,
+    /// The Euclidean minimum spanning tree.
+    Mst,
+}
+
+impl GraphKind {
+    /// Every graph kind, in display order.
+    pub const ALL: &'static [GraphKind] = &[
+        GraphKind::Hull,
+        GraphKind::Delaunay,
+        GraphKind::Rng,
+        GraphKind::Gabriel,
+        GraphKind::Mst,
+    ];
+
+    /// The command-line name, e.g. `"rng"`.
+    pub fn name(self) -> &'static str {
+        match self {
+            GraphKind::Hull => "hull",
+            GraphKind::Delaunay => "delaunay",
+            GraphKind::Rng => "rng",
+            GraphKind::Gabriel => "gabriel",
+            GraphKind::Mst => "mst",
+        }
+    }
+
+    /// One line describing the graph.
+    pub fn description(self) -> &'static str {
+        match self {
+            GraphKind::Hull => "convex hull (collinear boundary points are vertices)",
+            GraphKind::Delaunay => "Delaunay triangulation edges",
+            GraphKind::Rng => "relative neighbourhood graph (empty open lunes)",
+            GraphKind::Gabriel => "Gabriel graph (empty diametral circles)",
+            GraphKind::Mst => "Euclidean minimum spanning tree",
+        }
+    }
+
+    /// Looks a graph kind up by [`name`](Self::name), ignoring ASCII case.
+    ///
+    /// # Errors
+    /// [`Error::UnknownName`] listing the available names.
+    pub fn from_name(name: &str) -> Result<Self> {
+        Self::ALL
+            .iter()
+            .copied()
+            .find(|k| k.name().eq_ignore_ascii_case(name))
+            .ok_or_else(|| Error::UnknownName {
+                kind: "graph kind",
+                name: name.to_string(),
+                available: Self::ALL.iter().map(|k| k.name()).collect(),
+            })
+    }
+}
+
+/// The edges of the graph `kind` of `points`, as input-index pairs (see
+/// [`GraphKind`] for the edge convention), with its timed phase.
+pub fn graph(points: &PointSet, kind: GraphKind) -> Result<(Vec<[u32; 2]>, Vec<Phase>)> {
+    let mut phases = Vec::new();
+    let edges = timed(&mut phases, kind.name(), || match kind {
+        GraphKind::Hull => Ok(graphs::convex_hull_edges(points)),
+        GraphKind::Delaunay => graphs::delaunay_edges(points),
+        GraphKind::Rng => graphs::relative_neighborhood_graph(points),
+        GraphKind::Gabriel => graphs::gabriel_graph(points),
+        GraphKind::Mst => graphs::minimum_spanning_tree(points),
+    })?;
+    Ok((edges, phases))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn unknown_criterion_lists_the_available_ones() {
+        let e = Criterion::from_name("nope").unwrap_err().to_string();
+        assert!(e.contains("delaunay"), "{e}");
+        assert_eq!(
+            Criterion::from_name("delaunay").unwrap(),
+            Criterion::Delaunay
+        );
+    }
+
+    #[test]
+    fn every_registered_name_round_trips() {
+        for &c in Criterion::ALL {
+            assert_eq!(Criterion::from_name(c.name()).unwrap(), c);
+            assert_eq!(c.info().name, c.name());
+        }
+        for &k in GraphKind::ALL {
+            assert_eq!(GraphKind::from_name(&k.name().to_uppercase()).unwrap(), k);
+        }
+        assert!(matches!(
+            GraphKind::from_name("voronoi"),
+            Err(Error::UnknownName {
+                kind: "graph kind",
+                ..
+            })
+        ));
+    }
+}

@@ -1,0 +1,11 @@
+//! Layer 1: coordinate-only helpers — bounding boxes, the Z-order numbering,
+//! the convex hull cycle. No topology, no index maps; they import only the
+//! kernel.
+
+mod bbox;
+mod hull;
+mod morton;
+
+pub(crate) use bbox::bounding_box;
+pub(crate) use hull::convex_hull_cycle;
+pub(crate) use morton::morton_order;

@@ -1,0 +1,236 @@
+//! [`SimplePolygon`]: a validated simple polygon given by its vertices in
+//! boundary order, the input of the polygon criteria (the thesis's
+//! decomposable criteria on simple polygons, minimum weight on polygons).
+
+use crate::error::{Error, PolygonProblem, Result};
+use crate::kernel::{dot_sign, orient_sign, segments_intersect, Point};
+use crate::structures::PointSet;
+
+/// A simple polygon: at least three distinct vertices in boundary order
+/// (either orientation), no repeated vertex, and edges that meet only where
+/// consecutive edges share their vertex. A vertex between two collinear edges
+/// is allowed (it must then be the corner of some triangle that is not flat).
+///
+/// Vertex indices everywhere are positions in the caller's ring (`u32`), the
+/// closing vertex of a ring that repeats its first vertex not counted.
+#[derive(Clone, Debug)]
+pub struct SimplePolygon {
+    point_set: PointSet,
+    /// Ring positions in counter-clockwise order, starting at position 0.
+    counter_clockwise: Vec<u32>,
+    clockwise_input: bool,
+}
+
+impl SimplePolygon {
+    /// Validates the ring `vertices` (a last vertex equal to the first is
+    /// dropped, as GeoJSON writes rings).
+    ///
+    /// Simplicity is checked exactly on every pair of edges whose x-ranges
+    /// overlap (a sweep over edges sorted by their smallest x): O(n log n + k)
+    /// for k such pairs, O(n²) in the worst case.
+    ///
+    /// # Errors
+    /// The coordinate errors of [`PointSet::new`], and
+    /// [`Error::InvalidPolygon`] naming the repeated vertices or the two edges
+    /// that meet.
+    pub fn new(vertices: &[Point]) -> Result<Self> {
+        let ring = match vertices {
+            [first, .., last] if vertices.len() > 3 && first == last => {
+                &vertices[..vertices.len() - 1]
+            }
+            _ => vertices,
+        };
+        let n = ring.len();
+        if n < 3 {
+            return Err(Error::InvalidPolygon(PolygonProblem::TooFewVertices {
+                count: n,
+            }));
+        }
+        let point_set = match PointSet::new(ring) {
+            Ok(ps) => ps,
+            // Distinct-but-collinear rings have overlapping edges, which the
+            // edge test below names more precisely; keep PointSet's range errors.
+            Err(Error::AllCollinear { .. }) | Err(Error::TooFewPoints { .. }) => {
+                return Err(Self::first_problem(ring).map_or_else(
+                    || Error::InvalidPolygon(PolygonProblem::TooFewVertices { count: n }),
+                    Error::InvalidPolygon,
+                ))
+            }
+            Err(e) => return Err(e),
+        };
+        if let Some(&[dropped, kept]) = point_set.duplicates().first() {
+            return Err(Error::InvalidPolygon(PolygonProblem::RepeatedVertex {
+                first: kept as usize,
+                second: dropped as usize,
+            }));
+        }
+        if let Some(problem) = Self::first_problem(ring) {
+            return Err(Error::InvalidPolygon(problem));
+        }
+        // The lexicographically smallest vertex is a strictly convex corner of
+        // a simple polygon, so its turn gives the orientation exactly.
+        let lowest = (0..n)
+            .min_by(|&a, &b| {
+                let (p, q) = (ring[a], ring[b]);
+                p[0].total_cmp(&q[0]).then(p[1].total_cmp(&q[1]))
+            })
+            .unwrap_or(0);
+        let turn = orient_sign(
+            ring[(lowest + n - 1) % n],
+            ring[lowest],
+            ring[(lowest + 1) % n],
+        );
+        let clockwise_input = turn < 0;
+        let counter_clockwise = if clockwise_input {
+            std::iter::once(0).chain((1..n as u32).rev()).collect()
+        } else {
+            (0..n as u32).collect()
+        };
+        Ok(Self {
+            point_set,
+            counter_clockwise,
+            clockwise_input,
+        })
+    }
+
+    /// The first pair of edges that meet improperly, or `None` if simple.
+    fn first_problem(ring: &[Point]) -> Option<PolygonProblem> {
+        let n = ring.len();
+        let edge = |i: usize| [i, (i + 1) % n];
+        let seg = |i: usize| (ring[i], ring[(i + 1) % n]);
+        // Consecutive edges share vertex i + 1; they overlap iff they fold
+        // back along one line.
+        for i in 0..n {
+            let (a, b, c) = (ring[i], ring[(i + 1) % n], ring[(i + 2) % n]);
+            if a == b || b == c {
+                continue; // repeated vertices are reported by the caller
+            }
+            if orient_sign(a, b, c) == 0 && dot_sign(b, a, c) > 0 {
+                return Some(PolygonProblem::EdgesIntersect {
+                    first: edge(i),
+                    second: edge((i + 1) % n),
+                });
+            }
+        }
+        let mut order: Vec<usize> = (0..n).collect();
+        let low = |i: usize| seg(i).0[0].min(seg(i).1[0]);
+        let high = |i: usize| seg(i).0[0].max(seg(i).1[0]);
+        order.sort_by(|&a, &b| low(a).total_cmp(&low(b)));
+        let mut found: Option<[usize; 2]> = None;
+        let mut active: Vec<usize> = Vec::new();
+        for &i in &order {
+            active.retain(|&j| high(j) >= low(i));
+            for &j in &active {
+                let adjacent = (i + 1) % n == j || (j + 1) % n == i;
+                if adjacent {
+                    continue;
+                }
+                let ((a, b), (c, d)) = (seg(i), seg(j));
+                if segments_intersect(a, b, c, d) {
+                    let pair = [i.min(j), i.max(j)];
+                    if found.map_or(true, |f| pair < f) {
+                        found = Some(pair);
+                    }
+                }
+            }
+            active.push(i);
+        }
+        found.map(|[i, j]| PolygonProblem::EdgesIntersect {
+            first: edge(i),
+            second: edge(j),
+        })
+    }
+
+    /// The vertices as a point set (no duplicates: indices are ring positions).
+    pub fn point_set(&self) -> &PointSet {
+        &self.point_set
+    }
+
+    /// The vertices in the caller's ring order.
+    pub fn vertices(&self) -> &[Point] {
+        self.point_set.input_points()
+    }
+
+    /// Number of vertices.
+    pub fn len(&self) -> usize {
+        self.counter_clockwise.len()
+    }
+
+    /// Always `false`: a polygon has at least three vertices.
+    pub fn is_empty(&self) -> bool {
+        false
+    }
+
+    /// Ring positions in counter-clockwise order, starting at position 0.
+    pub fn counter_clockwise(&self) -> &[u32] {
+        &self.counter_clockwise
+    }
+
+    /// Whether the caller listed the ring clockwise.
+    pub fn is_clockwise_input(&self) -> bool {
+        self.clockwise_input
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn orientation_is_normalised_and_input_order_kept() {
+        let square = [[0.0, 0.0], [0.0, 1.0], [1.0, 1.0], [1.0, 0.0]];
+        let p = SimplePolygon::new(&square).unwrap();
+        assert!(p.is_clockwise_input());
+        assert_eq!(p.counter_clockwise(), &[0, 3, 2, 1]);
+        assert_eq!(p.vertices(), &square);
+        let closed = [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0], [0.0, 0.0]];
+        let q = SimplePolygon::new(&closed).unwrap();
+        assert!(!q.is_clockwise_input());
+        assert_eq!(q.len(), 4);
+    }
+
+    #[test]
+    fn bad_rings_name_the_problem() {
+        let bowtie = [[0.0, 0.0], [1.0, 1.0], [1.0, 0.0], [0.0, 1.0]];
+        assert_eq!(
+            SimplePolygon::new(&bowtie).unwrap_err(),
+            Error::InvalidPolygon(PolygonProblem::EdgesIntersect {
+                first: [0, 1],
+                second: [2, 3]
+            })
+        );
+        let repeated = [[0.0, 0.0], [2.0, 0.0], [1.0, 1.0], [2.0, 0.0], [2.0, 2.0]];
+        assert_eq!(
+            SimplePolygon::new(&repeated).unwrap_err(),
+            Error::InvalidPolygon(PolygonProblem::RepeatedVertex {
+                first: 1,
+                second: 3
+            })
+        );
+        // A vertex touching a non-adjacent edge.
+        let touching = [[0.0, 0.0], [4.0, 0.0], [4.0, 4.0], [2.0, 0.0], [0.0, 4.0]];
+        assert!(matches!(
+            SimplePolygon::new(&touching).unwrap_err(),
+            Error::InvalidPolygon(PolygonProblem::EdgesIntersect { .. })
+        ));
+        let folded = [[0.0, 0.0], [2.0, 0.0], [1.0, 0.0], [1.0, 1.0]];
+        assert_eq!(
+            SimplePolygon::new(&folded).unwrap_err(),
+            Error::InvalidPolygon(PolygonProblem::EdgesIntersect {
+                first: [0, 1],
+                second: [1, 2]
+            })
+        );
+        let flat = [[0.0, 0.0], [1.0, 0.0], [2.0, 0.0]];
+        assert!(matches!(
+            SimplePolygon::new(&flat).unwrap_err(),
+            Error::InvalidPolygon(_)
+        ));
+        assert_eq!(
+            SimplePolygon::new(&[[0.0, 0.0], [1.0, 0.0]]).unwrap_err(),
+            Error::InvalidPolygon(PolygonProblem::TooFewVertices { count: 2 })
+        );
+        // Straight vertices are fine.
+        assert!(SimplePolygon::new(&[[0.0, 0.0], [1.0, 0.0], [2.0, 0.0], [1.0, 1.0]]).is_ok());
+    }
+}
