@@ -19,7 +19,8 @@
 use super::{CriterionInfo, Diagnostics, Optimality, Options, Requirement, Solved};
 use crate::error::{Error, Result, UnsupportedReason};
 use crate::kernel::metrics::length;
-use crate::kernel::orient_sign;
+use crate::kernel::{orient_sign, Point};
+use crate::polygon_program::{optimal_triangulation, Objective};
 use crate::spatial::convex_hull_cycle;
 use crate::structures::PointSet;
 use crate::structures::Triangulation;
@@ -78,57 +79,45 @@ pub fn min_weight(points: &PointSet) -> Result<Triangulation> {
             },
         });
     }
-    let k = polygon.len();
     let p = |i: usize| pts[polygon[i] as usize];
-    // weight[i*k + j]: least total length of the diagonals inside the
-    // sub-polygon v_i..v_j (j > i), not counting v_i v_j; split: the apex.
-    let mut weight = vec![f64::INFINITY; k * k];
-    let mut split = vec![u32::MAX; k * k];
-    for i in 0..k - 1 {
-        weight[i * k + i + 1] = 0.0;
-    }
-    for gap in 2..k {
-        for i in 0..k - gap {
-            let j = i + gap;
-            let mut best = f64::INFINITY;
-            let mut best_m = u32::MAX;
-            for m in i + 1..j {
-                if orient_sign(p(i), p(m), p(j)) == 0 {
-                    continue; // a flat triangle is not allowed
-                }
-                let (left, right) = (weight[i * k + m], weight[m * k + j]);
-                let mut w = left + right;
-                if m > i + 1 {
-                    w += length(p(i), p(m));
-                }
-                if j > m + 1 {
-                    w += length(p(m), p(j));
-                }
-                if w < best {
-                    best = w;
-                    best_m = m as u32;
-                }
-            }
-            weight[i * k + j] = best;
-            split[i * k + j] = best_m;
-        }
-    }
-    let mut triangles = Vec::with_capacity(k - 2);
-    let mut stack = vec![(0usize, k - 1)];
-    while let Some((i, j)) = stack.pop() {
-        if j < i + 2 {
-            continue;
-        }
-        let m = split[i * k + j];
-        if m == u32::MAX {
-            return Err(Error::Internal(
-                "the convex polygon has no triangulation without flat triangles".into(),
-            ));
-        }
-        let m = m as usize;
-        triangles.push([polygon[i], polygon[m], polygon[j]]);
-        stack.push((i, m));
-        stack.push((m, j));
-    }
+    let solved = optimal_triangulation(
+        polygon.len(),
+        |_, _| true, // convex position: every chord is a diagonal
+        |i, m, j| orient_sign(p(i), p(m), p(j)) != 0, // a flat triangle is not allowed
+        &TotalLength { point: &p },
+    )
+    .ok_or_else(|| {
+        Error::Internal("the convex polygon has no triangulation without flat triangles".into())
+    })?;
+    let triangles = solved
+        .triangles
+        .into_iter()
+        .map(|t| t.map(|c| polygon[c]))
+        .collect();
     Ok(Triangulation::from_distinct(points, triangles))
+}
+
+/// Total length of the diagonals, summed in `f64` (the module's exactness
+/// caveat): an additive objective.
+struct TotalLength<'a, P: Fn(usize) -> Point> {
+    point: &'a P,
+}
+
+impl<P: Fn(usize) -> Point> Objective for TotalLength<'_, P> {
+    type Value = f64;
+    fn empty(&self) -> f64 {
+        0.0
+    }
+    fn diagonal(&self, i: usize, j: usize) -> Option<f64> {
+        Some(length((self.point)(i), (self.point)(j)))
+    }
+    fn triangle(&self, _: usize, _: usize, _: usize) -> Option<f64> {
+        None
+    }
+    fn combine(&self, a: f64, b: f64) -> f64 {
+        a + b
+    }
+    fn better(&self, a: f64, b: f64) -> bool {
+        a < b
+    }
 }

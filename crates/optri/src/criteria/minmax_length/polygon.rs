@@ -10,6 +10,7 @@
 use crate::kernel::{
     compare_lengths, compare_lengths_symbolic, dot_sign, orient_sign, orient_symbolic, Point,
 };
+use crate::polygon_program::{optimal_triangulation, Objective};
 use std::cmp::Ordering;
 
 /// A region: `vertices[i]` is the distinct-point index at position `i`, in
@@ -291,7 +292,9 @@ impl<'a> Region<'a> {
         self.minmax_triangulation_with(bound, &ChordLengths::new(self))
     }
 
-    /// [`Self::minmax_triangulation_bounded`] with the chord lengths at hand.
+    /// [`Self::minmax_triangulation_bounded`] with the chord lengths at hand:
+    /// the library's polygon program with the longest diagonal as a
+    /// bottleneck objective.
     pub fn minmax_triangulation_with(
         &self,
         bound: Option<[u32; 2]>,
@@ -303,111 +306,83 @@ impl<'a> Region<'a> {
         }
         let v = self.vertices;
         let convex = self.is_strictly_convex();
-        // Chords are numbered `i * k + j` (positions i < j).
-        let idx = |i: usize, j: usize| i * k + j;
-        let chord = |c: u32| [c as usize / k, c as usize % k];
-        let cmp = |c: u32, d: u32| {
-            if c == d {
-                return Ordering::Equal;
-            }
-            lengths.compare(self, chord(c), chord(d))
-        };
-        // usable[i][j]: chord between positions i < j is an edge or a diagonal.
-        let mut usable = vec![false; k * k];
         let bound_squared = bound.map(|[a, b]| {
             let (pa, pb) = (self.points[a as usize], self.points[b as usize]);
             let (dx, dy) = (pa[0] - pb[0], pa[1] - pb[1]);
             dx * dx + dy * dy
         });
-        for i in 0..k {
-            for j in i + 1..k {
-                let short_enough = || {
-                    bound.zip(bound_squared).map_or(true, |(b, b_squared)| {
-                        ChordLengths::filtered(lengths.squared([i, j]), b_squared, || {
-                            self.compare_lengths([v[i], v[j]], b)
-                        }) != Ordering::Greater
-                    })
-                };
-                usable[idx(i, j)] = j == i + 1
-                    || (i == 0 && j == k - 1)
-                    || (short_enough() && (convex || self.is_diagonal(i, j)));
-            }
-        }
-        const NONE: u32 = u32::MAX;
-        // value: the longest diagonal as a chord number (NONE = no diagonal yet).
-        let mut value = vec![NONE; k * k];
-        let mut split = vec![NONE; k * k];
-        let longer = |s: u32, t: u32| -> u32 {
-            if s == NONE {
-                return t;
-            }
-            if t == NONE {
-                return s;
-            }
-            if cmp(s, t) == Ordering::Less {
-                t
-            } else {
-                s
-            }
+        let short_enough = |i: usize, j: usize| {
+            bound.zip(bound_squared).map_or(true, |(b, b_squared)| {
+                ChordLengths::filtered(lengths.squared([i, j]), b_squared, || {
+                    self.compare_lengths([v[i], v[j]], b)
+                }) != Ordering::Greater
+            })
         };
-        let is_less = |s: u32, t: u32| -> bool {
-            if t == NONE {
-                return false;
-            }
-            if s == NONE {
-                return true;
-            }
-            cmp(s, t) == Ordering::Less
-        };
-        for gap in 2..k {
-            for i in 0..k - gap {
-                let j = i + gap;
-                if !usable[idx(i, j)] {
-                    continue;
-                }
-                let mut best = NONE;
-                let mut best_m = NONE;
-                for m in i + 1..j {
-                    if !usable[idx(i, m)] || !usable[idx(m, j)] {
-                        continue;
-                    }
-                    if (m > i + 1 && split[idx(i, m)] == NONE)
-                        || (j > m + 1 && split[idx(m, j)] == NONE)
-                    {
-                        continue; // that side cannot be triangulated
-                    }
-                    if self.orient(v[i], v[m], v[j]) <= 0 {
-                        continue;
-                    }
-                    let mut val = longer(value[idx(i, m)], value[idx(m, j)]);
-                    if m > i + 1 {
-                        val = longer(val, idx(i, m) as u32);
-                    }
-                    if j > m + 1 {
-                        val = longer(val, idx(m, j) as u32);
-                    }
-                    if best_m == NONE || is_less(val, best) {
-                        best = val;
-                        best_m = m as u32;
-                    }
-                }
-                value[idx(i, j)] = best;
-                split[idx(i, j)] = best_m;
-            }
+        let solved = optimal_triangulation(
+            k,
+            |i, j| short_enough(i, j) && (convex || self.is_diagonal(i, j)),
+            |i, m, j| self.orient(v[i], v[m], v[j]) > 0,
+            &LongestDiagonal {
+                region: self,
+                lengths,
+                k,
+            },
+        )
+        .expect("a polygonal region always has a triangulation");
+        solved
+            .triangles
+            .into_iter()
+            .map(|t| t.map(|c| v[c]))
+            .collect()
+    }
+}
+
+/// The longest diagonal of a region's triangulation, as a chord number
+/// `i * k + j` ([`LongestDiagonal::NONE`] while there is none): a bottleneck
+/// objective whose comparisons are exact length comparisons.
+struct LongestDiagonal<'a> {
+    region: &'a Region<'a>,
+    lengths: &'a ChordLengths,
+    k: usize,
+}
+
+impl LongestDiagonal<'_> {
+    const NONE: u32 = u32::MAX;
+
+    fn compare(&self, c: u32, d: u32) -> Ordering {
+        if c == d {
+            return Ordering::Equal;
         }
-        let mut triangles = Vec::with_capacity(k - 2);
-        let mut stack = vec![(0usize, k - 1)];
-        while let Some((i, j)) = stack.pop() {
-            if j < i + 2 {
-                continue;
-            }
-            let m = split[idx(i, j)];
-            assert!(m != NONE, "a polygonal region always has a triangulation");
-            let m = m as usize;
-            triangles.push([self.vertices[i], self.vertices[m], self.vertices[j]]);
-            stack.push((i, m));
-            stack.push((m, j));
+        let chord = |c: u32| [c as usize / self.k, c as usize % self.k];
+        self.lengths.compare(self.region, chord(c), chord(d))
+    }
+}
+
+impl Objective for LongestDiagonal<'_> {
+    type Value = u32;
+    fn empty(&self) -> u32 {
+        Self::NONE
+    }
+    fn diagonal(&self, i: usize, j: usize) -> Option<u32> {
+        Some((i * self.k + j) as u32)
+    }
+    fn triangle(&self, _: usize, _: usize, _: usize) -> Option<u32> {
+        None
+    }
+    fn combine(&self, s: u32, t: u32) -> u32 {
+        if s == Self::NONE {
+            return t;
         }
-        triangles
+        if t == Self::NONE || self.compare(s, t) != Ordering::Less {
+            s
+        } else {
+            t
+        }
+    }
+    fn better(&self, s: u32, t: u32) -> bool {
+        if t == Self::NONE {
+            return false;
+        }
+        s == Self::NONE || self.compare(s, t) == Ordering::Less
     }
 }
