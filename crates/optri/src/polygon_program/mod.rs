@@ -82,7 +82,8 @@ pub(crate) fn optimal_triangulation<O: Objective>(
     for gap in 2..k {
         for i in 0..k - gap {
             let j = i + gap;
-            if !(i == 0 && j == k - 1) && !is_diagonal(i, j) {
+            let closes_polygon = i == 0 && j == k - 1;
+            if !closes_polygon && !is_diagonal(i, j) {
                 continue; // stays INFEASIBLE, so no parent uses it
             }
             let mut best = objective.empty();
