@@ -35,9 +35,7 @@
 //!   on one thread with identical results.
 //! - `io` (default): file formats and JSON through serde.
 //! - `internals`: test and benchmark hooks in [`internals`]; not a stable API.
-#![forbid(unsafe_code)]
 #![warn(missing_docs)]
-#![deny(rustdoc::broken_intra_doc_links)]
 
 mod criteria;
 mod error;

@@ -127,8 +127,16 @@ fn modules_use_only_lower_layers() {
             }
         }
     }
-    assert!(violations.is_empty(), "upward or sideways imports:\n{}", violations.join("\n"));
-    assert!(deps["kernel"].is_empty(), "the kernel uses {:?}", deps["kernel"]);
+    assert!(
+        violations.is_empty(),
+        "upward or sideways imports:\n{}",
+        violations.join("\n")
+    );
+    assert!(
+        deps["kernel"].is_empty(),
+        "the kernel uses {:?}",
+        deps["kernel"]
+    );
 }
 
 #[test]

@@ -23,7 +23,7 @@ pub fn in_half_lune(p: Point, q: Point, x: Point) -> bool {
 }
 
 /// Lune membership under the symbolic perturbation of
-/// [`crate::kernel::symbolic`]: indices into `points`.
+/// [the kernel's perturbation](crate::kernel#ties-symbolic-perturbation): indices into `points`.
 pub fn in_lune_symbolic(points: &[Point], p: u32, q: u32, x: u32) -> bool {
     x != p
         && x != q

@@ -1,7 +1,7 @@
 //! Floating-point measures for *reporting* (lengths, areas, angles).
 //!
 //! These values are rounded and never used for combinatorial decisions;
-//! comparisons go through [`crate::kernel::predicates`].
+//! comparisons go through the exact predicates of [`crate::kernel`].
 
 use super::Point;
 

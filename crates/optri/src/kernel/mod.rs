@@ -14,6 +14,30 @@
 //! the same reason). Differences of such numbers are multiples of 2⁻¹⁹⁴ and
 //! at most 2²⁰², so the degree-4 in-circle expansions stay within
 //! `[2⁻⁷⁷⁶, 2⁸⁰⁸]`, far from the subnormal and overflow limits.
+//!
+//! # Ties: symbolic perturbation
+//! The minmax-length and greedy algorithms assume that no two lengths are
+//! equal and no three points are collinear. Instead of special cases, optri
+//! decides every tie as if the points had been perturbed (Edelsbrunner &
+//! Mücke, *Simulation of Simplicity*, ACM TOG 9(1), 1990):
+//!
+//! ```text
+//!   y_m  ←  y_m + ε^(3^(2m))        x_m  ←  x_m + ε^(3^(2m+1))
+//! ```
+//!
+//! for the point with (distinct-point) index `m` and an infinitesimal `ε > 0`.
+//! A lower index is perturbed more, and within a point `y` more than `x`.
+//! Base 3 (not SoS's base 2) matters: squared lengths contain `ε_v²`, and with
+//! base 2 the square of one variable's perturbation would coincide with the
+//! next variable's, making the order of monomials ambiguous. With base 3 every
+//! monomial of degree ≤ 2 has a distinct exponent, so the sign of any
+//! polynomial of degree ≤ 2 per variable is the sign of its first non-zero
+//! coefficient in order of increasing exponent. Orientation is multilinear,
+//! so its rule is the same as in the original paper.
+//!
+//! Because all decisions come from one perturbed point set, they are mutually
+//! consistent: perturbed lengths are pairwise distinct and perturbed
+//! orientations are never zero, for *distinct* input points.
 
 pub(crate) mod expansion;
 mod lune;

@@ -1,27 +1,5 @@
-//! Simulation of simplicity: one symbolic perturbation for every tie.
-//!
-//! The minmax-length and greedy algorithms assume that no two lengths are
-//! equal and no three points are collinear. Instead of special cases, optri
-//! decides every tie as if the points had been perturbed (Edelsbrunner &
-//! Mücke, *Simulation of Simplicity*, ACM TOG 9(1), 1990):
-//!
-//! ```text
-//!   y_m  ←  y_m + ε^(3^(2m))        x_m  ←  x_m + ε^(3^(2m+1))
-//! ```
-//!
-//! for the point with (distinct-point) index `m` and an infinitesimal `ε > 0`.
-//! A lower index is perturbed more, and within a point `y` more than `x`.
-//! Base 3 (not SoS's base 2) matters: squared lengths contain `ε_v²`, and with
-//! base 2 the square of one variable's perturbation would coincide with the
-//! next variable's, making the order of monomials ambiguous. With base 3 every
-//! monomial of degree ≤ 2 has a distinct exponent, so the sign of any
-//! polynomial of degree ≤ 2 per variable is the sign of its first non-zero
-//! coefficient in order of increasing exponent. Orientation is multilinear,
-//! so its rule is the same as in the original paper.
-//!
-//! Because all decisions come from one perturbed point set, they are mutually
-//! consistent: perturbed lengths are pairwise distinct and perturbed
-//! orientations are never zero, for *distinct* input points.
+//! The symbolic perturbation; see the kernel's module docs, section
+//! "Ties: symbolic perturbation", for the scheme and why base 3.
 
 use super::expansion::{sign_of_sum, two_diff, Expansion};
 use super::predicates::{compare_lengths, orient_sign};
@@ -149,7 +127,7 @@ pub fn segment_order(points: &[Point]) -> impl Fn(&[u32; 2], &[u32; 2]) -> Order
 ///
 /// For `x`, `y` on the right of `p → q` it is positive iff `x` is closer to
 /// the line `pq` than `y`. Ties are broken by the first non-zero coefficient
-/// of the ε-expansion, monomials ordered as in [`crate::kernel::symbolic`]
+/// of the ε-expansion, monomials ordered as in [the kernel's perturbation](crate::kernel#ties-symbolic-perturbation)
 /// (`ε_r = ε^(3^r)`, rank `2m` for `y_m`, `2m + 1` for `x_m`). Needs four
 /// distinct indices, except `x == y` which gives 0.
 pub fn height_sign(points: &[Point], p: u32, q: u32, x: u32, y: u32) -> i32 {

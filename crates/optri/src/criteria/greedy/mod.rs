@@ -6,7 +6,7 @@
 //! # Order and ties
 //! Segments are ordered by [`crate::kernel::segment_order`]: exact squared
 //! length, ties broken by the simulation-of-simplicity perturbation of
-//! [`crate::kernel::symbolic`]. That is a total order on segments, so GT is
+//! [the kernel's perturbation](crate::kernel#ties-symbolic-perturbation). That is a total order on segments, so GT is
 //! unique and every algorithm here returns the same edges. A segment with
 //! another point on its open interior is never added (exact orientation plus a
 //! betweenness test), so collinear points never produce overlapping edges.
