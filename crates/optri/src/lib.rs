@@ -28,13 +28,13 @@
 //! | 4 | `polygon_program` | Klincsek's polygon dynamic program over an objective |
 //! | 5 | `criteria` | one module per criterion: [`minmax_length`], [`greedy`], [`min_weight`], Delaunay |
 //! | 6 | `registry` | [`Criterion`], [`GraphKind`], [`triangulate`], [`graph`] |
-//! | 7 | [`io`] (feature `io`) | readers, writers, the one JSON result schema |
+//! | 7 | `io` (public, feature `io`) | readers, writers, the one JSON result schema |
 //!
 //! ## Features
 //! - `parallel` (default): rayon data parallelism; without it every step runs
 //!   on one thread with identical results.
 //! - `io` (default): file formats and JSON through serde.
-//! - `internals`: test and benchmark hooks in [`internals`]; not a stable API.
+//! - `internals`: test and benchmark hooks in `optri::internals`; not a stable API.
 #![warn(missing_docs)]
 
 mod criteria;
