@@ -55,7 +55,7 @@ pub const MAX_POINTS: usize = 4000;
 ///
 /// # Errors
 /// [`Error::Unsupported`] if some point is not on the convex hull, or above
-/// [`MAX_POINTS`] distinct points (the program's O(n²) tables and O(n³)
+/// 4000 distinct points (the program's O(n²) tables and O(n³)
 /// time).
 pub fn min_weight(points: &PointSet) -> Result<Triangulation> {
     let pts = points.points();
