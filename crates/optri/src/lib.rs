@@ -64,3 +64,8 @@ pub use graphs::{
 pub use registry::{graph, triangulate, triangulate_with, Criterion, GraphKind, Solution};
 pub use structures::{Domain, PointSet, SimplePolygon, Stats, Triangulation};
 pub use timing::Phase;
+
+/// The README's Rust examples, compiled and run as doctests.
+#[doc = include_str!("../../../README.md")]
+#[cfg(doctest)]
+pub struct ReadmeDoctests;
