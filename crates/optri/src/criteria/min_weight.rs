@@ -1,10 +1,13 @@
 //! Minimum-weight triangulation (MWT) of points in convex position by
 //! Klincsek's dynamic program (G. T. Klincsek, *Minimal triangulations of
-//! polygonal domains*, Ann. Discrete Math. 9 (1980); seed 003 reference \[4\]),
-//! O(n³) time, O(n²) memory.
+//! polygonal domains*, Ann. Discrete Math. 9 (1980)) — the library's
+//! [polygon program](crate::polygon_program) with total length as an
+//! additive objective — O(n³) time, O(n²) memory.
 //!
-//! It is provided so that the approximation ratio |GT| / |MWT| that seed 003
-//! bounds (Thm 2.x, Thm 3.1) can be observed. Points must all lie on their
+//! It is provided so that the approximation ratio |GT| / |MWT| that
+//! Levcopoulos & Lingas (*On approximation behavior of the greedy
+//! triangulation for convex polygons*, Algorithmica 1987) bound can be
+//! observed. Points must all lie on their
 //! convex hull; collinear boundary points are allowed (flat triangles are
 //! excluded exactly with the orientation predicate). Other inputs get
 //! [`Error::Unsupported`].

@@ -1,4 +1,5 @@
-//! Lunes and half-lunes (Edelsbrunner & Tan, 000_5891e11f36dd26ad.txt §2, §5).
+//! Lunes and half-lunes (H. Edelsbrunner & T. S. Tan, *A quadratic time
+//! algorithm for the minmax length triangulation*, 1991, §2, §5).
 //!
 //! The lune of `pq` is `λ_pq = {x : max(|xp|, |xq|) < |pq|}` (open); the
 //! half-lune of the directed edge `p → q` is `η_pq = λ_pq ∩ h_pq`, where

@@ -1,7 +1,7 @@
 //! A planar straight-line graph as half-edges, and its faces.
 //!
 //! Used to cut the convex hull into the polygonal regions of `ch(S) ∪ rng(S)`
-//! (000_5891e11f36dd26ad.txt §3). Following §3, every edge is a pair of
+//! (Edelsbrunner & Tan 1991, §3). Following §3, every edge is a pair of
 //! opposite half-edges and a face is the cycle of half-edges that have it on
 //! their left, so a zero-width crack is traversed on both sides and a vertex
 //! may occur several times in one boundary.
