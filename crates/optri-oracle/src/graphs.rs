@@ -173,13 +173,13 @@ pub fn rng_edges(points: &[Point]) -> Vec<[u32; 2]> {
     ))
 }
 
-/// Gabriel graph by definition: `pq` is an edge iff no point lies strictly
-/// inside the circle with diameter `pq`, i.e. no `r` with angle `prq > 90°`,
-/// i.e. (law of cosines, exact) `|pr|² + |qr|² < |pq|²`.
+/// Gabriel graph by definition: `pq` is an edge iff no other point lies in
+/// or on the circle with diameter `pq` (the closed disc), i.e. no `r` with
+/// angle `prq ≥ 90°`, i.e. (law of cosines, exact) `|pr|² + |qr|² ≤ |pq|²`.
 pub fn gabriel_edges(points: &[Point]) -> Vec<[u32; 2]> {
     assert_distinct(points);
     fn in_diameter_circle<T: Ring>(pr: &T, qr: &T, pq: &T) -> bool {
-        pr.clone() + qr.clone() < *pq
+        pr.clone() + qr.clone() <= *pq
     }
     with_exact!(points, |g| pairs_without_blocker(
         &g,

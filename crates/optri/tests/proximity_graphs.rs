@@ -494,3 +494,49 @@ fn coordinates_at_the_range_limits() {
         check(&input, ALL, &format!("range limits {case}"));
     }
 }
+
+/// The Gabriel graph uses the closed diametral disc: on a 3 × 3 grid each
+/// unit square's diagonals have two square corners on their diametral
+/// circle, so only the 12 grid edges remain, and no two edges cross on
+/// grids or on a real data set with many cocircular quadruples.
+#[test]
+fn gabriel_graph_is_planar_and_uses_the_closed_disc() {
+    let grid: Vec<Point> = (0..3)
+        .flat_map(|y| (0..3).map(move |x| [x as f64, y as f64]))
+        .collect();
+    let ps = PointSet::new(&grid).unwrap();
+    let edges = gabriel_graph(&ps).unwrap();
+    assert_eq!(edges.len(), 12, "{edges:?}");
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../../shared/data/tsplib");
+    let mut checked = 0;
+    for (label, pts) in [
+        (
+            "grid 7x5",
+            (0..35).map(|i| [(i % 7) as f64, (i / 7) as f64]).collect(),
+        ),
+        (
+            "a280",
+            optri::io::read_points_file(&dir.join("a280.tsp"), None).unwrap(),
+        ),
+    ] {
+        let ps = PointSet::new(&pts).unwrap();
+        let p = ps.input_points();
+        let edges = gabriel_graph(&ps).unwrap();
+        for (i, a) in edges.iter().enumerate() {
+            for b in &edges[i + 1..] {
+                let (a0, a1, b0, b1) = (
+                    p[a[0] as usize],
+                    p[a[1] as usize],
+                    p[b[0] as usize],
+                    p[b[1] as usize],
+                );
+                assert!(
+                    !optri::kernel::properly_cross(a0, a1, b0, b1),
+                    "{label}: Gabriel edges {a:?} and {b:?} cross"
+                );
+            }
+        }
+        checked += 1;
+    }
+    assert_eq!(checked, 2);
+}

@@ -1,109 +1,39 @@
-//! Gabriel graph: `pq` is an edge iff no point lies strictly inside the circle
-//! with diameter `pq` (equivalently, no `r` sees `pq` at an obtuse angle).
+//! Gabriel graph (K. R. Gabriel & R. R. Sokal, *A new statistical approach
+//! to geographic variation analysis*, Systematic Zoology 18, 1969): `pq` is
+//! an edge iff no other point lies in *or on* the circle with diameter `pq`
+//! (the closed disc; equivalently, no `r` sees `pq` at an angle of 90° or
+//! more). With the closed disc the graph is planar and a subgraph of *every*
+//! Delaunay triangulation, however cocircular points are completed.
 //!
-//! Every Gabriel edge has an empty (open) circle through its endpoints, so it
-//! is an edge of the Delaunay *graph*. For a Delaunay edge with apexes `a`, `b`
-//! it suffices to test `a` and `b`: if the angle at `a` is at most 90°, the
-//! half of the diametral disc on `a`'s side lies inside the empty circumcircle
-//! of `pqa`. The one subtlety is cocircular input: the chosen Delaunay
-//! completion contains only one diagonal of a cocircular cell, but *every*
-//! diameter of the cell's circle is a Gabriel edge (all cell vertices are on
-//! the diametral circle, none inside). Those are added explicitly.
+//! A Delaunay edge `pq` with apexes `a`, `b` is a Gabriel edge iff both
+//! angles `paq` and `pbq` are strictly acute. If they are, the closed half of
+//! the diametral disc on `a`'s side, less `p` and `q`, lies strictly inside
+//! the circumcircle of `pqa` (its centre is on `a`'s side, so the two
+//! circles meet only at `p` and `q`), which is empty, and likewise for `b`;
+//! a hull edge has no points on its outer side. Conversely a point with a
+//! right or obtuse angle is in the closed disc. A Gabriel edge has an empty
+//! circle through its endpoints with no other point on it, so it is in every
+//! Delaunay completion: testing the edges of the one spade returns suffices.
+//! Exact: one dot-product sign per apex.
 
 use crate::error::Result;
-use crate::kernel::{dot_sign, incircle_sign, Point};
+use crate::kernel::{dot_sign, Point};
 use crate::structures::DelaunayGraph;
 use crate::structures::PointSet;
-use std::collections::{HashMap, HashSet};
 
 /// Gabriel edges as distinct-index pairs.
 pub(crate) fn gabriel_from_delaunay(points: &[Point], g: &DelaunayGraph) -> Vec<[u32; 2]> {
     let p = |i: u32| points[i as usize];
-    let mut out: Vec<[u32; 2]> = g
-        .edges
+    g.edges
         .iter()
         .filter(|&&([u, v], apexes)| {
             apexes
                 .iter()
                 .flatten()
-                .all(|&a| dot_sign(p(a), p(u), p(v)) >= 0)
+                .all(|&a| dot_sign(p(a), p(u), p(v)) > 0)
         })
         .map(|&(e, _)| e)
-        .collect();
-    out.extend(cocircular_diameters(points, g));
-    out
-}
-
-/// Diameters of cocircular Delaunay cells (≥ 4 points on an empty circle)
-/// that the chosen completion does not contain.
-fn cocircular_diameters(points: &[Point], g: &DelaunayGraph) -> Vec<[u32; 2]> {
-    let p = |i: u32| points[i as usize];
-    // Edges whose two apexes are cocircular with them join one Delaunay cell.
-    let cocircular: Vec<[[u32; 3]; 2]> = g
-        .edges
-        .iter()
-        .filter_map(|&([u, v], apexes)| match apexes {
-            [Some(l), Some(r)] if incircle_sign(p(u), p(v), p(l), p(r)) == 0 => {
-                Some([[u, v, l], [v, u, r]])
-            }
-            _ => None,
-        })
-        .collect();
-    if cocircular.is_empty() {
-        return Vec::new();
-    }
-    let tri_of: HashMap<[u32; 3], usize> = g
-        .triangles
-        .iter()
-        .enumerate()
-        .map(|(i, t)| (canonical(*t), i))
-        .collect();
-    let mut parent: Vec<usize> = (0..g.triangles.len()).collect();
-    fn find(parent: &mut [usize], mut x: usize) -> usize {
-        while parent[x] != x {
-            parent[x] = parent[parent[x]];
-            x = parent[x];
-        }
-        x
-    }
-    for [t1, t2] in cocircular {
-        let (a, b) = (tri_of[&canonical(t1)], tri_of[&canonical(t2)]);
-        let (ra, rb) = (find(&mut parent, a), find(&mut parent, b));
-        parent[ra] = rb;
-    }
-    let mut cells: HashMap<usize, HashSet<u32>> = HashMap::new();
-    for (i, t) in g.triangles.iter().enumerate() {
-        let root = find(&mut parent, i);
-        cells.entry(root).or_default().extend(t.iter().copied());
-    }
-    let present: HashSet<[u32; 2]> = g
-        .edges
-        .iter()
-        .map(|&([u, v], _)| [u.min(v), u.max(v)])
-        .collect();
-    let mut out = Vec::new();
-    for verts in cells.values().filter(|c| c.len() >= 4) {
-        let mut vs: Vec<u32> = verts.iter().copied().collect();
-        vs.sort_unstable();
-        // O(k²) per cell of k cocircular points; k = 4 on grids.
-        for (i, &a) in vs.iter().enumerate() {
-            for &b in &vs[i + 1..] {
-                if present.contains(&[a, b]) {
-                    continue;
-                }
-                let witness = vs.iter().copied().find(|&c| c != a && c != b).unwrap();
-                if dot_sign(p(witness), p(a), p(b)) == 0 {
-                    out.push([a, b]);
-                }
-            }
-        }
-    }
-    out
-}
-
-fn canonical(mut t: [u32; 3]) -> [u32; 3] {
-    t.sort_unstable();
-    t
+        .collect()
 }
 
 /// The Gabriel graph: edges as sorted `[min, max]` input-index pairs.
