@@ -94,7 +94,33 @@ pub fn dot_sign(o: Point, a: Point, b: Point) -> i32 {
 }
 
 /// Exact comparison of triangle areas `|abc|` versus `|def|` (unsigned).
+///
+/// Filtered: each doubled area `D = l − r`, `l = (b−a)ₓ(c−a)_y`,
+/// `r = (b−a)_y(c−a)ₓ`, is off by at most `(3u + 16u²)(|l| + |r|)` in
+/// floating point (Shewchuk 1997, `ccwerrboundA`); comparing `|D₁|` with `|D₂|`
+/// adds at most `u(|D₁| + |D₂|) ≤ u(s₁ + s₂)` with `s = |l| + |r|`. So a
+/// computed difference beyond `8u(s₁ + s₂)` has the right sign; anything
+/// closer goes to the exact expansion.
 pub fn compare_areas(tri1: [Point; 3], tri2: [Point; 3]) -> Ordering {
+    let parts = |[a, b, c]: [Point; 3]| {
+        let l = (b[0] - a[0]) * (c[1] - a[1]);
+        let r = (b[1] - a[1]) * (c[0] - a[0]);
+        ((l - r).abs(), l.abs() + r.abs())
+    };
+    let ((d1, s1), (d2, s2)) = (parts(tri1), parts(tri2));
+    let diff = d1 - d2;
+    let bound = 8.0 * U * (s1 + s2);
+    if diff > bound {
+        return Ordering::Greater;
+    }
+    if -diff > bound {
+        return Ordering::Less;
+    }
+    exact_area_difference_sign(tri1, tri2).cmp(&0)
+}
+
+/// `|D₁| − |D₂|` of two doubled areas, evaluated exactly; returns its sign.
+fn exact_area_difference_sign(tri1: [Point; 3], tri2: [Point; 3]) -> i32 {
     let s1 = orient_sign(tri1[0], tri1[1], tri1[2]) as f64;
     let s2 = orient_sign(tri2[0], tri2[1], tri2[2]) as f64;
     // |D1| - |D2| = s1*D1 - s2*D2, with D = (b-a)x(c-a) expanded exactly.
@@ -109,7 +135,46 @@ pub fn compare_areas(tri1: [Point; 3], tri2: [Point; 3]) -> Ordering {
         e.add_two_term_product(bax, cay, s);
         e.add_two_term_product(bay, cax, -s);
     }
-    e.sign().cmp(&0)
+    e.sign()
+}
+
+/// Exact comparison of the doubled (unsigned) area of `tri`,
+/// `|(b − a) × (c − a)|`, with a finite number `value` (an `f64` is an exact
+/// dyadic rational, so a user's threshold is compared exactly).
+///
+/// # Panics
+/// If `value` is not finite.
+pub fn compare_doubled_area(tri: [Point; 3], value: f64) -> Ordering {
+    assert!(value.is_finite(), "area threshold must be finite");
+    let [a, b, c] = tri;
+    let sign = orient_sign(a, b, c) as f64;
+    let mut sum = Expansion::new();
+    if sign != 0.0 {
+        sum.add_two_term_product(two_diff(b[0], a[0]), two_diff(c[1], a[1]), sign);
+        sum.add_two_term_product(two_diff(b[1], a[1]), two_diff(c[0], a[0]), -sign);
+    }
+    sum.add(-value);
+    sum.sign().cmp(&0)
+}
+
+/// Exact sign of the cross product of two difference vectors,
+/// `(b − a) × (d − c)`: `1` if turning from direction `b − a` to `d − c` is
+/// counter-clockwise (less than a half-turn), `-1` if clockwise, `0` if they
+/// are parallel (or one is zero). `orient(a, b, d) − orient(a, b, c)` is the
+/// same number, but rounding the two determinants separately is not exact.
+pub fn cross_sign(a: Point, b: Point, c: Point, d: Point) -> i32 {
+    // Filter: two rounded differences and a product per term, then one
+    // subtraction: error below (3u + 16u²)(|l| + |r|) as for orientation.
+    let l = (b[0] - a[0]) * (d[1] - c[1]);
+    let r = (b[1] - a[1]) * (d[0] - c[0]);
+    let det = l - r;
+    if det.abs() > 4.0 * U * (l.abs() + r.abs()) {
+        return if det > 0.0 { 1 } else { -1 };
+    }
+    let mut sum = Expansion::new();
+    sum.add_two_term_product(two_diff(b[0], a[0]), two_diff(d[1], c[1]), 1.0);
+    sum.add_two_term_product(two_diff(b[1], a[1]), two_diff(d[0], c[0]), -1.0);
+    sum.sign()
 }
 
 /// Exact counter-clockwise angular order of directions `a - o` and `b - o`,

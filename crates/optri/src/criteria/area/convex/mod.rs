@@ -1,0 +1,114 @@
+//! MaxMin-area and MinMax-area triangulations of a strictly convex polygon,
+//! exactly, in O(n² log n) time and O(n²) space.
+//!
+//! Source: T. S. Vassilev, *Optimal Area Triangulation*, PhD thesis,
+//! University of Saskatchewan, 2005, Chapter 2: Algorithm 44
+//! (§2.3, L1807-1864; Theorem 48, L2339) and the decision Algorithm 49
+//! (§2.4, L2366-2550; Lemma 50, Theorem 51), **as repaired** in the
+//! project's implementation brief on area-optimal triangulations §1–§3 (traps T1–T10 of
+//! §2.8). Where the printed step iv and the brief differ, this follows the
+//! brief.
+//!
+//! | step | what | rests on | module |
+//! |---|---|---|---|
+//! | i | `mcw`/`mccw` by two-pointers on the exact zonality test (T10); `Top` by binary search, or by rotating two-pointers along a row/column | Def. 26/27/38, Property 25; brief §1.4–1.5 | [`sleeve`] |
+//! | ii–iii | sleeve program over the pieces of zonality ≤ 2, O(n²); values as ranks after one exact sort | Lemmas 31/32, Cor. 36; monotone zonality (brief §1.4a) | [`sleeve`] |
+//! | iv MaxMin | 2-2 diagonals, and search pairs with range-max segment trees over rows/columns, O(log n) each | Lemma 23, strengthened Lemma 37, Lemma 40/Cor. 41 (argmax by linear scan, T1), coverage; boundary edges never sub-problems (T2) | [`maxmin`] |
+//! | iv MinMax | 2-2 diagonals, and for search pairs the four blocks of brief §2.6 solved on staircases (implementation (b)), O(log n) each | Lemma 42 on G (T5, T6), A(i,k,j) kept (T4), F_ij = strip ∩ solved range (T7) | [`minmax`] |
+//! | v | follow the stored sleeve choices, O(n) | Cor. 36 | [`sleeve`] |
+//! | Alg. 49 | decision M(τ) in O(n²) with prefix counts; MaxMin by sort-and-search | brief §3, §2.5 | [`decision`] |
+//!
+//! # Exactness
+//! Areas are never computed in floating point. Every decision is an exact
+//! predicate: [`crate::kernel::compare_areas`], [`crate::kernel::orient_sign`],
+//! [`crate::kernel::dot_sign`], [`crate::kernel::cross_sign`] (the sign of
+//! `(b − a) × (d − c)` for the zonality test and height comparisons) and
+//! [`crate::kernel::compare_doubled_area`] (an `f64` decision threshold),
+//! each a floating-point filter with an exact expansion fallback. Table values are
+//! bottleneck triangles, replaced by their ranks after one exact sort
+//! (equal areas share a rank). Ties are normal; any optimal triangulation
+//! may be returned. Exactness needs the coordinates in the kernel's range
+//! (as [`crate::PointSet`] guarantees); the entry points check it.
+//!
+//! # Complexity
+//! - [`maxmin_area_convex`], [`minmax_area_convex`]: O(n² log n) time,
+//!   O(n²) space (two `n²` rank tables, row- and column-major; the MaxMin
+//!   segment trees take `4n²` words more).
+//! - The constant is dominated by area comparisons (the kernel's filtered
+//!   `compare_areas`).
+//! - [`MaxMinTable::new`]: O(n² log n); each decision O(n²);
+//!   [`maxmin_area_convex_by_search`]: O(n² log n) (O(log n) decisions).
+//!
+//! # Tests
+//! `tests.rs` compares optimal *values* with optri-oracle's exact Klincsek
+//! program on random, lattice, symmetric, regular, cocircular, huge and
+//! tiny inputs and the brief's fixtures, checks every output is a
+//! triangulation, tests the two MaxMin routes against each other, and checks
+//! the lemmas as properties on every piece (zonality, Top, strips, sleeve =
+//! Klincsek, quasi-concavity on I_i/J_j (T1), coverage, monotone switch
+//! predicates (T5), Lemma 23 and the strengthened Lemma 37), and that the
+//! +∞-edge reading of step iv (T2) does fail.
+
+mod decision;
+mod maxmin;
+mod minmax;
+mod sleeve;
+#[cfg(test)]
+mod tests;
+
+pub(crate) use decision::MaxMinTable;
+
+use crate::kernel::Point;
+use sleeve::{Objective, SleeveTable, Witness};
+
+/// A MaxMin-area triangulation of a strictly convex polygon: the smallest
+/// triangle is as large as possible.
+///
+/// `polygon` is the vertex cycle (indices into `points`) of a strictly
+/// convex polygon in counter-clockwise order, n ≥ 3. Returns its n − 2
+/// triangles as vertex indices. Algorithm 44 with step iv by range-max
+/// segment trees (brief §2.4); O(n² log n) time, O(n²) space.
+///
+/// # Panics
+/// If `polygon` is not strictly convex and counter-clockwise, has fewer
+/// than 3 or more than 65535 vertices, or uses a coordinate outside the
+/// kernel's exact range ([`crate::kernel::MAX_COORDINATE`]).
+pub(crate) fn maxmin_area_convex(points: &[Point], polygon: &[u32]) -> Vec<[u32; 3]> {
+    MaxMinTable::new(points, polygon).optimum_by_range_max()
+}
+
+/// A MaxMin-area triangulation by the other route: binary search over the
+/// sorted table values with the O(n²) decision of Algorithm 49 (brief §2.5).
+/// Same contract and bounds as [`maxmin_area_convex`].
+pub(crate) fn maxmin_area_convex_by_search(points: &[Point], polygon: &[u32]) -> Vec<[u32; 3]> {
+    MaxMinTable::new(points, polygon).optimum_by_search()
+}
+
+/// A MinMax-area triangulation of a strictly convex polygon: the largest
+/// triangle is as small as possible.
+///
+/// Same input contract as [`maxmin_area_convex`]. Algorithm 44 with step iv
+/// of brief §2.6, implementation (b) (staircases); O(n² log n) time, O(n²)
+/// space.
+///
+/// # Panics
+/// As [`maxmin_area_convex`].
+pub(crate) fn minmax_area_convex(points: &[Point], polygon: &[u32]) -> Vec<[u32; 3]> {
+    let table = SleeveTable::new(points, polygon, Objective::MinMax);
+    if table.n() == 3 {
+        return table.triangulation(Witness::Whole { i: 0 });
+    }
+    let witness = minmax::minmax_witness(&table);
+    table.triangulation(witness)
+}
+
+/// The MaxMin decision (Algorithm 49): is there a triangulation of the
+/// polygon whose smallest triangle has doubled area at least
+/// `doubled_area`? Exact. Builds a [`MaxMinTable`] (O(n² log n)) and asks
+/// once (O(n²)); keep the table for repeated queries.
+///
+/// # Panics
+/// As [`maxmin_area_convex`], or if `doubled_area` is NaN.
+pub(crate) fn maxmin_area_at_least(points: &[Point], polygon: &[u32], doubled_area: f64) -> bool {
+    MaxMinTable::new(points, polygon).admits_doubled_area(doubled_area)
+}
