@@ -9,13 +9,17 @@ use std::path::{Path, PathBuf};
 /// # Panics
 /// When that folder has no `tsplib/`, with a message naming the folder and
 /// saying how to set `OPTRI_DATA`.
+#[track_caller]
 pub fn data_dir() -> PathBuf {
     let (dir, origin) = match std::env::var_os("OPTRI_DATA") {
         Some(dir) => (PathBuf::from(dir), "$OPTRI_DATA"),
         None => {
             let repo = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
             let repo = repo.canonicalize().unwrap_or(repo);
-            (repo.join("../shared/data"), "the default beside the repository")
+            (
+                repo.join("../shared/data"),
+                "the default beside the repository",
+            )
         }
     };
     assert!(

@@ -1,0 +1,193 @@
+//! Which file format: [`InputFormat`] (by extension, by name or by
+//! content) and [`OutputFormat`] (by extension).
+
+use crate::error::{Error, Result};
+use std::path::{Path, PathBuf};
+
+/// The point-file formats optri reads.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum InputFormat {
+    /// One point per line, `x y` (separated by spaces, tabs, commas or
+    /// semicolons); `#` starts a comment; an optional non-numeric header line
+    /// may precede the data. Every data row must have the same number of
+    /// columns (at least two, all numbers). The coordinates are the columns
+    /// the header names `x` and `y` (case-insensitive, e.g. `id,x,y`), else
+    /// the first two; other columns are ignored. A run of spaces and tabs is
+    /// one separator, but a comma or semicolon always ends a field, so an
+    /// empty field (`1,,0`, or a separator at the start or end of a line) is
+    /// an error rather than a silently shifted column.
+    Text,
+    /// Triangle's `.node`: a header `n dim attributes boundary_marker`, then
+    /// `id x y [attributes…] [marker]` per vertex.
+    Node,
+    /// TSPLIB `.tsp` with a `NODE_COORD_SECTION` (coordinates taken as they
+    /// are, also for `GEO` and `ATT` instances).
+    Tsplib,
+    /// GeoJSON `Point`/`MultiPoint` geometries (bare, in a `Feature`, a
+    /// `FeatureCollection` or a `GeometryCollection`); the other geometry
+    /// types (`LineString`, `Polygon`, their `Multi` forms) are skipped, so
+    /// optri's own GeoJSON output reads back as its points. Also optri's own
+    /// JSON output (an object with a `"points"` array).
+    GeoJson,
+}
+
+impl InputFormat {
+    /// Every format, for listings.
+    pub const ALL: &'static [InputFormat] = &[
+        InputFormat::Text,
+        InputFormat::Node,
+        InputFormat::Tsplib,
+        InputFormat::GeoJson,
+    ];
+
+    /// The name accepted by [`from_name`](Self::from_name).
+    pub fn name(self) -> &'static str {
+        match self {
+            InputFormat::Text => "text",
+            InputFormat::Node => "node",
+            InputFormat::Tsplib => "tsplib",
+            InputFormat::GeoJson => "geojson",
+        }
+    }
+
+    /// The format implied by a file's extension (case-insensitive):
+    /// `.txt .xy .csv .pts` → Text, `.node` → Node, `.tsp` → Tsplib,
+    /// `.geojson .json` → GeoJson; `None` otherwise.
+    pub fn from_path(path: &Path) -> Option<Self> {
+        let ext = path.extension()?.to_str()?.to_ascii_lowercase();
+        match ext.as_str() {
+            "txt" | "xy" | "csv" | "pts" => Some(InputFormat::Text),
+            "node" => Some(InputFormat::Node),
+            "tsp" => Some(InputFormat::Tsplib),
+            "geojson" | "json" => Some(InputFormat::GeoJson),
+            _ => None,
+        }
+    }
+
+    /// Looks a format up by name (`text`, `node`, `tsplib`, `geojson`; also
+    /// the aliases `txt`, `tsp`, `json`).
+    ///
+    /// # Errors
+    /// [`Error::UnknownName`] listing the available names.
+    pub fn from_name(name: &str) -> Result<Self> {
+        match name.to_ascii_lowercase().as_str() {
+            "text" | "txt" | "xy" | "csv" => Ok(InputFormat::Text),
+            "node" => Ok(InputFormat::Node),
+            "tsplib" | "tsp" => Ok(InputFormat::Tsplib),
+            "geojson" | "json" => Ok(InputFormat::GeoJson),
+            _ => Err(Error::UnknownName {
+                kind: "input format",
+                name: name.to_string(),
+                available: Self::ALL.iter().map(|f| f.name()).collect(),
+            }),
+        }
+    }
+
+    /// Guesses the format from the content (for stdin and unknown
+    /// extensions): a leading `{` means GeoJSON, a TSPLIB keyword line
+    /// (`NAME`, `TYPE`, `DIMENSION`, `NODE_COORD_SECTION`) means TSPLIB,
+    /// anything else is read as text. `.node` files are not guessed.
+    pub fn sniff(text: &str) -> Self {
+        let trimmed = text.trim_start();
+        if trimmed.starts_with('{') {
+            return InputFormat::GeoJson;
+        }
+        let first = trimmed.lines().next().unwrap_or("");
+        let key = first.split(':').next().unwrap_or("").trim();
+        if first.contains(':') && matches!(key, "NAME" | "TYPE" | "DIMENSION" | "COMMENT")
+            || text.lines().any(|l| l.trim() == "NODE_COORD_SECTION")
+        {
+            return InputFormat::Tsplib;
+        }
+        InputFormat::Text
+    }
+}
+
+/// The file formats optri writes, chosen by extension.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum OutputFormat {
+    /// `.json`: [`triangulation_to_json`](super::triangulation_to_json) /
+    /// [`graph_to_json`](super::graph_to_json).
+    Json,
+    /// `.svg`: a picture.
+    Svg,
+    /// `.ele` plus a sibling `.node` (Triangle's format; triangulations only).
+    Triangle,
+    /// `.geojson`: [`triangulation_to_geojson`](super::triangulation_to_geojson) /
+    /// [`graph_to_geojson`](super::graph_to_geojson).
+    GeoJson,
+}
+
+/// The supported output extensions, for messages.
+const SUPPORTED_OUTPUTS: &str = ".json, .svg, .ele (writes the sibling .node too), .geojson";
+
+impl OutputFormat {
+    /// The format for `path`'s extension (case-insensitive).
+    ///
+    /// # Errors
+    /// [`Error::Unsupported`] naming the path and listing the supported
+    /// extensions.
+    pub fn from_path(path: &Path) -> Result<Self> {
+        let ext = path
+            .extension()
+            .and_then(|e| e.to_str())
+            .map(str::to_ascii_lowercase);
+        match ext.as_deref() {
+            Some("json") => Ok(OutputFormat::Json),
+            Some("svg") => Ok(OutputFormat::Svg),
+            Some("ele") => Ok(OutputFormat::Triangle),
+            Some("geojson") => Ok(OutputFormat::GeoJson),
+            _ => Err(Error::Io(format!(
+                "cannot write '{}': unknown output extension; supported: {SUPPORTED_OUTPUTS}",
+                path.display()
+            ))),
+        }
+    }
+
+    /// Every file that writing a triangulation to `path` in this format
+    /// creates or overwrites: `path` itself and, for [`OutputFormat::Triangle`],
+    /// the sibling `.node` (so callers can refuse to overwrite their input).
+    pub fn files_written(self, path: &Path) -> Vec<PathBuf> {
+        match self {
+            OutputFormat::Triangle => vec![path.to_path_buf(), path.with_extension("node")],
+            _ => vec![path.to_path_buf()],
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::io::read_points_file;
+
+    #[test]
+    fn formats_by_extension_name_and_content() {
+        assert_eq!(
+            InputFormat::from_path(Path::new("a/b.CSV")),
+            Some(InputFormat::Text)
+        );
+        assert_eq!(
+            InputFormat::from_path(Path::new("b.node")),
+            Some(InputFormat::Node)
+        );
+        assert_eq!(
+            InputFormat::from_path(Path::new("b.tsp")),
+            Some(InputFormat::Tsplib)
+        );
+        assert_eq!(
+            InputFormat::from_path(Path::new("b.json")),
+            Some(InputFormat::GeoJson)
+        );
+        assert_eq!(InputFormat::from_path(Path::new("b")), None);
+        assert_eq!(InputFormat::from_name("tsp").unwrap(), InputFormat::Tsplib);
+        let e = InputFormat::from_name("xml").unwrap_err().to_string();
+        assert!(e.contains("geojson") && e.contains("node"), "{e}");
+        assert_eq!(InputFormat::sniff(" {\"type\":1}"), InputFormat::GeoJson);
+        assert_eq!(InputFormat::sniff("1 2\n3 4\n"), InputFormat::Text);
+        let e = read_points_file(Path::new("/nonexistent/x.txt"), None).unwrap_err();
+        assert!(
+            matches!(&e, Error::Io(m) if m.contains("/nonexistent/x.txt")),
+            "{e:?}"
+        );
+    }
+}
