@@ -4,6 +4,17 @@
 use crate::error::{Error, Result};
 use std::path::{Path, PathBuf};
 
+/// The supported input extensions, for messages.
+const SUPPORTED_INPUTS: &str = ".txt .xy .csv .pts (text), .node, .tsp, .geojson .json";
+
+/// The supported output extensions, for messages.
+const SUPPORTED_OUTPUTS: &str = ".json, .svg, .ele (writes the sibling .node too), .geojson";
+
+/// `path`'s extension in lower case, if it has one.
+fn lowercase_extension(path: &Path) -> Option<String> {
+    Some(path.extension()?.to_str()?.to_ascii_lowercase())
+}
+
 /// The point-file formats optri reads.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum InputFormat {
@@ -50,17 +61,27 @@ impl InputFormat {
         }
     }
 
-    /// The format implied by a file's extension (case-insensitive):
+    /// The format implied by `path`'s extension (case-insensitive):
     /// `.txt .xy .csv .pts` → Text, `.node` → Node, `.tsp` → Tsplib,
-    /// `.geojson .json` → GeoJson; `None` otherwise.
-    pub fn from_path(path: &Path) -> Option<Self> {
-        let ext = path.extension()?.to_str()?.to_ascii_lowercase();
-        match ext.as_str() {
-            "txt" | "xy" | "csv" | "pts" => Some(InputFormat::Text),
-            "node" => Some(InputFormat::Node),
-            "tsp" => Some(InputFormat::Tsplib),
-            "geojson" | "json" => Some(InputFormat::GeoJson),
-            _ => None,
+    /// `.geojson .json` → GeoJson.
+    ///
+    /// # Errors
+    /// [`Error::Io`] naming the path and listing the supported extensions
+    /// (as [`OutputFormat::from_path`]); [`read_points_file`] then guesses
+    /// the format from the content instead ([`sniff`](Self::sniff)).
+    ///
+    /// [`read_points_file`]: super::read_points_file
+    pub fn from_path(path: &Path) -> Result<Self> {
+        match lowercase_extension(path).as_deref() {
+            Some("txt" | "xy" | "csv" | "pts") => Ok(InputFormat::Text),
+            Some("node") => Ok(InputFormat::Node),
+            Some("tsp") => Ok(InputFormat::Tsplib),
+            Some("geojson" | "json") => Ok(InputFormat::GeoJson),
+            _ => Err(Error::Io(format!(
+                "cannot read '{}' by its extension: unknown input extension; supported: \
+                 {SUPPORTED_INPUTS}",
+                path.display()
+            ))),
         }
     }
 
@@ -118,21 +139,14 @@ pub enum OutputFormat {
     GeoJson,
 }
 
-/// The supported output extensions, for messages.
-const SUPPORTED_OUTPUTS: &str = ".json, .svg, .ele (writes the sibling .node too), .geojson";
-
 impl OutputFormat {
     /// The format for `path`'s extension (case-insensitive).
     ///
     /// # Errors
-    /// [`Error::Unsupported`] naming the path and listing the supported
-    /// extensions.
+    /// [`Error::Io`] naming the path and listing the supported extensions
+    /// (as [`InputFormat::from_path`]).
     pub fn from_path(path: &Path) -> Result<Self> {
-        let ext = path
-            .extension()
-            .and_then(|e| e.to_str())
-            .map(str::to_ascii_lowercase);
-        match ext.as_deref() {
+        match lowercase_extension(path).as_deref() {
             Some("json") => Ok(OutputFormat::Json),
             Some("svg") => Ok(OutputFormat::Svg),
             Some("ele") => Ok(OutputFormat::Triangle),
@@ -141,6 +155,21 @@ impl OutputFormat {
                 "cannot write '{}': unknown output extension; supported: {SUPPORTED_OUTPUTS}",
                 path.display()
             ))),
+        }
+    }
+
+    /// The format for writing a graph to `path`: [`from_path`](Self::from_path),
+    /// except that `.ele` is refused (a graph is not a triangulation).
+    ///
+    /// # Errors
+    /// As [`from_path`](Self::from_path), and [`Error::Io`] for `.ele`.
+    pub fn from_path_for_graph(path: &Path) -> Result<Self> {
+        match Self::from_path(path)? {
+            OutputFormat::Triangle => Err(Error::Io(format!(
+                "cannot write '{}': a graph is not a triangulation; use .svg, .json or .geojson",
+                path.display()
+            ))),
+            format => Ok(format),
         }
     }
 
@@ -162,23 +191,39 @@ mod tests {
 
     #[test]
     fn formats_by_extension_name_and_content() {
+        for (path, format) in [
+            ("a/b.CSV", InputFormat::Text),
+            ("b.node", InputFormat::Node),
+            ("b.tsp", InputFormat::Tsplib),
+            ("b.json", InputFormat::GeoJson),
+        ] {
+            assert_eq!(InputFormat::from_path(Path::new(path)).unwrap(), format);
+        }
+        // Unknown or missing extensions are errors on both sides, naming the
+        // path and what is supported.
+        for path in ["b", "b.dat"] {
+            let e = InputFormat::from_path(Path::new(path)).unwrap_err();
+            assert!(
+                matches!(&e, Error::Io(m) if m.contains(&format!("'{path}'")) && m.contains(".tsp")),
+                "{e:?}"
+            );
+            let e = OutputFormat::from_path(Path::new(path)).unwrap_err();
+            assert!(
+                matches!(&e, Error::Io(m) if m.contains(&format!("'{path}'")) && m.contains(".svg")),
+                "{e:?}"
+            );
+        }
         assert_eq!(
-            InputFormat::from_path(Path::new("a/b.CSV")),
-            Some(InputFormat::Text)
+            OutputFormat::from_path_for_graph(Path::new("g.SVG")).unwrap(),
+            OutputFormat::Svg
         );
-        assert_eq!(
-            InputFormat::from_path(Path::new("b.node")),
-            Some(InputFormat::Node)
+        let e = OutputFormat::from_path_for_graph(Path::new("g.ele"))
+            .unwrap_err()
+            .to_string();
+        assert!(
+            e.contains("g.ele") && e.contains("not a triangulation"),
+            "{e}"
         );
-        assert_eq!(
-            InputFormat::from_path(Path::new("b.tsp")),
-            Some(InputFormat::Tsplib)
-        );
-        assert_eq!(
-            InputFormat::from_path(Path::new("b.json")),
-            Some(InputFormat::GeoJson)
-        );
-        assert_eq!(InputFormat::from_path(Path::new("b")), None);
         assert_eq!(InputFormat::from_name("tsp").unwrap(), InputFormat::Tsplib);
         let e = InputFormat::from_name("xml").unwrap_err().to_string();
         assert!(e.contains("geojson") && e.contains("node"), "{e}");

@@ -80,7 +80,7 @@ pub fn read_points_file(path: &Path, format: Option<InputFormat>) -> Result<Vec<
     let text = std::fs::read_to_string(path)
         .map_err(|e| Error::Io(format!("cannot read '{}': {e}", path.display())))?;
     let format = format
-        .or_else(|| InputFormat::from_path(path))
+        .or_else(|| InputFormat::from_path(path).ok())
         .unwrap_or_else(|| InputFormat::sniff(&text));
     read_points(&text, format)
 }
@@ -102,8 +102,8 @@ fn pretty(v: &Value) -> String {
 /// written (two for `.ele`: the `.ele` and its sibling `.node`).
 ///
 /// # Errors
-/// [`Error::Unsupported`] for an unknown extension, [`Error::Io`] naming the
-/// path when writing fails.
+/// [`Error::Io`] naming the path for an unknown extension or when writing
+/// fails.
 pub fn write_triangulation(t: &Triangulation, path: &Path) -> Result<Vec<PathBuf>> {
     let title = path
         .file_name()
@@ -140,20 +140,19 @@ pub fn write_triangulation_titled(
 /// `.geojson`, by extension.
 ///
 /// # Errors
-/// [`Error::Unsupported`] for `.ele` and unknown extensions, [`Error::Io`]
-/// naming the path when writing fails.
+/// [`Error::Io`] naming the path for `.ele` and unknown extensions
+/// ([`OutputFormat::from_path_for_graph`]) or when writing fails.
 ///
 /// # Panics
 /// If an edge refers to an index outside `points`.
 pub fn write_graph(points: &[Point], edges: &[[u32; 2]], title: &str, path: &Path) -> Result<()> {
-    match OutputFormat::from_path(path)? {
+    match OutputFormat::from_path_for_graph(path)? {
         OutputFormat::Json => write_file(path, &pretty(&graph_to_json(points, edges))),
         OutputFormat::GeoJson => write_file(path, &pretty(&graph_to_geojson(points, edges))),
-        OutputFormat::Svg => write_file(path, &graph_to_svg(points, edges, title)),
-        OutputFormat::Triangle => Err(Error::Io(format!(
-            "cannot write '{}': a graph is not a triangulation; use .svg, .json or .geojson",
-            path.display()
-        ))),
+        // `.ele` (Triangle) was refused by `from_path_for_graph`.
+        OutputFormat::Svg | OutputFormat::Triangle => {
+            write_file(path, &graph_to_svg(points, edges, title))
+        }
     }
 }
 
