@@ -38,7 +38,8 @@ pub enum InputFormat {
     /// `FeatureCollection` or a `GeometryCollection`); the other geometry
     /// types (`LineString`, `Polygon`, their `Multi` forms) are skipped, so
     /// optri's own GeoJSON output reads back as its points. Also optri's own
-    /// JSON output (an object with a `"points"` array).
+    /// JSON documents (an object without `"type"`): their `"coordinates"`, or
+    /// the `"points"` array of documents before schema version 1.
     GeoJson,
 }
 

@@ -5,6 +5,7 @@
 //!
 //! [`InputFormat::GeoJson`]: super::InputFormat::GeoJson
 
+use super::json::document_coordinates;
 use super::{check_coordinate, parse};
 use crate::error::Result;
 use crate::kernel::Point;
@@ -30,9 +31,11 @@ pub(super) fn read_geojson(text: &str) -> Result<Vec<Point>> {
     let root: Value =
         serde_json::from_str(text).map_err(|e| parse(e.line(), format!("invalid JSON: {e}")))?;
     let mut found = GeoJsonPoints::default();
-    // optri's own JSON output: {"points": [[x, y], ...], ...} without a type.
-    if let Some(list) = root.get("points").filter(|_| root.get("type").is_none()) {
-        collect_positions(list, "points", &mut found.points)?;
+    // optri's own JSON documents (no "type"): their "coordinates", or the
+    // "points" array of earlier versions.
+    let geojson = root.get("type").is_some();
+    if let Some((name, list)) = document_coordinates(&root).filter(|_| !geojson) {
+        collect_positions(list, name, &mut found.points)?;
         return Ok(found.points);
     }
     collect_geojson(&root, "the document", &mut found)?;

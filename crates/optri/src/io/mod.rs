@@ -8,11 +8,13 @@
 //! | `node` | Triangle `.node` | `.node` + `.ele` ([`triangulation_to_triangle_files`]) |
 //! | `tsplib` | TSPLIB `.tsp` | |
 //! | `geojson` | `Point`/`MultiPoint` | triangulations and graphs |
-//! | `json` | (optri's own documents, as points) | [`triangulation_to_json`], [`graph_to_json`]; [`triangulation_from_json`] reads back |
+//! | `json` | [`triangulation_from_json`]; its `coordinates` through the GeoJSON reader | the one result schema: [`TriangulationReport`], [`GraphReport`] |
 //! | `svg` | | single picture, graph, multi-panel comparison |
 //!
 //! [`read_points`] / [`read_points_file`] pick the reader,
-//! [`write_triangulation`] / [`write_graph`] the writer by extension.
+//! [`write_triangulation`] / [`write_graph`] (and their `_report` forms, which
+//! write a whole [`TriangulationReport`] / [`GraphReport`] as `.json`) the
+//! writer by extension.
 //!
 //! Every reader returns the points in file order (so point `i` of the result
 //! is input index `i` everywhere else in optri) and reports problems as
@@ -38,14 +40,16 @@ mod tsplib;
 
 pub use format::{InputFormat, OutputFormat};
 pub use geojson::{graph_to_geojson, triangulation_to_geojson};
-pub use json::{graph_to_json, triangulation_from_json, triangulation_to_json};
+pub use json::{
+    graph_to_json, solution_to_json, triangulation_from_json, triangulation_to_json, GraphReport,
+    TriangulationReport, SCHEMA_VERSION,
+};
 pub use node::triangulation_to_triangle_files;
 pub use svg::{graph_to_svg, panels_to_svg, triangulation_to_svg};
 
 use crate::error::{Error, Result};
 use crate::kernel::{self, CoordinateProblem, Point, MAX_COORDINATE, MIN_COORDINATE};
 use crate::structures::Triangulation;
-use serde_json::Value;
 use std::path::{Path, PathBuf};
 
 /// Parses `text` in `format`.
@@ -90,16 +94,18 @@ fn write_file(path: &Path, contents: &str) -> Result<()> {
         .map_err(|e| Error::Io(format!("cannot write '{}': {e}", path.display())))
 }
 
-fn pretty(v: &Value) -> String {
-    // Serialising a `Value` cannot fail.
-    let mut s = serde_json::to_string_pretty(v).unwrap_or_default();
+fn pretty(document: &impl serde::Serialize) -> String {
+    // optri's documents and GeoJSON values always serialise.
+    let mut s = serde_json::to_string_pretty(document)
+        .expect("an optri document always serialises to JSON");
     s.push('\n');
     s
 }
 
 /// Writes `t` in the format given by `path`'s extension (see
-/// [`OutputFormat`]); an SVG is titled with the file name. Returns the files
-/// written (two for `.ele`: the `.ele` and its sibling `.node`).
+/// [`OutputFormat`]); an SVG is titled with the file name, a `.json` file is
+/// the bare [`TriangulationReport`]. Returns the files written (two for
+/// `.ele`: the `.ele` and its sibling `.node`).
 ///
 /// # Errors
 /// [`Error::Io`] naming the path for an unknown extension or when writing
@@ -121,8 +127,23 @@ pub fn write_triangulation_titled(
     path: &Path,
     title: &str,
 ) -> Result<Vec<PathBuf>> {
+    write_triangulation_report(&TriangulationReport::new(t), path, title)
+}
+
+/// Writes the triangulation of `report` by `path`'s extension, as
+/// [`write_triangulation_titled`] does; a `.json` file is the whole `report`
+/// (with its run fields, e.g. from [`TriangulationReport::of_solution`]).
+///
+/// # Errors
+/// As [`write_triangulation`].
+pub fn write_triangulation_report(
+    report: &TriangulationReport,
+    path: &Path,
+    title: &str,
+) -> Result<Vec<PathBuf>> {
+    let t = report.triangulation();
     match OutputFormat::from_path(path)? {
-        OutputFormat::Json => write_file(path, &pretty(&triangulation_to_json(t)))?,
+        OutputFormat::Json => write_file(path, &pretty(report))?,
         OutputFormat::GeoJson => write_file(path, &pretty(&triangulation_to_geojson(t, true)))?,
         OutputFormat::Svg => write_file(path, &triangulation_to_svg(t, title))?,
         OutputFormat::Triangle => {
@@ -136,8 +157,8 @@ pub fn write_triangulation_titled(
     Ok(vec![path.to_path_buf()])
 }
 
-/// Writes a graph (edges as index pairs into `points`) as `.svg`, `.json` or
-/// `.geojson`, by extension.
+/// Writes a graph (edges as index pairs into `points`) as `.svg`, `.json` (the
+/// bare [`GraphReport`]) or `.geojson`, by extension.
 ///
 /// # Errors
 /// [`Error::Io`] naming the path for `.ele` and unknown extensions
@@ -146,14 +167,29 @@ pub fn write_triangulation_titled(
 /// # Panics
 /// If an edge refers to an index outside `points`.
 pub fn write_graph(points: &[Point], edges: &[[u32; 2]], title: &str, path: &Path) -> Result<()> {
+    write_graph_report(&GraphReport::new(points, edges), path, title).map(drop)
+}
+
+/// Writes the graph of `report` by `path`'s extension, as [`write_graph`]
+/// does; a `.json` file is the whole `report` (e.g. with the kind and
+/// duplicates of [`GraphReport::of_graph`]). Returns the file written.
+///
+/// # Errors
+/// As [`write_graph`].
+///
+/// # Panics
+/// If an edge refers to an index outside the points.
+pub fn write_graph_report(report: &GraphReport, path: &Path, title: &str) -> Result<Vec<PathBuf>> {
+    let (points, edges) = (report.points(), report.edges());
     match OutputFormat::from_path_for_graph(path)? {
-        OutputFormat::Json => write_file(path, &pretty(&graph_to_json(points, edges))),
-        OutputFormat::GeoJson => write_file(path, &pretty(&graph_to_geojson(points, edges))),
+        OutputFormat::Json => write_file(path, &pretty(report))?,
+        OutputFormat::GeoJson => write_file(path, &pretty(&graph_to_geojson(points, edges)))?,
         // `.ele` (Triangle) was refused by `from_path_for_graph`.
         OutputFormat::Svg | OutputFormat::Triangle => {
-            write_file(path, &graph_to_svg(points, edges, title))
+            write_file(path, &graph_to_svg(points, edges, title))?
         }
     }
+    Ok(vec![path.to_path_buf()])
 }
 
 fn parse(line: usize, message: impl Into<String>) -> Error {
@@ -265,7 +301,7 @@ mod tests {
         );
         let edges = t.edges();
         write_graph(t.points(), &edges, "g", &dir.join("g.geojson")).unwrap();
-        let g: Value =
+        let g: serde_json::Value =
             serde_json::from_str(&std::fs::read_to_string(dir.join("g.geojson")).unwrap()).unwrap();
         assert_eq!(
             g["features"].as_array().unwrap().len(),
