@@ -9,8 +9,11 @@ use std::path::PathBuf;
 use std::process::{Command, Output, Stdio};
 
 const BIN: &str = env!("CARGO_BIN_EXE_optri");
-/// The repository root is two levels above this crate; `shared/` is beside it.
-const TSPLIB: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../../../shared/data/tsplib/");
+/// The shared TSPLIB file `name.tsp` (see `optri_oracle::data_dir`).
+fn tsplib(name: &str) -> String {
+    let path = optri_oracle::data_dir().join(format!("tsplib/{name}.tsp"));
+    path.to_str().unwrap().to_string()
+}
 
 /// A fresh directory for one test's files.
 fn scratch(test: &str) -> PathBuf {
@@ -156,7 +159,7 @@ fn duplicates_are_reported_with_input_indices() {
 #[test]
 fn tsplib_file_with_a_duplicate_and_outputs() {
     let dir = scratch("tsplib");
-    let input = format!("{TSPLIB}a280.tsp");
+    let input = tsplib("a280");
     let svg = dir.join("a280.svg");
     let ele = dir.join("a280.ele");
     let geojson = dir.join("a280.geojson");
@@ -558,7 +561,7 @@ fn every_tsplib_file_matches_its_readme_counts() {
         ("ts225", 225, 0, 96),
     ];
     for (name, n, duplicates, hull) in expected {
-        let input = format!("{TSPLIB}{name}.tsp");
+        let input = tsplib(name);
         let json = stdout_json(&run(&["triangulate", &input, "--json"]));
         assert_eq!(json["points"], n, "{name}");
         assert_eq!(
@@ -792,4 +795,106 @@ fn criterion_names_are_case_insensitive() {
         &run_stdin(&["triangulate", "-", "--criterion", "Prettiest"], SQUARE),
         &["unknown criterion 'Prettiest'", &available.join(", ")],
     );
+}
+
+/// `doc` without its `timing_ms`, which differs from run to run (and a file
+/// written before the run ends has no `write` or `total` phase).
+fn untimed(doc: &Value) -> Value {
+    let mut doc = doc.clone();
+    doc.as_object_mut().unwrap().remove("timing_ms");
+    doc
+}
+
+#[test]
+fn json_on_stdout_and_a_json_file_are_one_document_that_reads_back() {
+    let dir = scratch("one-schema");
+    let input = tsplib("berlin52");
+    let file = dir.join("b.json");
+    let out = run(&[
+        "triangulate",
+        &input,
+        "--criterion",
+        "greedy",
+        "--json",
+        "-o",
+        file.to_str().unwrap(),
+    ]);
+    let stdout = stdout_json(&out);
+    let written: Value = serde_json::from_str(&std::fs::read_to_string(&file).unwrap()).unwrap();
+    let keys = |v: &Value| v.as_object().unwrap().keys().cloned().collect::<Vec<_>>();
+    assert_eq!(keys(&stdout), keys(&written));
+    assert_eq!(untimed(&stdout), untimed(&written));
+    assert_eq!(stdout["schema_version"], optri::io::SCHEMA_VERSION);
+    assert_eq!(stdout["document"], "triangulation");
+    assert_eq!(stdout["optimality"], "exact");
+    assert_eq!(stdout["points"], 52);
+    assert_eq!(stdout["coordinates"].as_array().unwrap().len(), 52);
+    assert!(stdout["diagnostics"].is_object());
+    assert!(stdout["timing_ms"]["write"].is_number() && written["timing_ms"]["write"].is_null());
+    // The file reads back as the same triangulation, and as a point file.
+    let back = optri::io::triangulation_from_json(&written).unwrap();
+    let triangles: Vec<[u32; 3]> = serde_json::from_value(stdout["triangles"].clone()).unwrap();
+    assert_eq!(back.triangles(), triangles);
+    let again = stdout_json(&run(&[
+        "triangulate",
+        file.to_str().unwrap(),
+        "--criterion",
+        "greedy",
+        "--json",
+    ]));
+    assert_eq!(again["triangles"], stdout["triangles"]);
+    // The same for a graph.
+    let file = dir.join("g.json");
+    let out = run(&[
+        "graph",
+        &input,
+        "--kind",
+        "gabriel",
+        "--json",
+        "-o",
+        file.to_str().unwrap(),
+    ]);
+    let stdout = stdout_json(&out);
+    let written: Value = serde_json::from_str(&std::fs::read_to_string(&file).unwrap()).unwrap();
+    assert_eq!(keys(&stdout), keys(&written));
+    assert_eq!(untimed(&stdout), untimed(&written));
+    assert_eq!(stdout["document"], "graph");
+    assert_eq!(
+        optri::io::read_points_file(&file, None).unwrap(),
+        optri::io::read_points_file(std::path::Path::new(&input), None).unwrap()
+    );
+}
+
+#[test]
+fn help_and_names_come_from_the_library_registry() {
+    let help = String::from_utf8_lossy(&run(&["triangulate", "--help"]).stdout).into_owned();
+    for c in optri::Criterion::ALL {
+        assert!(
+            help.contains(c.name()) && help.contains(c.description()),
+            "{} missing from {help}",
+            c.name()
+        );
+    }
+    let help = String::from_utf8_lossy(&run(&["graph", "--help"]).stdout).into_owned();
+    for k in optri::GraphKind::ALL {
+        assert!(
+            help.contains(k.name()) && help.contains(k.description()),
+            "{} missing from {help}",
+            k.name()
+        );
+    }
+    // Graph kinds are case-insensitive; an unknown one gets the library's
+    // message as a usage error.
+    let json = stdout_json(&run_stdin(
+        &["graph", "-", "--kind", "MsT", "--json"],
+        SQUARE,
+    ));
+    assert_eq!(json["kind"], "mst");
+    let out = run_stdin(&["graph", "-", "--kind", "voronoi"], SQUARE);
+    assert_eq!(out.status.code(), Some(2));
+    let expected = optri::GraphKind::from_name("voronoi")
+        .unwrap_err()
+        .to_string();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains(&expected), "{err}");
 }

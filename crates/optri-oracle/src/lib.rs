@@ -14,10 +14,14 @@
 //! symbolic perturbation ([`symbolic`]). Slow by design; inputs are small
 //! (except [`greedy_edges`]).
 //!
+//! [`data_dir`] finds the shared test data (`$OPTRI_DATA`, else
+//! `shared/data` beside the repository).
+//!
 //! Conventions: indices are `u32` into the caller's slice of *distinct*
 //! points; triangles are counter-clockwise with the smallest index first,
 //! lists of triangles and of `[min, max]` edges are sorted.
 
+pub mod data;
 pub mod enumerate;
 pub mod exact;
 pub mod graphs;
@@ -26,6 +30,7 @@ pub mod inputs;
 pub mod klincsek;
 pub mod symbolic;
 
+pub use data::data_dir;
 pub use enumerate::{
     all_triangulations, canonical_triangle, canonical_triangulation, edge_length, empty_segments,
     flip_graph_triangulations, greedy_triangulation, max_edge_squared, max_twice_area,

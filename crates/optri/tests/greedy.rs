@@ -375,7 +375,7 @@ fn cocircular_huge_negative_and_duplicate_points_match_the_oracle() {
 }
 
 fn tsplib_files() -> Vec<std::path::PathBuf> {
-    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../../shared/data/tsplib");
+    let dir = optri_oracle::data_dir().join("tsplib");
     let mut files: Vec<_> = std::fs::read_dir(&dir)
         .unwrap_or_else(|e| panic!("{}: {e}", dir.display()))
         .map(|e| e.unwrap().path())

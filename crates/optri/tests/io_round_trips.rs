@@ -12,7 +12,7 @@ use optri::{delaunay, Error, PointSet, Triangulation};
 use rand::rngs::StdRng;
 use rand::{Rng, SeedableRng};
 use serde_json::Value;
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 
 type Point = [f64; 2];
 
@@ -279,7 +279,7 @@ fn ele_and_node_files_read_back_with_consistent_indices() {
 
 #[test]
 fn a_shared_tsplib_file_survives_the_round_trip_with_its_duplicate() {
-    let tsp = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../../shared/data/tsplib/a280.tsp");
+    let tsp = optri_oracle::data_dir().join("tsplib/a280.tsp");
     let pts = io::read_points_file(&tsp, None).unwrap();
     let ps = PointSet::new(&pts).unwrap();
     // Nodes 171 and 172 coincide (input indices 170, 171).

@@ -386,7 +386,7 @@ fn read_tsp(path: &std::path::Path) -> Vec<Point> {
 
 #[test]
 fn tsplib_files_match_the_cubic_reference() {
-    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../../shared/data/tsplib");
+    let dir = optri_oracle::data_dir().join("tsplib");
     let mut files: Vec<_> = std::fs::read_dir(&dir)
         .unwrap()
         .map(|e| e.unwrap().path())
@@ -553,7 +553,7 @@ fn oracle_cubic_reference_agrees_on_random_sets_and_grids() {
 
 #[test]
 fn oracle_cubic_reference_agrees_on_small_tsplib_files() {
-    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../../shared/data/tsplib");
+    let dir = optri_oracle::data_dir().join("tsplib");
     for name in ["berlin52", "kroA100", "ch150", "ts225"] {
         let pts = read_tsp(&dir.join(format!("{name}.tsp")));
         let ps = PointSet::new(&pts).unwrap();

@@ -348,7 +348,7 @@ fn read_tsplib(path: &std::path::Path) -> Vec<Point> {
 
 #[test]
 fn tsplib_files_up_to_1100_points() {
-    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../../shared/data/tsplib");
+    let dir = optri_oracle::data_dir().join("tsplib");
     // (file, distinct hull points incl. collinear, from the data README)
     let files = [
         ("berlin52", 8),

@@ -1,21 +1,313 @@
-//! Reading point sets and writing triangulations and graphs.
+//! Reading point sets and writing triangulations and graphs, one file per
+//! format with its reader and writer side by side:
 //!
-//! - [`read`](self::read_points): text, Triangle `.node`, TSPLIB `.tsp`,
-//!   GeoJSON, with line-numbered [`Error::Parse`](crate::Error::Parse) errors;
-//! - writers: JSON, GeoJSON, Triangle `.node`/`.ele`, SVG (single picture,
-//!   graph, multi-panel comparison), and [`write_triangulation`] /
-//!   [`write_graph`] choosing the format by extension.
+//! | module | reads | writes |
+//! |---|---|---|
+//! | `format` | [`InputFormat`] by extension, name or content; [`OutputFormat`] by extension | |
+//! | `text` | `x y` per line | |
+//! | `node` | Triangle `.node` | `.node` + `.ele` ([`triangulation_to_triangle_files`]) |
+//! | `tsplib` | TSPLIB `.tsp` | |
+//! | `geojson` | `Point`/`MultiPoint` | triangulations and graphs |
+//! | `json` | [`triangulation_from_json`]; its `coordinates` through the GeoJSON reader | the one result schema: [`TriangulationReport`], [`GraphReport`] |
+//! | `svg` | | single picture, graph, multi-panel comparison |
 //!
-//! All indices in inputs and outputs are 0-based *input* indices.
+//! [`read_points`] / [`read_points_file`] pick the reader,
+//! [`write_triangulation`] / [`write_graph`] (and their `_report` forms, which
+//! write a whole [`TriangulationReport`] / [`GraphReport`] as `.json`) the
+//! writer by extension.
+//!
+//! Every reader returns the points in file order (so point `i` of the result
+//! is input index `i` everywhere else in optri) and reports problems as
+//! [`Error::Parse`] with the 1-based line number (`line: 0` when the problem
+//! concerns the whole input, e.g. an empty file). Coordinates are checked
+//! there, where the line is still known: a NaN, an infinity (including a
+//! literal that overflows `f64`) or a value outside the exact range of
+//! [`crate::kernel`] is rejected with its line.
+//!
+//! Every writer uses *input* indices (0-based), also in Triangle files, and
+//! writes all input points (merged duplicates included, they just belong to
+//! no triangle), so every index in an output means the same point as in the
+//! input. Coordinates are written in Rust's shortest round-trip notation, so
+//! reading an output back gives the identical `f64` values.
 
-mod read;
+mod format;
+mod geojson;
+mod json;
+mod node;
 mod svg;
-mod write;
+mod text;
+mod tsplib;
 
-pub use read::{read_points, read_points_file, InputFormat};
-pub use svg::{graph_to_svg, panels_to_svg, triangulation_to_svg};
-pub use write::{
-    graph_to_geojson, graph_to_json, triangulation_from_json, triangulation_to_geojson,
-    triangulation_to_json, triangulation_to_triangle_files, write_graph, write_triangulation,
-    write_triangulation_titled, OutputFormat,
+pub use format::{InputFormat, OutputFormat};
+pub use geojson::{graph_to_geojson, triangulation_to_geojson};
+pub use json::{
+    graph_to_json, solution_to_json, triangulation_from_json, triangulation_to_json, GraphReport,
+    TriangulationReport, SCHEMA_VERSION,
 };
+pub use node::triangulation_to_triangle_files;
+pub use svg::{graph_to_svg, panels_to_svg, triangulation_to_svg};
+
+use crate::error::{Error, Result};
+use crate::kernel::{self, CoordinateProblem, Point, MAX_COORDINATE, MIN_COORDINATE};
+use crate::structures::Triangulation;
+use std::path::{Path, PathBuf};
+
+/// Parses `text` in `format`.
+///
+/// # Errors
+/// [`Error::Parse`] with the 1-based line of the first problem, or line 0 when
+/// the input holds no points at all.
+pub fn read_points(text: &str, format: InputFormat) -> Result<Vec<Point>> {
+    // A UTF-8 byte-order mark is not part of the first token.
+    let text = text.strip_prefix('\u{feff}').unwrap_or(text);
+    let points = match format {
+        InputFormat::Text => text::read_text(text)?,
+        InputFormat::Node => node::read_node(text)?,
+        InputFormat::Tsplib => tsplib::read_tsplib(text)?,
+        InputFormat::GeoJson => geojson::read_geojson(text)?,
+    };
+    if points.is_empty() {
+        return Err(parse(0, "no points found in the input"));
+    }
+    Ok(points)
+}
+
+/// Reads a point file; `format: None` picks it by extension
+/// ([`InputFormat::from_path`]) and otherwise by content
+/// ([`InputFormat::sniff`]).
+///
+/// # Errors
+/// [`Error::Io`] naming the path when the file cannot be read; the parse
+/// errors of [`read_points`] (with their line numbers; callers prefix the
+/// path).
+pub fn read_points_file(path: &Path, format: Option<InputFormat>) -> Result<Vec<Point>> {
+    let text = std::fs::read_to_string(path)
+        .map_err(|e| Error::Io(format!("cannot read '{}': {e}", path.display())))?;
+    let format = format
+        .or_else(|| InputFormat::from_path(path).ok())
+        .unwrap_or_else(|| InputFormat::sniff(&text));
+    read_points(&text, format)
+}
+
+fn write_file(path: &Path, contents: &str) -> Result<()> {
+    std::fs::write(path, contents)
+        .map_err(|e| Error::Io(format!("cannot write '{}': {e}", path.display())))
+}
+
+fn pretty(document: &impl serde::Serialize) -> String {
+    // optri's documents and GeoJSON values always serialise.
+    let mut s = serde_json::to_string_pretty(document)
+        .expect("an optri document always serialises to JSON");
+    s.push('\n');
+    s
+}
+
+/// Writes `t` in the format given by `path`'s extension (see
+/// [`OutputFormat`]); an SVG is titled with the file name, a `.json` file is
+/// the bare [`TriangulationReport`]. Returns the files written (two for
+/// `.ele`: the `.ele` and its sibling `.node`).
+///
+/// # Errors
+/// [`Error::Io`] naming the path for an unknown extension or when writing
+/// fails.
+pub fn write_triangulation(t: &Triangulation, path: &Path) -> Result<Vec<PathBuf>> {
+    let title = path
+        .file_name()
+        .map(|n| n.to_string_lossy().into_owned())
+        .unwrap_or_default();
+    write_triangulation_titled(t, path, &title)
+}
+
+/// [`write_triangulation`] with an explicit SVG title.
+///
+/// # Errors
+/// As [`write_triangulation`].
+pub fn write_triangulation_titled(
+    t: &Triangulation,
+    path: &Path,
+    title: &str,
+) -> Result<Vec<PathBuf>> {
+    write_triangulation_report(&TriangulationReport::new(t), path, title)
+}
+
+/// Writes the triangulation of `report` by `path`'s extension, as
+/// [`write_triangulation_titled`] does; a `.json` file is the whole `report`
+/// (with its run fields, e.g. from [`TriangulationReport::of_solution`]).
+///
+/// # Errors
+/// As [`write_triangulation`].
+pub fn write_triangulation_report(
+    report: &TriangulationReport,
+    path: &Path,
+    title: &str,
+) -> Result<Vec<PathBuf>> {
+    let t = report.triangulation();
+    match OutputFormat::from_path(path)? {
+        OutputFormat::Json => write_file(path, &pretty(report))?,
+        OutputFormat::GeoJson => write_file(path, &pretty(&triangulation_to_geojson(t, true)))?,
+        OutputFormat::Svg => write_file(path, &triangulation_to_svg(t, title))?,
+        OutputFormat::Triangle => {
+            let (node, ele) = triangulation_to_triangle_files(t);
+            let files = OutputFormat::Triangle.files_written(path);
+            write_file(&files[0], &ele)?;
+            write_file(&files[1], &node)?;
+            return Ok(files);
+        }
+    }
+    Ok(vec![path.to_path_buf()])
+}
+
+/// Writes a graph (edges as index pairs into `points`) as `.svg`, `.json` (the
+/// bare [`GraphReport`]) or `.geojson`, by extension.
+///
+/// # Errors
+/// [`Error::Io`] naming the path for `.ele` and unknown extensions
+/// ([`OutputFormat::from_path_for_graph`]) or when writing fails.
+///
+/// # Panics
+/// If an edge refers to an index outside `points`.
+pub fn write_graph(points: &[Point], edges: &[[u32; 2]], title: &str, path: &Path) -> Result<()> {
+    write_graph_report(&GraphReport::new(points, edges), path, title).map(drop)
+}
+
+/// Writes the graph of `report` by `path`'s extension, as [`write_graph`]
+/// does; a `.json` file is the whole `report` (e.g. with the kind and
+/// duplicates of [`GraphReport::of_graph`]). Returns the file written.
+///
+/// # Errors
+/// As [`write_graph`].
+///
+/// # Panics
+/// If an edge refers to an index outside the points.
+pub fn write_graph_report(report: &GraphReport, path: &Path, title: &str) -> Result<Vec<PathBuf>> {
+    let (points, edges) = (report.points(), report.edges());
+    match OutputFormat::from_path_for_graph(path)? {
+        OutputFormat::Json => write_file(path, &pretty(report))?,
+        OutputFormat::GeoJson => write_file(path, &pretty(&graph_to_geojson(points, edges)))?,
+        // `.ele` (Triangle) was refused by `from_path_for_graph`.
+        OutputFormat::Svg | OutputFormat::Triangle => {
+            write_file(path, &graph_to_svg(points, edges, title))?
+        }
+    }
+    Ok(vec![path.to_path_buf()])
+}
+
+fn parse(line: usize, message: impl Into<String>) -> Error {
+    Error::Parse {
+        line,
+        message: message.into(),
+    }
+}
+
+/// Parses one coordinate token, rejecting non-numbers, non-finite values and
+/// values outside the exact range (which [`crate::PointSet`] would refuse
+/// anyway, but without the line).
+fn coordinate(token: &str, line: usize) -> Result<f64> {
+    let value: f64 = token
+        .parse()
+        .map_err(|_| parse(line, format!("'{token}' is not a number")))?;
+    check_coordinate(value, token, line)
+}
+
+fn check_coordinate(value: f64, token: &str, line: usize) -> Result<f64> {
+    kernel::check_coordinate(value).map_err(|problem| match problem {
+        CoordinateProblem::NonFinite => {
+            parse(line, format!("coordinate '{token}' is not a finite number"))
+        }
+        CoordinateProblem::OutOfRange => parse(
+            line,
+            format!(
+                "coordinate '{token}' is outside the exact range (|v| must be 0 or between \
+                 {MIN_COORDINATE:e} and {MAX_COORDINATE:e}); rescale the input"
+            ),
+        ),
+    })
+}
+
+/// The part of a line before any `#` comment.
+fn strip_comment(line: &str) -> &str {
+    line.split('#').next().unwrap_or("")
+}
+
+/// The error of a parse test, as `(line, message)`.
+#[cfg(test)]
+fn line_of(e: Error) -> (usize, String) {
+    match e {
+        Error::Parse { line, message } => (line, message),
+        other => panic!("expected a parse error, got {other:?}"),
+    }
+}
+
+/// Points with awkward values: random doubles, a duplicate, negative and
+/// tiny/huge magnitudes, and a collinear run on the hull.
+#[cfg(test)]
+fn awkward_points() -> Vec<Point> {
+    use rand::{rngs::StdRng, Rng, SeedableRng};
+    let mut rng = StdRng::seed_from_u64(7);
+    let mut pts: Vec<Point> = (0..40)
+        .map(|_| [rng.gen_range(-1.0..1.0), rng.gen_range(-1.0..1.0)])
+        .collect();
+    pts.extend([
+        [2.0, 2.0],
+        [2.0, -2.0],
+        [2.0, 0.0],
+        [2.0, 1.0],
+        [-2.0, -2.0],
+        [-2.0, 2.0],
+    ]);
+    pts.push(pts[3]);
+    pts.push([1e-30, 3e-40]);
+    pts
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::{delaunay, PointSet};
+
+    #[test]
+    fn write_by_extension() {
+        let dir = std::env::temp_dir().join(format!("optri-io-write-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let t = delaunay(&PointSet::new(&awkward_points()).unwrap()).unwrap();
+        let written = write_triangulation(&t, &dir.join("t.ele")).unwrap();
+        assert_eq!(written, vec![dir.join("t.ele"), dir.join("t.node")]);
+        assert_eq!(
+            OutputFormat::Triangle.files_written(&dir.join("t.ele")),
+            written
+        );
+        assert_eq!(
+            OutputFormat::Json.files_written(&dir.join("t.json")),
+            vec![dir.join("t.json")]
+        );
+        let node = std::fs::read_to_string(dir.join("t.node")).unwrap();
+        assert_eq!(read_points(&node, InputFormat::Node).unwrap(), t.points());
+        for name in ["t.json", "t.geojson", "t.SVG"] {
+            write_triangulation(&t, &dir.join(name)).unwrap();
+        }
+        let svg = std::fs::read_to_string(dir.join("t.SVG")).unwrap();
+        assert_eq!(svg.matches("<line class=\"edge\"").count(), t.edges().len());
+        let e = write_triangulation(&t, &dir.join("t.png"))
+            .unwrap_err()
+            .to_string();
+        assert!(
+            e.contains("t.png") && e.contains(".svg") && e.contains(".ele"),
+            "{e}"
+        );
+        let e = write_triangulation(&t, &dir.join("missing/t.json")).unwrap_err();
+        assert!(
+            matches!(&e, Error::Io(m) if m.contains("missing/t.json")),
+            "{e:?}"
+        );
+        let edges = t.edges();
+        write_graph(t.points(), &edges, "g", &dir.join("g.geojson")).unwrap();
+        let g: serde_json::Value =
+            serde_json::from_str(&std::fs::read_to_string(dir.join("g.geojson")).unwrap()).unwrap();
+        assert_eq!(
+            g["features"].as_array().unwrap().len(),
+            edges.len() + t.points().len()
+        );
+        assert!(write_graph(t.points(), &edges, "g", &dir.join("g.ele")).is_err());
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+}

@@ -1,0 +1,143 @@
+//! `optri demo`: every criterion on a built-in point set, drawn side by side.
+
+use super::{input_error, ms_since};
+use crate::args::DemoArgs;
+use crate::report;
+use crate::CliResult;
+use optri::io::{self, InputFormat, OutputFormat};
+use optri::kernel::Point;
+use optri::{Criterion, PointSet, Requirement, Triangulation};
+use std::time::Instant;
+
+/// The built-in point set of `optri demo`.
+const DEMO_POINTS: &str = include_str!("../demo_points.txt");
+/// The demo's second, strictly convex point set, for the criteria that need
+/// convex position ([`Requirement::ConvexPosition`]).
+const DEMO_CONVEX_POINTS: &str = include_str!("../demo_convex_points.txt");
+
+/// One triangulation of the demo: which point set, the criterion with
+/// `(exact)` or `(uncertified)`, the panel title (both of those), the result
+/// and its time.
+struct DemoResult {
+    set: &'static str,
+    label: String,
+    title: String,
+    triangulation: Triangulation,
+    ms: f64,
+}
+
+/// Reads a built-in point set (valid by construction; errors are still
+/// reported, not unwrapped).
+fn builtin_points(text: &str, name: &str) -> CliResult<(Vec<Point>, PointSet)> {
+    let points = io::read_points(text, InputFormat::Text).map_err(|e| input_error(name, e))?;
+    let point_set = PointSet::new(&points).map_err(|e| input_error(name, e))?;
+    Ok((points, point_set))
+}
+
+/// Triangulates `point_set` (the demo's point set named `set`) by
+/// `criterion`, timed and titled.
+fn demo_result(
+    point_set: &PointSet,
+    criterion: Criterion,
+    set: &'static str,
+) -> optri::Result<DemoResult> {
+    let t0 = Instant::now();
+    let solution = optri::triangulate(point_set, criterion)?;
+    let ms = ms_since(t0);
+    let label = report::label(criterion, solution.exact);
+    Ok(DemoResult {
+        set,
+        title: format!("{label} — {set} set"),
+        label,
+        triangulation: solution.triangulation,
+        ms,
+    })
+}
+
+pub(crate) fn run(args: DemoArgs) -> CliResult<()> {
+    if OutputFormat::from_path(&args.output).map_err(|e| e.to_string())? != OutputFormat::Svg {
+        return Err(format!(
+            "cannot write '{}': the demo draws an SVG; use a .svg path",
+            args.output.display()
+        ));
+    }
+    let (points, point_set) = builtin_points(DEMO_POINTS, "built-in demo points")?;
+    // The demo set has interior points, so the criteria that need convex
+    // position are drawn on the convex set instead.
+    let (convex_only, general): (Vec<Criterion>, Vec<Criterion>) = Criterion::ALL
+        .iter()
+        .copied()
+        .partition(|c| c.info().requirement == Requirement::ConvexPosition);
+    let mut results: Vec<DemoResult> = Vec::new();
+    for &criterion in &general {
+        let r = demo_result(&point_set, criterion, "demo")
+            .map_err(|e| format!("{}: {e}", criterion.name()))?;
+        results.push(r);
+    }
+    let mut text = format!(
+        "demo set: {} points ({} distinct{})\n",
+        points.len(),
+        point_set.len(),
+        report::duplicates_note(&point_set),
+    );
+    if !convex_only.is_empty() {
+        let (convex_points, convex_set) =
+            builtin_points(DEMO_CONVEX_POINTS, "built-in convex demo points")?;
+        text.push_str(&format!(
+            "convex set: {} points in convex position (a jittered ellipse)\n",
+            convex_points.len()
+        ));
+        for criterion in &convex_only {
+            text.push_str(&format!(
+                "  {} is drawn on the convex set: it needs points in convex position\n",
+                criterion.name()
+            ));
+        }
+        // Greedy is the classic heuristic for minimum weight: draw it on the
+        // same set for comparison.
+        text.push_str("  greedy is drawn on the convex set too, for comparison\n");
+        let shown = Criterion::ALL
+            .iter()
+            .copied()
+            .filter(|&c| c == Criterion::Greedy || convex_only.contains(&c));
+        for criterion in shown {
+            let r = demo_result(&convex_set, criterion, "convex")
+                .map_err(|e| format!("{} on the convex demo set: {e}", criterion.name()))?;
+            results.push(r);
+        }
+    }
+    let panels: Vec<(&str, &Triangulation)> = results
+        .iter()
+        .map(|r| (r.title.as_str(), &r.triangulation))
+        .collect();
+    let svg = io::panels_to_svg(&panels);
+    std::fs::write(&args.output, svg)
+        .map_err(|e| format!("cannot write '{}': {e}", args.output.display()))?;
+    text.push_str(&format!(
+        "\n{:<24} {:<7} {:>10} {:>12} {:>10} {:>10} {:>10} {:>10}\n",
+        "criterion",
+        "set",
+        "max edge",
+        "total length",
+        "min angle",
+        "min area",
+        "max area",
+        "time ms"
+    ));
+    for r in &results {
+        let s = r.triangulation.stats();
+        text.push_str(&format!(
+            "{:<24} {:<7} {:>10.4} {:>12.4} {:>10.4} {:>10.4} {:>10.4} {:>10.3}\n",
+            r.label,
+            r.set,
+            s.max_edge_length,
+            s.total_edge_length,
+            s.min_angle_deg,
+            s.min_area,
+            s.max_area,
+            r.ms
+        ));
+    }
+    text.push_str(&format!("\nwrote {}\n", args.output.display()));
+    report::emit(&text)
+}

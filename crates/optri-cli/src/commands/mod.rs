@@ -1,0 +1,192 @@
+//! The subcommands, and the prelude that `triangulate` and `graph` share:
+//! check the outputs, read and validate the input, time every step, write.
+
+pub(crate) mod demo;
+pub(crate) mod graph;
+pub(crate) mod triangulate;
+
+use crate::args::InputArgs;
+use crate::CliResult;
+use optri::io::{self, InputFormat, OutputFormat};
+use optri::kernel::Point;
+use optri::{Error, Phase, PointSet};
+use std::io::Read;
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+
+/// One run of a command over an input file: the validated points, where they
+/// came from, and the phases timed so far.
+pub(crate) struct Run {
+    /// The name of the input for messages: its path, or `<stdin>`.
+    pub source: String,
+    /// The validated input.
+    pub points: PointSet,
+    /// `read`, `validate`, then whatever the command adds, `write` and `total`.
+    pub timing: Timing,
+}
+
+impl Run {
+    /// Checks every output path with `format_for` (before any work, so a
+    /// typo costs nothing), refuses outputs that would overwrite the input,
+    /// then reads and validates the input, timing `read` (from the start)
+    /// and `validate`.
+    pub fn start(
+        input: &InputArgs,
+        outputs: &[PathBuf],
+        format_for: fn(&Path) -> optri::Result<OutputFormat>,
+    ) -> CliResult<Self> {
+        let mut timing = Timing {
+            start: Instant::now(),
+            phases: Vec::new(),
+        };
+        let mut formats = Vec::with_capacity(outputs.len());
+        for path in outputs {
+            formats.push(format_for(path).map_err(|e| e.to_string())?);
+        }
+        refuse_overwriting_input(input, outputs, &formats)?;
+        let (points, source) = read_input(input)?;
+        timing.phases.push(Phase {
+            name: "read",
+            ms: ms_since(timing.start),
+        });
+        let t0 = Instant::now();
+        let points = PointSet::new(&points).map_err(|e| input_error(&source, e))?;
+        timing.phases.push(Phase {
+            name: "validate",
+            ms: ms_since(t0),
+        });
+        Ok(Self {
+            source,
+            points,
+            timing,
+        })
+    }
+
+    /// A picture title: the input's file name, then `what`.
+    pub fn title(&self, what: &str) -> String {
+        format!("{} — {what}", display_name(&self.source))
+    }
+}
+
+/// The phases of a [`Run`], measured from its start.
+pub(crate) struct Timing {
+    start: Instant,
+    /// The phases timed so far, in order.
+    pub phases: Vec<Phase>,
+}
+
+impl Timing {
+    /// Writes every output with `write`, timed as one `write` phase when
+    /// there are outputs; returns the files written.
+    pub fn write(
+        &mut self,
+        outputs: &[PathBuf],
+        mut write: impl FnMut(&Path) -> optri::Result<Vec<PathBuf>>,
+    ) -> CliResult<Vec<PathBuf>> {
+        if outputs.is_empty() {
+            return Ok(Vec::new());
+        }
+        let t0 = Instant::now();
+        let mut written = Vec::new();
+        for path in outputs {
+            written.extend(write(path).map_err(|e| e.to_string())?);
+        }
+        self.phases.push(Phase {
+            name: "write",
+            ms: ms_since(t0),
+        });
+        Ok(written)
+    }
+
+    /// Closes the run with the `total` phase.
+    pub fn finish(&mut self) {
+        self.phases.push(Phase {
+            name: "total",
+            ms: ms_since(self.start),
+        });
+    }
+}
+
+/// Milliseconds since `start`.
+pub(crate) fn ms_since(start: Instant) -> f64 {
+    start.elapsed().as_secs_f64() * 1e3
+}
+
+/// Prefixes an input error with the source name, as `FILE:LINE: message`
+/// for parse errors.
+pub(crate) fn input_error(source: &str, e: Error) -> String {
+    match e {
+        Error::Parse { line, message } if line > 0 => format!("{source}:{line}: {message}"),
+        Error::Parse { message, .. } => format!("{source}: {message}"),
+        // I/O messages already name the path.
+        Error::Io(message) => message,
+        other => format!("{source}: {other}"),
+    }
+}
+
+/// Reads the input points; returns them with the name to use in messages.
+fn read_input(args: &InputArgs) -> CliResult<(Vec<Point>, String)> {
+    let format = args
+        .input_format
+        .as_deref()
+        .map(InputFormat::from_name)
+        .transpose()
+        .map_err(|e| e.to_string())?;
+    if args.input == "-" {
+        let source = "<stdin>".to_string();
+        let mut text = String::new();
+        std::io::stdin()
+            .read_to_string(&mut text)
+            .map_err(|e| format!("cannot read stdin: {e}"))?;
+        let format = format.unwrap_or_else(|| InputFormat::sniff(&text));
+        let points = io::read_points(&text, format).map_err(|e| input_error(&source, e))?;
+        Ok((points, source))
+    } else {
+        let points = io::read_points_file(Path::new(&args.input), format)
+            .map_err(|e| input_error(&args.input, e))?;
+        Ok((points, args.input.clone()))
+    }
+}
+
+/// The file name of `source` (a path or `<stdin>`), for picture titles.
+fn display_name(source: &str) -> String {
+    Path::new(source)
+        .file_name()
+        .map_or_else(|| source.to_string(), |n| n.to_string_lossy().into_owned())
+}
+
+/// Refuses outputs that would overwrite the input file, before any work: an
+/// `.ele` output also writes the `.node` beside it, which is easily the
+/// input. Paths are compared canonicalized, so `./x.node` and `x.node` match.
+fn refuse_overwriting_input(
+    input: &InputArgs,
+    outputs: &[PathBuf],
+    formats: &[OutputFormat],
+) -> CliResult<()> {
+    if input.input == "-" {
+        return Ok(());
+    }
+    // A missing input cannot be overwritten; reading it reports the problem.
+    let Ok(input_path) = std::fs::canonicalize(&input.input) else {
+        return Ok(());
+    };
+    for (output, format) in outputs.iter().zip(formats) {
+        for file in format.files_written(output) {
+            if std::fs::canonicalize(&file).is_ok_and(|f| f == input_path) {
+                let companion = if &file == output {
+                    String::new()
+                } else {
+                    format!(
+                        " (writing '{}' also writes the .node beside it)",
+                        output.display()
+                    )
+                };
+                return Err(format!(
+                    "refusing to overwrite the input file '{}'{companion}; choose another output name",
+                    input.input
+                ));
+            }
+        }
+    }
+    Ok(())
+}

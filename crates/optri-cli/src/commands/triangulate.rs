@@ -1,0 +1,30 @@
+//! `optri triangulate`: one criterion over a point file.
+
+use super::Run;
+use crate::args::TriangulateArgs;
+use crate::report;
+use crate::CliResult;
+use optri::io::{self, OutputFormat, TriangulationReport};
+use optri::Criterion;
+
+pub(crate) fn run(args: TriangulateArgs) -> CliResult<()> {
+    // Check everything the user typed before any work.
+    let criterion = Criterion::from_name(&args.criterion).map_err(|e| e.to_string())?;
+    let mut run = Run::start(&args.input, &args.output, OutputFormat::from_path)?;
+    let solution = optri::triangulate(&run.points, criterion).map_err(|e| e.to_string())?;
+    run.timing.phases.extend(solution.phases.iter().cloned());
+    let title = run.title(&report::label(criterion, solution.exact));
+    // A JSON output holds the phases timed so far (the write and the total
+    // are still running).
+    let timed = run.timing.phases.clone();
+    let document = TriangulationReport::of_solution(&solution).with_timing(&timed);
+    let written = run.timing.write(&args.output, |path| {
+        io::write_triangulation_report(&document, path, &title)
+    })?;
+    run.timing.finish();
+    if args.json {
+        let document = TriangulationReport::of_solution(&solution).with_timing(&run.timing.phases);
+        return report::emit_json(&document);
+    }
+    report::emit(&report::triangulation_summary(&run, &solution, &written))
+}

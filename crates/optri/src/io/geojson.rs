@@ -1,0 +1,346 @@
+//! GeoJSON: the reader of `Point`/`MultiPoint` geometries
+//! ([`InputFormat::GeoJson`]) and the writers of triangulations (`Polygon`s)
+//! and graphs (`LineString`s), both with their points as `Point`s so that
+//! they read back.
+//!
+//! [`InputFormat::GeoJson`]: super::InputFormat::GeoJson
+
+use super::json::document_coordinates;
+use super::{check_coordinate, parse};
+use crate::error::Result;
+use crate::kernel::Point;
+use crate::structures::Triangulation;
+use serde_json::{json, Value};
+
+/// The JSON type name of `v`, for messages.
+fn json_type(v: &Value) -> &'static str {
+    match v {
+        Value::Null => "null",
+        Value::Bool(_) => "a boolean",
+        Value::Number(_) => "a number",
+        Value::String(_) => "a string",
+        Value::Array(_) => "an array",
+        Value::Object(_) => "an object",
+    }
+}
+
+pub(super) fn read_geojson(text: &str) -> Result<Vec<Point>> {
+    if text.trim().is_empty() {
+        return Ok(Vec::new());
+    }
+    let root: Value =
+        serde_json::from_str(text).map_err(|e| parse(e.line(), format!("invalid JSON: {e}")))?;
+    let mut found = GeoJsonPoints::default();
+    // optri's own JSON documents (no "type"): their "coordinates", or the
+    // "points" array of earlier versions.
+    let geojson = root.get("type").is_some();
+    if let Some((name, list)) = document_coordinates(&root).filter(|_| !geojson) {
+        collect_positions(list, name, &mut found.points)?;
+        return Ok(found.points);
+    }
+    collect_geojson(&root, "the document", &mut found)?;
+    if found.points.is_empty() {
+        let what = if found.skipped.is_empty() {
+            "no geometries at all".to_string()
+        } else {
+            let counts: Vec<String> = found
+                .skipped
+                .iter()
+                .map(|(kind, n)| format!("{n} {kind}"))
+                .collect();
+            format!("only {}", counts.join(", "))
+        };
+        return Err(parse(
+            0,
+            format!("GeoJSON: no Point or MultiPoint geometry found (the document has {what})"),
+        ));
+    }
+    Ok(found.points)
+}
+
+/// What [`collect_geojson`] gathers: the points, and how many geometries of
+/// each point-less type were skipped (in first-seen order, for the message
+/// when nothing else is found).
+#[derive(Default)]
+struct GeoJsonPoints {
+    points: Vec<Point>,
+    skipped: Vec<(&'static str, usize)>,
+}
+
+/// Appends the points of a GeoJSON object; `at` describes where it is, for
+/// messages (JSON values carry no line numbers, so errors name the path).
+fn collect_geojson(v: &Value, at: &str, found: &mut GeoJsonPoints) -> Result<()> {
+    /// Valid GeoJSON geometries that hold no points of their own.
+    const POINTLESS: [&str; 4] = ["LineString", "MultiLineString", "Polygon", "MultiPolygon"];
+    let bad = |m: String| Err(parse(0, format!("GeoJSON: {at}: {m}")));
+    let Some(kind) = v.get("type").and_then(Value::as_str) else {
+        return bad(format!(
+            "expected an object with a \"type\", found {}",
+            json_type(v)
+        ));
+    };
+    let member = |name: &str| match v.get(name) {
+        Some(x) => Ok(x),
+        None => Err(parse(0, format!("GeoJSON: {at}: {kind} lacks \"{name}\""))),
+    };
+    match kind {
+        "FeatureCollection" => {
+            let Some(features) = member("features")?.as_array() else {
+                return bad("\"features\" is not an array".into());
+            };
+            for (k, f) in features.iter().enumerate() {
+                collect_geojson(f, &format!("features[{k}]"), found)?;
+            }
+        }
+        "Feature" => match member("geometry")? {
+            Value::Null => {}
+            g => collect_geojson(g, &format!("{at}.geometry"), found)?,
+        },
+        "GeometryCollection" => {
+            let Some(geometries) = member("geometries")?.as_array() else {
+                return bad("\"geometries\" is not an array".into());
+            };
+            for (k, g) in geometries.iter().enumerate() {
+                collect_geojson(g, &format!("{at}.geometries[{k}]"), found)?;
+            }
+        }
+        "Point" => found.points.push(position(member("coordinates")?, at)?),
+        "MultiPoint" => collect_positions(member("coordinates")?, at, &mut found.points)?,
+        other => {
+            // Skipping lines and polygons lets a triangulation's GeoJSON be
+            // read back as its points; an unknown type is more likely a
+            // typo, which must not silently drop points.
+            let Some(&kind) = POINTLESS.iter().find(|&&k| k == other) else {
+                return bad(format!(
+                    "\"{other}\" is not a GeoJSON geometry type (points are read from Point \
+                     and MultiPoint; LineString, Polygon and their Multi forms are skipped)"
+                ));
+            };
+            match found.skipped.iter_mut().find(|(k, _)| *k == kind) {
+                Some((_, n)) => *n += 1,
+                None => found.skipped.push((kind, 1)),
+            }
+        }
+    }
+    Ok(())
+}
+
+fn collect_positions(list: &Value, at: &str, out: &mut Vec<Point>) -> Result<()> {
+    let Some(list) = list.as_array() else {
+        return Err(parse(
+            0,
+            format!(
+                "GeoJSON: {at}: expected an array of positions, found {}",
+                json_type(list)
+            ),
+        ));
+    };
+    for (k, p) in list.iter().enumerate() {
+        out.push(position(p, &format!("{at}[{k}]"))?);
+    }
+    Ok(())
+}
+
+/// A GeoJSON position `[x, y]` or `[x, y, z]` (the third value is ignored).
+fn position(v: &Value, at: &str) -> Result<Point> {
+    let bad = || {
+        parse(
+            0,
+            format!("GeoJSON: {at}: expected a position [x, y], found {v}"),
+        )
+    };
+    let a = v.as_array().ok_or_else(bad)?;
+    if !(2..=3).contains(&a.len()) {
+        return Err(bad());
+    }
+    let mut p = [0.0; 2];
+    for (k, c) in p.iter_mut().enumerate() {
+        let value = a[k].as_f64().ok_or_else(bad)?;
+        *c = check_coordinate(value, &a[k].to_string(), 0)
+            .map_err(|e| parse(0, format!("GeoJSON: {at}: {e}")))?;
+    }
+    Ok(p)
+}
+
+/// A GeoJSON `FeatureCollection` with one `Polygon` per triangle (properties:
+/// `triangle` number and its input-index `vertices`) and, if
+/// `include_points`, one `Point` per input point (property `index`).
+pub fn triangulation_to_geojson(t: &Triangulation, include_points: bool) -> Value {
+    let pts = t.points();
+    let mut features: Vec<Value> = t
+        .triangles()
+        .iter()
+        .enumerate()
+        .map(|(k, tri)| {
+            let ring: Vec<Point> = [tri[0], tri[1], tri[2], tri[0]]
+                .iter()
+                .map(|&i| pts[i as usize])
+                .collect();
+            json!({
+                "type": "Feature",
+                "geometry": {"type": "Polygon", "coordinates": [ring]},
+                "properties": {"triangle": k, "vertices": tri},
+            })
+        })
+        .collect();
+    if include_points {
+        features.extend(points_features(pts));
+    }
+    json!({"type": "FeatureCollection", "features": features})
+}
+
+fn points_features(points: &[Point]) -> impl Iterator<Item = Value> + '_ {
+    points.iter().enumerate().map(|(i, p)| {
+        json!({
+            "type": "Feature",
+            "geometry": {"type": "Point", "coordinates": p},
+            "properties": {"index": i},
+        })
+    })
+}
+
+/// A GeoJSON `FeatureCollection`: one `LineString` per edge (property
+/// `edge: [a, b]`), then one `Point` per point (property `index`).
+///
+/// # Panics
+/// If an edge refers to an index outside `points`.
+pub fn graph_to_geojson(points: &[Point], edges: &[[u32; 2]]) -> Value {
+    let mut features: Vec<Value> = edges
+        .iter()
+        .map(|&[a, b]| {
+            json!({
+                "type": "Feature",
+                "geometry": {"type": "LineString", "coordinates": [points[a as usize], points[b as usize]]},
+                "properties": {"edge": [a, b]},
+            })
+        })
+        .collect();
+    features.extend(points_features(points));
+    json!({"type": "FeatureCollection", "features": features})
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::io::{awkward_points, line_of, read_points, InputFormat};
+    use crate::{delaunay, PointSet};
+
+    #[test]
+    fn geojson_points_and_errors() {
+        let text = r#"{"type":"FeatureCollection","features":[
+            {"type":"Feature","geometry":{"type":"Point","coordinates":[1,2]},"properties":{}},
+            {"type":"Feature","geometry":{"type":"MultiPoint","coordinates":[[3,4],[5,6,7]]}},
+            {"type":"Feature","geometry":null}]}"#;
+        assert_eq!(
+            read_points(text, InputFormat::GeoJson).unwrap(),
+            vec![[1.0, 2.0], [3.0, 4.0], [5.0, 6.0]]
+        );
+        assert_eq!(
+            read_points(
+                r#"{"type":"Point","coordinates":[0.5,-1]}"#,
+                InputFormat::GeoJson
+            )
+            .unwrap(),
+            vec![[0.5, -1.0]]
+        );
+        // Lines and polygons are skipped; a document without any point names
+        // what it holds instead.
+        assert_eq!(
+            read_points(
+                r#"{"type":"GeometryCollection","geometries":[
+                    {"type":"LineString","coordinates":[[0,0],[1,1]]},
+                    {"type":"Point","coordinates":[2,3]}]}"#,
+                InputFormat::GeoJson
+            )
+            .unwrap(),
+            vec![[2.0, 3.0]]
+        );
+        let e = read_points(
+            r#"{"type":"FeatureCollection","features":[
+                {"type":"Feature","geometry":{"type":"LineString","coordinates":[[0,0],[1,1]]}},
+                {"type":"Feature","geometry":{"type":"Polygon","coordinates":[[[0,0],[1,0],[0,1],[0,0]]]}},
+                {"type":"Feature","geometry":{"type":"LineString","coordinates":[[0,0],[1,1]]}}]}"#,
+            InputFormat::GeoJson,
+        )
+        .unwrap_err()
+        .to_string();
+        assert!(
+            e.contains("no Point or MultiPoint") && e.contains("2 LineString, 1 Polygon"),
+            "{e}"
+        );
+        let e = read_points(
+            r#"{"type":"FeatureCollection","features":[]}"#,
+            InputFormat::GeoJson,
+        )
+        .unwrap_err()
+        .to_string();
+        assert!(e.contains("no geometries"), "{e}");
+        let e = read_points(
+            r#"{"type":"Piont","coordinates":[1,2]}"#,
+            InputFormat::GeoJson,
+        )
+        .unwrap_err()
+        .to_string();
+        assert!(
+            e.contains("\"Piont\" is not a GeoJSON geometry type"),
+            "{e}"
+        );
+        let (line, _) = line_of(read_points("{\n\"type\":\n}", InputFormat::GeoJson).unwrap_err());
+        assert_eq!(line, 3);
+        let e = read_points(
+            r#"{"type":"Point","coordinates":[1]}"#,
+            InputFormat::GeoJson,
+        )
+        .unwrap_err()
+        .to_string();
+        assert!(e.contains("position"), "{e}");
+        assert_eq!(
+            read_points(
+                r#"{"points":[[1,2],[3,4]],"triangles":[]}"#,
+                InputFormat::GeoJson
+            )
+            .unwrap(),
+            vec![[1.0, 2.0], [3.0, 4.0]]
+        );
+    }
+
+    #[test]
+    fn geojson_round_trip() {
+        let pts = awkward_points();
+        let t = delaunay(&PointSet::new(&pts).unwrap()).unwrap();
+        let v = triangulation_to_geojson(&t, true);
+        let features = v["features"].as_array().unwrap();
+        assert_eq!(features.len(), t.triangles().len() + pts.len());
+        // Each polygon ring maps back, coordinate by coordinate, to its triangle.
+        for (k, tri) in t.triangles().iter().enumerate() {
+            let ring: Vec<Point> =
+                serde_json::from_value(features[k]["geometry"]["coordinates"][0].clone()).unwrap();
+            assert_eq!(ring.len(), 4);
+            assert_eq!(ring[0], ring[3]);
+            for c in 0..3 {
+                assert_eq!(ring[c], pts[tri[c] as usize]);
+            }
+        }
+        // The point features, read by the GeoJSON reader, give the input.
+        let points_only =
+            json!({"type": "FeatureCollection", "features": features[t.triangles().len()..]});
+        assert_eq!(
+            read_points(&points_only.to_string(), InputFormat::GeoJson).unwrap(),
+            pts
+        );
+        // The whole collection reads back as the points: polygons are skipped.
+        assert_eq!(
+            read_points(&v.to_string(), InputFormat::GeoJson).unwrap(),
+            pts
+        );
+        // Without the point features there are no points, and the reader
+        // says what it found instead.
+        let e = read_points(
+            &triangulation_to_geojson(&t, false).to_string(),
+            InputFormat::GeoJson,
+        )
+        .unwrap_err()
+        .to_string();
+        assert!(e.contains("Polygon"), "{e}");
+    }
+}

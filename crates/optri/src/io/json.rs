@@ -1,0 +1,625 @@
+//! optri's JSON documents: one schema, version [`SCHEMA_VERSION`], for every
+//! front end (the CLI's `--json` and `-o x.json`, Python, web). There are two
+//! documents, told apart by their `"document"` field:
+//!
+//! - `"triangulation"`: [`TriangulationReport`] — a triangulation and, when
+//!   it comes from [`triangulate`](crate::triangulate), how it was obtained
+//!   (criterion, optimality, algorithm, diagnostics, timings);
+//! - `"graph"`: [`GraphReport`] — an edge set over the points and, when it
+//!   comes from [`graph`](crate::graph), its kind and timings.
+//!
+//! `docs/json-schema.md` in the repository lists every field with its type
+//! and meaning. The reports implement `serde::Serialize` (fields in the
+//! documented order) and convert to a `serde_json::Value`;
+//! [`triangulation_from_json`] reads a triangulation document back, and the
+//! GeoJSON reader reads the `coordinates` of either as a point file.
+//!
+//! Indices are input indices (0-based) and `coordinates` lists every input
+//! point, merged duplicates included, so the document describes the input as
+//! given.
+
+use crate::criteria::{Diagnostics, Optimality};
+use crate::error::{Error, Result};
+use crate::kernel::Point;
+use crate::registry::{GraphKind, Solution};
+use crate::structures::{PointSet, Stats, Triangulation};
+use crate::timing::Phase;
+use serde::ser::{Serialize, Serializer};
+use serde_json::Value;
+
+/// The `"schema_version"` of the documents written here. Adding a field
+/// keeps the version; removing or renaming one, or changing its meaning,
+/// raises it.
+pub const SCHEMA_VERSION: u32 = 1;
+
+/// A triangulation as a JSON document (`"document": "triangulation"`).
+///
+/// [`new`](Self::new) describes a bare triangulation; [`of_solution`](Self::of_solution)
+/// adds the run fields (`criterion`, `exact`, `optimality`, `algorithm`,
+/// `diagnostics`, `timing_ms`). The JSON files that
+/// [`write_triangulation`](super::write_triangulation) writes are this
+/// document.
+#[derive(Clone, Copy, Debug)]
+pub struct TriangulationReport<'a> {
+    triangulation: &'a Triangulation,
+    solution: Option<&'a Solution>,
+    timing: Option<&'a [Phase]>,
+}
+
+impl<'a> TriangulationReport<'a> {
+    /// The document of a bare triangulation: no run fields, no timing.
+    pub fn new(triangulation: &'a Triangulation) -> Self {
+        Self {
+            triangulation,
+            solution: None,
+            timing: None,
+        }
+    }
+
+    /// The document of a [`triangulate`](crate::triangulate) result, timed by
+    /// its [`phases`](Solution::phases).
+    pub fn of_solution(solution: &'a Solution) -> Self {
+        Self {
+            triangulation: &solution.triangulation,
+            solution: Some(solution),
+            timing: Some(&solution.phases),
+        }
+    }
+
+    /// Reports `phases` as `timing_ms` instead (e.g. with the reading and
+    /// writing a front end timed around the library call).
+    pub fn with_timing(self, phases: &'a [Phase]) -> Self {
+        Self {
+            timing: Some(phases),
+            ..self
+        }
+    }
+
+    /// The triangulation described.
+    pub fn triangulation(&self) -> &'a Triangulation {
+        self.triangulation
+    }
+
+    /// The document as a JSON value.
+    pub fn to_json(&self) -> Value {
+        to_value(self)
+    }
+}
+
+impl Serialize for TriangulationReport<'_> {
+    fn serialize<S: Serializer>(&self, serializer: S) -> std::result::Result<S::Ok, S::Error> {
+        let t = self.triangulation;
+        let run = self.solution;
+        let optimality = run.map(|s| s.optimality);
+        TriangulationDocument {
+            schema_version: SCHEMA_VERSION,
+            document: "triangulation",
+            criterion: run.map(|s| s.criterion.name()),
+            exact: run.map(|s| s.exact),
+            optimality: optimality.map(Optimality::name),
+            optimality_bound: optimality.and_then(bound),
+            algorithm: run.map(|s| s.algorithm.as_str()),
+            points: t.points().len(),
+            distinct_points: t.point_set().len(),
+            duplicates: t.point_set().duplicates(),
+            stats: t.stats(),
+            diagnostics: run.map(|s| DiagnosticsMap(&s.diagnostics)),
+            timing_ms: self.timing.map(TimingMap),
+            triangles: t.triangles(),
+            edges: t.edges(),
+            coordinates: t.points(),
+        }
+        .serialize(serializer)
+    }
+}
+
+/// The fields of a triangulation document, in the order written.
+#[derive(serde::Serialize)]
+struct TriangulationDocument<'a> {
+    schema_version: u32,
+    document: &'static str,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    criterion: Option<&'static str>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    exact: Option<bool>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    optimality: Option<&'static str>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    optimality_bound: Option<&'static str>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    algorithm: Option<&'a str>,
+    points: usize,
+    distinct_points: usize,
+    duplicates: &'a [[u32; 2]],
+    stats: Stats,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    diagnostics: Option<DiagnosticsMap<'a>>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    timing_ms: Option<TimingMap<'a>>,
+    triangles: &'a [[u32; 3]],
+    edges: Vec<[u32; 2]>,
+    coordinates: &'a [Point],
+}
+
+/// A graph as a JSON document (`"document": "graph"`).
+///
+/// [`new`](Self::new) describes a bare edge set over points;
+/// [`of_graph`](Self::of_graph) adds the graph `kind`, the distinct-point
+/// count and the duplicates; [`with_timing`](Self::with_timing) adds
+/// `timing_ms`. The JSON files that [`write_graph`](super::write_graph)
+/// writes are this document.
+#[derive(Clone, Copy, Debug)]
+pub struct GraphReport<'a> {
+    points: &'a [Point],
+    edges: &'a [[u32; 2]],
+    point_set: Option<&'a PointSet>,
+    kind: Option<GraphKind>,
+    timing: Option<&'a [Phase]>,
+}
+
+impl<'a> GraphReport<'a> {
+    /// The document of `edges` (index pairs into `points`).
+    pub fn new(points: &'a [Point], edges: &'a [[u32; 2]]) -> Self {
+        Self {
+            points,
+            edges,
+            point_set: None,
+            kind: None,
+            timing: None,
+        }
+    }
+
+    /// The document of the graph `kind` of `point_set` (edges as returned by
+    /// [`graph`](crate::graph): input-index pairs).
+    pub fn of_graph(point_set: &'a PointSet, kind: GraphKind, edges: &'a [[u32; 2]]) -> Self {
+        Self {
+            points: point_set.input_points(),
+            edges,
+            point_set: Some(point_set),
+            kind: Some(kind),
+            timing: None,
+        }
+    }
+
+    /// Reports `phases` as `timing_ms`.
+    pub fn with_timing(self, phases: &'a [Phase]) -> Self {
+        Self {
+            timing: Some(phases),
+            ..self
+        }
+    }
+
+    /// The points (all input points).
+    pub fn points(&self) -> &'a [Point] {
+        self.points
+    }
+
+    /// The edges, as index pairs into [`points`](Self::points).
+    pub fn edges(&self) -> &'a [[u32; 2]] {
+        self.edges
+    }
+
+    /// The document as a JSON value.
+    pub fn to_json(&self) -> Value {
+        to_value(self)
+    }
+}
+
+impl Serialize for GraphReport<'_> {
+    fn serialize<S: Serializer>(&self, serializer: S) -> std::result::Result<S::Ok, S::Error> {
+        GraphDocument {
+            schema_version: SCHEMA_VERSION,
+            document: "graph",
+            kind: self.kind.map(GraphKind::name),
+            points: self.points.len(),
+            distinct_points: self.point_set.map(PointSet::len),
+            duplicates: self.point_set.map(PointSet::duplicates),
+            timing_ms: self.timing.map(TimingMap),
+            edges: self.edges,
+            coordinates: self.points,
+        }
+        .serialize(serializer)
+    }
+}
+
+/// The fields of a graph document, in the order written.
+#[derive(serde::Serialize)]
+struct GraphDocument<'a> {
+    schema_version: u32,
+    document: &'static str,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    kind: Option<&'static str>,
+    points: usize,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    distinct_points: Option<usize>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    duplicates: Option<&'a [[u32; 2]]>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    timing_ms: Option<TimingMap<'a>>,
+    edges: &'a [[u32; 2]],
+    coordinates: &'a [Point],
+}
+
+/// The guarantee of an approximation, if the result is one.
+fn bound(optimality: Optimality) -> Option<&'static str> {
+    match optimality {
+        Optimality::Approximation { bound } => Some(bound),
+        _ => None,
+    }
+}
+
+/// `{"name": milliseconds, ...}` in phase order; a phase that ran more than
+/// once (e.g. minmax length's `lower bound`) is reported once, with the sum.
+#[derive(Clone, Copy)]
+struct TimingMap<'a>(&'a [Phase]);
+
+impl Serialize for TimingMap<'_> {
+    fn serialize<S: Serializer>(&self, serializer: S) -> std::result::Result<S::Ok, S::Error> {
+        let mut merged: Vec<(&str, f64)> = Vec::with_capacity(self.0.len());
+        for phase in self.0 {
+            match merged.iter_mut().find(|(name, _)| *name == phase.name) {
+                Some((_, ms)) => *ms += phase.ms,
+                None => merged.push((phase.name, phase.ms)),
+            }
+        }
+        serializer.collect_map(merged)
+    }
+}
+
+/// `{"counter": count, ...}` in the order the algorithm reported them.
+struct DiagnosticsMap<'a>(&'a Diagnostics);
+
+impl Serialize for DiagnosticsMap<'_> {
+    fn serialize<S: Serializer>(&self, serializer: S) -> std::result::Result<S::Ok, S::Error> {
+        serializer.collect_map(self.0.iter())
+    }
+}
+
+fn to_value(document: &impl Serialize) -> Value {
+    // The documents hold strings, numbers, arrays and string-keyed maps only.
+    serde_json::to_value(document).expect("an optri document always converts to a JSON value")
+}
+
+/// The document of a [`triangulate`](crate::triangulate) result:
+/// [`TriangulationReport::of_solution`] as a value.
+pub fn solution_to_json(solution: &Solution) -> Value {
+    TriangulationReport::of_solution(solution).to_json()
+}
+
+/// The document of a bare triangulation: [`TriangulationReport::new`] as a
+/// value.
+pub fn triangulation_to_json(t: &Triangulation) -> Value {
+    TriangulationReport::new(t).to_json()
+}
+
+/// The document of a bare graph: [`GraphReport::new`] as a value.
+pub fn graph_to_json(points: &[Point], edges: &[[u32; 2]]) -> Value {
+    GraphReport::new(points, edges).to_json()
+}
+
+/// The member of an optri document that holds its points: `coordinates`, or
+/// in documents from before schema version 1 (written by `-o x.json`) the
+/// `points` array. `None` if there is neither.
+pub(super) fn document_coordinates(document: &Value) -> Option<(&'static str, &Value)> {
+    match (document.get("coordinates"), document.get("points")) {
+        (Some(c), _) => Some(("coordinates", c)),
+        (None, Some(p)) => Some(("points", p)),
+        (None, None) => None,
+    }
+}
+
+/// Reads a triangulation document back and validates it: the
+/// [`TriangulationReport`] document, or the document of earlier versions
+/// (with the coordinates as a `points` array). Only `coordinates` and
+/// `triangles` are read; the duplicates follow from the coordinates and every
+/// other field from the triangulation.
+///
+/// # Errors
+/// [`Error::Parse`] (line 0) for a malformed object, a graph document or a
+/// newer `schema_version`; the errors of [`PointSet::new`] and
+/// [`Triangulation::from_triangles`].
+pub fn triangulation_from_json(value: &Value) -> Result<Triangulation> {
+    let bad = |m: &str| Error::Parse {
+        line: 0,
+        message: format!("triangulation JSON: {m}"),
+    };
+    if let Some(version) = value.get("schema_version") {
+        if !version
+            .as_u64()
+            .is_some_and(|v| v <= u64::from(SCHEMA_VERSION))
+        {
+            return Err(bad(&format!(
+                "schema_version {version} is not one this optri reads (1 to {SCHEMA_VERSION})"
+            )));
+        }
+    }
+    if let Some(document) = value.get("document").filter(|d| *d != "triangulation") {
+        return Err(bad(&format!(
+            "\"document\" is {document}, not \"triangulation\""
+        )));
+    }
+    let (name, coordinates) = document_coordinates(value)
+        .filter(|(_, c)| c.is_array())
+        .ok_or_else(|| bad("no \"coordinates\" (nor the \"points\" array of earlier versions)"))?;
+    let points: Vec<Point> = serde_json::from_value(coordinates.clone())
+        .map_err(|e| bad(&format!("\"{name}\": {e}")))?;
+    let triangles: Vec<[u32; 3]> = serde_json::from_value(
+        value
+            .get("triangles")
+            .cloned()
+            .ok_or_else(|| bad("no \"triangles\""))?,
+    )
+    .map_err(|e| bad(&format!("\"triangles\": {e}")))?;
+    let point_set = PointSet::new(&points)?;
+    if let Some(i) = triangles
+        .iter()
+        .flatten()
+        .find(|&&i| i as usize >= points.len())
+    {
+        return Err(bad(&format!("triangle index {i} out of range")));
+    }
+    Triangulation::from_triangles(&point_set, triangles)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::io::{awkward_points, read_points, InputFormat};
+    use crate::{delaunay, triangulate, Criterion, PointSet};
+    use serde_json::json;
+
+    /// The fields of every triangulation document, in order.
+    const TRIANGULATION_FIELDS: &[&str] = &[
+        "schema_version",
+        "document",
+        "points",
+        "distinct_points",
+        "duplicates",
+        "stats",
+        "triangles",
+        "edges",
+        "coordinates",
+    ];
+    /// The fields a triangulation document has when it describes a run.
+    const RUN_FIELDS: &[&str] = &[
+        "criterion",
+        "exact",
+        "optimality",
+        "algorithm",
+        "diagnostics",
+        "timing_ms",
+    ];
+    const STATS_FIELDS: &[&str] = &[
+        "max_edge_length",
+        "longest_edge",
+        "total_edge_length",
+        "min_area",
+        "max_area",
+        "min_angle_deg",
+        "max_angle_deg",
+        "triangles",
+        "edges",
+        "hull_points",
+    ];
+    const GRAPH_FIELDS: &[&str] = &[
+        "schema_version",
+        "document",
+        "points",
+        "edges",
+        "coordinates",
+    ];
+    const GRAPH_RUN_FIELDS: &[&str] = &["kind", "distinct_points", "duplicates", "timing_ms"];
+
+    fn keys(v: &Value) -> Vec<&str> {
+        let mut k: Vec<&str> = v.as_object().unwrap().keys().map(String::as_str).collect();
+        k.sort_unstable();
+        k
+    }
+
+    fn sorted(lists: &[&[&'static str]]) -> Vec<&'static str> {
+        let mut k: Vec<&str> = lists.concat();
+        k.sort_unstable();
+        k
+    }
+
+    #[test]
+    fn json_round_trip_gives_the_same_triangulation() {
+        let ps = PointSet::new(&awkward_points()).unwrap();
+        let t = delaunay(&ps).unwrap();
+        let text = serde_json::to_string(&triangulation_to_json(&t)).unwrap();
+        let back = triangulation_from_json(&serde_json::from_str(&text).unwrap()).unwrap();
+        assert_eq!(back.points(), t.points());
+        assert_eq!(back.triangles(), t.triangles());
+        assert_eq!(back.point_set().duplicates(), &[[46, 3]]);
+        // The points alone read back through the GeoJSON reader.
+        assert_eq!(
+            read_points(&text, InputFormat::GeoJson).unwrap(),
+            t.points()
+        );
+        // Tampering is caught: a flipped triangle no longer validates.
+        let mut v = triangulation_to_json(&t);
+        v["triangles"][0] = json!([
+            t.triangles()[0][1],
+            t.triangles()[0][0],
+            t.triangles()[0][2]
+        ]);
+        assert!(triangulation_from_json(&v).is_err());
+        v["triangles"][0] = json!([0, 1, 999]);
+        assert!(triangulation_from_json(&v).is_err());
+    }
+
+    #[test]
+    fn a_solution_document_has_every_field_in_order_and_reads_back() {
+        let pts = awkward_points();
+        let ps = PointSet::new(&pts).unwrap();
+        let solution = triangulate(&ps, Criterion::Greedy).unwrap();
+        let t = &solution.triangulation;
+        let v = solution_to_json(&solution);
+        assert_eq!(keys(&v), sorted(&[TRIANGULATION_FIELDS, RUN_FIELDS]));
+        assert_eq!(keys(&v["stats"]), sorted(&[STATS_FIELDS]));
+        assert_eq!(v["schema_version"], SCHEMA_VERSION);
+        assert_eq!(v["document"], "triangulation");
+        assert_eq!(v["criterion"], "greedy");
+        assert_eq!(v["exact"], true);
+        assert_eq!(v["optimality"], "exact");
+        assert_eq!(v["algorithm"], solution.algorithm.as_str());
+        assert_eq!(v["points"], pts.len());
+        assert_eq!(v["distinct_points"], pts.len() - 1);
+        assert_eq!(v["duplicates"], json!([[46, 3]]));
+        assert_eq!(v["coordinates"], json!(pts));
+        assert_eq!(v["triangles"], json!(t.triangles()));
+        assert_eq!(v["edges"], json!(t.edges()));
+        assert_eq!(v["stats"]["longest_edge"], json!(t.longest_edge()));
+        assert_eq!(v["stats"]["triangles"], t.triangles().len());
+        assert_eq!(v["diagnostics"], json!({}));
+        for phase in &solution.phases {
+            assert!(v["timing_ms"][phase.name].is_number(), "{}", phase.name);
+        }
+        // Serialised directly, the fields come in the documented order:
+        // run facts first, the long arrays last.
+        let text = serde_json::to_string(&TriangulationReport::of_solution(&solution)).unwrap();
+        let order: Vec<usize> = [
+            "\"schema_version\"",
+            "\"criterion\"",
+            "\"points\"",
+            "\"stats\"",
+            "\"timing_ms\"",
+            "\"triangles\":[[",
+            "\"coordinates\"",
+        ]
+        .iter()
+        .map(|k| text.find(k).unwrap())
+        .collect();
+        assert!(order.windows(2).all(|w| w[0] < w[1]), "{order:?}");
+        assert!(text.starts_with("{\"schema_version\":1,\"document\":\"triangulation\","));
+        let back = triangulation_from_json(&v).unwrap();
+        assert_eq!(back.triangles(), t.triangles());
+        assert_eq!(read_points(&text, InputFormat::GeoJson).unwrap(), pts);
+    }
+
+    #[test]
+    fn bare_documents_omit_the_run_fields() {
+        let t = delaunay(&PointSet::new(&awkward_points()).unwrap()).unwrap();
+        let v = triangulation_to_json(&t);
+        assert_eq!(keys(&v), sorted(&[TRIANGULATION_FIELDS]));
+        let g = graph_to_json(t.points(), &t.edges());
+        assert_eq!(keys(&g), sorted(&[GRAPH_FIELDS]));
+        assert_eq!(g["document"], "graph");
+        assert_eq!(g["points"], t.points().len());
+    }
+
+    #[test]
+    fn timing_keeps_the_phase_order_and_sums_a_repeated_phase() {
+        let t = delaunay(&PointSet::new(&awkward_points()).unwrap()).unwrap();
+        let phases = [
+            Phase {
+                name: "read",
+                ms: 1.0,
+            },
+            Phase {
+                name: "lower bound",
+                ms: 0.25,
+            },
+            Phase {
+                name: "rng",
+                ms: 2.0,
+            },
+            Phase {
+                name: "lower bound",
+                ms: 0.5,
+            },
+        ];
+        let report = TriangulationReport::new(&t).with_timing(&phases);
+        let v = report.to_json();
+        assert_eq!(keys(&v), sorted(&[TRIANGULATION_FIELDS, &["timing_ms"]]));
+        assert_eq!(
+            v["timing_ms"],
+            json!({"read": 1.0, "lower bound": 0.75, "rng": 2.0})
+        );
+        let text = serde_json::to_string(&report).unwrap();
+        assert!(
+            text.contains(r#""timing_ms":{"read":1.0,"lower bound":0.75,"rng":2.0}"#),
+            "{text}"
+        );
+    }
+
+    #[test]
+    fn a_graph_document_has_its_kind_and_duplicates_and_reads_back_as_points() {
+        let pts = awkward_points();
+        let ps = PointSet::new(&pts).unwrap();
+        let (edges, phases) = crate::graph(&ps, GraphKind::Rng).unwrap();
+        let v = GraphReport::of_graph(&ps, GraphKind::Rng, &edges)
+            .with_timing(&phases)
+            .to_json();
+        assert_eq!(keys(&v), sorted(&[GRAPH_FIELDS, GRAPH_RUN_FIELDS]));
+        assert_eq!(v["kind"], "rng");
+        assert_eq!(v["points"], pts.len());
+        assert_eq!(v["distinct_points"], ps.len());
+        assert_eq!(v["duplicates"], json!([[46, 3]]));
+        assert_eq!(v["edges"], json!(edges));
+        assert!(v["timing_ms"]["rng"].is_number());
+        assert_eq!(
+            read_points(&v.to_string(), InputFormat::GeoJson).unwrap(),
+            pts
+        );
+        // A graph is not a triangulation.
+        let e = triangulation_from_json(&v).unwrap_err().to_string();
+        assert!(
+            e.contains("\"graph\"") && e.contains("not \"triangulation\""),
+            "{e}"
+        );
+    }
+
+    #[test]
+    fn documents_of_earlier_versions_read_back_and_newer_ones_are_refused() {
+        let t = delaunay(&PointSet::new(&awkward_points()).unwrap()).unwrap();
+        // What `-o x.json` wrote before schema version 1.
+        let old = json!({
+            "points": t.points(),
+            "triangles": t.triangles(),
+            "edges": t.edges(),
+            "duplicates": t.point_set().duplicates(),
+        });
+        let back = triangulation_from_json(&old).unwrap();
+        assert_eq!(back.triangles(), t.triangles());
+        assert_eq!(back.point_set().duplicates(), &[[46, 3]]);
+        assert_eq!(
+            read_points(&old.to_string(), InputFormat::GeoJson).unwrap(),
+            t.points()
+        );
+        let mut newer = triangulation_to_json(&t);
+        newer["schema_version"] = json!(SCHEMA_VERSION + 1);
+        let e = triangulation_from_json(&newer).unwrap_err().to_string();
+        assert!(e.contains("schema_version 2"), "{e}");
+        // A `--json` document of a count without coordinates says so.
+        let e = triangulation_from_json(&json!({"points": 3, "triangles": [[0, 1, 2]]}))
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("no \"coordinates\""), "{e}");
+    }
+
+    #[test]
+    fn the_schema_document_names_every_field() {
+        let path = concat!(env!("CARGO_MANIFEST_DIR"), "/../../docs/json-schema.md");
+        let doc = std::fs::read_to_string(path).unwrap();
+        assert!(
+            doc.contains(&format!("schema version {SCHEMA_VERSION}")),
+            "{path}"
+        );
+        for field in [
+            TRIANGULATION_FIELDS,
+            RUN_FIELDS,
+            STATS_FIELDS,
+            GRAPH_FIELDS,
+            GRAPH_RUN_FIELDS,
+            &["optimality_bound"],
+        ]
+        .concat()
+        {
+            assert!(
+                doc.contains(&format!("`{field}`")),
+                "{path} lacks `{field}`"
+            );
+        }
+    }
+}

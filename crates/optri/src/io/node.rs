@@ -1,0 +1,199 @@
+//! Triangle's `.node` (points) and `.ele` (triangles) files: the reader
+//! of `.node` ([`InputFormat::Node`]) and the writer of both.
+//!
+//! [`InputFormat::Node`]: super::InputFormat::Node
+
+use super::{coordinate, parse, strip_comment};
+use crate::error::Result;
+use crate::kernel::Point;
+use crate::structures::Triangulation;
+use std::fmt::Write;
+
+pub(super) fn read_node(text: &str) -> Result<Vec<Point>> {
+    let mut lines = text
+        .lines()
+        .enumerate()
+        .map(|(i, l)| {
+            (
+                i + 1,
+                strip_comment(l).split_whitespace().collect::<Vec<_>>(),
+            )
+        })
+        .filter(|(_, t)| !t.is_empty());
+    let Some((header_line, header)) = lines.next() else {
+        return Ok(Vec::new());
+    };
+    let field = |k: usize, what: &str| -> Result<usize> {
+        match header.get(k) {
+            None if k >= 2 => Ok(0),
+            None => Err(parse(header_line, format!("header lacks the {what}"))),
+            Some(t) => t.parse().map_err(|_| {
+                parse(
+                    header_line,
+                    format!("header field {what} '{t}' is not a non-negative integer"),
+                )
+            }),
+        }
+    };
+    let count = field(0, "vertex count")?;
+    let dimension = field(1, "dimension")?;
+    let attributes = field(2, "attribute count")?;
+    let markers = field(3, "boundary-marker flag")?;
+    if dimension != 2 {
+        return Err(parse(
+            header_line,
+            format!("dimension is {dimension}, only 2 is supported"),
+        ));
+    }
+    if markers > 1 {
+        return Err(parse(
+            header_line,
+            format!("boundary-marker flag must be 0 or 1, found {markers}"),
+        ));
+    }
+    let columns = 3 + attributes + markers;
+    let mut points = Vec::with_capacity(count.min(1 << 20));
+    let mut first_id = None;
+    for (line, tokens) in lines {
+        if points.len() == count {
+            return Err(parse(
+                line,
+                format!("more vertex lines than the {count} the header announces"),
+            ));
+        }
+        if tokens.len() != columns {
+            return Err(parse(
+                line,
+                format!(
+                    "expected {columns} fields (id x y{}{}), found {}",
+                    if attributes > 0 { " attributes…" } else { "" },
+                    if markers > 0 { " marker" } else { "" },
+                    tokens.len()
+                ),
+            ));
+        }
+        let id: usize = tokens[0]
+            .parse()
+            .map_err(|_| parse(line, format!("vertex id '{}' is not an integer", tokens[0])))?;
+        let base = *first_id.get_or_insert(id);
+        if base > 1 || id != base + points.len() {
+            return Err(parse(
+                line,
+                format!(
+                    "vertex id {id} out of sequence (expected {})",
+                    if base > 1 { 0 } else { base + points.len() }
+                ),
+            ));
+        }
+        for t in &tokens[3..] {
+            t.parse::<f64>()
+                .map_err(|_| parse(line, format!("'{t}' is not a number")))?;
+        }
+        points.push([coordinate(tokens[1], line)?, coordinate(tokens[2], line)?]);
+    }
+    if points.len() != count {
+        return Err(parse(
+            header_line,
+            format!(
+                "the header announces {count} vertices, the file has {}",
+                points.len()
+            ),
+        ));
+    }
+    Ok(points)
+}
+
+/// A coordinate in shortest round-trip notation, with an exponent for very
+/// large or small magnitudes (Rust's `{}` never uses one).
+fn coordinate_text(v: f64) -> String {
+    let a = v.abs();
+    if a == 0.0 || (1e-5..1e16).contains(&a) {
+        format!("{v}")
+    } else {
+        format!("{v:e}")
+    }
+}
+
+/// Triangle's `.node` and `.ele` texts. Numbering is 0-based and equals the
+/// input index; every input point is listed (duplicates too).
+pub fn triangulation_to_triangle_files(t: &Triangulation) -> (String, String) {
+    let pts = t.points();
+    let mut node = String::with_capacity(pts.len() * 24);
+    let _ = writeln!(node, "# optri: input points, 0-based (id = input index)");
+    let _ = writeln!(node, "{} 2 0 0", pts.len());
+    for (i, p) in pts.iter().enumerate() {
+        let _ = writeln!(
+            node,
+            "{i} {} {}",
+            coordinate_text(p[0]),
+            coordinate_text(p[1])
+        );
+    }
+    let mut ele = String::with_capacity(t.triangles().len() * 20);
+    let _ = writeln!(
+        ele,
+        "# optri: counter-clockwise triangles over the 0-based .node ids"
+    );
+    let _ = writeln!(ele, "{} 3 0", t.triangles().len());
+    for (k, [a, b, c]) in t.triangles().iter().enumerate() {
+        let _ = writeln!(ele, "{k} {a} {b} {c}");
+    }
+    (node, ele)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::io::{awkward_points, line_of, read_points, InputFormat};
+    use crate::{delaunay, PointSet};
+
+    #[test]
+    fn node_files() {
+        let text = "# comment\n4 2 1 1\n1 0 0 7 1\n2 1 0 7 1\n3 1 1 7 0\n4 0 1 7 1\n";
+        assert_eq!(
+            read_points(text, InputFormat::Node).unwrap(),
+            vec![[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]]
+        );
+        assert_eq!(
+            read_points("3 2 0 0\n0 0 0\n1 1 0\n2 0 1\n", InputFormat::Node).unwrap(),
+            vec![[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]]
+        );
+        let (line, _) = line_of(
+            read_points("3 2 0 0\n0 0 0\n1 1 0 5\n2 0 1\n", InputFormat::Node).unwrap_err(),
+        );
+        assert_eq!(line, 3);
+        let (line, m) =
+            line_of(read_points("3 2 0 0\n0 0 0\n1 1 0\n", InputFormat::Node).unwrap_err());
+        assert_eq!(line, 1);
+        assert!(m.contains("3 vertices"), "{m}");
+        let (line, _) =
+            line_of(read_points("2 3 0 0\n0 0 0 0\n1 1 0 0\n", InputFormat::Node).unwrap_err());
+        assert_eq!(line, 1);
+        let (line, _) = line_of(read_points("2 2\n0 0 0\n5 1 0\n", InputFormat::Node).unwrap_err());
+        assert_eq!(line, 3);
+    }
+
+    #[test]
+    fn triangle_files_round_trip() {
+        let mut pts = awkward_points();
+        pts.push([3e40, -5e-20]);
+        let t = delaunay(&PointSet::new(&pts).unwrap()).unwrap();
+        let (node, ele) = triangulation_to_triangle_files(&t);
+        assert_eq!(read_points(&node, InputFormat::Node).unwrap(), pts);
+        let rows: Vec<Vec<u32>> = ele
+            .lines()
+            .filter(|l| !l.starts_with('#'))
+            .map(|l| l.split_whitespace().map(|x| x.parse().unwrap()).collect())
+            .collect();
+        assert_eq!(rows[0], vec![t.triangles().len() as u32, 3, 0]);
+        let triangles: Vec<[u32; 3]> = rows[1..]
+            .iter()
+            .enumerate()
+            .map(|(k, r)| {
+                assert_eq!(r[0], k as u32);
+                [r[1], r[2], r[3]]
+            })
+            .collect();
+        assert_eq!(triangles, t.triangles());
+    }
+}
