@@ -6,6 +6,9 @@
 
 use crate::exact::{cross, dist2, dot, incircle, orient, scale, Point, Ring, Scaled};
 use num_bigint::BigInt;
+use rand::rngs::StdRng;
+use rand::seq::SliceRandom;
+use rand::SeedableRng;
 use std::cmp::Ordering;
 
 /// Points as exact scaled integers.
@@ -63,16 +66,14 @@ fn assert_distinct(points: &[Point]) {
     }
 }
 
-/// A fixed pseudo-random permutation of `0..n` (Fisher–Yates with an LCG).
+/// The seed of [`shuffled`]'s permutation.
+const SCAN_ORDER_SEED: u64 = 0x9E37_79B9_7F4A_7C15;
+
+/// A fixed pseudo-random permutation of `0..n` (the same for every call with
+/// the same `n`). It only orders the scan: results do not depend on it.
 fn shuffled(n: usize) -> Vec<usize> {
     let mut v: Vec<usize> = (0..n).collect();
-    let mut state: u64 = 0x9E37_79B9_7F4A_7C15;
-    for i in (1..n).rev() {
-        state = state
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        v.swap(i, (state >> 33) as usize % (i + 1));
-    }
+    v.shuffle(&mut StdRng::seed_from_u64(SCAN_ORDER_SEED));
     v
 }
 
@@ -342,4 +343,13 @@ pub fn bounded_faces(points: &[Point], edges: &[[u32; 2]]) -> Vec<Vec<u32>> {
         }
     }
     faces
+}
+
+/// Whether a face cycle from [`bounded_faces`] visits some vertex more than
+/// once: a crack (a dangling edge or tree walked on both sides) or a pinch.
+pub fn is_cracked(face: &[u32]) -> bool {
+    let mut sorted = face.to_vec();
+    sorted.sort_unstable();
+    sorted.dedup();
+    sorted.len() < face.len()
 }

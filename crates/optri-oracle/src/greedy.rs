@@ -508,22 +508,19 @@ mod tests {
     use super::*;
     use crate::enumerate::{greedy_triangulation, triangle_edges};
     use crate::exact::orient;
+    use crate::inputs::{
+        collinear_runs, grid, integer_circle_points as circle, lattice_points, uniform_in_box,
+    };
     use crate::symbolic::compare_lengths_perturbed;
     use num_bigint::BigInt;
+    use rand::rngs::StdRng;
+    use rand::{Rng, SeedableRng};
 
-    struct Lcg(u64);
-    impl Lcg {
-        fn next(&mut self, m: u64) -> u64 {
-            self.0 = self
-                .0
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            (self.0 >> 33) % m
-        }
-        fn unit(&mut self) -> f64 {
-            self.next(1 << 30) as f64 / (1u64 << 30) as f64 + self.next(1 << 23) as f64 * 1e-16
-        }
-    }
+    const SEED_RANDOM_SMALL_SETS: u64 = 1;
+    const SEED_COLLINEAR_RUNS: u64 = 2;
+    const SEED_TIE_ORDER: u64 = 3;
+    const SEED_FILTERS: u64 = 4;
+    const SEED_INTEGER_PATHS: u64 = 5;
 
     /// Drops repeated points (first occurrence kept).
     fn distinct(pts: Vec<Point>) -> Vec<Point> {
@@ -534,24 +531,6 @@ mod tests {
             }
         }
         out
-    }
-
-    fn grid(w: usize, h: usize) -> Vec<Point> {
-        (0..w * h)
-            .map(|i| [(i % w) as f64, (i / w) as f64])
-            .collect()
-    }
-
-    fn circle(r: i64) -> Vec<Point> {
-        let mut v = Vec::new();
-        for x in -r..=r {
-            for y in -r..=r {
-                if x * x + y * y == r * r {
-                    v.push([x as f64, y as f64]);
-                }
-            }
-        }
-        v
     }
 
     /// Compares with the O(n⁴) definition; returns 1 for counting.
@@ -572,25 +551,19 @@ mod tests {
 
     #[test]
     fn matches_the_definition_on_random_small_sets() {
-        let mut rng = Lcg(1);
+        let mut rng = StdRng::seed_from_u64(SEED_RANDOM_SMALL_SETS);
         let mut checked = 0;
         for case in 0..400 {
-            let n = 3 + rng.next(14) as usize;
+            let n = rng.gen_range(3..17);
             let side = [3, 5, 8, 1000][case % 4];
-            let pts = distinct(
-                (0..n)
-                    .map(|_| [rng.next(side) as f64, rng.next(side) as f64])
-                    .collect(),
-            );
+            let pts = distinct(lattice_points(&mut rng, n, 0..side, 0..side));
             if pts.len() >= 3 {
                 checked += check(&pts, &format!("integer case {case}"));
             }
         }
         for case in 0..100 {
-            let n = 3 + rng.next(14) as usize;
-            let pts: Vec<Point> = (0..n)
-                .map(|_| [rng.unit() * 2.0 - 1.0, rng.unit() * 3.0 - 1.5])
-                .collect();
+            let n = rng.gen_range(3..17);
+            let pts = uniform_in_box(&mut rng, n, [-1.0, -1.5], [1.0, 1.5]);
             checked += check(&pts, &format!("float case {case}"));
         }
         assert!(checked >= 480, "{checked}");
@@ -602,13 +575,13 @@ mod tests {
         for w in 1..=6 {
             for h in 1..=5 {
                 if w * h >= 3 {
-                    checked += check(&grid(w, h), &format!("grid {w}x{h}"));
+                    checked += check(&grid(w, h, 1.0), &format!("grid {w}x{h}"));
                 }
             }
         }
         for k in 3..=12 {
-            checked += check(&grid(2, k), &format!("grid 2x{k}"));
-            checked += check(&grid(k, 1), &format!("collinear {k}"));
+            checked += check(&grid(2, k, 1.0), &format!("grid 2x{k}"));
+            checked += check(&grid(k, 1, 1.0), &format!("collinear {k}"));
         }
         for r in [5, 25] {
             let mut c = circle(r);
@@ -618,20 +591,11 @@ mod tests {
         }
         checked += check(&circle(65), "circle 65");
         // Collinear runs with noise; scaled and negative copies; duplicates
-        // removed.
-        let mut rng = Lcg(2);
-        for case in 0..60 {
-            let mut pts = Vec::new();
-            for _ in 0..1 + rng.next(3) {
-                let a = [rng.next(10) as f64 - 5.0, rng.next(10) as f64 - 5.0];
-                let d = [rng.next(7) as f64 - 3.0, rng.next(7) as f64 - 3.0];
-                for t in 0..2 + rng.next(6) {
-                    pts.push([a[0] + t as f64 * d[0], a[1] + t as f64 * d[1]]);
-                }
-            }
-            for _ in 0..rng.next(4) {
-                pts.push([rng.next(16) as f64 - 8.0, rng.next(16) as f64 - 8.0]);
-            }
+        // removed (about one set in twenty keeps fewer than three points and
+        // is skipped).
+        let mut rng = StdRng::seed_from_u64(SEED_COLLINEAR_RUNS);
+        for case in 0..72 {
+            let pts = collinear_runs(&mut rng, 1..4, 2..8, 0..4);
             let s = [1.0, 2f64.powi(150), -(2f64.powi(-120)), 0.1][case % 4];
             let pts = distinct(pts.into_iter().map(|p| [p[0] * s, p[1] * s]).collect());
             if pts.len() >= 3 {
@@ -643,14 +607,11 @@ mod tests {
 
     #[test]
     fn tie_order_is_the_symbolic_perturbation() {
-        let mut rng = Lcg(3);
-        let mut sets = vec![grid(3, 3), grid(4, 2), circle(5)];
+        let mut rng = StdRng::seed_from_u64(SEED_TIE_ORDER);
+        let mut sets = vec![grid(3, 3, 1.0), grid(4, 2, 1.0), circle(5)];
         for _ in 0..30 {
-            let n = 4 + rng.next(6) as usize;
-            let pts: Vec<Point> = (0..n)
-                .map(|_| [rng.next(4) as f64, rng.next(4) as f64])
-                .collect();
-            sets.push(distinct(pts));
+            let n = rng.gen_range(4..10);
+            sets.push(distinct(lattice_points(&mut rng, n, 0..4, 0..4)));
         }
         let mut compared = 0;
         for pts in sets {
@@ -685,15 +646,15 @@ mod tests {
 
     #[test]
     fn filters_agree_with_exact_predicates() {
-        let mut rng = Lcg(4);
+        let mut rng = StdRng::seed_from_u64(SEED_FILTERS);
         for _ in 0..20_000 {
             // Nearly collinear triples: r close to the line pq.
-            let p = [rng.unit(), rng.unit()];
-            let q = [rng.unit() * 1e3, rng.unit() * 1e3];
-            let t = rng.unit();
+            let p: Point = [rng.gen(), rng.gen()];
+            let q = [rng.gen::<f64>() * 1e3, rng.gen::<f64>() * 1e3];
+            let t: f64 = rng.gen();
             let mut r = [p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1])];
-            r[rng.next(2) as usize] += (rng.next(5) as f64 - 2.0) * 1e-13;
-            let s = [1.0, 2f64.powi(200), 2f64.powi(-140)][rng.next(3) as usize];
+            r[rng.gen_range(0..2)] += rng.gen_range(-2..=2) as f64 * 1e-13;
+            let s = [1.0, 2f64.powi(200), 2f64.powi(-140)][rng.gen_range(0..3)];
             let [p, q, r] = [p, q, r].map(|v| [v[0] * s, v[1] * s]);
             if let Some(o) = orient_filter(p, q, r) {
                 assert_eq!(o, orient(p, q, r), "{p:?} {q:?} {r:?}");
@@ -710,15 +671,11 @@ mod tests {
 
     #[test]
     fn small_and_big_integer_paths_agree_and_count_edges() {
-        let mut rng = Lcg(5);
+        let mut rng = StdRng::seed_from_u64(SEED_INTEGER_PATHS);
         for case in 0..6 {
             let n = 150 + 50 * case;
             let side = if case % 2 == 0 { 30 } else { 1 << 20 };
-            let pts = distinct(
-                (0..n)
-                    .map(|_| [rng.next(side) as f64, rng.next(side) as f64])
-                    .collect(),
-            );
+            let pts = distinct(lattice_points(&mut rng, n, 0..side, 0..side));
             let small = greedy_edges_with::<i128>(&pts);
             assert_eq!(small, greedy_edges_with::<BigInt>(&pts), "case {case}");
             assert_eq!(small, greedy_edges(&pts));

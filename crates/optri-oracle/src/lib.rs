@@ -12,7 +12,9 @@
 //! Klincsek's polygon DP ([`klincsek()`]), brute-force definitions of the
 //! proximity graphs ([`graphs`]), and a polynomial expansion of the
 //! symbolic perturbation ([`symbolic`]). Slow by design; inputs are small
-//! (except [`greedy_edges`]).
+//! (except [`greedy_edges`]). [`inputs`] holds the seeded point-set
+//! generators and named degenerate fixtures the tests, benches and examples
+//! share.
 //!
 //! [`data_dir`] finds the shared test data (`$OPTRI_DATA`, else
 //! `shared/data` beside the repository).
@@ -42,8 +44,8 @@ pub use exact::{
     rational_to_f64, squared_length, to_rational, twice_area, Point,
 };
 pub use graphs::{
-    bounded_faces, convex_hull_edges, delaunay_check, gabriel_edges, is_minimum_spanning_tree,
-    rng_edges,
+    bounded_faces, convex_hull_edges, delaunay_check, gabriel_edges, is_cracked,
+    is_minimum_spanning_tree, rng_edges,
 };
 pub use greedy::greedy_edges;
 pub use inputs::integer_circle_points;

@@ -11,41 +11,22 @@
 
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
 use optri::PointSet;
-use rand::{rngs::StdRng, Rng, SeedableRng};
+use optri_oracle::inputs::{boxed, perturbed_circle, uniform_unit_square};
+use rand::{rngs::StdRng, SeedableRng};
 
-fn uniform(n: usize, seed: u64) -> Vec<[f64; 2]> {
-    let mut rng = StdRng::seed_from_u64(seed);
-    (0..n)
-        .map(|_| [rng.gen::<f64>(), rng.gen::<f64>()])
-        .collect()
-}
-
-/// Points on the unit circle with the radius perturbed by up to 1e-3.
-fn perturbed_circle(n: usize, seed: u64) -> Vec<[f64; 2]> {
-    let mut rng = StdRng::seed_from_u64(seed);
-    (0..n)
-        .map(|i| {
-            let a = i as f64 / n as f64 * std::f64::consts::TAU;
-            let r = 1.0 + 1e-3 * rng.gen::<f64>();
-            [r * a.cos(), r * a.sin()]
-        })
-        .collect()
-}
-
-/// `uniform(n)` plus the unit square's boundary sampled at spacing 1/√n.
-fn boxed(n: usize, seed: u64) -> Vec<[f64; 2]> {
-    let mut pts = uniform(n, seed);
-    let k = (n as f64).sqrt().ceil() as usize;
-    for i in 0..k {
-        let t = i as f64 / k as f64;
-        pts.extend([[t, 0.0], [1.0, t], [1.0 - t, 1.0], [0.0, 1.0 - t]]);
-    }
-    pts
-}
+const SEED_UNIFORM: u64 = 1;
+const SEED_CONVEX: u64 = 2;
 
 fn uniform_points(c: &mut Criterion) {
     let n = 100_000;
-    for (name, pts) in [("uniform", uniform(n, 1)), ("boxed", boxed(n, 1))] {
+    // The same uniform points, with and without the boundary.
+    for (name, pts) in [
+        (
+            "uniform",
+            uniform_unit_square(&mut StdRng::seed_from_u64(SEED_UNIFORM), n),
+        ),
+        ("boxed", boxed(&mut StdRng::seed_from_u64(SEED_UNIFORM), n)),
+    ] {
         let mut group = c.benchmark_group(format!("minmax_length_{name}"));
         group.sample_size(10);
         let ps = PointSet::new(&pts).unwrap();
@@ -75,7 +56,8 @@ fn convex_position(c: &mut Criterion) {
     // The cubic reference takes ~40 s at n = 1000; the example
     // `minmax_timing cubic 1000` measures that point once.
     for &n in &[300usize, 600] {
-        let ps = PointSet::new(&perturbed_circle(n, 2)).unwrap();
+        let pts = perturbed_circle(&mut StdRng::seed_from_u64(SEED_CONVEX), n, 1e-3);
+        let ps = PointSet::new(&pts).unwrap();
         group.bench_with_input(BenchmarkId::new("quadratic", n), &ps, |b, ps| {
             b.iter(|| optri::minmax_length(ps).unwrap())
         });
@@ -84,7 +66,8 @@ fn convex_position(c: &mut Criterion) {
         });
     }
     for &n in &[1_000usize, 2_000] {
-        let ps = PointSet::new(&perturbed_circle(n, 2)).unwrap();
+        let pts = perturbed_circle(&mut StdRng::seed_from_u64(SEED_CONVEX), n, 1e-3);
+        let ps = PointSet::new(&pts).unwrap();
         group.bench_with_input(BenchmarkId::new("quadratic", n), &ps, |b, ps| {
             b.iter(|| optri::minmax_length(ps).unwrap())
         });

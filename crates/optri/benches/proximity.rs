@@ -5,20 +5,16 @@
 
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
 use optri::PointSet;
-use rand::{rngs::StdRng, Rng, SeedableRng};
+use optri_oracle::inputs::uniform_unit_square;
+use rand::{rngs::StdRng, SeedableRng};
 
-fn uniform(n: usize, seed: u64) -> Vec<[f64; 2]> {
-    let mut rng = StdRng::seed_from_u64(seed);
-    (0..n)
-        .map(|_| [rng.gen::<f64>(), rng.gen::<f64>()])
-        .collect()
-}
+const SEED_UNIFORM: u64 = 1;
 
 fn proximity(c: &mut Criterion) {
     let mut group = c.benchmark_group("proximity");
     group.sample_size(10);
     for &n in &[10_000usize, 100_000] {
-        let points = uniform(n, 1);
+        let points = uniform_unit_square(&mut StdRng::seed_from_u64(SEED_UNIFORM), n);
         let ps = PointSet::new(&points).unwrap();
         group.bench_with_input(BenchmarkId::new("spade_delaunay", n), &ps, |b, ps| {
             b.iter(|| optri::delaunay(ps).unwrap())

@@ -13,9 +13,12 @@
 //! after GT.
 
 use optri::{delaunay, triangulate, Criterion, PointSet};
+use optri_oracle::inputs::{clustered, convex_lens, random_parabola, uniform_in_box};
 use rand::rngs::StdRng;
-use rand::{Rng, SeedableRng};
+use rand::SeedableRng;
 use std::time::Instant;
+
+const SEED: u64 = 2024;
 
 fn peak_rss_mib() -> f64 {
     let status = std::fs::read_to_string("/proc/self/status").unwrap_or_default();
@@ -27,65 +30,18 @@ fn peak_rss_mib() -> f64 {
         .map_or(f64::NAN, |kb| kb / 1024.0)
 }
 
-/// `n` points in strictly convex position, exactly: a lens of the integer
-/// parabolas `y = x²` and `y = 2m² - x²`, `|x| ≤ m`, with distinct random
-/// abscissae (not semicircular: both lens corners are sharp).
-fn convex_points(rng: &mut StdRng, n: usize) -> Vec<[f64; 2]> {
-    let m = 2 * n as i64;
-    let side = |rng: &mut StdRng, k: usize| -> Vec<i64> {
-        rand::seq::index::sample(rng, (2 * m - 1) as usize, k)
-            .into_iter()
-            .map(|i| i as i64 - m + 1)
-            .collect()
-    };
-    let mut pts: Vec<[f64; 2]> = vec![[-m as f64, (m * m) as f64], [m as f64, (m * m) as f64]];
-    let lower = side(rng, (n - 2) / 2);
-    pts.extend(lower.iter().map(|&x| [x as f64, (x * x) as f64]));
-    let upper = side(rng, n - 2 - (n - 2) / 2);
-    pts.extend(
-        upper
-            .iter()
-            .map(|&x| [x as f64, (2 * m * m - x * x) as f64]),
-    );
-    pts
-}
-
-/// `n` points on the integer parabola `y = x²`: semicircular (the base joins
-/// the two extreme points, and every other point sees it at an obtuse angle).
-fn semicircular_points(rng: &mut StdRng, n: usize) -> Vec<[f64; 2]> {
-    rand::seq::index::sample(rng, 4 * n, n)
-        .into_iter()
-        .map(|x| [x as f64, (x as f64) * (x as f64)])
-        .collect()
-}
-
 fn main() {
     let args: Vec<String> = std::env::args().collect();
     let mode = args.get(1).map_or("uniform", String::as_str);
     let n: usize = args.get(2).and_then(|s| s.parse().ok()).unwrap_or(100_000);
-    let mut rng = StdRng::seed_from_u64(2024);
+    let mut rng = StdRng::seed_from_u64(SEED);
     let pts = match mode {
-        "uniform" => (0..n)
-            .map(|_| [rng.gen_range(0.0..1.0), rng.gen_range(0.0..1.0)])
-            .collect(),
-        "convex" => convex_points(&mut rng, n),
-        "semicircular" => semicircular_points(&mut rng, n),
-        "clustered" => {
-            let clusters = (n / 1000).max(20);
-            let mut pts = Vec::with_capacity(n);
-            for c in 0..clusters {
-                let centre = [rng.gen_range(-1e4..1e4), rng.gen_range(-1e4..1e4)];
-                let r: f64 = rng.gen_range(10.0..2e3);
-                let count = n / clusters + usize::from(c < n % clusters);
-                for _ in 0..count {
-                    pts.push([
-                        centre[0] + rng.gen_range(-r..r),
-                        centre[1] + rng.gen_range(-r..r),
-                    ]);
-                }
-            }
-            pts
-        }
+        "uniform" => uniform_in_box(&mut rng, n, [0.0, 0.0], [1.0, 1.0]),
+        // A lens of two integer parabolas: strictly convex, not semicircular.
+        "convex" => convex_lens(&mut rng, n),
+        // Integer points on `y = x²`: semicircular.
+        "semicircular" => random_parabola(&mut rng, n, 4 * n),
+        "clustered" => clustered(&mut rng, n, (n / 1000).max(20)),
         other => panic!("unknown mode {other} (uniform | clustered | convex | semicircular)"),
     };
     let ps = PointSet::new(&pts).expect("valid points");

@@ -24,25 +24,23 @@ use optri::internals::{
     REGIONS_CERTIFIED_BY_BOUND, SMALL_REGION,
 };
 use optri::{Criterion, PointSet};
-use rand::{rngs::StdRng, Rng, SeedableRng};
+use optri_oracle::inputs::{boxed, perturbed_circle, uniform_unit_square};
+use rand::{rngs::StdRng, SeedableRng};
 use std::sync::atomic::Ordering::Relaxed;
 use std::time::Instant;
+
+const SEED_UNIFORM: u64 = 1;
+const SEED_CONVEX: u64 = 2;
+
+/// Points on the unit circle with the radius perturbed by up to 1e-3.
+fn convex(n: usize) -> Vec<[f64; 2]> {
+    perturbed_circle(&mut StdRng::seed_from_u64(SEED_CONVEX), n, 1e-3)
+}
 
 fn secs<T>(f: impl FnOnce() -> T) -> (T, f64) {
     let t = Instant::now();
     let out = f();
     (out, t.elapsed().as_secs_f64())
-}
-
-fn convex(n: usize, seed: u64) -> Vec<[f64; 2]> {
-    let mut rng = StdRng::seed_from_u64(seed);
-    (0..n)
-        .map(|i| {
-            let a = i as f64 / n as f64 * std::f64::consts::TAU;
-            let r = 1.0 + 1e-3 * rng.gen::<f64>();
-            [r * a.cos(), r * a.sin()]
-        })
-        .collect()
 }
 
 fn peak_memory() -> String {
@@ -131,19 +129,12 @@ fn main() {
     match mode {
         "uniform" => {
             let n = sizes.first().copied().unwrap_or(1_000_000);
-            let mut rng = StdRng::seed_from_u64(1);
-            let pts: Vec<[f64; 2]> = (0..n).map(|_| [rng.gen(), rng.gen()]).collect();
+            let pts = uniform_unit_square(&mut StdRng::seed_from_u64(SEED_UNIFORM), n);
             compare_with_delaunay("uniform", &PointSet::new(&pts).unwrap());
         }
         "boxed" => {
             let n = sizes.first().copied().unwrap_or(1_000_000);
-            let mut rng = StdRng::seed_from_u64(1);
-            let mut pts: Vec<[f64; 2]> = (0..n).map(|_| [rng.gen(), rng.gen()]).collect();
-            let k = (n as f64).sqrt().ceil() as usize;
-            for i in 0..k {
-                let t = i as f64 / k as f64;
-                pts.extend([[t, 0.0], [1.0, t], [1.0 - t, 1.0], [0.0, 1.0 - t]]);
-            }
+            let pts = boxed(&mut StdRng::seed_from_u64(SEED_UNIFORM), n);
             compare_with_delaunay("boxed", &PointSet::new(&pts).unwrap());
         }
         "tsp" => {
@@ -155,7 +146,7 @@ fn main() {
         }
         "convex" => {
             for &n in &sizes {
-                let ps = PointSet::new(&convex(n, 2)).unwrap();
+                let ps = PointSet::new(&convex(n)).unwrap();
                 let (s, m) = secs(|| optri::triangulate(&ps, Criterion::MinmaxLength).unwrap());
                 let poly = s
                     .phases
@@ -172,7 +163,7 @@ fn main() {
         }
         "cubic" => {
             for &n in &sizes {
-                let ps = PointSet::new(&convex(n, 2)).unwrap();
+                let ps = PointSet::new(&convex(n)).unwrap();
                 let (t, q) = secs(|| optri::minmax_length(&ps).unwrap());
                 let (r, c) = secs(|| optri::internals::minmax_length_cubic(&ps).unwrap());
                 let le = |t: &optri::Triangulation| {
@@ -192,8 +183,7 @@ fn main() {
             // cutoff N c…: the product's polygon phase with the quadratic
             // algorithm on regions of at least c corners.
             let n = sizes.first().copied().unwrap_or(200_000);
-            let mut rng = StdRng::seed_from_u64(1);
-            let pts: Vec<[f64; 2]> = (0..n).map(|_| [rng.gen(), rng.gen()]).collect();
+            let pts = uniform_unit_square(&mut StdRng::seed_from_u64(SEED_UNIFORM), n);
             let ps = PointSet::new(&pts).unwrap();
             for &c in &sizes[1..] {
                 let (_, t) = secs(|| optri::internals::minmax_length_with(&ps, c).unwrap());

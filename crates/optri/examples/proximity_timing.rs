@@ -10,9 +10,13 @@
 
 use optri::kernel::incircle_sign;
 use optri::PointSet;
-use rand::{rngs::StdRng, Rng, SeedableRng};
+use optri_oracle::inputs::{circle_at_random_angles, uniform_unit_square};
+use rand::{rngs::StdRng, SeedableRng};
 use std::collections::HashMap;
 use std::time::Instant;
+
+const SEED_UNIFORM: u64 = 2026;
+const SEED_CIRCLE: u64 = 7;
 
 fn secs<T>(f: impl FnOnce() -> T) -> (T, f64) {
     let t = Instant::now();
@@ -62,10 +66,7 @@ fn main() {
         .nth(1)
         .and_then(|s| s.parse().ok())
         .unwrap_or(1_000_000);
-    let mut rng = StdRng::seed_from_u64(2026);
-    let points: Vec<[f64; 2]> = (0..n)
-        .map(|_| [rng.gen::<f64>(), rng.gen::<f64>()])
-        .collect();
+    let points = uniform_unit_square(&mut StdRng::seed_from_u64(SEED_UNIFORM), n);
     let ps = PointSet::new(&points).expect("valid points");
     println!("uniform random points: n = {n}");
     let (dt, t_spade) = secs(|| optri::delaunay(&ps).unwrap());
@@ -104,14 +105,8 @@ fn main() {
     );
 
     let m = 100_000;
-    let mut rng = StdRng::seed_from_u64(7);
     // Points on a circle, rounded to f64: nearly cocircular, a stress test for in-circle.
-    let circle: Vec<[f64; 2]> = (0..m)
-        .map(|_| {
-            let a: f64 = rng.gen::<f64>() * std::f64::consts::TAU;
-            [1e3 * a.cos(), 1e3 * a.sin()]
-        })
-        .collect();
+    let circle = circle_at_random_angles(&mut StdRng::seed_from_u64(SEED_CIRCLE), m, 1e3);
     let cps = PointSet::new(&circle).unwrap();
     println!("near-cocircular points: n = {} distinct", cps.len());
     let (sdt, t_s) = secs(|| optri::delaunay(&cps).unwrap());

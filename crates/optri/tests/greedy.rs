@@ -16,8 +16,25 @@ use optri::internals::{
 };
 use optri::kernel::Point;
 use optri::{triangulate, Criterion, PointSet};
+use optri_oracle::inputs::{
+    clustered, collinear_runs, convex_lens, grid, grid_subset, integer_circle_points as circle,
+    jittered_arc, lattice_points, random_parabola, rounded_circle, run_with_apex,
+    uniform_in_square,
+};
 use rand::rngs::StdRng;
 use rand::{Rng, SeedableRng};
+
+const SEED_RANDOM_SMALL_SETS: u64 = 3;
+const SEED_LARGER_RANDOM_SETS: u64 = 5;
+const SEED_GRIDS_AND_COLLINEAR_RUNS: u64 = 4;
+const SEED_COCIRCULAR_HUGE_DUPLICATES: u64 = 6;
+const SEED_SMALL_CONVEX_INPUTS: u64 = 7;
+const SEED_CONVEX_AT_SCALE: u64 = 8;
+const SEED_CONVEX_3000: u64 = 10;
+const SEED_RANDOM_5000: u64 = 15;
+const SEED_NAIVE_REFERENCE: u64 = 16;
+const SEED_REGISTRY: u64 = 9;
+const SEED_CONVEX_10000: u64 = 12;
 
 /// Distinct-index `[min, max]` edges of a triangulation, sorted.
 fn distinct_edges(ps: &PointSet, t: &optri::Triangulation) -> Vec<[u32; 2]> {
@@ -173,55 +190,18 @@ fn check(points: &[Point], what: &str, tally: &mut Tally) -> Option<GreedyAlgori
     Some(algorithm)
 }
 
-fn uniform(rng: &mut StdRng, n: usize, scale: f64) -> Vec<Point> {
-    (0..n)
-        .map(|_| [rng.gen_range(-scale..scale), rng.gen_range(-scale..scale)])
-        .collect()
-}
-
-/// `clusters` clusters of `per` points with random centres and radii: empty
-/// regions force long edges inside the hull.
-fn clustered(rng: &mut StdRng, clusters: usize, per: usize) -> Vec<Point> {
-    let mut pts = Vec::new();
-    for _ in 0..clusters {
-        let c = [rng.gen_range(-1e4..1e4), rng.gen_range(-1e4..1e4)];
-        let r = rng.gen_range(10.0..2e3);
-        for _ in 0..per {
-            pts.push([c[0] + rng.gen_range(-r..r), c[1] + rng.gen_range(-r..r)]);
-        }
-    }
-    pts
-}
-
-fn grid(w: usize, h: usize) -> Vec<Point> {
-    (0..w * h)
-        .map(|i| [(i % w) as f64, (i / w) as f64])
-        .collect()
-}
-
-/// Each point of a `w × h` grid with probability `p`, in random order.
-fn grid_subset(rng: &mut StdRng, w: usize, h: usize, p: f64) -> Vec<Point> {
-    let mut pts: Vec<Point> = grid(w, h).into_iter().filter(|_| rng.gen_bool(p)).collect();
-    for i in (1..pts.len()).rev() {
-        pts.swap(i, rng.gen_range(0..=i));
-    }
-    pts
-}
-
-use optri_oracle::integer_circle_points as circle;
-
 #[test]
 fn random_small_sets_match_the_oracle() {
-    let mut rng = StdRng::seed_from_u64(3);
+    let mut rng = StdRng::seed_from_u64(SEED_RANDOM_SMALL_SETS);
     let mut tally = Tally::default();
     for case in 0..3000 {
         let n = rng.gen_range(3..=40);
         let pts = match case % 3 {
-            0 => uniform(&mut rng, n, 100.0),
-            1 => uniform(&mut rng, n, 1.0),
+            0 => uniform_in_square(&mut rng, n, 100.0),
+            1 => uniform_in_square(&mut rng, n, 1.0),
             _ => {
                 let k = rng.gen_range(1..4);
-                clustered(&mut rng, k, n.div_ceil(3))
+                clustered(&mut rng, k * n.div_ceil(3), k)
             }
         };
         check(&pts, &format!("random case {case}"), &mut tally);
@@ -231,17 +211,18 @@ fn random_small_sets_match_the_oracle() {
 
 #[test]
 fn larger_random_sets_match_the_oracle() {
-    let mut rng = StdRng::seed_from_u64(5);
+    let mut rng = StdRng::seed_from_u64(SEED_LARGER_RANDOM_SETS);
     let mut tally = Tally::default();
     for &n in &[100, 200, 500, 1000, 2000] {
         for rep in 0..4 {
             let scale = [1e3, 1.0, 1e-3, 2f64.powi(100)][rep];
-            let pts = uniform(&mut rng, n, scale);
+            let pts = uniform_in_square(&mut rng, n, scale);
             check(&pts, &format!("uniform n={n} rep {rep}"), &mut tally);
         }
     }
     for case in 0..4 {
-        let pts = clustered(&mut rng, 4 + 2 * case, 60);
+        let k = 4 + 2 * case;
+        let pts = clustered(&mut rng, 60 * k, k);
         check(&pts, &format!("clusters case {case}"), &mut tally);
     }
     assert_eq!(tally.sets, 24, "{tally:?}");
@@ -249,20 +230,20 @@ fn larger_random_sets_match_the_oracle() {
 
 #[test]
 fn integer_grids_and_collinear_runs_match_the_oracle() {
-    let mut rng = StdRng::seed_from_u64(4);
+    let mut rng = StdRng::seed_from_u64(SEED_GRIDS_AND_COLLINEAR_RUNS);
     let mut tally = Tally::default();
     // Full grids, including thin 2 × k and 3 × k strips.
     for w in 2..=12 {
         for h in 1..=12 {
-            check(&grid(w, h), &format!("grid {w}x{h}"), &mut tally);
+            check(&grid(w, h, 1.0), &format!("grid {w}x{h}"), &mut tally);
         }
     }
     for k in [20, 50, 100, 200] {
-        check(&grid(2, k), &format!("grid 2x{k}"), &mut tally);
-        check(&grid(k, 2), &format!("grid {k}x2"), &mut tally);
-        check(&grid(3, k), &format!("grid 3x{k}"), &mut tally);
+        check(&grid(2, k, 1.0), &format!("grid 2x{k}"), &mut tally);
+        check(&grid(k, 2, 1.0), &format!("grid {k}x2"), &mut tally);
+        check(&grid(3, k, 1.0), &format!("grid 3x{k}"), &mut tally);
     }
-    check(&grid(30, 30), "grid 30x30", &mut tally);
+    check(&grid(30, 30, 1.0), "grid 30x30", &mut tally);
     // Random subsets of grids.
     for case in 0..600 {
         let (w, h) = (rng.gen_range(2..9), rng.gen_range(2..9));
@@ -276,42 +257,30 @@ fn integer_grids_and_collinear_runs_match_the_oracle() {
     }
     // Small integer sets with duplicates.
     for case in 0..600 {
-        let n = rng.gen_range(3..30);
+        let n = rng.gen_range(3..30i32) as usize;
         let m = rng.gen_range(2..7);
-        let pts: Vec<Point> = (0..n)
-            .map(|_| [rng.gen_range(0..m) as f64, rng.gen_range(0..m) as f64])
-            .collect();
+        let pts = lattice_points(&mut rng, n, 0..m, 0..m);
         check(&pts, &format!("small integer case {case}"), &mut tally);
     }
     // Points on a few lines (many points on open segments), plus noise.
     for case in 0..300 {
-        let mut pts = Vec::new();
-        for _ in 0..rng.gen_range(1..4) {
-            let (a, d) = (
-                [rng.gen_range(-5..5) as f64, rng.gen_range(-5..5) as f64],
-                [rng.gen_range(-3..4) as f64, rng.gen_range(-3..4) as f64],
-            );
-            for t in 0..rng.gen_range(2..12) {
-                pts.push([a[0] + t as f64 * d[0], a[1] + t as f64 * d[1]]);
-            }
-        }
-        for _ in 0..rng.gen_range(0..6) {
-            pts.push([rng.gen_range(-8..8) as f64, rng.gen_range(-8..8) as f64]);
-        }
+        let pts = collinear_runs(&mut rng, 1..4, 2..12, 0..6);
         check(&pts, &format!("collinear runs case {case}"), &mut tally);
     }
     // A long collinear run with one point off the line.
     for k in [10, 100, 300] {
-        let mut pts: Vec<Point> = (0..k).map(|i| [i as f64, 0.0]).collect();
-        pts.push([(k / 3) as f64, 1.0]);
-        check(&pts, &format!("run of {k} plus apex"), &mut tally);
+        check(
+            &run_with_apex(k),
+            &format!("run of {k} plus apex"),
+            &mut tally,
+        );
     }
     assert!(tally.sets >= 1500, "{tally:?}");
 }
 
 #[test]
 fn cocircular_huge_negative_and_duplicate_points_match_the_oracle() {
-    let mut rng = StdRng::seed_from_u64(6);
+    let mut rng = StdRng::seed_from_u64(SEED_COCIRCULAR_HUGE_DUPLICATES);
     let mut tally = Tally::default();
     // Single exactly cocircular circles: strictly convex, not semicircular,
     // so the dispatcher runs the convex algorithm.
@@ -340,23 +309,19 @@ fn cocircular_huge_negative_and_duplicate_points_match_the_oracle() {
     check(&one, "circle 65 with centre", &mut tally);
     // Duplicates, huge, tiny and negative coordinates: exactness across scales.
     for case in 0..400 {
-        let n = rng.gen_range(3..30);
+        let n = rng.gen_range(3..30i32) as usize;
         let scale = [2f64.powi(150), -(2f64.powi(-120)), 1e-3, 7.0][case % 4];
         let offset = [0.0, -3.0][case / 4 % 2];
-        let mut pts: Vec<Point> = (0..n)
-            .map(|_| {
-                [
-                    (rng.gen_range(-6..6) as f64 + offset) * scale,
-                    (rng.gen_range(-6..6) as f64 + offset) * scale,
-                ]
-            })
+        let mut pts: Vec<Point> = lattice_points(&mut rng, n, -6..6, -6..6)
+            .into_iter()
+            .map(|p| [(p[0] + offset) * scale, (p[1] + offset) * scale])
             .collect();
         pts.push(pts[0]);
         check(&pts, &format!("scaled integer case {case}"), &mut tally);
     }
     for case in 0..100 {
         let n = rng.gen_range(3..40);
-        let mut pts: Vec<Point> = uniform(&mut rng, n, 1.0)
+        let mut pts: Vec<Point> = uniform_in_square(&mut rng, n, 1.0)
             .into_iter()
             .map(|p| {
                 [
@@ -425,71 +390,15 @@ fn large_tsplib_files_match_the_oracle() {
     assert_eq!(check_tsplib(false), 3);
 }
 
-/// `n` points in strictly convex position, exactly: a lens of the integer
-/// parabolas `y = x²` and `y = 2m² − x²` (not semicircular: the two corners
-/// are the farthest pair and not adjacent).
-fn convex_lens(rng: &mut StdRng, n: usize) -> Vec<Point> {
-    let m = 2 * n as i64;
-    let mut side = |k: usize| -> Vec<i64> {
-        rand::seq::index::sample(rng, (2 * m - 1) as usize, k)
-            .into_iter()
-            .map(|i| i as i64 - m + 1)
-            .collect()
-    };
-    let lower = side((n - 2) / 2);
-    let upper = side(n - 2 - (n - 2) / 2);
-    let mut pts: Vec<Point> = vec![[-m as f64, (m * m) as f64], [m as f64, (m * m) as f64]];
-    pts.extend(lower.iter().map(|&x| [x as f64, (x * x) as f64]));
-    pts.extend(
-        upper
-            .iter()
-            .map(|&x| [x as f64, (2 * m * m - x * x) as f64]),
-    );
-    pts
-}
-
-/// `n` points on the integer parabola `y = x²`, `0 ≤ x < span`
-/// (semicircular).
-fn parabola(rng: &mut StdRng, n: usize, span: usize) -> Vec<Point> {
-    rand::seq::index::sample(rng, span, n)
-        .into_iter()
-        .map(|x| [x as f64, (x as f64) * (x as f64)])
-        .collect()
-}
-
-/// Points on a circle of radius `r` at random angles, rounded to integers
-/// (jittered; the dispatcher decides what they are).
-fn rounded_circle(rng: &mut StdRng, n: usize, r: f64) -> Vec<Point> {
-    (0..n)
-        .map(|_| {
-            let a: f64 = rng.gen_range(0.0..std::f64::consts::TAU);
-            [(r * a.cos()).round(), (r * a.sin()).round()]
-        })
-        .collect()
-}
-
-/// Points on an arc of less than a half circle, jittered by up to 10⁻⁹ of
-/// the radius (usually semicircular).
-fn jittered_arc(rng: &mut StdRng, n: usize) -> Vec<Point> {
-    let span = rng.gen_range(0.5..3.0);
-    (0..n)
-        .map(|_| {
-            let a: f64 = rng.gen_range(0.0..span);
-            let r = 1e3 * (1.0 + rng.gen_range(-1e-9..1e-9));
-            [r * a.cos(), r * a.sin()]
-        })
-        .collect()
-}
-
 #[test]
 fn convex_and_semicircular_algorithms_match_on_small_convex_inputs() {
-    let mut rng = StdRng::seed_from_u64(7);
+    let mut rng = StdRng::seed_from_u64(SEED_SMALL_CONVEX_INPUTS);
     let mut tally = Tally::default();
     for case in 0..1200 {
         let n = rng.gen_range(3..=40);
         let (pts, kind) = match case % 5 {
             0 => (convex_lens(&mut rng, n.max(4)), "lens"),
-            1 => (parabola(&mut rng, n, 3 * n), "parabola"),
+            1 => (random_parabola(&mut rng, n, 3 * n), "parabola"),
             2 => (rounded_circle(&mut rng, n, 1e3), "rounded circle"),
             3 => (rounded_circle(&mut rng, n, 1e9), "rounded big circle"),
             _ => (jittered_arc(&mut rng, n), "jittered arc"),
@@ -517,7 +426,7 @@ fn convex_and_semicircular_algorithms_match_on_small_convex_inputs() {
 
 #[test]
 fn convex_and_semicircular_algorithms_match_the_oracle_at_scale() {
-    let mut rng = StdRng::seed_from_u64(8);
+    let mut rng = StdRng::seed_from_u64(SEED_CONVEX_AT_SCALE);
     let mut tally = Tally::default();
     for &n in &[300, 1000] {
         let pts = convex_lens(&mut rng, n);
@@ -525,7 +434,7 @@ fn convex_and_semicircular_algorithms_match_the_oracle_at_scale() {
             check(&pts, &format!("lens n={n}"), &mut tally),
             Some(GreedyAlgorithm::Convex)
         );
-        let pts = parabola(&mut rng, n, 4 * n);
+        let pts = random_parabola(&mut rng, n, 4 * n);
         assert_eq!(
             check(&pts, &format!("parabola n={n}"), &mut tally),
             Some(GreedyAlgorithm::Semicircular)
@@ -541,10 +450,10 @@ fn convex_and_semicircular_algorithms_match_the_oracle_at_scale() {
 /// Larger convex inputs (about 4 s in the test profile).
 #[test]
 fn convex_inputs_of_three_thousand_points() {
-    let mut rng = StdRng::seed_from_u64(10);
+    let mut rng = StdRng::seed_from_u64(SEED_CONVEX_3000);
     let mut tally = Tally::default();
     check(
-        &parabola(&mut rng, 3000, 12_000),
+        &random_parabola(&mut rng, 3000, 12_000),
         "parabola n=3000",
         &mut tally,
     );
@@ -561,10 +470,18 @@ fn convex_inputs_of_three_thousand_points() {
 #[test]
 #[ignore]
 fn random_sets_of_five_thousand_points() {
-    let mut rng = StdRng::seed_from_u64(15);
+    let mut rng = StdRng::seed_from_u64(SEED_RANDOM_5000);
     let mut tally = Tally::default();
-    check(&uniform(&mut rng, 5000, 1e3), "uniform n=5000", &mut tally);
-    check(&clustered(&mut rng, 20, 250), "clusters n=5000", &mut tally);
+    check(
+        &uniform_in_square(&mut rng, 5000, 1e3),
+        "uniform n=5000",
+        &mut tally,
+    );
+    check(
+        &clustered(&mut rng, 5000, 20),
+        "clusters n=5000",
+        &mut tally,
+    );
     check(
         &grid_subset(&mut rng, 100, 100, 0.5),
         "grid subset 100x100",
@@ -577,16 +494,14 @@ fn random_sets_of_five_thousand_points() {
 /// of the two references, not a test of the algorithms).
 #[test]
 fn product_naive_reference_agrees_with_the_oracle() {
-    let mut rng = StdRng::seed_from_u64(16);
+    let mut rng = StdRng::seed_from_u64(SEED_NAIVE_REFERENCE);
     let mut checked = 0;
     for case in 0..300 {
         let n = rng.gen_range(3..40);
         let pts: Vec<Point> = if case % 2 == 0 {
-            uniform(&mut rng, n, 10.0)
+            uniform_in_square(&mut rng, n, 10.0)
         } else {
-            (0..n)
-                .map(|_| [rng.gen_range(0..5) as f64, rng.gen_range(0..5) as f64])
-                .collect()
+            lattice_points(&mut rng, n, 0..5, 0..5)
         };
         let Ok(ps) = PointSet::new(&pts) else {
             continue;
@@ -603,11 +518,11 @@ fn product_naive_reference_agrees_with_the_oracle() {
 
 #[test]
 fn criterion_registry_reports_the_algorithm_and_total_length() {
-    let mut rng = StdRng::seed_from_u64(9);
+    let mut rng = StdRng::seed_from_u64(SEED_REGISTRY);
     let cases = [
-        (uniform(&mut rng, 300, 10.0), "general"),
+        (uniform_in_square(&mut rng, 300, 10.0), "general"),
         (convex_lens(&mut rng, 300), "convex"),
-        (parabola(&mut rng, 300, 900), "semicircular"),
+        (random_parabola(&mut rng, 300, 900), "semicircular"),
     ];
     for (pts, name) in cases {
         let ps = PointSet::new(&pts).unwrap();
@@ -640,10 +555,10 @@ fn criterion_registry_reports_the_algorithm_and_total_length() {
 /// (no oracle here: it would dominate the run).
 #[test]
 fn convex_and_semicircular_equal_general_at_ten_thousand_points() {
-    let mut rng = StdRng::seed_from_u64(12);
+    let mut rng = StdRng::seed_from_u64(SEED_CONVEX_10000);
     let n = 10_000;
     let inputs = [
-        (parabola(&mut rng, n, 4 * n), "parabola", true),
+        (random_parabola(&mut rng, n, 4 * n), "parabola", true),
         (convex_lens(&mut rng, n), "lens", false),
     ];
     for (pts, what, semicircular) in inputs {

@@ -9,6 +9,7 @@
 use optri::io::{self, InputFormat, OutputFormat};
 use optri::kernel::{MAX_COORDINATE, MIN_COORDINATE};
 use optri::{delaunay, Error, PointSet, Triangulation};
+use optri_oracle::inputs::{grid, lattice_points, uniform_in_square};
 use rand::rngs::StdRng;
 use rand::{Rng, SeedableRng};
 use serde_json::Value;
@@ -16,37 +17,30 @@ use std::path::PathBuf;
 
 type Point = [f64; 2];
 
+const SEED_POINT_SETS: u64 = 2024;
+
 /// Random and degenerate sets, each valid for [`PointSet::new`].
 fn point_sets() -> Vec<(String, Vec<Point>)> {
-    let mut rng = StdRng::seed_from_u64(2024);
+    let mut rng = StdRng::seed_from_u64(SEED_POINT_SETS);
     let mut sets = Vec::new();
     for round in 0..6 {
-        let n = rng.gen_range(3..60);
+        let n = rng.gen_range(3..60i32) as usize;
         let scale = [1.0, 1e-30, 1e40, 7.0, 2f64.powi(190), 2f64.powi(-120)][round];
-        let mut pts: Vec<Point> = (0..n)
-            .map(|_| {
-                [
-                    rng.gen_range(-1.0..1.0) * scale,
-                    rng.gen_range(-1.0..1.0) * scale,
-                ]
-            })
+        let mut pts: Vec<Point> = uniform_in_square(&mut rng, n, 1.0)
+            .into_iter()
+            .map(|p| [p[0] * scale, p[1] * scale])
             .collect();
         // A triangle that keeps the set non-collinear whatever n is.
         pts.extend([[0.0, 0.0], [scale, 0.0], [0.0, scale]]);
         sets.push((format!("random scale {scale:e}"), pts));
     }
     // Duplicates, also of the first and the last point.
-    let mut dups: Vec<Point> = (0..30)
-        .map(|_| [rng.gen_range(-5..5) as f64, rng.gen_range(-5..5) as f64])
-        .collect();
+    let mut dups = lattice_points(&mut rng, 30, -5..5, -5..5);
     dups.extend([dups[0], dups[7], dups[7], [9.0, 9.0], [-9.0, 9.0]]);
     dups.push(dups[dups.len() - 1]);
     sets.push(("integer duplicates".into(), dups));
     // A grid: collinear rows, cocircular quadruples.
-    let grid: Vec<Point> = (0..6)
-        .flat_map(|x| (0..5).map(move |y| [x as f64 * 0.1, y as f64 * 0.1]))
-        .collect();
-    sets.push(("grid 6x5 step 0.1".into(), grid));
+    sets.push(("grid 6x5 step 0.1".into(), grid(6, 5, 0.1)));
     // The documented range limits, exactly, with zero.
     let (big, small) = (MAX_COORDINATE, MIN_COORDINATE);
     sets.push((

@@ -15,6 +15,12 @@ use rand::{Rng, SeedableRng};
 
 type Point = [f64; 2];
 
+const SEED_NEARLY_DEGENERATE: u64 = 42;
+const SEED_ORIENTATION_AT_LIMITS: u64 = 201;
+const SEED_LENGTHS_AT_LIMITS: u64 = 142;
+const SEED_LUNES_AT_LIMITS: u64 = 2142;
+const SEED_HUGE_AND_TINY_MIXED: u64 = 343;
+
 fn next_up_or_down(v: f64, rng: &mut StdRng) -> f64 {
     let k: i64 = rng.gen_range(-2..=2);
     if v == 0.0 {
@@ -83,7 +89,7 @@ fn sample(rng: &mut StdRng, scale: f64, offset: f64) -> [Point; 4] {
 
 #[test]
 fn predicates_equal_exact_evaluation_on_nearly_degenerate_inputs() {
-    let mut rng = StdRng::seed_from_u64(42);
+    let mut rng = StdRng::seed_from_u64(SEED_NEARLY_DEGENERATE);
     let settings = [
         (1.0, 0.0),
         (1.0, 1e6),
@@ -263,7 +269,7 @@ fn near_collinear(rng: &mut StdRng) -> [IntPoint; 3] {
 
 #[test]
 fn orientation_at_the_coordinate_limits_is_scale_invariant() {
-    let mut rng = StdRng::seed_from_u64(201);
+    let mut rng = StdRng::seed_from_u64(SEED_ORIENTATION_AT_LIMITS);
     let (mut zeros, mut nonzeros, mut at_top, mut at_bottom) = (0, 0, 0, 0);
     for _ in 0..4000 {
         let [a, b, c] = near_collinear(&mut rng);
@@ -319,7 +325,7 @@ fn nearly_equal_segments(rng: &mut StdRng) -> [IntPoint; 4] {
 
 #[test]
 fn length_comparison_at_the_coordinate_limits_is_scale_invariant() {
-    let mut rng = StdRng::seed_from_u64(142);
+    let mut rng = StdRng::seed_from_u64(SEED_LENGTHS_AT_LIMITS);
     let (mut equal, mut unequal) = (0, 0);
     for _ in 0..4000 {
         let [a, b, c, d] = nearly_equal_segments(&mut rng);
@@ -369,7 +375,7 @@ fn lune_case(rng: &mut StdRng) -> [IntPoint; 3] {
 
 #[test]
 fn lune_membership_at_the_coordinate_limits_is_scale_invariant() {
-    let mut rng = StdRng::seed_from_u64(2142);
+    let mut rng = StdRng::seed_from_u64(SEED_LUNES_AT_LIMITS);
     let (mut inside, mut outside, mut on_circle) = (0, 0, 0);
     for _ in 0..4000 {
         let [p, q, x] = lune_case(&mut rng);
@@ -403,7 +409,7 @@ fn lune_membership_at_the_coordinate_limits_is_scale_invariant() {
 fn predicates_equal_exact_evaluation_with_huge_and_tiny_coordinates_mixed() {
     // Coordinates near +-2^201 next to coordinates near 2^-142: the
     // differences span 2^343, beyond i128, so the oracle's rationals decide.
-    let mut rng = StdRng::seed_from_u64(343);
+    let mut rng = StdRng::seed_from_u64(SEED_HUGE_AND_TINY_MIXED);
     let big = |rng: &mut StdRng| {
         let sign = if rng.gen_bool(0.5) { 1.0 } else { -1.0 };
         sign * (MAX_COORDINATE - rng.gen_range(0..4) as f64 * 2f64.powi(148))

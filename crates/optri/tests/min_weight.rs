@@ -2,7 +2,8 @@
 //! oracle (n ≤ 9) and the oracle's Klincsek DP; the greedy triangulation
 //! against the oracle's independent greedy; the approximation ratio.
 //!
-//! Inputs are in convex position *by construction* (integer points on a
+//! Inputs are in convex position *by construction*
+//! ([`optri_oracle::inputs::convex_by_construction`]: integer points on a
 //! parabola, on a lens of two parabolas, with or without integer midpoints
 //! of hull edges as collinear boundary points), or rounded circle points that
 //! are regenerated until the oracle's exact hull contains them all; every
@@ -18,6 +19,10 @@
 
 use optri::kernel::Point;
 use optri::{min_weight, triangulate, Criterion, Error, PointSet};
+use optri_oracle::inputs::{
+    convex_by_construction, lattice_points, rounded_circle,
+    ConvexShape::{Lens, Parabola},
+};
 use optri_oracle::{
     all_triangulations, canonical_triangulation, convex_hull_edges, klincsek, klincsek_unique,
     optimum_by, orient, total_length, MinWeight, TotalF64,
@@ -27,6 +32,11 @@ use rand::{Rng, SeedableRng};
 
 /// Relative tolerance on weights (see the module docs).
 const TOLERANCE: f64 = 1e-12;
+
+const SEED_EXHAUSTIVE_SMALL_CONVEX: u64 = 11;
+const SEED_ORACLE_DP: u64 = 12;
+const SEED_KLINCSEK_PLAIN_FORM: u64 = 14;
+const SEED_GREEDY_SMALL_SETS: u64 = 13;
 
 /// Triangles of a triangulation as distinct indices.
 fn distinct_triangles(ps: &PointSet, t: &optri::Triangulation) -> Vec<[u32; 3]> {
@@ -40,77 +50,6 @@ fn relative_eq(a: f64, b: f64) -> bool {
     (a - b).abs() <= TOLERANCE * a.abs().max(b.abs())
 }
 
-/// `k` distinct integers from `lo..hi`, sorted.
-fn sample_sorted(rng: &mut StdRng, lo: i64, hi: i64, k: usize) -> Vec<i64> {
-    let mut v: Vec<i64> = rand::seq::index::sample(rng, (hi - lo) as usize, k)
-        .into_iter()
-        .map(|i| i as i64 + lo)
-        .collect();
-    v.sort_unstable();
-    v
-}
-
-/// Adds, between consecutive chain points with coordinates of equal parity,
-/// their (integer) midpoint with probability 1/2: a point on the open hull
-/// edge, so the set stays in (non-strictly) convex position.
-fn with_midpoints(rng: &mut StdRng, chain: Vec<[i64; 2]>) -> Vec<[i64; 2]> {
-    let mut out = Vec::new();
-    for w in chain.windows(2) {
-        out.push(w[0]);
-        let (a, b) = (w[0], w[1]);
-        if (a[0] + b[0]) % 2 == 0 && (a[1] + b[1]) % 2 == 0 && rng.gen_bool(0.5) {
-            out.push([(a[0] + b[0]) / 2, (a[1] + b[1]) / 2]);
-        }
-    }
-    out.extend(chain.last());
-    out
-}
-
-/// Convex position by construction, `n ≥ 3` points (more with
-/// `collinear`, which adds midpoints of hull edges):
-/// kind 0: the parabola `y = x²`; kind 1: the lens between `y = x²` and
-/// `y = 2m² − x²`, `|x| ≤ m`.
-fn convex_by_construction(rng: &mut StdRng, n: usize, kind: usize, collinear: bool) -> Vec<Point> {
-    let chains: Vec<Vec<[i64; 2]>> = if kind == 0 {
-        let span = 3 * n as i64;
-        let xs = sample_sorted(rng, -span, span, n);
-        vec![xs.iter().map(|&x| [x, x * x]).collect()]
-    } else {
-        let m = 2 * n as i64;
-        let lower = sample_sorted(rng, -m + 1, m, (n - 2) / 2);
-        let upper = sample_sorted(rng, -m + 1, m, n - 2 - (n - 2) / 2);
-        // Both chains run from corner to corner: (−m, m²) and (m, m²).
-        let corner = |x: i64| [x, m * m];
-        let mut low = vec![corner(-m)];
-        low.extend(lower.iter().map(|&x| [x, x * x]));
-        low.push(corner(m));
-        let mut up = vec![corner(m)];
-        up.extend(upper.iter().rev().map(|&x| [x, 2 * m * m - x * x]));
-        up.push(corner(-m));
-        vec![low, up]
-    };
-    let mut pts: Vec<[i64; 2]> = Vec::new();
-    for chain in chains {
-        let chain = if collinear {
-            with_midpoints(rng, chain)
-        } else {
-            chain
-        };
-        for p in chain {
-            if !pts.contains(&p) {
-                pts.push(p);
-            }
-        }
-    }
-    // Shuffle: the input order is not the polygon order.
-    for i in (1..pts.len()).rev() {
-        pts.swap(i, rng.gen_range(0..=i));
-    }
-    pts.into_iter()
-        .map(|p| [p[0] as f64, p[1] as f64])
-        .collect()
-}
-
 /// Integer-rounded points on a circle, regenerated until all of them are on
 /// the oracle's exact convex hull (collinear boundary points allowed).
 fn rounded_circle_in_convex_position(rng: &mut StdRng, n: usize) -> Vec<Point> {
@@ -118,12 +57,7 @@ fn rounded_circle_in_convex_position(rng: &mut StdRng, n: usize) -> Vec<Point> {
         // Rounding by ≤ 0.5 must not undo the curvature between close
         // neighbours (angle gaps down to about 1/n²): radius ~ n⁴.
         let r = rng.gen_range(0.05..1.0) * (n as f64).powi(4).max(200.0);
-        let pts: Vec<Point> = (0..n)
-            .map(|_| {
-                let a: f64 = rng.gen_range(0.0..std::f64::consts::TAU);
-                [(r * a.cos()).round(), (r * a.sin()).round()]
-            })
-            .collect();
+        let pts = rounded_circle(rng, n, r);
         let Ok(ps) = PointSet::new(&pts) else {
             continue;
         };
@@ -175,17 +109,17 @@ fn oracle_polygon(points: &[Point]) -> Vec<u32> {
 /// A convex input of `n` (or a few more) points of one of five kinds.
 fn convex_input(rng: &mut StdRng, n: usize, case: usize) -> Vec<Point> {
     match case % 5 {
-        0 => convex_by_construction(rng, n, 0, false),
-        1 => convex_by_construction(rng, n.max(4), 1, false),
-        2 => convex_by_construction(rng, n, 0, true),
-        3 => convex_by_construction(rng, n.max(4), 1, true),
+        0 => convex_by_construction(rng, n, Parabola, false),
+        1 => convex_by_construction(rng, n.max(4), Lens, false),
+        2 => convex_by_construction(rng, n, Parabola, true),
+        3 => convex_by_construction(rng, n.max(4), Lens, true),
         _ => rounded_circle_in_convex_position(rng, n),
     }
 }
 
 #[test]
 fn min_weight_equals_the_exhaustive_optimum_on_small_convex_sets() {
-    let mut rng = StdRng::seed_from_u64(11);
+    let mut rng = StdRng::seed_from_u64(SEED_EXHAUSTIVE_SMALL_CONVEX);
     let (mut checked, mut unique) = (0, 0);
     for case in 0..600 {
         let n = rng.gen_range(3..8);
@@ -227,7 +161,7 @@ fn min_weight_equals_the_exhaustive_optimum_on_small_convex_sets() {
 
 #[test]
 fn min_weight_equals_the_oracle_dp_and_bounds_the_greedy_triangulation() {
-    let mut rng = StdRng::seed_from_u64(12);
+    let mut rng = StdRng::seed_from_u64(SEED_ORACLE_DP);
     let (mut checked, mut unique) = (0, 0);
     for case in 0..100 {
         let n = rng.gen_range(10..110);
@@ -280,7 +214,7 @@ fn min_weight_equals_the_oracle_dp_and_bounds_the_greedy_triangulation() {
 #[test]
 fn klincsek_reference_agrees_with_its_plain_form() {
     // klincsek_unique is klincsek plus a certificate.
-    let mut rng = StdRng::seed_from_u64(14);
+    let mut rng = StdRng::seed_from_u64(SEED_KLINCSEK_PLAIN_FORM);
     for case in 0..20 {
         let pts = convex_input(&mut rng, 12, case);
         let ps = PointSet::new(&pts).unwrap();
@@ -294,14 +228,12 @@ fn klincsek_reference_agrees_with_its_plain_form() {
 
 #[test]
 fn greedy_matches_the_oracle_greedy_on_small_sets() {
-    let mut rng = StdRng::seed_from_u64(13);
+    let mut rng = StdRng::seed_from_u64(SEED_GREEDY_SMALL_SETS);
     let mut checked = 0;
     for case in 0..300 {
-        let n = rng.gen_range(3..11);
+        let n = rng.gen_range(3..11i32) as usize;
         let m = if case % 2 == 0 { 5 } else { 1000 };
-        let pts: Vec<Point> = (0..n)
-            .map(|_| [rng.gen_range(0..m) as f64, rng.gen_range(0..m) as f64])
-            .collect();
+        let pts = lattice_points(&mut rng, n, 0..m, 0..m);
         let Ok(ps) = PointSet::new(&pts) else {
             continue;
         };

@@ -5,8 +5,19 @@
 use optri::internals::minmax_length_cubic;
 use optri::kernel::{compare_lengths, orient_sign, Point};
 use optri::{minmax_length, PointSet, Triangulation};
+use optri_oracle::inputs::{
+    circle_r5_ccw, grid, lattice_points, perturbed_circle, uniform_in_square, uniform_unit_square,
+};
 use rand::{rngs::StdRng, Rng, SeedableRng};
 use std::cmp::Ordering;
+
+const SEED_RANDOM_SMALL_SETS: u64 = 1;
+const SEED_DEGENERATE_SMALL_SETS: u64 = 2;
+const SEED_RANDOM_VS_CUBIC: u64 = 3;
+const SEED_INTEGER_GRIDS_VS_CUBIC: u64 = 4;
+const SEED_CONVEX_VS_CUBIC: u64 = 5;
+const SEED_ORACLE_EXHAUSTIVE: u64 = 7;
+const SEED_ORACLE_CUBIC: u64 = 8;
 
 /// The longest edge of `t` as a pair of points.
 fn longest(t: &Triangulation) -> [Point; 2] {
@@ -177,26 +188,22 @@ fn no_fallbacks(what: impl std::fmt::Debug) {
 
 #[test]
 fn random_small_sets_match_the_exhaustive_search() {
-    let mut rng = StdRng::seed_from_u64(1);
+    let mut rng = StdRng::seed_from_u64(SEED_RANDOM_SMALL_SETS);
     for _ in 0..1500 {
-        let n = rng.gen_range(3..=9);
-        let pts: Vec<Point> = (0..n)
-            .map(|_| [rng.gen_range(-100.0..100.0), rng.gen_range(-100.0..100.0)])
-            .collect();
+        let n = rng.gen_range(3..=9i32) as usize;
+        let pts = uniform_in_square(&mut rng, n, 100.0);
         check_against_exhaustive(&pts);
     }
 }
 
 #[test]
 fn degenerate_small_sets_match_the_exhaustive_search() {
-    let mut rng = StdRng::seed_from_u64(2);
+    let mut rng = StdRng::seed_from_u64(SEED_DEGENERATE_SMALL_SETS);
     for round in 0..2500 {
         let n = rng.gen_range(3..=9);
         let pts: Vec<Point> = match round % 5 {
             // Small integer grid: many equal lengths, collinear runs, duplicates.
-            0 | 1 => (0..n)
-                .map(|_| [rng.gen_range(0..4) as f64, rng.gen_range(0..4) as f64])
-                .collect(),
+            0 | 1 => lattice_points(&mut rng, n as usize, 0..4, 0..4),
             // Collinear run plus a few points.
             2 => (0..n)
                 .map(|i| {
@@ -209,20 +216,7 @@ fn degenerate_small_sets_match_the_exhaustive_search() {
                 .collect(),
             // Cocircular: integer points on the circle x² + y² = 25, plus the centre sometimes.
             3 => {
-                let circle = [
-                    [5.0, 0.0],
-                    [4.0, 3.0],
-                    [3.0, 4.0],
-                    [0.0, 5.0],
-                    [-3.0, 4.0],
-                    [-4.0, 3.0],
-                    [-5.0, 0.0],
-                    [-4.0, -3.0],
-                    [-3.0, -4.0],
-                    [0.0, -5.0],
-                    [3.0, -4.0],
-                    [4.0, -3.0],
-                ];
+                let circle = circle_r5_ccw();
                 let mut v: Vec<Point> = (0..n).map(|_| circle[rng.gen_range(0..12)]).collect();
                 if rng.gen_bool(0.3) {
                     v.push([0.0, 0.0]);
@@ -317,42 +311,28 @@ fn same_optimum(points: &[Point], what: &str) {
 
 #[test]
 fn random_sets_match_the_cubic_reference() {
-    let mut rng = StdRng::seed_from_u64(3);
+    let mut rng = StdRng::seed_from_u64(SEED_RANDOM_VS_CUBIC);
     for &n in &[10usize, 50, 200, 1000, 2000] {
-        let pts: Vec<Point> = (0..n)
-            .map(|_| [rng.gen::<f64>(), rng.gen::<f64>()])
-            .collect();
+        let pts = uniform_unit_square(&mut rng, n);
         same_optimum(&pts, &format!("uniform n={n}"));
     }
 }
 
 #[test]
 fn integer_grids_match_the_cubic_reference() {
-    let mut rng = StdRng::seed_from_u64(4);
+    let mut rng = StdRng::seed_from_u64(SEED_INTEGER_GRIDS_VS_CUBIC);
     for &(w, n) in &[(5, 20), (10, 80), (20, 300), (40, 1000), (6, 36)] {
-        let pts: Vec<Point> = (0..n)
-            .map(|_| [rng.gen_range(0..w) as f64, rng.gen_range(0..w) as f64])
-            .collect();
+        let pts = lattice_points(&mut rng, n, 0..w, 0..w);
         same_optimum(&pts, &format!("grid {w}x{w} n={n}"));
     }
-    // A full grid.
-    let full: Vec<Point> = (0..15)
-        .flat_map(|x| (0..15).map(move |y| [x as f64, y as f64]))
-        .collect();
-    same_optimum(&full, "full 15x15 grid");
+    same_optimum(&grid(15, 15, 1.0), "full 15x15 grid");
 }
 
 #[test]
 fn convex_position_matches_the_cubic_reference() {
-    let mut rng = StdRng::seed_from_u64(5);
+    let mut rng = StdRng::seed_from_u64(SEED_CONVEX_VS_CUBIC);
     for &n in &[20usize, 100, 300] {
-        let pts: Vec<Point> = (0..n)
-            .map(|i| {
-                let a = i as f64 / n as f64 * std::f64::consts::TAU;
-                let r = 1.0 + 1e-3 * rng.gen::<f64>();
-                [r * a.cos(), r * a.sin()]
-            })
-            .collect();
+        let pts = perturbed_circle(&mut rng, n, 1e-3);
         same_optimum(&pts, &format!("perturbed circle n={n}"));
     }
 }
@@ -485,17 +465,13 @@ fn oracle_max_edge(t: &Triangulation) -> optri_oracle::BigRational {
 
 #[test]
 fn oracle_exhaustive_enumeration_agrees() {
-    let mut rng = StdRng::seed_from_u64(7);
+    let mut rng = StdRng::seed_from_u64(SEED_ORACLE_EXHAUSTIVE);
     for round in 0..400 {
-        let n = rng.gen_range(3..=8);
-        let pts: Vec<Point> = if round % 2 == 0 {
-            (0..n)
-                .map(|_| [rng.gen_range(0..4) as f64, rng.gen_range(0..3) as f64])
-                .collect()
+        let n = rng.gen_range(3..=8i32) as usize;
+        let pts = if round % 2 == 0 {
+            lattice_points(&mut rng, n, 0..4, 0..3)
         } else {
-            (0..n)
-                .map(|_| [rng.gen_range(-50.0..50.0), rng.gen_range(-50.0..50.0)])
-                .collect()
+            uniform_in_square(&mut rng, n, 50.0)
         };
         let Ok(ps) = PointSet::new(&pts) else {
             continue;
@@ -531,17 +507,13 @@ fn oracle_cubic(points: &[Point]) -> optri_oracle::BigRational {
 
 #[test]
 fn oracle_cubic_reference_agrees_on_random_sets_and_grids() {
-    let mut rng = StdRng::seed_from_u64(8);
+    let mut rng = StdRng::seed_from_u64(SEED_ORACLE_CUBIC);
     for round in 0..30 {
-        let n = rng.gen_range(10..=60);
-        let pts: Vec<Point> = if round % 2 == 0 {
-            (0..n)
-                .map(|_| [rng.gen_range(0..7) as f64, rng.gen_range(0..7) as f64])
-                .collect()
+        let n = rng.gen_range(10..=60i32) as usize;
+        let pts = if round % 2 == 0 {
+            lattice_points(&mut rng, n, 0..7, 0..7)
         } else {
-            (0..n)
-                .map(|_| [rng.gen::<f64>(), rng.gen::<f64>()])
-                .collect()
+            uniform_unit_square(&mut rng, n)
         };
         let ps = PointSet::new(&pts).unwrap();
         let want = oracle_cubic(&pts);

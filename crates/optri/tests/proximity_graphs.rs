@@ -8,10 +8,23 @@ use optri::{
     PointSet,
 };
 use optri_oracle as oracle;
+use optri_oracle::inputs::{
+    grid, integer_circle_points as circle_points, lattice_points, uniform_unit_square,
+};
 use rand::rngs::StdRng;
 use rand::{Rng, SeedableRng};
 
 type Point = [f64; 2];
+
+const SEED_RANDOM_POINT_SETS: u64 = 20261122;
+const SEED_COLLINEAR_RUNS: u64 = 7;
+const SEED_COCIRCULAR: u64 = 11;
+const SEED_NEARLY_COCIRCULAR: u64 = 23;
+const SEED_DUPLICATES: u64 = 13;
+const SEED_HUGE_TINY_NEGATIVE: u64 = 17;
+const SEED_PLANAR_GRAPH_FACES: u64 = 31;
+const SEED_DELAUNAY_CRITERION: u64 = 3;
+const SEED_RANGE_LIMITS: u64 = 19;
 
 /// Which checks to run (the Delaunay check is O(n²) in-circle tests).
 #[derive(Clone, Copy)]
@@ -80,39 +93,20 @@ fn check(input: &[Point], checks: Checks, label: &str) -> usize {
     pts.len()
 }
 
-fn uniform(rng: &mut StdRng, n: usize) -> Vec<Point> {
-    (0..n)
-        .map(|_| [rng.gen::<f64>(), rng.gen::<f64>()])
-        .collect()
-}
-
+/// `n` integer points drawn from `[0, side)²` (64-bit draws).
 fn integers(rng: &mut StdRng, n: usize, side: i64) -> Vec<Point> {
-    (0..n)
-        .map(|_| [rng.gen_range(0..side) as f64, rng.gen_range(0..side) as f64])
-        .collect()
+    lattice_points(rng, n, 0..side, 0..side)
 }
-
-fn grid(w: usize, h: usize, spacing: f64) -> Vec<Point> {
-    let mut v = Vec::new();
-    for x in 0..w {
-        for y in 0..h {
-            v.push([x as f64 * spacing, y as f64 * spacing]);
-        }
-    }
-    v
-}
-
-use optri_oracle::integer_circle_points as circle_points;
 
 #[test]
 fn random_point_sets() {
-    let mut rng = StdRng::seed_from_u64(20261122);
+    let mut rng = StdRng::seed_from_u64(SEED_RANDOM_POINT_SETS);
     let mut cases = 0;
     for n in (4..=60).chain((70..=300).step_by(23)) {
         let reps = if n <= 60 { 4 } else { 2 };
         for rep in 0..reps {
             let input = match rep % 4 {
-                0 => uniform(&mut rng, n),
+                0 => uniform_unit_square(&mut rng, n),
                 1 => integers(&mut rng, n, 1 << 20),
                 // Small integer ranges: many collinear and cocircular tuples.
                 2 => integers(&mut rng, n, 3 + n as i64 / 4),
@@ -141,7 +135,7 @@ fn integer_grids_with_exact_and_inexact_spacing() {
 
 #[test]
 fn collinear_runs_inside_random_sets() {
-    let mut rng = StdRng::seed_from_u64(7);
+    let mut rng = StdRng::seed_from_u64(SEED_COLLINEAR_RUNS);
     for case in 0..40 {
         let mut input = integers(&mut rng, 10 + case, 200);
         let (dx, dy) = [(1, 0), (0, 1), (1, 1), (2, -1), (3, 5)][case % 5];
@@ -160,7 +154,7 @@ fn collinear_runs_inside_random_sets() {
 
 #[test]
 fn cocircular_pythagorean_sets() {
-    let mut rng = StdRng::seed_from_u64(11);
+    let mut rng = StdRng::seed_from_u64(SEED_COCIRCULAR);
     for r in [5, 25, 65, 325, 1105] {
         let circle = circle_points(r);
         assert!(circle.len() >= 12, "radius {r}: {}", circle.len());
@@ -188,7 +182,7 @@ fn cocircular_pythagorean_sets() {
 /// cocircular, so every in-circle and lune decision is a near tie.
 #[test]
 fn nearly_cocircular_float_sets() {
-    let mut rng = StdRng::seed_from_u64(23);
+    let mut rng = StdRng::seed_from_u64(SEED_NEARLY_COCIRCULAR);
     for case in 0..12 {
         let n = 8 + 6 * case;
         let (cx, cy, r) = (
@@ -211,7 +205,7 @@ fn nearly_cocircular_float_sets() {
 
 #[test]
 fn duplicates_are_merged_and_outputs_use_kept_copies() {
-    let mut rng = StdRng::seed_from_u64(13);
+    let mut rng = StdRng::seed_from_u64(SEED_DUPLICATES);
     for case in 0..30 {
         let base = integers(&mut rng, 6 + case, 12);
         let mut input = base.clone();
@@ -232,7 +226,7 @@ fn duplicates_are_merged_and_outputs_use_kept_copies() {
 
 #[test]
 fn huge_tiny_and_negative_coordinates() {
-    let mut rng = StdRng::seed_from_u64(17);
+    let mut rng = StdRng::seed_from_u64(SEED_HUGE_TINY_NEGATIVE);
     let scales = [
         2f64.powi(150),
         -(2f64.powi(150)),
@@ -402,7 +396,7 @@ fn normalized_cycles(cycles: Vec<Vec<u32>>) -> Vec<Vec<u32>> {
 /// the oracle's face walk, on hull ∪ RNG and on hull ∪ MST (many cracks).
 #[test]
 fn planar_graph_faces_of_hull_with_rng_or_mst() {
-    let mut rng = StdRng::seed_from_u64(31);
+    let mut rng = StdRng::seed_from_u64(SEED_PLANAR_GRAPH_FACES);
     let mut inputs: Vec<Vec<Point>> = Vec::new();
     for n in [5, 8, 12, 20, 40, 80] {
         for side in [6, 30, 1 << 20] {
@@ -436,15 +430,7 @@ fn planar_graph_faces_of_hull_with_rng_or_mst() {
                     .collect(),
             );
             assert_eq!(got, expected, "input {i}");
-            cracked += expected
-                .iter()
-                .filter(|f| {
-                    let mut s = f.to_vec();
-                    s.sort_unstable();
-                    s.dedup();
-                    s.len() < f.len()
-                })
-                .count();
+            cracked += expected.iter().filter(|f| oracle::is_cracked(f)).count();
         }
     }
     assert!(cracked > 20, "{cracked}");
@@ -454,11 +440,11 @@ fn planar_graph_faces_of_hull_with_rng_or_mst() {
 /// triangulation (checked by the oracle), on random and cocircular input.
 #[test]
 fn delaunay_criterion_solution_is_delaunay() {
-    let mut rng = StdRng::seed_from_u64(3);
+    let mut rng = StdRng::seed_from_u64(SEED_DELAUNAY_CRITERION);
     let mut inputs = vec![circle_points(325), grid(7, 5, 0.1)];
     for n in [10, 50, 200] {
         inputs.push(integers(&mut rng, n, 30));
-        inputs.push(uniform(&mut rng, n));
+        inputs.push(uniform_unit_square(&mut rng, n));
     }
     for input in inputs {
         let ps = PointSet::new(&input).unwrap();
@@ -480,7 +466,7 @@ fn delaunay_criterion_solution_is_delaunay() {
 /// and mixed in one set.
 #[test]
 fn coordinates_at_the_range_limits() {
-    let mut rng = StdRng::seed_from_u64(19);
+    let mut rng = StdRng::seed_from_u64(SEED_RANGE_LIMITS);
     let (top, bottom) = (2f64.powi(201), 2f64.powi(-142));
     for case in 0..12 {
         let base = integers(&mut rng, 12 + case, 5);

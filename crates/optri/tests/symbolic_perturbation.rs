@@ -4,59 +4,36 @@
 
 use optri::kernel::{compare_lengths_symbolic, orient_symbolic, segment_order};
 use optri_oracle as oracle;
+use optri_oracle::inputs::{cocircular_seven_with_centre, distinct_lattice_points, shuffled_grid};
 use rand::rngs::StdRng;
 use rand::seq::SliceRandom;
-use rand::{Rng, SeedableRng};
+use rand::SeedableRng;
 use std::cmp::Ordering;
 
 type Point = [f64; 2];
 
-/// A `w × h` grid with spacing `s`, in a shuffled index order (so that index
-/// order, which drives the tie-break, is unrelated to position).
-fn shuffled_grid(w: i32, h: i32, s: f64, rng: &mut StdRng) -> Vec<Point> {
-    let mut v: Vec<Point> = (0..w)
-        .flat_map(|x| (0..h).map(move |y| [x as f64 * s, y as f64 * s]))
-        .collect();
-    v.shuffle(rng);
-    v
-}
+const SEED_DEGENERATE_SETS: u64 = 2024;
+const SEED_ORIENTATION: u64 = 77;
+const SEED_SEGMENT_ORDER: u64 = 5;
 
 fn degenerate_sets() -> Vec<(String, Vec<Point>)> {
-    let mut rng = StdRng::seed_from_u64(2024);
+    let mut rng = StdRng::seed_from_u64(SEED_DEGENERATE_SETS);
     let mut sets = vec![
-        ("grid 3x3".to_string(), shuffled_grid(3, 3, 1.0, &mut rng)),
-        ("grid 4x3".to_string(), shuffled_grid(4, 3, 1.0, &mut rng)),
+        ("grid 3x3".to_string(), shuffled_grid(&mut rng, 3, 3, 1.0)),
+        ("grid 4x3".to_string(), shuffled_grid(&mut rng, 4, 3, 1.0)),
         (
             "grid 3x3 step 0.1".to_string(),
-            shuffled_grid(3, 3, 0.1, &mut rng),
+            shuffled_grid(&mut rng, 3, 3, 0.1),
         ),
         (
             "grid 3x3 huge".to_string(),
-            shuffled_grid(3, 3, -(2f64.powi(150)), &mut rng),
+            shuffled_grid(&mut rng, 3, 3, -(2f64.powi(150))),
         ),
-        (
-            "cocircular r=5".to_string(),
-            vec![
-                [5.0, 0.0],
-                [3.0, 4.0],
-                [0.0, 5.0],
-                [-4.0, 3.0],
-                [-5.0, 0.0],
-                [-3.0, -4.0],
-                [0.0, 0.0],
-                [4.0, -3.0],
-            ],
-        ),
+        ("cocircular r=5".to_string(), cocircular_seven_with_centre()),
     ];
     // Small random integer sets: many collinear triples and equal lengths.
     for k in 0..6 {
-        let mut pts: Vec<Point> = Vec::new();
-        while pts.len() < 8 {
-            let p = [rng.gen_range(-2..3) as f64, rng.gen_range(-2..3) as f64];
-            if !pts.contains(&p) {
-                pts.push(p);
-            }
-        }
+        let pts = distinct_lattice_points(&mut rng, 8, -2..3, -2..3);
         sets.push((format!("random small {k}"), pts));
     }
     sets
@@ -66,9 +43,9 @@ fn degenerate_sets() -> Vec<(String, Vec<Point>)> {
 fn orientation_matches_the_polynomial_expansion() {
     let mut checked = 0;
     let mut degenerate = 0;
-    let mut rng = StdRng::seed_from_u64(77);
+    let mut rng = StdRng::seed_from_u64(SEED_ORIENTATION);
     let mut sets = degenerate_sets();
-    sets.push(("grid 4x4".into(), shuffled_grid(4, 4, 1.0, &mut rng)));
+    sets.push(("grid 4x4".into(), shuffled_grid(&mut rng, 4, 4, 1.0)));
     // Two crossing lines of five points each, plus two off-line points.
     let mut lines: Vec<Point> = (0..5)
         .flat_map(|k| [[k as f64, 2.0 * k as f64], [k as f64, 7.0 - k as f64]])
@@ -140,9 +117,9 @@ fn length_comparison_matches_the_polynomial_expansion() {
 
 #[test]
 fn segment_order_is_a_total_order_on_grid_segments() {
-    let mut rng = StdRng::seed_from_u64(5);
+    let mut rng = StdRng::seed_from_u64(SEED_SEGMENT_ORDER);
     for (w, h) in [(3, 3), (4, 4), (5, 3)] {
-        let pts = shuffled_grid(w, h, 1.0, &mut rng);
+        let pts = shuffled_grid(&mut rng, w, h, 1.0);
         let mut sorted = segments(pts.len() as u32);
         sorted.shuffle(&mut rng);
         sorted.sort_by(segment_order(&pts));

@@ -4,29 +4,27 @@
 
 use optri::{PointSet, Triangulation};
 use optri_oracle as oracle;
+use optri_oracle::inputs::{
+    cocircular_seven_with_centre, grid, lattice_points, parabola, square_with_centre,
+};
 use rand::rngs::StdRng;
-use rand::{Rng, SeedableRng};
+use rand::SeedableRng;
 
 type Point = [f64; 2];
 
+const SEED_POINT_SETS: u64 = 99;
+
 /// Small test sets: random, grids, collinear runs, cocircular, duplicates.
 fn point_sets() -> Vec<(String, Vec<Point>)> {
-    let mut rng = StdRng::seed_from_u64(99);
+    let mut rng = StdRng::seed_from_u64(SEED_POINT_SETS);
     let mut sets = Vec::new();
     for n in 4..=9 {
         for rep in 0..4 {
             let side = if rep % 2 == 0 { 4 } else { 1000 };
-            let pts: Vec<Point> = (0..n)
-                .map(|_| [rng.gen_range(0..side) as f64, rng.gen_range(0..side) as f64])
-                .collect();
+            let pts = lattice_points(&mut rng, n, 0..side, 0..side);
             sets.push((format!("random n={n} rep={rep}"), pts));
         }
     }
-    let grid = |w: i32, h: i32, s: f64| -> Vec<Point> {
-        (0..w)
-            .flat_map(|x| (0..h).map(move |y| [x as f64 * s, y as f64 * s]))
-            .collect()
-    };
     sets.push(("grid 3x3".into(), grid(3, 3, 1.0)));
     sets.push(("grid 4x2".into(), grid(4, 2, 1.0)));
     sets.push(("grid 3x3 step 0.1".into(), grid(3, 3, 0.1)));
@@ -49,25 +47,10 @@ fn point_sets() -> Vec<(String, Vec<Point>)> {
     ));
     sets.push((
         "cocircular octagon-ish".into(),
-        vec![
-            [5.0, 0.0],
-            [3.0, 4.0],
-            [0.0, 5.0],
-            [-4.0, 3.0],
-            [-5.0, 0.0],
-            [-3.0, -4.0],
-            [4.0, -3.0],
-            [0.0, 0.0],
-        ],
+        cocircular_seven_with_centre(),
     ));
-    sets.push((
-        "convex 9-gon".into(),
-        (0..9).map(|i| [i as f64, (i * i) as f64]).collect(),
-    ));
-    sets.push((
-        "square with centre".into(),
-        vec![[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [0.0, 2.0], [1.0, 1.0]],
-    ));
+    sets.push(("convex 9-gon".into(), parabola(9)));
+    sets.push(("square with centre".into(), square_with_centre(2.0)));
     sets.push((
         "duplicates".into(),
         vec![
