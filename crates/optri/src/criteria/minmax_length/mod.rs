@@ -123,7 +123,8 @@ pub(crate) mod regions;
 
 use super::{CriterionInfo, Diagnostics, Optimality, Options, Requirement, Solved};
 use crate::error::Result;
-use crate::kernel::{compare_lengths, in_lune_symbolic, orient_sign, Point};
+use crate::graphs::perturbed_rng_from_delaunay;
+use crate::kernel::{compare_lengths, orient_sign, Point};
 use crate::parallel::prelude::*;
 use crate::spatial::morton_order;
 use crate::structures::{DelaunayGraph, PointSet, Triangulation};
@@ -155,111 +156,24 @@ pub(crate) fn solve(points: &PointSet, _: &Options, phases: &mut Vec<Phase>) -> 
     })
 }
 
-/// Is some perturbed point inside the perturbed lune of the Delaunay edge
-/// `pq`? Such a point lies in the *closed* disc `D(p, |pq|)`; by the
-/// greedy-routing lemma (every vertex `r ≠ p` has a Delaunay neighbour
-/// strictly closer to `p`, `shared/notes/literature.md` §a) the closed disc's
-/// points with `p` induce a connected Delaunay subgraph, searched from `p`.
-fn perturbed_lune_is_occupied(
-    points: &[Point],
-    g: &DelaunayGraph,
-    p: u32,
-    q: u32,
-    inside: &mut Vec<u32>,
-) -> bool {
-    let (pp, pq) = (points[p as usize], points[q as usize]);
-    // The disc holds O(1) points on typical data: a short list of the
-    // visited vertices beats an n-sized "seen" array.
-    inside.clear();
-    inside.push(p);
-    let mut next = 0;
-    while next < inside.len() {
-        let w = inside[next];
-        next += 1;
-        for &x in g.neighbors(w) {
-            // q is a lune corner, not a candidate; and no search path needs
-            // it (see below).
-            if x == q || inside.contains(&x) {
-                continue;
-            }
-            let px = points[x as usize];
-            let to_p = compare_lengths(px, pp, pp, pq);
-            if to_p == Greater {
-                continue; // outside the closed disc around p
-            }
-            let to_q = compare_lengths(px, pq, pp, pq);
-            let occupied = match (to_p, to_q) {
-                (Less, Less) => true,
-                (_, Greater) => false,
-                // On the lune's boundary: the perturbation decides.
-                _ => in_lune_symbolic(points, p, q, x),
-            };
-            if occupied {
-                return true;
-            }
-            // Greedy routing reaches any point x of the closed disc along
-            // vertices strictly closer to p than x, so only points of the
-            // open disc are expanded (a point on the circle may be tested
-            // twice; that is harmless).
-            if to_p == Less {
-                inside.push(x);
-            }
-        }
-    }
-    false
-}
-
 /// `rng(S′)` for the kernel's symbolic perturbation `S′`: the Delaunay
 /// edges whose perturbed lune is empty. Every edge of `rng(S′)` is in
 /// `rng(S)` (§5.4), hence in every Delaunay completion of `S`, so testing the
-/// Delaunay edges suffices. One search per edge decides both the exact
-/// (strict-lune) test and its perturbed tie-break.
+/// Delaunay edges suffices; the lune search is the RNG's own, with the
+/// perturbation deciding the lune's boundary.
 #[cfg(test)]
 pub(crate) fn rng_perturbed(points: &[Point], g: &DelaunayGraph) -> Vec<[u32; 2]> {
-    rng_perturbed_slots(points, g)
-        .into_iter()
-        .map(|(p, slot)| [p, g.adjacency[slot as usize]])
-        .collect()
+    perturbed_rng_from_delaunay(points, g, |p, q, _| [p, q])
 }
 
 /// [`rng_perturbed`] as a flag per Delaunay edge (indexed like
-/// `g.edges`); `g` must come from [`delaunay_mesh`].
+/// `g.edges`); `g` must come from [`DelaunayGraph::with_topology`].
 pub(crate) fn rng_perturbed_flags(points: &[Point], g: &DelaunayGraph) -> Vec<bool> {
     let mut flags = vec![false; g.edges.len()];
-    for (_, slot) in rng_perturbed_slots(points, g) {
+    for slot in perturbed_rng_from_delaunay(points, g, |_, _, slot| slot) {
         flags[g.topology.slot_edges[slot as usize] as usize] = true;
     }
     flags
-}
-
-/// The `rng(S′)` edges as (search start `p`, adjacency slot of `pq`).
-/// Vertices are visited in index order — Z-order in [`run`] — so that the
-/// disc searches of consecutive vertices share cache lines; each edge is
-/// searched once, from its endpoint of lower degree.
-fn rng_perturbed_slots(points: &[Point], g: &DelaunayGraph) -> Vec<(u32, u32)> {
-    (0..points.len() as u32)
-        .into_par_iter()
-        .with_min_len(4096)
-        .fold(
-            || (Vec::new(), Vec::new()),
-            |(mut kept, mut inside), p| {
-                let dp = g.neighbors(p).len();
-                let first = g.offsets[p as usize];
-                for (i, &q) in g.neighbors(p).iter().enumerate() {
-                    if (dp, p) < (g.neighbors(q).len(), q)
-                        && !perturbed_lune_is_occupied(points, g, p, q, &mut inside)
-                    {
-                        kept.push((p, first + i as u32));
-                    }
-                }
-                (kept, inside)
-            },
-        )
-        .map(|(kept, _)| kept)
-        .reduce(Vec::new, |mut a, mut b| {
-            a.append(&mut b);
-            a
-        })
 }
 
 /// §3 steps 1–2 by the planar-graph face walk: the polygonal regions of
@@ -766,45 +680,5 @@ mod tests {
             cracks > 0,
             "the inputs should include cracks or pinch points"
         );
-    }
-
-    /// `rng(S′)` from the Delaunay search equals the brute-force definition
-    /// (no perturbed point in the perturbed lune), on degenerate grids.
-    #[test]
-    fn perturbed_rng_matches_brute_force() {
-        let mut s = 11u64;
-        let mut next = |m: u64| {
-            s = s
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            (s >> 33) % m
-        };
-        for round in 0..200 {
-            let g = if round % 2 == 0 { 4 } else { 7 };
-            let mut pts: Vec<Point> = (0..12).map(|_| [next(g) as f64, next(g) as f64]).collect();
-            pts.sort_by(|a, b| a[0].total_cmp(&b[0]).then(a[1].total_cmp(&b[1])));
-            pts.dedup();
-            let Ok(dg) = DelaunayGraph::new(&pts) else {
-                continue;
-            };
-            if pts.len() < 3 || dg.triangles.is_empty() {
-                continue;
-            }
-            let mut got = rng_perturbed(&pts, &dg);
-            for e in &mut got {
-                *e = [e[0].min(e[1]), e[0].max(e[1])];
-            }
-            got.sort_unstable();
-            let n = pts.len() as u32;
-            let mut want = Vec::new();
-            for p in 0..n {
-                for q in p + 1..n {
-                    if (0..n).all(|x| !in_lune_symbolic(&pts, p, q, x)) {
-                        want.push([p, q]);
-                    }
-                }
-            }
-            assert_eq!(got, want, "{pts:?}");
-        }
     }
 }
