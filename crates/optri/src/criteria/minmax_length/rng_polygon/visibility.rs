@@ -78,22 +78,20 @@ mod tests {
     use crate::kernel::Point;
     use crate::spatial::convex_hull_cycle;
     use crate::structures::DelaunayGraph;
+    use rand::{rngs::StdRng, Rng, SeedableRng};
 
-    fn lcg_points(n: usize, seed: u64, grid: Option<u64>) -> Vec<Point> {
-        let mut s = seed;
-        let mut next = || {
-            s = s
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            s >> 11
-        };
+    /// Seeds of the point sets, with their grid width (`None`: uniform).
+    const SEEDS_AND_GRIDS: [(u64, Option<u32>); 4] =
+        [(1, None), (2, Some(6)), (3, None), (4, Some(10))];
+
+    /// `n` random points, sorted and distinct: on a `width × width` integer
+    /// grid (many ties), or uniform in `[0, 1000)²`.
+    fn random_points(n: usize, seed: u64, width: Option<u32>) -> Vec<Point> {
+        let mut rng = StdRng::seed_from_u64(seed);
         let mut pts: Vec<Point> = (0..n)
-            .map(|_| match grid {
-                Some(g) => [(next() % g) as f64, (next() % g) as f64],
-                None => [
-                    (next() % 1_000_000) as f64 * 1e-3,
-                    (next() % 1_000_000) as f64 * 1e-3,
-                ],
+            .map(|_| match width {
+                Some(w) => [rng.gen_range(0..w) as f64, rng.gen_range(0..w) as f64],
+                None => [rng.gen_range(0.0..1000.0), rng.gen_range(0.0..1000.0)],
             })
             .collect();
         pts.sort_by(|a, b| a[0].total_cmp(&b[0]).then(a[1].total_cmp(&b[1])));
@@ -104,8 +102,8 @@ mod tests {
     #[test]
     fn visibility_walk_matches_the_diagonal_test() {
         let counters = Counters::default();
-        for (seed, grid) in [(1, None), (2, Some(6)), (3, None), (4, Some(10))] {
-            let pts = lcg_points(60, seed, grid);
+        for (seed, grid) in SEEDS_AND_GRIDS {
+            let pts = random_points(60, seed, grid);
             let g = DelaunayGraph::with_topology(&pts).unwrap();
             let rng = rng_perturbed(&pts, &g);
             let flags = rng_perturbed_flags(&pts, &g);
