@@ -106,7 +106,7 @@
 //! # Diagnostics
 //! Every run counts which branches ran and how often a safety net caught
 //! something (`counters::Counters`), and reports the counts as its
-//! [`Diagnostics`](crate::Diagnostics) under stable names: `case_1`,
+//! [`Diagnostics`] under stable names: `case_1`,
 //! `case_2`, `case_2_remainder_vertices`, `flat_triangles`,
 //! `case_2_hull_fallbacks`, `case_2_pockets_by_5_1`,
 //! `case_2_pockets_by_fan_out`, `case_2_pocket_fallbacks`,
