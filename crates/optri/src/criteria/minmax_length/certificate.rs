@@ -62,7 +62,7 @@ pub(super) fn longest_side(
         .reduce(longer)
 }
 
-/// A region with fewer than [`SMALL_REGION`] corners. A quadrilateral takes
+/// A region with fewer than [`SMALL_REGION`](super::SMALL_REGION) corners. A quadrilateral takes
 /// its shorter diagonal. Otherwise every triangulation has an edge at least
 /// as long as the apex lower bound, so a triangulation of the region whose
 /// diagonals are no longer is optimal: first the region's Delaunay

@@ -55,7 +55,7 @@
 //! # Degeneracy
 //! §4–§6 assume no two equal lengths and no three collinear points. optri's
 //! kernel defines one symbolic perturbation `S′` of the points
-//! ([`crate::kernel::symbolic`], base-3 simulation of simplicity): every
+//! (`kernel/symbolic.rs`, base-3 simulation of simplicity): every
 //! orientation and length comparison is that of one real, infinitesimally
 //! perturbed point set, so all decisions are mutually consistent. The
 //! point-to-segment distance of §5.1 is compared by
