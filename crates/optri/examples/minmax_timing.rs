@@ -18,15 +18,10 @@
 //!
 //! Peak resident memory (VmHWM) is printed at the end.
 
-use optri::internals::{
-    CASE_1, CASE_2, CASE_2_HULL_FALLBACKS, CASE_2_POCKETS_BY_5_1, CASE_2_POCKETS_BY_FAN_OUT,
-    CASE_2_POCKET_FALLBACKS, CASE_2_REMAINDER_VERTICES, COUNTERS, FALLBACKS, FLAT_TRIANGLES,
-    REGIONS_CERTIFIED_BY_BOUND, SMALL_REGION,
-};
-use optri::{Criterion, PointSet};
+use optri::internals::SMALL_REGION;
+use optri::{Criterion, Diagnostics, PointSet};
 use optri_oracle::inputs::{boxed, perturbed_circle, uniform_unit_square};
 use rand::{rngs::StdRng, SeedableRng};
-use std::sync::atomic::Ordering::Relaxed;
 use std::time::Instant;
 
 const SEED_UNIFORM: u64 = 1;
@@ -54,26 +49,13 @@ fn peak_memory() -> String {
         .unwrap_or_else(|| "VmHWM unavailable".into())
 }
 
-fn counters() -> String {
-    format!(
-        "case1={} case2={} case2_pockets_by_5_1={} case2_pockets_by_fan_out={} case2_pocket_fallbacks={} case2_dp_vertices={} flat={} case2_hull_fallbacks={} fallbacks={} small_certified={} small_dp={} certified_by_bound={}",
-        COUNTERS[CASE_1].load(Relaxed),
-        COUNTERS[CASE_2].load(Relaxed),
-        COUNTERS[CASE_2_POCKETS_BY_5_1].load(Relaxed),
-        COUNTERS[CASE_2_POCKETS_BY_FAN_OUT].load(Relaxed),
-        COUNTERS[CASE_2_POCKET_FALLBACKS].load(Relaxed),
-        COUNTERS[CASE_2_REMAINDER_VERTICES].load(Relaxed),
-        COUNTERS[FLAT_TRIANGLES].load(Relaxed),
-        COUNTERS[CASE_2_HULL_FALLBACKS].load(Relaxed),
-        FALLBACKS.load(Relaxed), COUNTERS[9].load(Relaxed), COUNTERS[8].load(Relaxed),
-        COUNTERS[REGIONS_CERTIFIED_BY_BOUND].load(Relaxed)
-    )
-}
-
-fn reset_counters() {
-    for c in &COUNTERS {
-        c.store(0, Relaxed);
-    }
+/// A run's diagnostics (see `optri::minmax_length`'s module docs) as
+/// `name=value` pairs.
+fn counters(d: &Diagnostics) -> String {
+    d.iter()
+        .map(|(name, value)| format!("{name}={value}"))
+        .collect::<Vec<_>>()
+        .join(" ")
 }
 
 /// Delaunay alone, the product, and (unless `SKIP_PURE`) the paper's
@@ -90,15 +72,17 @@ fn compare_with_delaunay(name: &str, ps: &PointSet) {
         v[v.len() / 2]
     };
     let (mut dts, mut ms, mut qs) = (Vec::new(), Vec::new(), Vec::new());
-    let mut solution = None;
+    let (mut solution, mut pure) = (None, None);
     for _ in 0..runs {
         dts.push(secs(|| optri::delaunay(ps).unwrap()).1);
-        reset_counters();
         let (s, m) = secs(|| optri::triangulate(ps, Criterion::MinmaxLength).unwrap());
         ms.push(m);
         solution = Some(s);
         if std::env::var_os("SKIP_PURE").is_none() {
-            qs.push(secs(|| optri::internals::minmax_length_with(ps, SMALL_REGION).unwrap()).1);
+            let ((_, d), q) =
+                secs(|| optri::internals::minmax_length_with(ps, SMALL_REGION).unwrap());
+            qs.push(q);
+            pure = Some(d);
         }
     }
     let s = solution.expect("at least one run");
@@ -111,15 +95,16 @@ fn compare_with_delaunay(name: &str, ps: &PointSet) {
     for p in &s.phases {
         println!("  phase {:12} {:9.1} ms", p.name, p.ms);
     }
-    println!("  {}", counters());
-    if qs.is_empty() {
+    println!("  {}", counters(&s.diagnostics));
+    let Some(pure) = pure else {
         return;
-    }
+    };
     let q = median(qs.clone());
     println!(
         "  without the certificate (every region by the polygon algorithm): {qs:.3?}, median {q:.3} s, ratio {:.2}",
         q / d
     );
+    println!("  {}", counters(&pure));
 }
 
 fn main() {
@@ -158,8 +143,8 @@ fn main() {
                     poly / 1e3,
                     poly * 1e6 / (n as f64 * n as f64)
                 );
+                println!("  {}", counters(&s.diagnostics));
             }
-            println!("  {}", counters());
         }
         "cubic" => {
             for &n in &sizes {

@@ -9,9 +9,4 @@ pub use crate::criteria::greedy::{
 };
 pub use crate::criteria::min_weight::MAX_POINTS as MIN_WEIGHT_MAX_POINTS;
 pub use crate::criteria::minmax_length::{minmax_length_cubic, minmax_length_with, SMALL_REGION};
-pub use crate::criteria::minmax_length::{
-    CASE_1, CASE_2, CASE_2_HULL_FALLBACKS, CASE_2_POCKETS_BY_5_1, CASE_2_POCKETS_BY_FAN_OUT,
-    CASE_2_POCKET_FALLBACKS, CASE_2_REMAINDER_VERTICES, COUNTERS, FALLBACKS, FLAT_TRIANGLES,
-    REGIONS_CERTIFIED_BY_BOUND, SMALL_REGIONS_BY_DP, SMALL_REGIONS_CERTIFIED,
-};
 pub use crate::structures::planar_graph::{Face, PlanarGraph};

@@ -4,12 +4,13 @@
 
 use optri::internals::minmax_length_cubic;
 use optri::kernel::{compare_lengths, orient_sign, Point};
-use optri::{minmax_length, PointSet, Triangulation};
+use optri::{minmax_length, Criterion, Diagnostics, PointSet, Triangulation};
 use optri_oracle::inputs::{
     circle_r5_ccw, grid, lattice_points, perturbed_circle, uniform_in_square, uniform_unit_square,
 };
 use rand::{rngs::StdRng, Rng, SeedableRng};
 use std::cmp::Ordering;
+use std::collections::HashMap;
 
 const SEED_RANDOM_SMALL_SETS: u64 = 1;
 const SEED_DEGENERATE_SMALL_SETS: u64 = 2;
@@ -154,18 +155,54 @@ fn exhaustive_minmax(ps: &PointSet) -> [Point; 2] {
 }
 
 /// The §5.1/§6 algorithm on every region, however small (the product hands
-/// regions below `SMALL_REGION` corners to the cubic program).
-fn quadratic_only(ps: &PointSet) -> Triangulation {
+/// regions below `SMALL_REGION` corners to the cubic program), with the
+/// run's diagnostics.
+fn quadratic_only(ps: &PointSet) -> (Triangulation, Diagnostics) {
     optri::internals::minmax_length_with(ps, 0).unwrap()
 }
 
-fn check_against_exhaustive(points: &[Point]) {
+/// The product ([`minmax_length`], through the registry), with the run's
+/// diagnostics.
+fn product(ps: &PointSet) -> (Triangulation, Diagnostics) {
+    let s = optri::triangulate(ps, Criterion::MinmaxLength).unwrap();
+    (s.triangulation, s.diagnostics)
+}
+
+/// Diagnostics summed over runs, by name.
+#[derive(Default)]
+struct Tally(HashMap<&'static str, u64>);
+
+impl Tally {
+    fn add(&mut self, d: &Diagnostics) {
+        for (name, value) in d.iter() {
+            *self.0.entry(name).or_default() += value;
+        }
+    }
+
+    fn add_all(&mut self, other: Tally) {
+        for (name, value) in other.0 {
+            *self.0.entry(name).or_default() += value;
+        }
+    }
+
+    fn get(&self, name: &str) -> u64 {
+        *self
+            .0
+            .get(name)
+            .unwrap_or_else(|| panic!("no diagnostic {name:?}"))
+    }
+}
+
+/// Compares the product and the quadratic algorithm with the exhaustive
+/// search; returns their diagnostics.
+fn check_against_exhaustive(points: &[Point]) -> Tally {
+    let mut tally = Tally::default();
     let Ok(ps) = PointSet::new(points) else {
-        return;
+        return tally;
     };
     let want = exhaustive_minmax(&ps);
     let d = optri::delaunay(&ps).unwrap();
-    for t in [minmax_length(&ps).unwrap(), quadratic_only(&ps)] {
+    for (t, diagnostics) in [product(&ps), quadratic_only(&ps)] {
         t.validate()
             .unwrap_or_else(|e| panic!("{e} for {points:?}"));
         assert_eq!(
@@ -176,14 +213,16 @@ fn check_against_exhaustive(points: &[Point]) {
             want
         );
         assert_ne!(cmp_seg(longest(&t), longest(&d)), Ordering::Greater);
+        tally.add(&diagnostics);
     }
-    no_fallbacks(points);
+    no_fallbacks(&tally, points);
+    tally
 }
 
 /// The quadratic algorithm never had to fall back to the cubic program.
-fn no_fallbacks(what: impl std::fmt::Debug) {
-    let n = optri::internals::FALLBACKS.load(std::sync::atomic::Ordering::Relaxed);
-    assert_eq!(n, 0, "fallbacks to the cubic program (last: {what:?})");
+fn no_fallbacks(tally: &Tally, what: impl std::fmt::Debug) {
+    let n = tally.get("fallbacks");
+    assert_eq!(n, 0, "fallbacks to the cubic program ({what:?})");
 }
 
 #[test]
@@ -286,12 +325,15 @@ fn duplicates_and_errors() {
 
 // ---- fast polygon algorithm vs the cubic reference ----
 
-fn same_optimum(points: &[Point], what: &str) {
+/// Compares the product and the quadratic algorithm with the cubic
+/// reference; returns their diagnostics.
+fn same_optimum(points: &[Point], what: &str) -> Tally {
     let ps = PointSet::new(points).unwrap();
     let r = minmax_length_cubic(&ps).unwrap();
     r.validate().unwrap();
     let d = optri::delaunay(&ps).unwrap();
-    for t in [minmax_length(&ps).unwrap(), quadratic_only(&ps)] {
+    let mut tally = Tally::default();
+    for (t, diagnostics) in [product(&ps), quadratic_only(&ps)] {
         t.validate().unwrap_or_else(|e| panic!("{what}: {e}"));
         assert_eq!(
             cmp_seg(longest(&t), longest(&r)),
@@ -305,8 +347,10 @@ fn same_optimum(points: &[Point], what: &str) {
             Ordering::Greater,
             "{what}"
         );
+        tally.add(&diagnostics);
     }
-    no_fallbacks(what);
+    no_fallbacks(&tally, what);
+    tally
 }
 
 #[test]
@@ -390,6 +434,8 @@ fn registered_as_an_exact_criterion() {
     // This Delaunay triangulation meets the hull's bound: no region work.
     assert!(s.phases.iter().any(|p| p.name == "lower bound"));
     assert!(!s.phases.iter().any(|p| p.name == "polygons"));
+    assert_eq!(s.diagnostics.get("regions_certified_by_bound"), Some(1));
+    assert_eq!(s.diagnostics.get("case_1"), Some(0));
     s.triangulation.validate().unwrap();
     assert_eq!(
         cmp_seg(
@@ -402,13 +448,15 @@ fn registered_as_an_exact_criterion() {
 
 #[test]
 fn the_tests_exercise_every_branch() {
+    // The diagnostics of every run below, summed.
+    let mut tally = Tally::default();
     // Degenerate grids hit §6 Case 1 and Case 2 and the §5.4 repair.
     let mut rng = StdRng::seed_from_u64(6);
     for _ in 0..200 {
         let pts: Vec<Point> = (0..30)
             .map(|_| [rng.gen_range(0..6) as f64, rng.gen_range(0..6) as f64])
             .collect();
-        same_optimum(&pts, "6x6 grid");
+        tally.add_all(same_optimum(&pts, "6x6 grid"));
     }
     // Sparser 10×10 grids hit the §5.4 repair of flat triangles under the
     // Z-order numbering's perturbation (about one set in 40).
@@ -417,7 +465,7 @@ fn the_tests_exercise_every_branch() {
         let pts: Vec<Point> = (0..n)
             .map(|_| [rng.gen_range(0..10) as f64, rng.gen_range(0..10) as f64])
             .collect();
-        same_optimum(&pts, "10x10 grid");
+        tally.add_all(same_optimum(&pts, "10x10 grid"));
     }
     // Uniform sets hit the §6 Case 2 step-3 pockets (u_L ≠ v, fan-out).
     for seed in 0..4 {
@@ -425,30 +473,28 @@ fn the_tests_exercise_every_branch() {
         let pts: Vec<Point> = (0..3000)
             .map(|_| [rng.gen::<f64>(), rng.gen::<f64>()])
             .collect();
-        same_optimum(&pts, "uniform 3000 for Case 2 pockets");
+        tally.add_all(same_optimum(&pts, "uniform 3000 for Case 2 pockets"));
     }
-    use optri::internals::{
-        CASE_1, CASE_2, CASE_2_HULL_FALLBACKS, CASE_2_POCKETS_BY_5_1, CASE_2_POCKETS_BY_FAN_OUT,
-        CASE_2_POCKET_FALLBACKS, COUNTERS, FLAT_TRIANGLES, REGIONS_CERTIFIED_BY_BOUND,
-        SMALL_REGIONS_BY_DP, SMALL_REGIONS_CERTIFIED,
-    };
-    let c = |i: usize| COUNTERS[i].load(std::sync::atomic::Ordering::Relaxed);
-    assert!(c(CASE_1) > 0 && c(CASE_2) > 0 && c(FLAT_TRIANGLES) > 0);
-    assert!(c(CASE_2_POCKETS_BY_5_1) > 0, "no pocket closed by a 1-edge");
+    let c = |name: &str| tally.get(name);
+    assert!(c("case_1") > 0 && c("case_2") > 0 && c("flat_triangles") > 0);
     assert!(
-        c(CASE_2_POCKETS_BY_FAN_OUT) > 0,
+        c("case_2_pockets_by_5_1") > 0,
+        "no pocket closed by a 1-edge"
+    );
+    assert!(
+        c("case_2_pockets_by_fan_out") > 0,
         "no pocket needed the u_L search and the fan-out"
     );
     assert!(
-        c(SMALL_REGIONS_CERTIFIED) > 0 && c(SMALL_REGIONS_BY_DP) > 0,
+        c("small_regions_certified") > 0 && c("small_regions_by_dp") > 0,
         "small regions should take both the certified-Delaunay and the cubic path"
     );
     assert!(
-        c(REGIONS_CERTIFIED_BY_BOUND) > 0,
+        c("regions_certified_by_bound") > 0,
         "the Length-Lemma certificate should keep some Delaunay regions"
     );
-    assert_eq!(c(CASE_2_HULL_FALLBACKS), 0);
-    assert_eq!(c(CASE_2_POCKET_FALLBACKS), 0);
+    assert_eq!(c("case_2_hull_fallbacks"), 0);
+    assert_eq!(c("case_2_pocket_fallbacks"), 0);
 }
 
 // ---- against the independent oracle crate (exact rationals) ----
@@ -481,10 +527,13 @@ fn oracle_exhaustive_enumeration_agrees() {
             .map(|t| max_edge_squared(ps.points(), t))
             .min()
             .unwrap();
-        for t in [minmax_length(&ps).unwrap(), quadratic_only(&ps)] {
+        let mut tally = Tally::default();
+        for (t, diagnostics) in [product(&ps), quadratic_only(&ps)] {
             t.validate().unwrap();
             assert_eq!(oracle_max_edge(&t), best, "{pts:?}");
+            tally.add(&diagnostics);
         }
+        no_fallbacks(&tally, &pts);
     }
 }
 
@@ -517,9 +566,12 @@ fn oracle_cubic_reference_agrees_on_random_sets_and_grids() {
         };
         let ps = PointSet::new(&pts).unwrap();
         let want = oracle_cubic(&pts);
-        for t in [minmax_length(&ps).unwrap(), quadratic_only(&ps)] {
+        let mut tally = Tally::default();
+        for (t, diagnostics) in [product(&ps), quadratic_only(&ps)] {
             assert_eq!(oracle_max_edge(&t), want, "{pts:?}");
+            tally.add(&diagnostics);
         }
+        no_fallbacks(&tally, &pts);
     }
 }
 
@@ -530,8 +582,11 @@ fn oracle_cubic_reference_agrees_on_small_tsplib_files() {
         let pts = read_tsp(&dir.join(format!("{name}.tsp")));
         let ps = PointSet::new(&pts).unwrap();
         let want = oracle_cubic(&pts);
-        for t in [minmax_length(&ps).unwrap(), quadratic_only(&ps)] {
+        let mut tally = Tally::default();
+        for (t, diagnostics) in [product(&ps), quadratic_only(&ps)] {
             assert_eq!(oracle_max_edge(&t), want, "{name}");
+            tally.add(&diagnostics);
         }
+        no_fallbacks(&tally, name);
     }
 }

@@ -116,7 +116,6 @@ impl Diagnostics {
     }
 
     /// Adds `value` to the counter `name` (creating it).
-    #[allow(dead_code)] // the minmax-length counters move here next
     pub(crate) fn add(&mut self, name: &'static str, value: u64) {
         match self.counters.iter_mut().find(|(n, _)| *n == name) {
             Some((_, v)) => *v += value,

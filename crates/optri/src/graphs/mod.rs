@@ -14,4 +14,5 @@ pub use convex_hull::{convex_hull, convex_hull_edges};
 pub use delaunay::{delaunay, delaunay_edges};
 pub use gabriel_graph::gabriel_graph;
 pub use minimum_spanning_tree::minimum_spanning_tree;
+pub(crate) use relative_neighborhood_graph::perturbed_rng_from_delaunay;
 pub use relative_neighborhood_graph::relative_neighborhood_graph;

@@ -1,5 +1,6 @@
-//! §3 steps 1–2 read off the Delaunay triangles: the regions of
-//! `ch(S) ∪ rng(S′)` (000_5891e11f36dd26ad.txt §3).
+//! §3 steps 1–2 of Edelsbrunner & Tan (*A quadratic time algorithm for the
+//! minmax length triangulation*, 1993) read off the Delaunay triangles: the
+//! regions of `ch(S) ∪ rng(S′)`.
 //!
 //! Every edge of `ch(S) ∪ rng(S′)` is a Delaunay edge (see the module docs of
 //! [`super`]), so each region is a union of Delaunay triangles: the classes of
