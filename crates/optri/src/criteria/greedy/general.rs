@@ -64,7 +64,7 @@
 //! remaining pairs of open vertices; that is quadratic in their number, which
 //! is why convex inputs go to [`super::convex`].
 
-use super::sort_keyed_runs;
+use super::{keyed_by_length, rounded_squared_length, sort_keyed_runs};
 use crate::error::{Error, Result};
 use crate::kernel::compare_angles;
 use crate::kernel::{compare_lengths, orient_sign, Point};
@@ -593,8 +593,7 @@ impl<'a> Partial<'a> {
 /// Exact `|pq| < t` for a threshold length `t`, with a rounded shortcut.
 #[inline]
 fn shorter_than(p: Point, q: Point, t: f64) -> bool {
-    let (dx, dy) = (p[0] - q[0], p[1] - q[1]);
-    let d2 = dx * dx + dy * dy;
+    let d2 = rounded_squared_length(p, q);
     let t2 = t * t;
     if d2 < t2 * (1.0 - 1e-9) {
         return true;
@@ -634,15 +633,7 @@ impl Renumbering<'_> {
     /// The position of each local-index segment in the global segment order
     /// (exact; see [`super::sort_keyed_runs`]).
     fn ranks(&self, points: &[Point], segments: &[[u32; 2]]) -> Vec<u32> {
-        let mut keyed: Vec<(f64, u32)> = segments
-            .par_iter()
-            .enumerate()
-            .map(|(i, s)| {
-                let (p, q) = (points[s[0] as usize], points[s[1] as usize]);
-                let (dx, dy) = (p[0] - q[0], p[1] - q[1]);
-                (dx * dx + dy * dy, i as u32)
-            })
-            .collect();
+        let mut keyed = keyed_by_length(points, segments, |i, _| i as u32);
         let order = crate::kernel::segment_order(self.original);
         let original = |i: u32| segments[i as usize].map(|v| self.to_original[v as usize]);
         sort_keyed_runs(&mut keyed, |&i, &j| order(&original(i), &original(j)));
