@@ -1,12 +1,14 @@
-//! The greedy triangulation GT(S) (seed `003_4db77bcb30d376e0.txt` §1;
-//! seed 004 Definition 16): repeatedly add the shortest segment between two
-//! points that crosses no segment already added and passes through no other
-//! point.
+//! The greedy triangulation GT(S): repeatedly add the shortest segment
+//! between two points that crosses no segment already added and passes
+//! through no other point (C. Levcopoulos & A. Lingas, *On approximation
+//! behavior of the greedy triangulation for convex polygons*, Algorithmica 2
+//! (1987), §1; T. S. Vassilev, *Optimal area triangulation*, PhD thesis,
+//! University of Saskatchewan (2005), Definition 16).
 //!
 //! # Order and ties
 //! Segments are ordered by [`crate::kernel::segment_order`]: exact squared
 //! length, ties broken by the simulation-of-simplicity perturbation of
-//! [`crate::kernel::symbolic`]. That is a total order on segments, so GT is
+//! `crate::kernel::symbolic`. That is a total order on segments, so GT is
 //! unique and every algorithm here returns the same edges. A segment with
 //! another point on its open interior is never added (exact orientation plus a
 //! betweenness test), so collinear points never produce overlapping edges.
@@ -19,6 +21,10 @@
 //! | anything else | length rounds with closed-vertex retirement | [`general`](self) |
 //!
 //! The result is the same in every case; the tests check that edge for edge.
+//! Section and theorem numbers (§1, Fact 3.1, Thm 4.2, Thm 4.3) are
+//! Levcopoulos & Lingas's; the general algorithm follows M. T. Dickerson,
+//! R. L. S. Drysdale, S. A. McElfresh & E. Welzl, *Fast greedy triangulation
+//! algorithms*, Computational Geometry 8 (1997) (see `general`).
 
 mod convex;
 mod convex_delaunay;
@@ -247,7 +253,7 @@ pub(crate) fn keyed_by_length<T: Send>(
 
 /// Sorts `(rounded squared length, item)` pairs into the exact order
 /// `exact`: by the rounded key first, then runs of keys within a relative
-/// [`KEY_RUN_GAP`] of their neighbours by `exact` (see [`sort_segments`]
+/// [`KEY_RUN_GAP`] of their neighbours by `exact` (see `sort_segments`
 /// for why that is enough).
 pub(crate) fn sort_keyed_runs<T: Send>(
     keyed: &mut [(f64, T)],
@@ -296,7 +302,7 @@ pub(crate) fn triangles_of(points: &[Point], edges: &[[u32; 2]]) -> Vec<[u32; 3]
 ///
 /// Collinear boundary points make a degenerate convex polygon; those inputs go
 /// to the general algorithm, since Fact 3.1 and the splitting arguments of
-/// §4 assume no three vertices are collinear.
+/// §4 (Levcopoulos & Lingas) assume no three vertices are collinear.
 pub(crate) fn convex_polygon(points: &[Point]) -> Option<Vec<u32>> {
     let hull = convex_hull_cycle(points);
     if hull.len() != points.len() {
@@ -319,7 +325,7 @@ pub fn is_convex_position(points: &PointSet) -> bool {
     convex_polygon(points.points()).is_some()
 }
 
-/// Is the input a semicircular convex polygon (seed 003 §1: the two farthest
+/// Is the input a semicircular convex polygon (Levcopoulos & Lingas §1: the two farthest
 /// vertices are the endpoints of an edge, and every other vertex lies strictly
 /// inside the circle with that edge as diameter)?
 #[cfg(any(test, feature = "internals"))]

@@ -1,4 +1,6 @@
-//! GT of semicircular polygons in O(n log n): seed 003 Thm 4.3.
+//! GT of semicircular polygons in O(n log n): Thm 4.3 of C. Levcopoulos &
+//! A. Lingas, *On approximation behavior of the greedy triangulation for
+//! convex polygons*, Algorithmica 2 (1987).
 //!
 //! By Fact 3.1 (a nearest neighbour of a vertex of a semicircular polygon is
 //! one of its two polygon neighbours), applied to the polygon with a vertex's

@@ -1,6 +1,7 @@
-//! GT of arbitrary point sets: the Dickerson–Drysdale–McElfresh–Welzl idea of
-//! processing only plausible candidates (literature.md §b), made exact and
-//! cache-friendly.
+//! GT of arbitrary point sets: the idea of M. T. Dickerson, R. L. S.
+//! Drysdale, S. A. McElfresh & E. Welzl, *Fast greedy triangulation
+//! algorithms*, Computational Geometry 8 (1997), of processing only plausible
+//! candidates (literature.md §b), made exact and cache-friendly.
 //!
 //! # Length rounds
 //! Round `k` takes candidate pairs whose exact length lies in
@@ -366,7 +367,9 @@ fn decide_round(
     // In the first round (no earlier edges) every segment shorter than the
     // threshold is a candidate, so the lowest rank at a vertex is the
     // shortest segment there. A segment shortest at both ends is a GT edge:
-    // a shorter `cd` crossing `ab` would make, by the □-Lemma,
+    // a shorter `cd` crossing `ab` would make, by the □-Lemma (Edelsbrunner
+    // & Tan, *A quadratic time algorithm for the minmax length
+    // triangulation*, 1991, §4),
     // `|ac| + |bd| < |ab| + |cd| < 2|ab|`, so `ac` or `bd` would be shorter
     // still; and a point on `ab` would make a shorter segment at `a`. Its
     // dependencies need not be listed.
