@@ -23,7 +23,7 @@ const MAX_CELL_PAIRS: usize = 1024;
 /// Grid cells are this much wider than the threshold, so that pairs shorter
 /// than it sit in neighbouring cells despite rounding. A chosen margin
 /// (rounding is a few units of 2⁻⁵³).
-pub(super) const CELL_WIDENING: f64 = 1.001;
+const CELL_WIDENING: f64 = 1.001;
 
 /// A computed cell narrower than `FINEST_CELL` times the requested one means
 /// the grid clamped it to its finest cells (a chosen margin below 1 for the
