@@ -3,9 +3,11 @@
 //! kernel.
 
 mod bbox;
+mod grid;
 mod hull;
 mod morton;
 
 pub(crate) use bbox::bounding_box;
+pub(crate) use grid::{fmax, fmin, SparseGrid};
 pub(crate) use hull::convex_hull_cycle;
 pub(crate) use morton::morton_order;

@@ -1,5 +1,7 @@
-//! GT of a strictly convex polygon by recursive splitting: seed 003 Thm 4.2
-//! (and Corollary 4.1 for convex point sets).
+//! GT of a strictly convex polygon by recursive splitting: Thm 4.2 (and
+//! Corollary 4.1 for convex point sets) of C. Levcopoulos & A. Lingas, *On
+//! approximation behavior of the greedy triangulation for convex polygons*,
+//! Algorithmica 2 (1987).
 //!
 //! `Greedy(P)`: find a shortest diagonal of `P`, split along it, recurse.
 //! The subpolygons partition `P`, so an explicit stack of them takes O(n)

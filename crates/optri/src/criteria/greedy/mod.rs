@@ -1,7 +1,9 @@
-//! The greedy triangulation GT(S) (seed `003_4db77bcb30d376e0.txt` §1;
-//! seed 004 Definition 16): repeatedly add the shortest segment between two
-//! points that crosses no segment already added and passes through no other
-//! point.
+//! The greedy triangulation GT(S): repeatedly add the shortest segment
+//! between two points that crosses no segment already added and passes
+//! through no other point (C. Levcopoulos & A. Lingas, *On approximation
+//! behavior of the greedy triangulation for convex polygons*, Algorithmica 2
+//! (1987), §1; T. S. Vassilev, *Optimal area triangulation*, PhD thesis,
+//! University of Saskatchewan (2005), Definition 16).
 //!
 //! # Order and ties
 //! Segments are ordered by [`crate::kernel::segment_order`]: exact squared
@@ -19,6 +21,10 @@
 //! | anything else | length rounds with closed-vertex retirement | [`general`](self) |
 //!
 //! The result is the same in every case; the tests check that edge for edge.
+//! Section and theorem numbers (§1, Fact 3.1, Thm 4.2, Thm 4.3) are
+//! Levcopoulos & Lingas's; the general algorithm follows M. T. Dickerson,
+//! R. L. S. Drysdale, S. A. McElfresh & E. Welzl, *Fast greedy triangulation
+//! algorithms*, Computational Geometry 8 (1997) (see `general`).
 
 mod convex;
 mod convex_delaunay;
@@ -28,6 +34,7 @@ mod semicircular;
 use super::{CriterionInfo, Diagnostics, Optimality, Options, Requirement, Solved};
 use crate::error::Result;
 use crate::kernel::{orient_sign, Point};
+use crate::parallel::prelude::*;
 use crate::spatial::convex_hull_cycle;
 use crate::structures::{PlanarGraph, PointSet, Triangulation};
 use crate::timing::{Phase, Stopwatch};
@@ -141,7 +148,15 @@ pub fn greedy(points: &PointSet) -> Result<Triangulation> {
 pub fn greedy_edges_by(points: &PointSet, algorithm: GreedyAlgorithm) -> Option<Vec<[u32; 2]>> {
     let pts = points.points();
     let edges = match algorithm {
-        GreedyAlgorithm::General => edges_of(&general::greedy_general(pts, &mut Vec::new()).ok()?),
+        GreedyAlgorithm::General => {
+            let triangles = general::greedy_general(pts, &mut Vec::new()).ok()?;
+            // `Triangulation::edges` works on input indices; map them back.
+            Triangulation::from_distinct(points, triangles)
+                .edges()
+                .into_iter()
+                .map(|e| e.map(|i| points.distinct_index(i)))
+                .collect()
+        }
         GreedyAlgorithm::Convex => convex::greedy_convex(pts, &convex_polygon(pts)?),
         GreedyAlgorithm::Semicircular => {
             let rotated = semicircular::base_rotation(pts, &convex_polygon(pts)?)?;
@@ -189,41 +204,66 @@ pub fn greedy_naive_edges(points: &PointSet) -> Vec<[u32; 2]> {
 /// Sorts segments by the global order of [`crate::kernel::segment_order`].
 ///
 /// A rounded squared length orders almost everything; runs whose rounded
-/// keys are within a relative 10⁻¹² of their neighbours are re-sorted with
-/// the exact symbolic comparator. Rounded keys carry a relative error below
-/// 4·2⁻⁵³, so two segments in the wrong rounded order always have keys that
-/// close, and so does every key between them: they land in one run.
+/// keys are within a relative [`KEY_RUN_GAP`] of their neighbours are
+/// re-sorted with the exact symbolic comparator. Rounded keys carry a
+/// relative error below 4·2⁻⁵³, so two segments in the wrong rounded order
+/// always have keys that close, and so does every key between them: they
+/// land in one run.
 #[cfg(any(test, feature = "internals"))]
 pub(crate) fn sort_segments(points: &[Point], segments: &mut Vec<[u32; 2]>) {
-    use crate::parallel::prelude::*;
-    let mut keyed: Vec<(f64, [u32; 2])> = segments
-        .par_iter()
-        .map(|s| {
-            let (p, q) = (points[s[0] as usize], points[s[1] as usize]);
-            let (dx, dy) = (p[0] - q[0], p[1] - q[1]);
-            (dx * dx + dy * dy, *s)
-        })
-        .collect();
+    let mut keyed = keyed_by_length(points, segments, |_, s| s);
     let order = crate::kernel::segment_order(points);
     sort_keyed_runs(&mut keyed, |x, y| order(x, y));
     segments.clear();
     segments.extend(keyed.into_iter().map(|(_, s)| s));
 }
 
+/// Two rounded squared lengths closer than this relative gap may be in the
+/// wrong order and are compared exactly. Derived need, chosen value: a
+/// rounded key is within 4·2⁻⁵³ of the exact squared length (coordinate
+/// differences never underflow or overflow: the coordinate range of
+/// [`crate::kernel`]), so two keys in the wrong order differ by less than
+/// 8·2⁻⁵³ ≈ 9·10⁻¹⁶ relative; 10⁻¹² is about a thousand times that. Larger
+/// gaps only make exact runs longer.
+pub(crate) const KEY_RUN_GAP: f64 = 1e-12;
+
+/// The rounded squared length of `pq`, the key of [`sort_keyed_runs`].
+#[inline]
+pub(crate) fn rounded_squared_length(p: Point, q: Point) -> f64 {
+    let (dx, dy) = (p[0] - q[0], p[1] - q[1]);
+    dx * dx + dy * dy
+}
+
+/// `(rounded squared length, item(i, segment))` for every segment, in order:
+/// the input of [`sort_keyed_runs`].
+pub(crate) fn keyed_by_length<T: Send>(
+    points: &[Point],
+    segments: &[[u32; 2]],
+    item: impl Fn(usize, [u32; 2]) -> T + Sync + Send,
+) -> Vec<(f64, T)> {
+    segments
+        .par_iter()
+        .enumerate()
+        .map(|(i, &[a, b])| {
+            let key = rounded_squared_length(points[a as usize], points[b as usize]);
+            (key, item(i, [a, b]))
+        })
+        .collect()
+}
+
 /// Sorts `(rounded squared length, item)` pairs into the exact order
 /// `exact`: by the rounded key first, then runs of keys within a relative
-/// 10⁻¹² of their neighbours by `exact` (see [`sort_segments`] for why that
-/// is enough).
+/// [`KEY_RUN_GAP`] of their neighbours by `exact` (see `sort_segments`
+/// for why that is enough).
 pub(crate) fn sort_keyed_runs<T: Send>(
     keyed: &mut [(f64, T)],
     exact: impl Fn(&T, &T) -> std::cmp::Ordering,
 ) {
-    use crate::parallel::prelude::*;
     keyed.par_sort_unstable_by(|x, y| x.0.total_cmp(&y.0));
     let mut start = 0;
     while start < keyed.len() {
         let mut end = start + 1;
-        while end < keyed.len() && keyed[end].0 - keyed[end - 1].0 <= 1e-12 * keyed[end].0 {
+        while end < keyed.len() && keyed[end].0 - keyed[end - 1].0 <= KEY_RUN_GAP * keyed[end].0 {
             end += 1;
         }
         if end - start > 1 {
@@ -231,19 +271,6 @@ pub(crate) fn sort_keyed_runs<T: Send>(
         }
         start = end;
     }
-}
-
-/// The edges of a set of triangles (each once).
-#[cfg(any(test, feature = "internals"))]
-fn edges_of(triangles: &[[u32; 3]]) -> Vec<[u32; 2]> {
-    let mut edges: Vec<[u32; 2]> = triangles
-        .iter()
-        .flat_map(|&[a, b, c]| [[a, b], [b, c], [c, a]])
-        .map(|[u, v]| [u.min(v), u.max(v)])
-        .collect();
-    edges.sort_unstable();
-    edges.dedup();
-    edges
 }
 
 /// Edges as sorted `[min, max]` pairs, sorted.
@@ -275,7 +302,7 @@ pub(crate) fn triangles_of(points: &[Point], edges: &[[u32; 2]]) -> Vec<[u32; 3]
 ///
 /// Collinear boundary points make a degenerate convex polygon; those inputs go
 /// to the general algorithm, since Fact 3.1 and the splitting arguments of
-/// §4 assume no three vertices are collinear.
+/// §4 (Levcopoulos & Lingas) assume no three vertices are collinear.
 pub(crate) fn convex_polygon(points: &[Point]) -> Option<Vec<u32>> {
     let hull = convex_hull_cycle(points);
     if hull.len() != points.len() {
@@ -298,7 +325,7 @@ pub fn is_convex_position(points: &PointSet) -> bool {
     convex_polygon(points.points()).is_some()
 }
 
-/// Is the input a semicircular convex polygon (seed 003 §1: the two farthest
+/// Is the input a semicircular convex polygon (Levcopoulos & Lingas §1: the two farthest
 /// vertices are the endpoints of an edge, and every other vertex lies strictly
 /// inside the circle with that edge as diameter)?
 #[cfg(any(test, feature = "internals"))]

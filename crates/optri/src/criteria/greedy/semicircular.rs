@@ -1,4 +1,6 @@
-//! GT of semicircular polygons in O(n log n): seed 003 Thm 4.3.
+//! GT of semicircular polygons in O(n log n): Thm 4.3 of C. Levcopoulos &
+//! A. Lingas, *On approximation behavior of the greedy triangulation for
+//! convex polygons*, Algorithmica 2 (1987).
 //!
 //! By Fact 3.1 (a nearest neighbour of a vertex of a semicircular polygon is
 //! one of its two polygon neighbours), applied to the polygon with a vertex's
@@ -12,6 +14,7 @@
 //! non-ear diagonals cannot exist at `v_j`, and the heap uses the same
 //! symbolic order as every other algorithm.
 
+use super::{rounded_squared_length, KEY_RUN_GAP};
 use crate::kernel::{compare_lengths, compare_lengths_symbolic, dot_sign, Point};
 use std::cmp::Ordering;
 use std::collections::BinaryHeap;
@@ -58,11 +61,12 @@ impl PartialOrd for Ear<'_> {
 impl Ord for Ear<'_> {
     /// Reversed, so the max-heap pops the shortest diagonal.
     fn cmp(&self, other: &Self) -> Ordering {
-        // Rounded keys carry relative error < 4·2⁻⁵³: far apart keys decide.
+        // Rounded keys carry relative error < 4·2⁻⁵³: far apart keys decide
+        // (see `KEY_RUN_GAP`).
         let (a, b) = (self.key, other.key);
-        let by_key = if a < b * (1.0 - 1e-12) {
+        let by_key = if a < b * (1.0 - KEY_RUN_GAP) {
             Ordering::Less
-        } else if b < a * (1.0 - 1e-12) {
+        } else if b < a * (1.0 - KEY_RUN_GAP) {
             Ordering::Greater
         } else {
             compare_lengths_symbolic(self.points, self.diagonal, other.diagonal)
@@ -88,10 +92,9 @@ pub(super) fn greedy_semicircular(points: &[Point], polygon: &[u32]) -> Vec<[u32
     let local: Vec<Point> = polygon.iter().map(|&v| points[v as usize]).collect();
     let ear = |prev: &[u32], next: &[u32], i: u32| {
         let (l, r) = (prev[i as usize] as usize, next[i as usize] as usize);
-        let (dx, dy) = (local[l][0] - local[r][0], local[l][1] - local[r][1]);
         Ear {
             points,
-            key: dx * dx + dy * dy,
+            key: rounded_squared_length(local[l], local[r]),
             diagonal: [polygon[l], polygon[r]],
             apex: i,
         }

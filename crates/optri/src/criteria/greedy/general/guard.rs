@@ -1,0 +1,88 @@
+//! The density guard of the module docs ("Length rounds"): it picks a
+//! round's threshold so that the round's candidate pairs stay linear in the
+//! number of open vertices, in total and near every cell. It only affects
+//! the running time; rounds stay disjoint length ranges whatever it picks.
+
+use crate::kernel::Point;
+use crate::parallel::prelude::*;
+use crate::spatial::SparseGrid;
+
+/// The guard's pair budget is `PAIRS_PER_OPEN_VERTEX` per open vertex plus
+/// `EXTRA_PAIRS`. A tuning choice (no measurement of it is recorded, commit
+/// 752d473). For scale: uniform points at the first threshold have about 2.6
+/// points a cell and 23 in a cell's block of nine, so about 23 pairs per
+/// vertex, half the budget; the constant lets the few open vertices of late
+/// rounds take their pairs without halving the step.
+const PAIRS_PER_OPEN_VERTEX: usize = 48;
+const EXTRA_PAIRS: usize = 4096;
+
+/// The guard's bound on the pairs a cell and its neighbours make (uniform
+/// points at the first threshold stay well below it).
+const MAX_CELL_PAIRS: usize = 1024;
+
+/// Grid cells are this much wider than the threshold, so that pairs shorter
+/// than it sit in neighbouring cells despite rounding. A chosen margin
+/// (rounding is a few units of 2⁻⁵³).
+const CELL_WIDENING: f64 = 1.001;
+
+/// A computed cell narrower than `FINEST_CELL` times the requested one means
+/// the grid clamped it to its finest cells (a chosen margin below 1 for the
+/// rounding of `inv · cell`).
+const FINEST_CELL: f64 = 0.999;
+
+/// The guard stops halving once the step above the last threshold is below
+/// this fraction of the threshold. A chosen floor: after round 0, where the
+/// step starts at the last threshold, it bounds the halvings at about
+/// log₂ 1000 ≈ 10 a round.
+const MIN_RELATIVE_STEP: f64 = 1e-3;
+
+/// The threshold of the next round, at most `proposed`, and the grid of the
+/// open vertices (indices into `open`) with cells a little wider than it.
+///
+/// Guard: a round enumerates the pairs of open vertices in neighbouring
+/// cells, and its candidates' crossings grow with their square; where points
+/// are much denser than average (clustered inputs) a threshold scaled to the
+/// mean spacing would make that quadratic. So the step above `lower` is
+/// halved until the pair count is linear in the number of open vertices
+/// (only the running time depends on this choice; rounds stay disjoint
+/// length ranges).
+pub(super) fn round_grid(
+    points: &[Point],
+    bbox: [f64; 4],
+    open: &[u32],
+    lower: f64,
+    proposed: f64,
+) -> (f64, SparseGrid<u32>) {
+    let budget = PAIRS_PER_OPEN_VERTEX * open.len() + EXTRA_PAIRS;
+    let mut threshold = proposed;
+    loop {
+        let grid = SparseGrid::new(
+            bbox,
+            threshold * CELL_WIDENING,
+            open.len(),
+            |j| points[open[j] as usize],
+            |j| j as u32,
+            |j| j as u32,
+        );
+        let (pairs, worst) = (0..grid.occupied())
+            .into_par_iter()
+            .map(|k| {
+                let pairs = grid.cell(k).len() * grid.block_len(k);
+                (pairs, pairs)
+            })
+            .reduce(|| (0, 0), |(s1, m1), (s2, m2)| (s1 + s2, m1.max(m2)));
+        let step = threshold - lower;
+        // Both in total and in every cell: one dense cluster's pairs would
+        // cross each other quadratically often. Stop shrinking once the step
+        // is tiny or the grid has reached its finest cells (points closer
+        // than that stay together whatever the threshold).
+        let finest = grid.inverse_cell() * threshold * CELL_WIDENING < FINEST_CELL;
+        if (pairs <= budget && worst <= MAX_CELL_PAIRS)
+            || step <= MIN_RELATIVE_STEP * threshold
+            || finest
+        {
+            return (threshold, grid);
+        }
+        threshold = lower + 0.5 * step;
+    }
+}

@@ -1,0 +1,449 @@
+//! GT of arbitrary point sets: the idea of M. T. Dickerson, R. L. S.
+//! Drysdale, S. A. McElfresh & E. Welzl, *Fast greedy triangulation
+//! algorithms*, Computational Geometry 8 (1997), of processing only plausible
+//! candidates (literature.md §b), made exact and cache-friendly.
+//!
+//! # Length rounds
+//! Round `k` takes candidate pairs whose exact length lies in
+//! `[T_{k-1}, T_k)`: in round 0 every pair shorter than `T_0`, later only
+//! pairs of still-open vertices (below). Rounds are disjoint length ranges,
+//! so every pair shorter than `T_{k-1}` has been decided when round `k`
+//! starts. `T_0` is about 1.6 mean point spacings and `T_k = 2 T_{k-1}`,
+//! unless a guard (`round_grid`) finds that the pairs within the proposed
+//! threshold are too many — in total, or in one cell and its neighbours, as
+//! in a dense cluster — and halves the step until they are not; the grids
+//! store only occupied cells, so their cells can follow the threshold
+//! however uneven the density. These choices only affect the running time.
+//!
+//! # Deciding a round without following the length order
+//! The naive algorithm accepts a segment iff it contains no point and crosses
+//! no *accepted shorter* segment. So the decision of candidate `r` depends
+//! only on the decisions of the shorter candidates that cross it (its
+//! *dependencies*) and on edges of earlier rounds: any evaluation order in
+//! which dependencies come first gives the naive result. A round therefore
+//! runs in two passes:
+//! 1. in parallel and in spatial (Z-order) order — the expensive part —
+//!    every candidate is tested against the points and earlier edges near it,
+//!    and its dependencies are listed;
+//! 2. in the global segment order, `accepted[r] = !blocked[r]` and no
+//!    dependency accepted — a cheap pass over small integer arrays.
+//!
+//! The global order is thus only followed where it matters; the previous
+//! design tested each candidate against the partial GT in length order, a
+//! random walk through memory that cost ~1.4 µs a candidate at 10⁶ points.
+//! In round 0 a segment that is the shortest at both of its endpoints needs
+//! no dependency list: it is a GT edge (`decide_round`).
+//!
+//! # Earlier edges: only the *active* ones
+//! **Lemma (empty triangles).** If every pair shorter than `ℓ` has been
+//! decided and `u, w` are consecutive neighbours of `v` with `uw ∈ G`,
+//! `|vu|, |vw|, |uw| < ℓ` and a left turn `v, u, w`, the triangle `vuw` holds
+//! no point. *Proof:* all segments between points of the closed triangle are
+//! shorter than `ℓ` and cannot cross the triangle's sides, so `G` restricted
+//! to them is a maximal non-crossing set, i.e. a triangulation of those
+//! points; with a point inside, `v` would have an edge into the triangle,
+//! between `u` and `w`. ∎
+//!
+//! Call such a triangle *closed*, a vertex *closed* when every angular gap at
+//! it is a closed triangle or the outer gap between its hull neighbours (no
+//! further edge can reach it), and an edge *active* when both endpoints are
+//! open and a side of it is not a closed triangle. Candidates of round `k ≥ 1`
+//! join two open vertices and must leave both through an open gap (the
+//! direction is not an existing edge's, which would put a point on the
+//! segment, and is not inside a closed triangle, whose third side it would
+//! cross). **Claim:** such a candidate `ab` with no point on it that crosses
+//! an earlier edge crosses an active one. *Proof:* walk along `ab` from a
+//! crossing of an inactive edge towards `a`; the walk runs through closed
+//! triangles and leaves each through a side (not through a vertex: no point
+//! on `ab`; not through `a`: `a`'s gap is open). A side whose far face is not
+//! closed has both endpoints open (a closed endpoint's gaps are all closed
+//! triangles) and is not a hull edge, so it is active. ∎ So round `k ≥ 1`
+//! tests candidates only against active edges, which shrink with the open
+//! vertices.
+//!
+//! The final round (once `T_k` exceeds the bounding-box diagonal) takes all
+//! remaining pairs of open vertices; that is quadratic in their number, which
+//! is why convex inputs go to [`super::convex`].
+//!
+//! # Files
+//! | file | what | implements |
+//! |---|---|---|
+//! | `mod.rs` | the rounds driver: thresholds, candidates, the two passes | "Length rounds", "Deciding a round…" |
+//! | [`partial`] | the partial triangulation: closed triangles, closed vertices, active edges | the Lemma and the Claim |
+//! | [`segment_index`] | what a candidate may cross, and whether a point lies on it | pass 1's tests |
+//! | [`guard`] | the density guard choosing each round's threshold | "Length rounds" (the guard) |
+//!
+//! The cells behind every lookup are [`crate::spatial::SparseGrid`]s.
+
+mod guard;
+mod partial;
+mod segment_index;
+
+use super::{keyed_by_length, rounded_squared_length, sort_keyed_runs};
+use crate::error::{Error, Result};
+use crate::kernel::{compare_lengths, Point};
+use crate::parallel::prelude::*;
+use crate::spatial::{bounding_box, convex_hull_cycle, fmax, fmin, morton_order};
+use crate::timing::{Phase, Stopwatch};
+use guard::round_grid;
+use partial::Partial;
+use segment_index::{PointsNear, Query, SegmentIndex};
+use std::cmp::Ordering;
+
+/// No candidate at a vertex yet (the lowest rank found so far).
+const NO_RANK: u32 = u32::MAX;
+
+/// Round 0's proposed threshold `T_0`, in mean point spacings. A tuning
+/// choice (only the running time depends on it): uniform points then have
+/// about 2.6 points a cell.
+const FIRST_THRESHOLD_SPACINGS: f64 = 1.6;
+
+/// `T_k = THRESHOLD_GROWTH · T_{k-1}` before the guard (module docs).
+const THRESHOLD_GROWTH: f64 = 2.0;
+
+/// For the mean spacing, each side of the bounding box counts as at least
+/// this fraction of the other, so that a nearly flat box does not get a
+/// spacing near zero. A chosen value.
+const MIN_ASPECT: f64 = 1e-6;
+
+/// The last round (every remaining pair, whatever its length) starts once
+/// the threshold exceeds the rounded bounding-box diagonal by this factor, a
+/// chosen margin over the diagonal's rounding. Correctness does not depend
+/// on it: a round whose threshold exceeds every pair's length takes them all.
+const LAST_ROUND_MARGIN: f64 = 1.01;
+
+/// Cost model for coarsening the point grid: a round's point queries cost
+/// about `QUERIES_PER_OPEN_VERTEX · open · ratio²` cells (`ratio` the
+/// round's cell size over the grid's) against `REBUILD_COST_PER_POINT · n`
+/// for rebuilding the grid, and a rebuild must coarsen it by more than
+/// `MIN_COARSENING`. Tuning choices: commit 03a8948 measured the coarsening
+/// as a whole (clustered 10⁶ points: 8.4 s → 7.2 s), not these factors.
+const QUERIES_PER_OPEN_VERTEX: usize = 8;
+const REBUILD_COST_PER_POINT: usize = 4;
+const MIN_COARSENING: f64 = 4.0;
+
+/// Open vertices per parallel task when listing candidates, and candidates
+/// per task in pass 1. Tuning choices: large enough that a task's overhead
+/// is small against its work, small enough for hundreds of tasks at 10⁶
+/// points. Results do not depend on them.
+const OPEN_VERTICES_PER_TASK: usize = 4096;
+const CANDIDATES_PER_TASK: usize = 4096;
+
+/// The relative margin of [`shorter_than`]'s rounded shortcut. Derived
+/// need, chosen value: the rounded `|pq|²` and `t²` are within 4·2⁻⁵³ and
+/// 2⁻⁵³ (relative) of the exact ones, as nothing underflows or overflows
+/// (coordinates, hence differences and thresholds, stay within the range of
+/// [`crate::kernel`]), so any margin above 5·2⁻⁵³ ≈ 6·10⁻¹⁶ is sound;
+/// closer cases go to the exact comparison.
+const SHORTER_THAN_MARGIN: f64 = 1e-9;
+
+/// Exact `|pq| < t` for a threshold length `t`, with a rounded shortcut.
+#[inline]
+fn shorter_than(p: Point, q: Point, t: f64) -> bool {
+    let d2 = rounded_squared_length(p, q);
+    let t2 = t * t;
+    if d2 < t2 * (1.0 - SHORTER_THAN_MARGIN) {
+        return true;
+    }
+    if d2 > t2 * (1.0 + SHORTER_THAN_MARGIN) {
+        return false;
+    }
+    compare_lengths(p, q, [0.0, 0.0], [t, 0.0]) == Ordering::Less
+}
+
+/// GT triangles of `points` (distinct, not all collinear), counter-clockwise.
+///
+/// Works on a copy renumbered in Z-order, so that neighbouring vertices sit
+/// close in memory; ties are broken on the original indices, because the
+/// symbolic perturbation depends on them: the renumbered copy is only used
+/// where an index never decides a tie.
+pub(super) fn greedy_general(original: &[Point], phases: &mut Vec<Phase>) -> Result<Vec<[u32; 3]>> {
+    let to_original = morton_order(original);
+    let local: Vec<Point> = to_original.iter().map(|&v| original[v as usize]).collect();
+    let renumbering = Renumbering {
+        original,
+        to_original: &to_original,
+    };
+    Ok(greedy_rounds(&local, &renumbering, phases)?
+        .into_iter()
+        .map(|t| t.map(|v| to_original[v as usize]))
+        .collect())
+}
+
+/// Local (memory-friendly) numbering versus the caller's, which decides ties.
+struct Renumbering<'a> {
+    original: &'a [Point],
+    to_original: &'a [u32],
+}
+
+impl Renumbering<'_> {
+    /// The position of each local-index segment in the global segment order
+    /// (exact; see [`super::sort_keyed_runs`]).
+    fn ranks(&self, points: &[Point], segments: &[[u32; 2]]) -> Vec<u32> {
+        let mut keyed = keyed_by_length(points, segments, |i, _| i as u32);
+        let order = crate::kernel::segment_order(self.original);
+        let original = |i: u32| segments[i as usize].map(|v| self.to_original[v as usize]);
+        sort_keyed_runs(&mut keyed, |&i, &j| order(&original(i), &original(j)));
+        let mut rank = vec![0u32; segments.len()];
+        for (position, &(_, i)) in keyed.iter().enumerate() {
+            rank[i as usize] = position as u32;
+        }
+        rank
+    }
+}
+
+/// The length rounds of the module docs on `points` (local numbering; ties
+/// through `renumbering`): the GT's triangles, each by its smallest corner.
+fn greedy_rounds(
+    points: &[Point],
+    renumbering: &Renumbering,
+    phases: &mut Vec<Phase>,
+) -> Result<Vec<[u32; 3]>> {
+    let mut stopwatch = Stopwatch::new(phases);
+    let n = points.len();
+    let bbox = bounding_box(points);
+    let (w, h) = (bbox[2] - bbox[0], bbox[3] - bbox[1]);
+    let hull = convex_hull_cycle(points);
+    let mut g = Partial::new(points, &hull);
+    let target = 3 * n - 3 - hull.len();
+    let diagonal = (w * w + h * h).sqrt();
+    // `T_0` is about 1.6 mean spacings (a flat box still gets a sensible
+    // one); the guard in `round_grid` shrinks it where the points are denser.
+    let spacing = ((fmax(w, h * MIN_ASPECT) * fmax(h, w * MIN_ASPECT)) / n as f64).sqrt();
+    let mut open: Vec<u32> = (0..n as u32).collect();
+    let mut near: Option<PointsNear> = None;
+    let mut lower = 0.0;
+    let mut round = 0;
+    while g.edge_count() < target && !open.is_empty() {
+        let proposed = if round == 0 {
+            FIRST_THRESHOLD_SPACINGS * spacing
+        } else {
+            THRESHOLD_GROWTH * lower
+        };
+        let (threshold, grid) = round_grid(points, bbox, &open, lower, proposed);
+        // Once every pair is shorter than the threshold, take all the rest.
+        let last = threshold > LAST_ROUND_MARGIN * diagonal;
+        // The point grid answers "a point on this segment?"; a query costs
+        // about (length / cell)² cells, so coarsen it when the round's
+        // candidates would cost more than rebuilding it (O(n)).
+        let cell = fmin(threshold, diagonal);
+        let coarsen = near.as_ref().is_some_and(|p| {
+            let ratio = cell * p.inverse_cell();
+            (ratio * ratio) * (QUERIES_PER_OPEN_VERTEX * open.len()) as f64
+                > (REBUILD_COST_PER_POINT * n) as f64
+                && ratio > MIN_COARSENING
+        });
+        if near.is_none() || coarsen {
+            near = Some(PointsNear::new(points, bbox, cell));
+        }
+        let near = near.as_ref().expect("just built");
+        let gaps: Vec<Option<Vec<[u32; 2]>>> = if round == 0 {
+            vec![None; n]
+        } else {
+            open.par_iter().map(|&v| g.open_gaps(v)).collect()
+        };
+        // Pairs `open[i], open[j]` in the length range that may leave both
+        // endpoints.
+        let keep = |i: usize, j: usize| {
+            let (a, b) = (open[i], open[j]);
+            let (pa, pb) = (points[a as usize], points[b as usize]);
+            !shorter_than(pa, pb, lower)
+                && (last || shorter_than(pa, pb, threshold))
+                && g.leaves_through(a, &gaps[i], b)
+                && g.leaves_through(b, &gaps[j], a)
+        };
+        let candidates: Vec<[u32; 2]> = (0..open.len())
+            .into_par_iter()
+            .chunks(OPEN_VERTICES_PER_TASK)
+            .map(|chunk| {
+                let mut out = Vec::new();
+                for i in chunk {
+                    let (v, pv) = (open[i], points[open[i] as usize]);
+                    // Cells a little wider than the threshold: close pairs
+                    // sit in neighbouring cells (all cells, in the last round).
+                    let reach = if last { diagonal } else { threshold };
+                    grid.any_cell_near(pv, pv, reach, |cell| {
+                        for &j in cell {
+                            if open[j as usize] > v && keep(i, j as usize) {
+                                out.push([v, open[j as usize]]);
+                            }
+                        }
+                        false
+                    });
+                }
+                out
+            })
+            .collect::<Vec<Vec<[u32; 2]>>>()
+            .concat();
+        drop(grid);
+        let rank = renumbering.ranks(points, &candidates);
+        let mut is_open = vec![false; n];
+        for &v in &open {
+            is_open[v as usize] = true;
+        }
+        let active: Vec<[u32; 2]> = open
+            .par_iter()
+            .fold(Vec::new, |mut out, &v| {
+                g.active_edges_at(v, &is_open, &mut out);
+                out
+            })
+            .flatten()
+            .collect();
+        let accepted = decide_round(points, bbox, &candidates, &rank, &active, near, round == 0);
+        g.add(&accepted);
+        open = open.into_par_iter().filter(|&v| !g.closed(v)).collect();
+        if round == 0 {
+            stopwatch.lap("round 0");
+        }
+        if last {
+            break;
+        }
+        lower = threshold;
+        round += 1;
+    }
+    stopwatch.lap("later rounds");
+    if g.edge_count() != target {
+        return Err(Error::Internal(format!(
+            "the greedy triangulation has {} of {target} edges",
+            g.edge_count()
+        )));
+    }
+    let triangles = g.triangles();
+    stopwatch.lap("triangles");
+    Ok(triangles)
+}
+
+/// Pass 1 of [`decide_round`] on a chunk of candidates: the blocked ranks
+/// and the (rank, dependency rank) pairs.
+#[inline(never)]
+fn scan_chunk(
+    points: &[Point],
+    segments: &[[u32; 2]],
+    ranks: &[u32],
+    index: &SegmentIndex,
+    earlier: Option<&SegmentIndex>,
+    near: &PointsNear,
+    shortest_at: &[u32],
+) -> (Vec<u32>, Vec<[u32; 2]>) {
+    let (mut blocked, mut deps) = (Vec::new(), Vec::new());
+    for (&[a, b], &r) in segments.iter().zip(ranks) {
+        if shortest_at.get(a as usize) == Some(&r) && shortest_at[b as usize] == r {
+            continue; // accepted whatever the others do (see `decide_round`)
+        }
+        let q = Query::new(points[a as usize], points[b as usize]);
+        if earlier.is_some_and(|e| e.crossed_by(&q)) || near.on_segment(q.a, q.b) {
+            blocked.push(r);
+            continue;
+        }
+        index.scan_near(q.a, q.b, |s| {
+            if s.id >= r {
+                return true;
+            }
+            if s.crosses(&q) {
+                deps.push([r, s.id]);
+            }
+            false
+        });
+    }
+    (blocked, deps)
+}
+
+/// Decides one round: `candidates` in spatial order with `rank` their
+/// positions in the global segment order, `active` the earlier edges they
+/// must not cross (module docs). Returns the accepted candidates.
+fn decide_round(
+    points: &[Point],
+    bbox: [f64; 4],
+    candidates: &[[u32; 2]],
+    rank: &[u32],
+    active: &[[u32; 2]],
+    near: &PointsNear,
+    first_round: bool,
+) -> Vec<[u32; 2]> {
+    let m = candidates.len();
+    if m == 0 {
+        return Vec::new();
+    }
+    // In the first round (no earlier edges) every segment shorter than the
+    // threshold is a candidate, so the lowest rank at a vertex is the
+    // shortest segment there. A segment shortest at both ends is a GT edge:
+    // a shorter `cd` crossing `ab` would make, by the □-Lemma (Edelsbrunner
+    // & Tan, *A quadratic time algorithm for the minmax length
+    // triangulation*, 1991, §4),
+    // `|ac| + |bd| < |ab| + |cd| < 2|ab|`, so `ac` or `bd` would be shorter
+    // still; and a point on `ab` would make a shorter segment at `a`. Its
+    // dependencies need not be listed.
+    let shortest_at: Vec<u32> = if active.is_empty() && first_round {
+        let lowest: Vec<std::sync::atomic::AtomicU32> = (0..points.len())
+            .map(|_| std::sync::atomic::AtomicU32::new(NO_RANK))
+            .collect();
+        candidates.par_iter().zip(rank).for_each(|(&[a, b], &r)| {
+            lowest[a as usize].fetch_min(r, std::sync::atomic::Ordering::Relaxed);
+            lowest[b as usize].fetch_min(r, std::sync::atomic::Ordering::Relaxed);
+        });
+        lowest.into_iter().map(|x| x.into_inner()).collect()
+    } else {
+        Vec::new()
+    };
+    let index = SegmentIndex::new(points, bbox, candidates, rank);
+    let earlier = (!active.is_empty()).then(|| {
+        let ids: Vec<u32> = (0..active.len() as u32).collect();
+        SegmentIndex::new(points, bbox, active, &ids)
+    });
+
+    // Pass 1, in spatial order: blocked candidates and (rank, dependency) pairs.
+    let (blocked, dependencies): (Vec<u32>, Vec<[u32; 2]>) = candidates
+        .par_chunks(CANDIDATES_PER_TASK)
+        .zip(rank.par_chunks(CANDIDATES_PER_TASK))
+        .map(|(segments, ranks)| {
+            scan_chunk(
+                points,
+                segments,
+                ranks,
+                &index,
+                earlier.as_ref(),
+                near,
+                &shortest_at,
+            )
+        })
+        .reduce(
+            || (Vec::new(), Vec::new()),
+            |(mut b1, mut d1), (b2, d2)| {
+                b1.extend(b2);
+                d1.extend(d2);
+                (b1, d1)
+            },
+        );
+
+    // Pass 2, in the global order.
+    let mut start = vec![0u32; m + 1];
+    for &[r, _] in &dependencies {
+        start[r as usize + 1] += 1;
+    }
+    for r in 0..m {
+        start[r + 1] += start[r];
+    }
+    let mut fill = start.clone();
+    let mut flat = vec![0u32; dependencies.len()];
+    for &[r, s] in &dependencies {
+        flat[fill[r as usize] as usize] = s;
+        fill[r as usize] += 1;
+    }
+    drop(dependencies);
+    let mut accepted = vec![true; m];
+    for r in blocked {
+        accepted[r as usize] = false;
+    }
+    for r in 0..m {
+        if accepted[r] {
+            let deps = &flat[start[r] as usize..start[r + 1] as usize];
+            accepted[r] = deps.iter().all(|&s| !accepted[s as usize]);
+        }
+    }
+    candidates
+        .iter()
+        .zip(rank)
+        .filter(|(_, &r)| accepted[r as usize])
+        .map(|(s, _)| *s)
+        .collect()
+}

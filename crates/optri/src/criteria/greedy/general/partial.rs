@@ -1,0 +1,196 @@
+//! The partial greedy triangulation between rounds: angular neighbour lists
+//! and the closed-triangle, closed-vertex and active-edge tests of the module
+//! docs ("Earlier edges: only the *active* ones"). [`Partial::gap_closed`]
+//! is the empty-triangle Lemma's closed triangle, [`Partial::closed`] a
+//! closed vertex, [`Partial::active_edges_at`] the active edges of the Claim,
+//! and [`Partial::leaves_through`] the condition that a later candidate
+//! leaves both endpoints through an open gap.
+
+use crate::kernel::{compare_angles, orient_sign, Point};
+use crate::parallel::prelude::*;
+use std::cmp::Ordering;
+
+/// Not a hull vertex (no hull neighbours).
+const NOT_ON_HULL: u32 = u32::MAX;
+
+/// The partial greedy triangulation: neighbours of each vertex sorted
+/// counter-clockwise from the positive x-axis.
+pub(super) struct Partial<'a> {
+    points: &'a [Point],
+    adjacency: Vec<Vec<u32>>,
+    hull_prev: Vec<u32>,
+    hull_next: Vec<u32>,
+    edges: usize,
+}
+
+impl<'a> Partial<'a> {
+    /// No edges yet; `hull` is the convex hull cycle (ccw), whose outer gaps
+    /// are closed from the start.
+    pub(super) fn new(points: &'a [Point], hull: &[u32]) -> Self {
+        let n = points.len();
+        let mut hull_prev = vec![NOT_ON_HULL; n];
+        let mut hull_next = vec![NOT_ON_HULL; n];
+        for i in 0..hull.len() {
+            let v = hull[i] as usize;
+            hull_prev[v] = hull[(i + hull.len() - 1) % hull.len()];
+            hull_next[v] = hull[(i + 1) % hull.len()];
+        }
+        Self {
+            points,
+            adjacency: vec![Vec::new(); n],
+            hull_prev,
+            hull_next,
+            edges: 0,
+        }
+    }
+
+    /// The number of edges added so far.
+    #[inline]
+    pub(super) fn edge_count(&self) -> usize {
+        self.edges
+    }
+
+    #[inline]
+    fn p(&self, v: u32) -> Point {
+        self.points[v as usize]
+    }
+
+    fn has_edge(&self, u: u32, w: u32) -> bool {
+        let (lu, lw) = (&self.adjacency[u as usize], &self.adjacency[w as usize]);
+        if lu.len() <= lw.len() {
+            lu.contains(&w)
+        } else {
+            lw.contains(&u)
+        }
+    }
+
+    /// Is the gap between consecutive neighbours `u` then `w` (ccw) of `v`
+    /// closed: a closed triangle or the outer gap of a hull vertex?
+    #[inline]
+    fn gap_closed(&self, v: u32, u: u32, w: u32) -> bool {
+        (self.hull_prev[v as usize] == u && self.hull_next[v as usize] == w)
+            || (orient_sign(self.p(v), self.p(u), self.p(w)) > 0 && self.has_edge(u, w))
+    }
+
+    /// The open gaps at `v` (not closed, see [`Self::gap_closed`]), each as
+    /// the neighbours `[u, w]` bounding it counter-clockwise; `None` when `v`
+    /// has fewer than two neighbours, so that only the direction of its
+    /// neighbour (if any) is taken.
+    pub(super) fn open_gaps(&self, v: u32) -> Option<Vec<[u32; 2]>> {
+        let list = &self.adjacency[v as usize];
+        let len = list.len();
+        (len >= 2).then(|| {
+            (0..len)
+                .map(|i| [list[i], list[(i + 1) % len]])
+                .filter(|&[u, w]| !self.gap_closed(v, u, w))
+                .collect()
+        })
+    }
+
+    /// May an edge leave `a` towards `b`, given `a`'s open gaps? Not if its
+    /// direction is taken (a point on the segment, or an overlapping edge —
+    /// the nearest point `z` on `ab` gives a shorter `az` that was rejected
+    /// for crossing an edge, which then crosses `ab` too) or falls into a
+    /// closed triangle (whose third side it would cross): `b` must lie
+    /// strictly inside an open gap.
+    pub(super) fn leaves_through(&self, a: u32, gaps: &Option<Vec<[u32; 2]>>, b: u32) -> bool {
+        let (pa, pb) = (self.p(a), self.p(b));
+        let Some(gaps) = gaps else {
+            return self.adjacency[a as usize]
+                .iter()
+                .all(|&u| compare_angles(pa, self.p(u), pb) != Ordering::Equal);
+        };
+        gaps.iter().any(|&[u, w]| {
+            let (pu, pw) = (self.p(u), self.p(w));
+            if orient_sign(pa, pu, pw) > 0 {
+                orient_sign(pa, pu, pb) > 0 && orient_sign(pa, pb, pw) > 0
+            } else {
+                // A gap of 180° or more: inside unless in the closed
+                // complementary wedge from w to u (at most 180°).
+                !(orient_sign(pa, pw, pb) >= 0 && orient_sign(pa, pb, pu) >= 0)
+            }
+        })
+    }
+
+    /// No edge can be added at `v` any more (module docs).
+    pub(super) fn closed(&self, v: u32) -> bool {
+        let list = &self.adjacency[v as usize];
+        let len = list.len();
+        len >= 2 && (0..len).all(|i| self.gap_closed(v, list[i], list[(i + 1) % len]))
+    }
+
+    /// Edges at open `v` towards larger open vertices with a side that is not
+    /// a closed triangle.
+    pub(super) fn active_edges_at(&self, v: u32, is_open: &[bool], out: &mut Vec<[u32; 2]>) {
+        let list = &self.adjacency[v as usize];
+        let len = list.len();
+        for i in 0..len {
+            let u = list[i];
+            if u < v || !is_open[u as usize] {
+                continue;
+            }
+            let both_closed = len >= 2
+                && self.gap_closed(v, list[(i + len - 1) % len], u)
+                && self.gap_closed(v, u, list[(i + 1) % len]);
+            if !both_closed {
+                out.push([v, u]);
+            }
+        }
+    }
+
+    /// The triangles of a complete triangulation: at every vertex, each
+    /// pair of consecutive neighbours with a left turn bounds a triangle
+    /// (every gap but a hull vertex's outer one is a triangle, and that one
+    /// turns right or is straight); each is reported by its smallest corner.
+    pub(super) fn triangles(&self) -> Vec<[u32; 3]> {
+        (0..self.points.len() as u32)
+            .into_par_iter()
+            .fold(Vec::new, |mut out, v| {
+                let list = &self.adjacency[v as usize];
+                for i in 0..list.len() {
+                    let (u, w) = (list[i], list[(i + 1) % list.len()]);
+                    if v < u && v < w && orient_sign(self.p(v), self.p(u), self.p(w)) > 0 {
+                        out.push([v, u, w]);
+                    }
+                }
+                out
+            })
+            .flatten()
+            .collect()
+    }
+
+    /// Adds a round's accepted edges (they cross nothing and share no
+    /// direction at a vertex, so the angular order is strict).
+    pub(super) fn add(&mut self, accepted: &[[u32; 2]]) {
+        // Half-edges grouped by origin, then every touched list extended and
+        // re-sorted in parallel.
+        let mut half: Vec<[u32; 2]> = accepted
+            .par_iter()
+            .flat_map_iter(|&[a, b]| [[a, b], [b, a]])
+            .collect();
+        half.par_sort_unstable();
+        let mut start = vec![0u32; self.points.len() + 1];
+        for &[a, _] in &half {
+            start[a as usize + 1] += 1;
+        }
+        for v in 0..self.points.len() {
+            start[v + 1] += start[v];
+        }
+        let points = self.points;
+        self.adjacency
+            .par_iter_mut()
+            .enumerate()
+            .for_each(|(v, list)| {
+                let new = &half[start[v] as usize..start[v + 1] as usize];
+                if new.is_empty() {
+                    return;
+                }
+                list.extend(new.iter().map(|&[_, b]| b));
+                let pv = points[v];
+                list.sort_unstable_by(|&x, &y| {
+                    compare_angles(pv, points[x as usize], points[y as usize])
+                });
+            });
+        self.edges += accepted.len();
+    }
+}

@@ -1,0 +1,307 @@
+//! A grid of square cells that stores only its occupied cells, for cell
+//! sizes that follow a length scale whatever the spread of the points
+//! (clustered inputs). Coordinate-only: it buckets items by the cell of a
+//! point and answers "which cells meet this box", so that a caller runs its
+//! exact tests on fewer candidates; it never decides anything itself.
+//!
+//! The greedy triangulation's length rounds (`criteria::greedy::general`)
+//! build one per round: for the open vertices, the round's candidate
+//! segments, the earlier active edges and the points.
+
+use crate::kernel::Point;
+use crate::parallel::prelude::*;
+
+/// An empty cell in the dense table.
+const EMPTY: u32 = u32::MAX;
+
+/// Smallest cell, as a fraction of the bounding box's longer side: 2⁻³⁰.
+/// Derived bound: with it there are at most 2³⁰ + 1 columns and rows, so a
+/// key `row * columns + column` stays below 2⁶¹ and fits in a `u64` (any
+/// fraction down to 2⁻³¹ would).
+const MIN_CELL_FRACTION: f64 = 1.0 / (1u64 << 30) as f64;
+
+/// The lookup slack per unit of cell size, 10⁻⁹, and per unit of coordinate
+/// magnitude, 10⁻¹³. Chosen margins, not tight bounds. The column of a
+/// coordinate is monotone in its rounded argument, so the slack only has to
+/// cover rounding: of the query's padded box and of item positions the
+/// callers compute (midpoints), a few units of 2⁻⁵³ relative to the
+/// coordinates' magnitude, and of the padding lengths (half-lengths,
+/// thresholds), a few units of 2⁻⁵³ relative to a pad of about one cell (or
+/// more than the whole grid). The margins are about 10³ and 10⁶ times that.
+const SLACK_PER_CELL: f64 = 1e-9;
+const SLACK_PER_MAGNITUDE: f64 = 1e-13;
+
+/// A table over all cells (dense mode) is used while there are at most
+/// `DENSE_CELLS_PER_ITEM` cells per item plus `DENSE_EXTRA_CELLS`; beyond
+/// that only the occupied cells are kept and found by binary search. A
+/// tuning choice (no measurement of it is recorded, commit 752d473): the
+/// table costs time and memory per cell, so it must stay within a constant
+/// factor of the items, and 65 536 cells (a 256 KiB table) are cheap at any
+/// size.
+const DENSE_CELLS_PER_ITEM: u64 = 4;
+const DENSE_EXTRA_CELLS: u64 = 65536;
+
+/// Square cells over a bounding box, for cell sizes that follow a round's
+/// length scale whatever the spread of the points (clustered inputs): a
+/// table over all cells when there are not many more cells than items,
+/// else only the occupied cells, found by binary search. Cell lookups only
+/// choose which exact tests to run; they are padded by a slack that covers
+/// their rounding.
+pub(crate) struct SparseGrid<T> {
+    x0: f64,
+    y0: f64,
+    inv: f64,
+    /// Columns; a cell's key is `row * columns + column`.
+    columns: u64,
+    rows: u64,
+    slack_x: f64,
+    slack_y: f64,
+    /// The occupied cells' keys, ascending, and their items' ranges.
+    keys: Vec<u64>,
+    start: Vec<u32>,
+    /// Dense mode: the position in `keys` of every cell's key (`EMPTY` if
+    /// empty). Empty in sparse mode.
+    table: Vec<u32>,
+    items: Vec<T>,
+}
+
+impl<T: Copy + Send + Sync> SparseGrid<T> {
+    /// Buckets items `0..len` (`item(i)`, at `point(i)`) by cell, cells of
+    /// about `cell` (never so small that keys overflow); within a cell, by
+    /// ascending `order`.
+    pub(crate) fn new(
+        bbox: [f64; 4],
+        cell: f64,
+        len: usize,
+        point: impl Fn(usize) -> Point + Sync,
+        item: impl Fn(usize) -> T + Sync,
+        order: impl Fn(usize) -> u32 + Sync,
+    ) -> Self {
+        let [x0, y0, x1, y1] = bbox;
+        let (w, h) = (x1 - x0, y1 - y0);
+        let cell = fmax(cell, fmax(w, h) * MIN_CELL_FRACTION);
+        let cell = if cell > 0.0 { cell } else { 1.0 };
+        let columns = (w / cell) as u64 + 1;
+        let rows = (h / cell) as u64 + 1;
+        let mag_x = fmax(x0.abs(), x1.abs());
+        let mag_y = fmax(y0.abs(), y1.abs());
+        let mut grid = Self {
+            x0,
+            y0,
+            inv: 1.0 / cell,
+            columns,
+            rows,
+            slack_x: SLACK_PER_CELL * cell + SLACK_PER_MAGNITUDE * mag_x,
+            slack_y: SLACK_PER_CELL * cell + SLACK_PER_MAGNITUDE * mag_y,
+            keys: Vec::new(),
+            start: Vec::new(),
+            table: Vec::new(),
+            items: Vec::new(),
+        };
+        let keys: Vec<u64> = (0..len)
+            .into_par_iter()
+            .map(|i| grid.key(point(i)))
+            .collect();
+        let cells = columns.saturating_mul(rows);
+        if cells <= DENSE_CELLS_PER_ITEM * len as u64 + DENSE_EXTRA_CELLS {
+            // Counting sort over all cells, then each cell by `order`.
+            let cells = cells as usize;
+            let mut count = vec![0u32; cells + 1];
+            for &k in &keys {
+                count[k as usize + 1] += 1;
+            }
+            for c in 0..cells {
+                count[c + 1] += count[c];
+            }
+            let mut fill = count.clone();
+            let mut slots = vec![0u32; len];
+            for (i, &k) in keys.iter().enumerate() {
+                slots[fill[k as usize] as usize] = i as u32;
+                fill[k as usize] += 1;
+            }
+            grid.table = vec![EMPTY; cells];
+            for c in 0..cells {
+                let (a, b) = (count[c] as usize, count[c + 1] as usize);
+                if a < b {
+                    slots[a..b].sort_unstable_by_key(|&i| order(i as usize));
+                    grid.table[c] = grid.keys.len() as u32;
+                    grid.keys.push(c as u64);
+                    grid.start.push(a as u32);
+                }
+            }
+            grid.start.push(len as u32);
+            grid.items = slots.par_iter().map(|&i| item(i as usize)).collect();
+        } else {
+            let mut keyed: Vec<(u64, u32, u32)> = keys
+                .par_iter()
+                .enumerate()
+                .map(|(i, &k)| (k, order(i), i as u32))
+                .collect();
+            keyed.par_sort_unstable();
+            grid.items = keyed
+                .par_iter()
+                .map(|&(_, _, i)| item(i as usize))
+                .collect();
+            for (i, &(k, _, _)) in keyed.iter().enumerate() {
+                if grid.keys.last() != Some(&k) {
+                    grid.keys.push(k);
+                    grid.start.push(i as u32);
+                }
+            }
+            grid.start.push(keyed.len() as u32);
+        }
+        grid
+    }
+
+    /// The inverse of the cell size actually used (after the clamp to
+    /// [`MIN_CELL_FRACTION`]).
+    #[inline]
+    pub(crate) fn inverse_cell(&self) -> f64 {
+        self.inv
+    }
+
+    /// The number of occupied cells.
+    #[inline]
+    pub(crate) fn occupied(&self) -> usize {
+        self.keys.len()
+    }
+
+    #[inline]
+    fn column(&self, x: f64) -> u64 {
+        // Truncation is the floor for c ≥ 1 (and avoids a libm call).
+        let c = (x - self.x0) * self.inv;
+        if c >= 1.0 {
+            (c as u64).min(self.columns - 1)
+        } else {
+            0
+        }
+    }
+
+    #[inline]
+    fn row(&self, y: f64) -> u64 {
+        let c = (y - self.y0) * self.inv;
+        if c >= 1.0 {
+            (c as u64).min(self.rows - 1)
+        } else {
+            0
+        }
+    }
+
+    #[inline]
+    fn key(&self, p: Point) -> u64 {
+        self.row(p[1]) * self.columns + self.column(p[0])
+    }
+
+    /// The items of the `k`-th occupied cell.
+    #[inline]
+    pub(crate) fn cell(&self, k: usize) -> &[T] {
+        &self.items[self.start[k] as usize..self.start[k + 1] as usize]
+    }
+
+    /// Calls `f` on the occupied cells (positions in `keys`) of row `r`
+    /// between columns `c0` and `c1`; stops early and returns `true` when
+    /// `f` does.
+    #[inline]
+    fn any_cell_in_row(&self, r: u64, c0: u64, c1: u64, mut f: impl FnMut(usize) -> bool) -> bool {
+        let (lo, hi) = (r * self.columns + c0, r * self.columns + c1);
+        if self.table.is_empty() {
+            let mut k = self.keys.partition_point(|&key| key < lo);
+            while k < self.keys.len() && self.keys[k] <= hi {
+                if f(k) {
+                    return true;
+                }
+                k += 1;
+            }
+        } else {
+            for &k in &self.table[lo as usize..=hi as usize] {
+                if k != EMPTY && f(k as usize) {
+                    return true;
+                }
+            }
+        }
+        false
+    }
+
+    /// Calls `f` on the items of every occupied cell meeting the box around
+    /// `a, b` widened by `pad` (and the slack); stops early and returns
+    /// `true` when `f` does.
+    #[inline]
+    pub(crate) fn any_cell_near(
+        &self,
+        a: Point,
+        b: Point,
+        pad: f64,
+        mut f: impl FnMut(&[T]) -> bool,
+    ) -> bool {
+        let (px, py) = (pad + self.slack_x, pad + self.slack_y);
+        let (c0, c1) = (
+            self.column(fmin(a[0], b[0]) - px),
+            self.column(fmax(a[0], b[0]) + px),
+        );
+        let (r0, r1) = (
+            self.row(fmin(a[1], b[1]) - py),
+            self.row(fmax(a[1], b[1]) + py),
+        );
+        if self.table.is_empty() && r1 - r0 >= self.keys.len() as u64 {
+            // More rows than occupied cells (a long query on a fine sparse
+            // grid): scan the occupied cells in the key range instead.
+            let (lo, hi) = (r0 * self.columns + c0, r1 * self.columns + c1);
+            let first = self.keys.partition_point(|&key| key < lo);
+            return self.keys[first..]
+                .iter()
+                .take_while(|&&key| key <= hi)
+                .enumerate()
+                .any(|(i, &key)| {
+                    let column = key % self.columns;
+                    (c0..=c1).contains(&column) && f(self.cell(first + i))
+                });
+        }
+        (r0..=r1).any(|r| self.any_cell_in_row(r, c0, c1, |k| f(self.cell(k))))
+    }
+
+    /// The number of items in the occupied cell `k` and its eight
+    /// neighbours.
+    pub(crate) fn block_len(&self, k: usize) -> usize {
+        let key = self.keys[k];
+        let (row, column) = (key / self.columns, key % self.columns);
+        let (c0, c1) = (column.saturating_sub(1), (column + 1).min(self.columns - 1));
+        let mut len = 0;
+        for r in row.saturating_sub(1)..=(row + 1).min(self.rows - 1) {
+            self.any_cell_in_row(r, c0, c1, |m| {
+                len += self.cell(m).len();
+                false
+            });
+        }
+        len
+    }
+}
+
+/// `min` and `max` of finite numbers (one instruction each; `f64::min`
+/// also handles NaN).
+#[inline]
+pub(crate) fn fmin(a: f64, b: f64) -> f64 {
+    if a < b {
+        a
+    } else {
+        b
+    }
+}
+
+#[inline]
+pub(crate) fn fmax(a: f64, b: f64) -> f64 {
+    if a > b {
+        a
+    } else {
+        b
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_smallest_cell_fraction_is_two_to_the_minus_thirty() {
+        assert_eq!(MIN_CELL_FRACTION, 2f64.powi(-30));
+    }
+}
