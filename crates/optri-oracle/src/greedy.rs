@@ -19,7 +19,7 @@
 //!   "don't know".
 //! * **Ties.** Equal squared lengths are ordered by the perturbed squared
 //!   length `Σ_u (p_u + ε_{p,u} − q_u − ε_{q,u})²`, written out term by term
-//!   ([`Terms`]) and compared by the lowest exponent whose coefficients
+//!   (`Terms`) and compared by the lowest exponent whose coefficients
 //!   differ. That is the same polynomial as [`crate::symbolic`] expands with
 //!   rationals; the unit tests check the two agree on every pair of segments
 //!   of many degenerate sets.
@@ -27,7 +27,7 @@
 //!   that meets their bounding box. If two segments properly cross, the
 //!   x-ranges of their boxes overlap in an interval that starts at an
 //!   endpoint's coordinate `v`, and the cell index is a monotone function of
-//!   each coordinate (see [`Grid`]), so `v`'s column lies in both boxes'
+//!   each coordinate (see `Grid`), so `v`'s column lies in both boxes'
 //!   column ranges; likewise for rows: the two boxes share a cell. Checking
 //!   the kept segments of every cell of a candidate's box is thus complete.
 //! * **Empty segments.** A point on an open segment lies in its bounding box,
@@ -105,7 +105,7 @@ fn approx_squared_length(p: Point, q: Point) -> f64 {
 }
 
 /// `true` only if the exact squared lengths behind the `f64` values `a`, `b`
-/// of [`approx_squared_length`] satisfy `A < B`: from `a ≥ A(1 − 4.01u)`,
+/// of `approx_squared_length` satisfy `A < B`: from `a ≥ A(1 − 4.01u)`,
 /// `b ≤ B(1 + 4.01u)` and `a < b(1 − 10⁻¹⁴)` follows
 /// `A < B(1 + 4.01u)(1 − 10⁻¹⁴)/(1 − 4.01u) < B`.
 pub fn clearly_shorter(a: f64, b: f64) -> bool {

@@ -324,9 +324,9 @@ pub fn triangulation_from_json(value: &Value) -> Result<Triangulation> {
         message: format!("triangulation JSON: {m}"),
     };
     if let Some(version) = value.get("schema_version") {
-        if !version
+        if version
             .as_u64()
-            .is_some_and(|v| v <= u64::from(SCHEMA_VERSION))
+            .is_none_or(|v| v > u64::from(SCHEMA_VERSION))
         {
             return Err(bad(&format!(
                 "schema_version {version} is not one this optri reads (1 to {SCHEMA_VERSION})"

@@ -183,7 +183,7 @@ pub fn height_sign(points: &[Point], p: u32, q: u32, x: u32, y: u32) -> i32 {
     // precedes a pair with the same largest rank.
     let mut best: Option<((u64, Option<u64>), i32)> = None;
     let mut consider = |key: (u64, Option<u64>), s: i32| {
-        if s != 0 && best.map_or(true, |(k, _)| key < k) {
+        if s != 0 && best.is_none_or(|(k, _)| key < k) {
             best = Some((key, s));
         }
     };

@@ -84,7 +84,7 @@ pub(super) fn small_region(
     let lower = [v[a], v[b]];
     let mut mesh = mesh();
     let no_longer =
-        |d: Option<[u32; 2]>| d.map_or(true, |d| region.compare_lengths(d, lower) != Greater);
+        |d: Option<[u32; 2]>| d.is_none_or(|d| region.compare_lengths(d, lower) != Greater);
     let upper = mesh.flip_longest_diagonals(region.points);
     if no_longer(upper) {
         counters.small_regions_certified.add(1);

@@ -252,7 +252,7 @@ impl<'a> Region<'a> {
                     best = None; // this apex cannot raise the bound
                     break;
                 }
-                if best.map_or(true, |b| lengths.compare(self, cand, b) == Ordering::Less) {
+                if best.is_none_or(|b| lengths.compare(self, cand, b) == Ordering::Less) {
                     best = Some(cand);
                 }
             }
@@ -312,7 +312,7 @@ impl<'a> Region<'a> {
             dx * dx + dy * dy
         });
         let short_enough = |i: usize, j: usize| {
-            bound.zip(bound_squared).map_or(true, |(b, b_squared)| {
+            bound.zip(bound_squared).is_none_or(|(b, b_squared)| {
                 ChordLengths::filtered(lengths.squared([i, j]), b_squared, || {
                     self.compare_lengths([v[i], v[j]], b)
                 }) != Ordering::Greater

@@ -169,7 +169,7 @@ impl LocalMesh {
                     continue;
                 }
                 let (x, y) = (tri[j], tri[(j + 1) % 3]);
-                if best.map_or(true, |(bt, bj)| {
+                if best.is_none_or(|(bt, bj)| {
                     let b = self.triangles[bt];
                     compare_lengths(p(x), p(y), p(b[bj]), p(b[(bj + 1) % 3])) == Ordering::Greater
                 }) {

@@ -142,7 +142,7 @@ pub(super) fn minmax_witness(table: &SleeveTable) -> Witness {
         for len in 2..=n - 2 {
             if table.solved(i, len) && table.solved(i + len, n - len) {
                 let value = table.rank(i, len).max(table.rank(i + len, n - len));
-                if best.map_or(true, |(b, _)| value < b) {
+                if best.is_none_or(|(b, _)| value < b) {
                     best = Some((value, Witness::Diagonal { i, len }));
                 }
             }

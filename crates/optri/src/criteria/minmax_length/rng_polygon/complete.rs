@@ -110,7 +110,7 @@ impl RngPolygon<'_> {
                     if self.off(b, p2) > self.off(b, q1) {
                         continue;
                     }
-                    let shorter = best.map_or(true, |c| {
+                    let shorter = best.is_none_or(|c| {
                         self.geo
                             .compare_lengths([self.v[a], self.v[b]], [self.v[c[0]], self.v[c[1]]])
                             == Ordering::Less

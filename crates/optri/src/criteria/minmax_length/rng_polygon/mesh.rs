@@ -80,7 +80,7 @@ impl<'a> Mesh<'a> {
     /// Is `u v` a region boundary (or no interior Delaunay edge at all)?
     pub(super) fn is_constraint(&self, u: u32, v: u32) -> bool {
         self.side(u, v)
-            .map_or(true, |(t, j)| is_boundary(self.g, self.rng, t as usize, j))
+            .is_none_or(|(t, j)| is_boundary(self.g, self.rng, t as usize, j))
     }
 
     /// Is `u v` a hull edge that is not in `rng(S′)`?
