@@ -92,6 +92,17 @@ pub enum UnsupportedReason {
         /// What limits it, e.g. `"Klincsek's O(n³) program with O(n²) tables"`.
         because: &'static str,
     },
+    /// The algorithm needs points in convex position or a simple polygon
+    /// ([`crate::triangulate_polygon`]); general point sets are not
+    /// supported yet.
+    NotConvexPositionOrPolygon {
+        /// Distinct points strictly inside the hull.
+        interior: usize,
+        /// All distinct points.
+        distinct: usize,
+    },
+    /// The criterion does not accept a polygon as input (yet).
+    NoPolygonInput,
 }
 
 /// What makes a vertex cycle not a simple polygon ([`Error::InvalidPolygon`]).
@@ -174,6 +185,16 @@ impl fmt::Display for Error {
                     f,
                     "{criterion} ({because}) is limited to {limit} points; this input has \
                      {distinct} distinct points"
+                ),
+                UnsupportedReason::NotConvexPositionOrPolygon { interior, distinct } => write!(
+                    f,
+                    "{criterion} is not supported for general point sets yet: it needs points in \
+                     convex position or a simple polygon ({interior} of {distinct} distinct points \
+                     are interior to the convex hull)"
+                ),
+                UnsupportedReason::NoPolygonInput => write!(
+                    f,
+                    "{criterion} does not accept a polygon as input yet"
                 ),
             },
             Error::InvalidTriangulation(message) => write!(f, "invalid triangulation: {message}"),
