@@ -94,7 +94,35 @@ pub fn dot_sign(o: Point, a: Point, b: Point) -> i32 {
 }
 
 /// Exact comparison of triangle areas `|abc|` versus `|def|` (unsigned).
+///
+/// A filtered `f64` evaluation decides clear cases, an exact expansion the
+/// rest. Each doubled area `D = l − r`, `l = (b−a)ₓ(c−a)_y`,
+/// `r = (b−a)_y(c−a)ₓ`, is computed with error at most
+/// `(3u + 16u²)(|l̃| + |r̃|) < 4u·S` (Shewchuk's `ccwerrboundA`, stated for
+/// the rounded products; no underflow or overflow in the kernel's coordinate
+/// range). So `|D₁| − |D₂| ≥ Ã₁ − Ã₂ − 4u(S₁ + S₂)`, and a rounded
+/// difference `Ã₁ − Ã₂` above `8u(S₁ + S₂)` (its own and the bound's
+/// rounding cost less than a relative `3u`) proves `|D₁| > |D₂|`.
 pub fn compare_areas(tri1: [Point; 3], tri2: [Point; 3]) -> Ordering {
+    let rounded = |[a, b, c]: [Point; 3]| {
+        let l = (b[0] - a[0]) * (c[1] - a[1]);
+        let r = (b[1] - a[1]) * (c[0] - a[0]);
+        ((l - r).abs(), l.abs() + r.abs())
+    };
+    let ((a1, s1), (a2, s2)) = (rounded(tri1), rounded(tri2));
+    let diff = a1 - a2;
+    let bound = 8.0 * U * (s1 + s2);
+    if diff > bound {
+        return Ordering::Greater;
+    }
+    if -diff > bound {
+        return Ordering::Less;
+    }
+    exact_area_comparison(tri1, tri2)
+}
+
+/// `|D₁|` versus `|D₂|` by exact expansions.
+fn exact_area_comparison(tri1: [Point; 3], tri2: [Point; 3]) -> Ordering {
     let s1 = orient_sign(tri1[0], tri1[1], tri1[2]) as f64;
     let s2 = orient_sign(tri2[0], tri2[1], tri2[2]) as f64;
     // |D1| - |D2| = s1*D1 - s2*D2, with D = (b-a)x(c-a) expanded exactly.
