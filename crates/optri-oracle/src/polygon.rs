@@ -4,17 +4,20 @@
 //!
 //! A *ring* is the caller's vertex list in boundary order (either
 //! orientation, the closing vertex not repeated); indices are ring
-//! positions. Every decision is made on exact `BigRational` coordinates,
+//! positions. Every decision is exact, in `BigInt` arithmetic on the
+//! coordinates scaled by one power of two (doubled, so that midpoints are
+//! integer points),
 //! with definitions chosen to differ from optri's: a chord is a diagonal iff
 //! its open segment meets no closed boundary edge (solved parametrically)
 //! and its midpoint is inside the polygon (ray crossing parity), not by a
 //! wedge test at its endpoint.
 
 use crate::enumerate::canonical_triangle;
-use crate::exact::{squared_length, to_rational, Point};
+use crate::exact::{orient, scale, squared_length, to_rational, Point, Scaled};
 use crate::symbolic::compare_lengths_perturbed;
+use num_bigint::BigInt;
 use num_rational::BigRational;
-use num_traits::{One, Signed, Zero};
+use num_traits::{Signed, Zero};
 use rand::rngs::StdRng;
 use rand::Rng;
 use std::cmp::Ordering;
@@ -23,56 +26,70 @@ use std::collections::HashSet;
 /// Largest ring [`polygon_triangulations`] accepts.
 pub const MAX_POLYGON_ENUMERATION: usize = 12;
 
-type Q = BigRational;
-type QPoint = [Q; 2];
+/// Ring coordinates scaled by one common power of two to integers and then
+/// doubled, so that midpoints of vertices are integer points too. Scaling
+/// by a positive constant preserves every sign and comparison below.
+type Z = BigInt;
+type ZPoint = [Z; 2];
 
-fn q(p: Point) -> QPoint {
-    [to_rational(p[0]), to_rational(p[1])]
+fn integer_ring(ring: &[Point]) -> Vec<ZPoint> {
+    let flat: Vec<f64> = ring.iter().flat_map(|p| [p[0], p[1]]).collect();
+    let ints: Vec<Z> = match scale(&flat, 0).0 {
+        Scaled::Small(v) => v.into_iter().map(Z::from).collect(),
+        Scaled::Big(v) => v,
+    };
+    ints.chunks(2).map(|c| [&c[0] * 2, &c[1] * 2]).collect()
 }
 
-fn sub(a: &QPoint, b: &QPoint) -> QPoint {
+fn sub(a: &ZPoint, b: &ZPoint) -> ZPoint {
     [&a[0] - &b[0], &a[1] - &b[1]]
 }
 
-fn cross(u: &QPoint, v: &QPoint) -> Q {
+fn cross(u: &ZPoint, v: &ZPoint) -> Z {
     &u[0] * &v[1] - &u[1] * &v[0]
 }
 
-fn dot(u: &QPoint, v: &QPoint) -> Q {
+fn dot(u: &ZPoint, v: &ZPoint) -> Z {
     &u[0] * &v[0] + &u[1] * &v[1]
 }
 
-/// Is the parameter `t` in the open interval (0, 1) (`closed`: [0, 1])?
-fn in_unit(t: &Q, closed: bool) -> bool {
+/// Is `num / den` (with `den > 0`) in the open interval (0, 1), or with
+/// `closed` in [0, 1]?
+fn in_unit(num: &Z, den: &Z, closed: bool) -> bool {
     if closed {
-        !t.is_negative() && *t <= Q::one()
+        !num.is_negative() && num <= den
     } else {
-        t.is_positive() && *t < Q::one()
+        num.is_positive() && num < den
     }
 }
 
 /// Does the segment `ab` (open or closed) meet the closed segment `uw`?
-/// Solved as `a + t (b − a) = u + s (w − u)`; collinear segments by
-/// projecting onto `b − a`.
-fn segment_meets(a: &QPoint, b: &QPoint, open: bool, u: &QPoint, w: &QPoint) -> bool {
+/// Solved as `a + t (b − a) = u + s (w − u)` (`t`, `s` as fractions with a
+/// common positive denominator); collinear segments by projecting onto
+/// `b − a`.
+fn segment_meets(a: &ZPoint, b: &ZPoint, open: bool, u: &ZPoint, w: &ZPoint) -> bool {
     let (d, e, f) = (sub(b, a), sub(w, u), sub(u, a));
-    let denom = cross(&d, &e);
+    let mut denom = cross(&d, &e);
     if !denom.is_zero() {
-        let t = cross(&f, &e) / &denom;
-        let s = cross(&f, &d) / &denom;
-        return in_unit(&t, !open) && in_unit(&s, true);
+        let (mut t, mut s) = (cross(&f, &e), cross(&f, &d));
+        if denom.is_negative() {
+            denom = -denom;
+            t = -t;
+            s = -s;
+        }
+        return in_unit(&t, &denom, !open) && in_unit(&s, &denom, true);
     }
     if !cross(&f, &d).is_zero() {
         return false; // parallel lines
     }
     let len = dot(&d, &d);
-    let tu = dot(&f, &d) / &len;
-    let tw = dot(&sub(w, a), &d) / &len;
+    let tu = dot(&f, &d);
+    let tw = dot(&sub(w, a), &d);
     let (lo, hi) = if tu <= tw { (tu, tw) } else { (tw, tu) };
     if open {
-        hi.is_positive() && lo < Q::one()
+        hi.is_positive() && lo < len
     } else {
-        !hi.is_negative() && lo <= Q::one()
+        !hi.is_negative() && lo <= len
     }
 }
 
@@ -83,7 +100,7 @@ pub fn is_simple(ring: &[Point]) -> bool {
     if n < 3 {
         return false;
     }
-    let r: Vec<QPoint> = ring.iter().map(|&p| q(p)).collect();
+    let r = integer_ring(ring);
     for i in 0..n {
         for j in i + 1..n {
             if r[i] == r[j] {
@@ -115,8 +132,14 @@ pub fn is_simple(ring: &[Point]) -> bool {
 /// Twice the signed area of the ring (shoelace), exact.
 pub fn twice_signed_area(ring: &[Point]) -> BigRational {
     let n = ring.len();
-    let r: Vec<QPoint> = ring.iter().map(|&p| q(p)).collect();
-    (0..n).fold(Q::zero(), |acc, i| acc + cross(&r[i], &r[(i + 1) % n]))
+    let r: Vec<[BigRational; 2]> = ring
+        .iter()
+        .map(|p| [to_rational(p[0]), to_rational(p[1])])
+        .collect();
+    (0..n).fold(BigRational::zero(), |acc, i| {
+        let (p, q) = (&r[i], &r[(i + 1) % n]);
+        acc + &p[0] * &q[1] - &p[1] * &q[0]
+    })
 }
 
 /// The ring positions in counter-clockwise order, starting at 0.
@@ -132,14 +155,17 @@ pub fn counter_clockwise(ring: &[Point]) -> Vec<u32> {
 /// Is the point `m` strictly inside the ring (not on its boundary — the
 /// caller guarantees that)? Crossing parity of the ray to `+x`, edges
 /// counted half-open in `y`.
-fn inside(r: &[QPoint], m: &QPoint) -> bool {
+fn inside(r: &[ZPoint], m: &ZPoint) -> bool {
     let n = r.len();
     let mut odd = false;
     for i in 0..n {
         let (p, s) = (&r[i], &r[(i + 1) % n]);
         if (p[1] > m[1]) != (s[1] > m[1]) {
-            let x = &p[0] + (&m[1] - &p[1]) * (&s[0] - &p[0]) / (&s[1] - &p[1]);
-            if x > m[0] {
+            // The crossing's x = p.x + (m.y − p.y)(s.x − p.x)/(s.y − p.y)
+            // exceeds m.x iff num / den > 0.
+            let den = &s[1] - &p[1];
+            let num = (&p[0] - &m[0]) * &den + (&m[1] - &p[1]) * (&s[0] - &p[0]);
+            if num.sign() == den.sign() && !num.is_zero() {
                 odd = !odd;
             }
         }
@@ -156,27 +182,24 @@ pub fn is_diagonal(ring: &[Point], a: usize, b: usize) -> bool {
     if a >= n || b >= n || a == b || (a + 1) % n == b || (b + 1) % n == a {
         return false;
     }
-    let r: Vec<QPoint> = ring.iter().map(|&p| q(p)).collect();
+    let r = integer_ring(ring);
     diagonal_in(&r, a, b)
 }
 
-fn diagonal_in(r: &[QPoint], a: usize, b: usize) -> bool {
+fn diagonal_in(r: &[ZPoint], a: usize, b: usize) -> bool {
     let n = r.len();
     if (0..n).any(|i| segment_meets(&r[a], &r[b], true, &r[i], &r[(i + 1) % n])) {
         return false;
     }
-    let half = Q::new(1.into(), 2.into());
-    let mid = [
-        (&r[a][0] + &r[b][0]) * &half,
-        (&r[a][1] + &r[b][1]) * &half,
-    ];
+    // Coordinates are doubled, so the midpoint is an integer point.
+    let mid = [(&r[a][0] + &r[b][0]) / 2, (&r[a][1] + &r[b][1]) / 2];
     inside(r, &mid)
 }
 
 /// Every diagonal `[a, b]`, `a < b`, of the simple polygon `ring`, sorted.
 pub fn diagonals(ring: &[Point]) -> Vec<[u32; 2]> {
     let n = ring.len();
-    let r: Vec<QPoint> = ring.iter().map(|&p| q(p)).collect();
+    let r = integer_ring(ring);
     let mut out = Vec::new();
     for a in 0..n {
         for b in a + 2..n {
@@ -191,7 +214,7 @@ pub fn diagonals(ring: &[Point]) -> Vec<[u32; 2]> {
 /// Do two diagonals conflict? Only by meeting away from a shared endpoint
 /// (a diagonal's open segment holds no vertex, so sharing an endpoint is
 /// fine).
-fn conflict(r: &[QPoint], s: [u32; 2], t: [u32; 2]) -> bool {
+fn conflict(r: &[ZPoint], s: [u32; 2], t: [u32; 2]) -> bool {
     if s[0] == t[0] || s[0] == t[1] || s[1] == t[0] || s[1] == t[1] {
         return false;
     }
@@ -244,7 +267,7 @@ pub fn polygon_triangulations(ring: &[Point]) -> Vec<Vec<[u32; 3]>> {
         "optri-oracle: at most {MAX_POLYGON_ENUMERATION} vertices"
     );
     assert!(is_simple(ring), "optri-oracle: not a simple polygon");
-    let r: Vec<QPoint> = ring.iter().map(|&p| q(p)).collect();
+    let r = integer_ring(ring);
     let diags = diagonals(ring);
     let m = diags.len();
     let crossers: Vec<Vec<usize>> = (0..m)
@@ -274,7 +297,8 @@ pub fn polygon_triangulations(ring: &[Point]) -> Vec<Vec<[u32; 3]>> {
                 }
             }
             if idx == self.chosen.len() {
-                self.out.push((0..idx).filter(|&s| self.chosen[s]).collect());
+                self.out
+                    .push((0..idx).filter(|&s| self.chosen[s]).collect());
                 return;
             }
             if self.covered(idx) {
@@ -315,17 +339,18 @@ pub fn polygon_triangulations(ring: &[Point]) -> Vec<Vec<[u32; 3]>> {
 /// kept unless it meets a kept one away from a shared endpoint. The kept
 /// diagonals, `[min, max]`, sorted.
 pub fn greedy_polygon_diagonals(ring: &[Point]) -> Vec<[u32; 2]> {
-    let r: Vec<QPoint> = ring.iter().map(|&p| q(p)).collect();
+    let r = integer_ring(ring);
     let p = |i: u32| ring[i as usize];
     let mut diags: Vec<([u32; 2], BigRational)> = diagonals(ring)
         .into_iter()
         .map(|d| (d, squared_length(p(d[0]), p(d[1]))))
         .collect();
     diags.sort_by(|(s, ls), (t, lt)| {
-        ls.cmp(lt).then_with(|| match compare_lengths_perturbed(ring, *s, *t) {
-            Ordering::Equal => s.cmp(t),
-            o => o,
-        })
+        ls.cmp(lt)
+            .then_with(|| match compare_lengths_perturbed(ring, *s, *t) {
+                Ordering::Equal => s.cmp(t),
+                o => o,
+            })
     });
     let mut kept: Vec<[u32; 2]> = Vec::new();
     for (d, _) in diags {
@@ -359,8 +384,8 @@ pub fn star_polygon(rng: &mut StdRng, n: usize, radius: f64) -> Vec<Point> {
         || {
             (0..n)
                 .map(|k| {
-                    let a = (k as f64 + rng.gen_range(0.15..0.85)) * std::f64::consts::TAU
-                        / n as f64;
+                    let a =
+                        (k as f64 + rng.gen_range(0.15..0.85)) * std::f64::consts::TAU / n as f64;
                     let r = rng.gen_range(radius / 5.0..=radius);
                     [(r * a.cos()).round(), (r * a.sin()).round()]
                 })
@@ -385,25 +410,38 @@ pub fn two_opt_polygon(rng: &mut StdRng, n: usize, range: i64) -> Vec<Point> {
                     ring.push([p[0] as f64, p[1] as f64]);
                 }
             }
-            untangle(&mut ring, 50 * n * n);
+            untangle(&mut ring, 20 * n * n);
             ring
         },
         "2-opt polygon",
     )
 }
 
+/// Do the closed segments `ab` and `cd` meet? Exact orientations; collinear
+/// segments by their coordinate intervals.
+fn closed_segments_meet(a: Point, b: Point, c: Point, d: Point) -> bool {
+    let (o1, o2) = (orient(a, b, c), orient(a, b, d));
+    let (o3, o4) = (orient(c, d, a), orient(c, d, b));
+    if o1 * o2 > 0 || o3 * o4 > 0 {
+        return false;
+    }
+    if o1 != 0 || o2 != 0 || o3 != 0 || o4 != 0 {
+        return true;
+    }
+    (0..2).all(|k| a[k].min(b[k]) <= c[k].max(d[k]) && c[k].min(d[k]) <= a[k].max(b[k]))
+}
+
 /// 2-opt moves until no two non-adjacent edges meet, or `budget` moves.
 fn untangle(ring: &mut [Point], budget: usize) {
     let n = ring.len();
     for _ in 0..budget {
-        let r: Vec<QPoint> = ring.iter().map(|&p| q(p)).collect();
         let mut found = None;
         'search: for i in 0..n {
             for j in i + 2..n {
                 if i == 0 && j == n - 1 {
                     continue;
                 }
-                if segment_meets(&r[i], &r[i + 1], false, &r[j], &r[(j + 1) % n]) {
+                if closed_segments_meet(ring[i], ring[i + 1], ring[j], ring[(j + 1) % n]) {
                     found = Some((i, j));
                     break 'search;
                 }
@@ -447,7 +485,10 @@ pub fn spiral(turns: f64, steps: usize, scale: f64) -> Vec<Point> {
     let mut ring: Vec<Point> = (0..=total).map(|k| at(k, 0.0)).collect();
     ring.extend((0..=total).rev().map(|k| at(k, 0.5)));
     ring.dedup();
-    assert!(is_simple(&ring), "optri-oracle: spiral not simple; use a larger scale");
+    assert!(
+        is_simple(&ring),
+        "optri-oracle: spiral not simple; use a larger scale"
+    );
     ring
 }
 
@@ -545,14 +586,25 @@ mod tests {
                 })
                 .collect();
             assert_eq!(diagonals(&ring).len(), n * (n - 3) / 2);
-            assert_eq!(polygon_triangulations(&ring).len(), catalan[n - 2], "n = {n}");
+            assert_eq!(
+                polygon_triangulations(&ring).len(),
+                catalan[n - 2],
+                "n = {n}"
+            );
         }
     }
 
     #[test]
     fn an_l_shape_and_a_straight_vertex() {
         // L-shape: the reflex corner 3 sees everything, 1-3 goes outside.
-        let l = [[0.0, 0.0], [2.0, 0.0], [2.0, 1.0], [1.0, 1.0], [1.0, 2.0], [0.0, 2.0]];
+        let l = [
+            [0.0, 0.0],
+            [2.0, 0.0],
+            [2.0, 1.0],
+            [1.0, 1.0],
+            [1.0, 2.0],
+            [0.0, 2.0],
+        ];
         assert!(is_simple(&l));
         assert_eq!(diagonals(&l), vec![[0, 2], [0, 3], [0, 4], [1, 3], [3, 5]]);
         assert!(!is_diagonal(&l, 2, 4));
@@ -567,9 +619,25 @@ mod tests {
 
     #[test]
     fn not_simple_rings_are_recognised() {
-        assert!(!is_simple(&[[0.0, 0.0], [1.0, 1.0], [1.0, 0.0], [0.0, 1.0]]));
-        assert!(!is_simple(&[[0.0, 0.0], [2.0, 0.0], [1.0, 0.0], [1.0, 1.0]]));
-        assert!(!is_simple(&[[0.0, 0.0], [4.0, 0.0], [4.0, 4.0], [2.0, 0.0], [0.0, 4.0]]));
+        assert!(!is_simple(&[
+            [0.0, 0.0],
+            [1.0, 1.0],
+            [1.0, 0.0],
+            [0.0, 1.0]
+        ]));
+        assert!(!is_simple(&[
+            [0.0, 0.0],
+            [2.0, 0.0],
+            [1.0, 0.0],
+            [1.0, 1.0]
+        ]));
+        assert!(!is_simple(&[
+            [0.0, 0.0],
+            [4.0, 0.0],
+            [4.0, 4.0],
+            [2.0, 0.0],
+            [0.0, 4.0]
+        ]));
         assert!(!is_simple(&[[0.0, 0.0], [1.0, 0.0], [2.0, 0.0]]));
     }
 
