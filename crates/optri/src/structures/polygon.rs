@@ -274,9 +274,7 @@ impl SimplePolygon {
     /// every chord that is not a boundary edge is a diagonal.
     pub fn is_strictly_convex(&self) -> bool {
         let v = self.vertices();
-        (0..self.len()).all(|a| {
-            orient_sign(v[self.ccw_prev(a)], v[a], v[self.ccw_next(a)]) > 0
-        })
+        (0..self.len()).all(|a| orient_sign(v[self.ccw_prev(a)], v[a], v[self.ccw_next(a)]) > 0)
     }
 }
 

@@ -86,11 +86,19 @@ const CONVEX_ALGORITHM: &str =
     "polygon program on the strictly convex polygon, O(n^3) (temporary stand-in for \
      Vassilev's Algorithm 44)";
 
-pub(crate) fn solve_maxmin(points: &PointSet, _: &Options, phases: &mut Vec<Phase>) -> Result<Solved> {
+pub(crate) fn solve_maxmin(
+    points: &PointSet,
+    _: &Options,
+    phases: &mut Vec<Phase>,
+) -> Result<Solved> {
     solve_points(points, AreaBottleneck::MaxMin, phases)
 }
 
-pub(crate) fn solve_minmax(points: &PointSet, _: &Options, phases: &mut Vec<Phase>) -> Result<Solved> {
+pub(crate) fn solve_minmax(
+    points: &PointSet,
+    _: &Options,
+    phases: &mut Vec<Phase>,
+) -> Result<Solved> {
     solve_points(points, AreaBottleneck::MinMax, phases)
 }
 
@@ -141,7 +149,11 @@ fn solved(triangulation: Triangulation, algorithm: &str) -> Solved {
     }
 }
 
-fn solve_points(points: &PointSet, kind: AreaBottleneck, phases: &mut Vec<Phase>) -> Result<Solved> {
+fn solve_points(
+    points: &PointSet,
+    kind: AreaBottleneck,
+    phases: &mut Vec<Phase>,
+) -> Result<Solved> {
     let criterion = kind.criterion();
     let pts = points.points();
     let hull = convex_hull_cycle(pts);
@@ -179,10 +191,17 @@ fn solve_points(points: &PointSet, kind: AreaBottleneck, phases: &mut Vec<Phase>
             )
         }
     });
-    Ok(solved(Triangulation::from_distinct(points, triangles), algorithm))
+    Ok(solved(
+        Triangulation::from_distinct(points, triangles),
+        algorithm,
+    ))
 }
 
-fn solve_polygon(polygon: &SimplePolygon, kind: AreaBottleneck, phases: &mut Vec<Phase>) -> Result<Solved> {
+fn solve_polygon(
+    polygon: &SimplePolygon,
+    kind: AreaBottleneck,
+    phases: &mut Vec<Phase>,
+) -> Result<Solved> {
     let criterion = kind.criterion();
     check_size(polygon, criterion)?;
     if polygon.is_strictly_convex() {
