@@ -466,7 +466,10 @@ fn compare_areas_on_near_ties_matches_exact_areas() {
         // The same triangle translated, reflected or with rotated corners
         // (equal exact area up to the rounding of the moved coordinates),
         // then each coordinate nudged by a few ulps or not at all.
-        let shift = [scale * rng.gen_range(-1.0..1.0), scale * rng.gen_range(-1.0..1.0)];
+        let shift = [
+            scale * rng.gen_range(-1.0..1.0),
+            scale * rng.gen_range(-1.0..1.0),
+        ];
         let mut t2 = match rng.gen_range(0..3) {
             0 => t1.map(|q| [q[0] + shift[0], q[1] + shift[1]]),
             1 => [t1[1], t1[2], t1[0]],

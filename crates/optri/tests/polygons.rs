@@ -207,7 +207,7 @@ fn variants(name: &str, ring: &[Point]) -> Vec<(String, Vec<Point>)> {
     let map = |f: &dyn Fn(Point) -> Point| ring.iter().map(|&p| f(p)).collect::<Vec<Point>>();
     let reversed: Vec<Point> = ring.iter().rev().copied().collect();
     vec![
-        (format!("{name}"), ring.to_vec()),
+        (name.to_string(), ring.to_vec()),
         (format!("{name} reversed"), reversed),
         (
             format!("{name} ×1e15"),
@@ -258,7 +258,7 @@ fn families(rng: &mut StdRng, n: usize) -> Vec<(String, Vec<Point>)> {
             ));
         }
     }
-    if n >= 8 && n % 4 == 0 {
+    if n >= 8 && n.is_multiple_of(4) {
         out.push((
             format!("lattice square {}", n / 4),
             op::lattice_square(n as i64 / 4),

@@ -128,7 +128,7 @@ impl SimplePolygon {
                 let ((a, b), (c, d)) = (seg(i), seg(j));
                 if segments_intersect(a, b, c, d) {
                     let pair = [i.min(j), i.max(j)];
-                    if found.map_or(true, |f| pair < f) {
+                    if found.is_none_or(|f| pair < f) {
                         found = Some(pair);
                     }
                 }
