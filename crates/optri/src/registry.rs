@@ -158,9 +158,9 @@ pub fn triangulate_with(
 ///
 /// ```
 /// use optri::{triangulate_polygon, Criterion, SimplePolygon};
-/// // An L-shape, listed clockwise: the chord 1-3 leaves the polygon.
+/// // An L-shape, listed clockwise: the chord 2-4 leaves the polygon.
 /// let l = SimplePolygon::new(&[[0.0, 0.0], [0.0, 2.0], [1.0, 2.0], [1.0, 1.0], [2.0, 1.0], [2.0, 0.0]])?;
-/// assert!(!l.is_diagonal(1, 3) && l.is_diagonal(0, 3));
+/// assert!(!l.is_diagonal(2, 4) && l.is_diagonal(0, 3) && l.is_diagonal(1, 3));
 /// let solution = triangulate_polygon(&l, Criterion::MinmaxArea)?;
 /// solution.triangulation.validate()?;
 /// assert_eq!(solution.triangulation.triangles().len(), 4);
