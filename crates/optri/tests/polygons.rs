@@ -197,7 +197,26 @@ fn check_polygon(ring: &[Point], best: &Values, what: &str) {
         "{what}: greedy differs from the definition"
     );
     let cdt = run(&polygon, Criterion::Delaunay, what);
-    assert_locally_delaunay(ring, &cdt, what);
+    // Every one of the n − 3 interior edges is checked.
+    assert_eq!(assert_locally_delaunay(ring, &cdt, what), ring.len() - 3);
+}
+
+/// What the inputs of a test covered: polygons with a straight (180°)
+/// vertex, and polygons listed clockwise.
+#[derive(Debug, Default, PartialEq, Eq)]
+struct Coverage {
+    straight: usize,
+    clockwise: usize,
+}
+
+impl Coverage {
+    fn add(&mut self, ring: &[Point]) {
+        let n = ring.len();
+        self.straight += (0..n)
+            .any(|i| optri_oracle::orient(ring[i], ring[(i + 1) % n], ring[(i + 2) % n]) == 0)
+            as usize;
+        self.clockwise += (op::counter_clockwise(ring)[1] != 1) as usize;
+    }
 }
 
 /// Transformed copies: the ring as given, reversed (the other orientation),
@@ -310,6 +329,7 @@ fn is_diagonal_matches_the_definition() {
 fn small_polygons_match_exhaustive_enumeration_and_klincsek() {
     let mut rng = StdRng::seed_from_u64(SMALL_SEED);
     let (mut cases, mut triangulations) = (0usize, 0usize);
+    let mut coverage = Coverage::default();
     for n in 3..=12 {
         let mut rings = Vec::new();
         for (name, ring) in families(&mut rng, n) {
@@ -323,12 +343,21 @@ fn small_polygons_match_exhaustive_enumeration_and_klincsek() {
             assert_eq!(best.max_twice_area, klincsek.max_twice_area, "{name}");
             assert!(relative_eq(best.weight, klincsek.weight), "{name}");
             check_polygon(&ring, &best, &format!("{name} {ring:?}"));
+            coverage.add(&ring);
             cases += 1;
             triangulations += count;
         }
     }
-    println!("{cases} polygons, {triangulations} triangulations enumerated");
+    println!("{cases} polygons, {triangulations} triangulations enumerated, {coverage:?}");
     assert_eq!((cases, triangulations), (245, 21_905));
+    let (straight, clockwise) = (85, 111);
+    assert_eq!(
+        coverage,
+        Coverage {
+            straight,
+            clockwise
+        }
+    );
 }
 
 #[test]
@@ -348,16 +377,27 @@ fn larger_polygons_match_klincsek() {
         op::histogram(&mut rng, 8, 4, true),
     ));
     rings.push(("lattice square 12".into(), op::lattice_square(12)));
+    let mut coverage = Coverage::default();
     for (name, ring) in &rings {
         let best = best_by_klincsek(ring);
         check_polygon(ring, &best, name);
+        coverage.add(ring);
         cases += 1;
     }
+    println!("{coverage:?}");
     println!(
         "{cases} polygons up to {} vertices",
         rings.iter().map(|r| r.1.len()).max().unwrap()
     );
-    assert_eq!(cases, 5 * 30 + 4);
+    assert_eq!(cases, 154);
+    let (straight, clockwise) = (82, 66);
+    assert_eq!(
+        coverage,
+        Coverage {
+            straight,
+            clockwise
+        }
+    );
 }
 
 /// SPOJ MMINMAX's polygon (brief §5): minmax area 9 and maxmin area 5.5,
