@@ -296,6 +296,39 @@ mod tests {
     }
 
     #[test]
+    fn diagonals_of_an_l_shape_and_a_straight_run() {
+        // Clockwise L-shape; the reflex corner is position 3.
+        let l = [
+            [0.0, 0.0],
+            [0.0, 2.0],
+            [1.0, 2.0],
+            [1.0, 1.0],
+            [2.0, 1.0],
+            [2.0, 0.0],
+        ];
+        let p = SimplePolygon::new(&l).unwrap();
+        let mut diagonals = Vec::new();
+        for a in 0..6 {
+            for b in a + 1..6 {
+                assert_eq!(p.is_diagonal(a, b), p.is_diagonal(b, a));
+                if p.is_diagonal(a, b) {
+                    diagonals.push([a, b]);
+                }
+            }
+        }
+        assert_eq!(diagonals, [[0, 2], [0, 3], [0, 4], [1, 3], [3, 5]]);
+        assert!(!p.is_strictly_convex());
+        // 0-2 runs along the boundary through the straight vertex 1.
+        let t = SimplePolygon::new(&[[0.0, 0.0], [1.0, 0.0], [2.0, 0.0], [1.0, 1.0]]).unwrap();
+        assert!(!t.is_diagonal(0, 2) && t.is_diagonal(1, 3) && !t.is_diagonal(0, 1));
+        assert!(!t.is_strictly_convex());
+        let square = SimplePolygon::new(&[[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]]).unwrap();
+        assert!(
+            square.is_strictly_convex() && square.is_diagonal(0, 2) && !square.is_diagonal(4, 0)
+        );
+    }
+
+    #[test]
     fn bad_rings_name_the_problem() {
         let bowtie = [[0.0, 0.0], [1.0, 1.0], [1.0, 0.0], [0.0, 1.0]];
         assert_eq!(
