@@ -9,7 +9,9 @@
 //! definition ([`greedy_triangulation`], O(n⁴), and the same scan made
 //! scalable with exact float-filtered predicates and grids,
 //! [`greedy_edges`]),
-//! Klincsek's polygon DP ([`klincsek()`]), brute-force definitions of the
+//! Klincsek's polygon DP ([`klincsek()`]), simple polygons by definition
+//! (diagonals, every triangulation, the greedy triangulation, generators:
+//! [`polygon`]), brute-force definitions of the
 //! proximity graphs ([`graphs`]), and a polynomial expansion of the
 //! symbolic perturbation ([`symbolic`]). Slow by design; inputs are small
 //! (except [`greedy_edges`]). [`inputs`] holds the seeded point-set
@@ -30,6 +32,7 @@ pub mod graphs;
 pub mod greedy;
 pub mod inputs;
 pub mod klincsek;
+pub mod polygon;
 pub mod symbolic;
 
 pub use data::data_dir;

@@ -83,6 +83,9 @@ pub enum UnsupportedReason {
         /// All distinct points.
         distinct: usize,
     },
+    /// The algorithm needs a strictly convex polygon (every vertex a
+    /// strictly convex corner, no three consecutive vertices collinear).
+    NotStrictlyConvex,
     /// The algorithm's time or memory grows too fast for this many points.
     TooManyPoints {
         /// The largest accepted number of distinct points.
@@ -92,6 +95,17 @@ pub enum UnsupportedReason {
         /// What limits it, e.g. `"Klincsek's O(n³) program with O(n²) tables"`.
         because: &'static str,
     },
+    /// The algorithm needs points in convex position or a simple polygon
+    /// ([`crate::triangulate_polygon`]); general point sets are not
+    /// supported yet.
+    NotConvexPositionOrPolygon {
+        /// Distinct points strictly inside the hull.
+        interior: usize,
+        /// All distinct points.
+        distinct: usize,
+    },
+    /// The criterion does not accept a polygon as input (yet).
+    NoPolygonInput,
 }
 
 /// What makes a vertex cycle not a simple polygon ([`Error::InvalidPolygon`]).
@@ -166,6 +180,11 @@ impl fmt::Display for Error {
                     "{criterion} is only supported for points in convex position yet \
                      ({interior} of {distinct} distinct points are interior to the convex hull)"
                 ),
+                UnsupportedReason::NotStrictlyConvex => write!(
+                    f,
+                    "{criterion} here needs a strictly convex polygon (every vertex a strictly \
+                     convex corner)"
+                ),
                 UnsupportedReason::TooManyPoints {
                     limit,
                     distinct,
@@ -174,6 +193,16 @@ impl fmt::Display for Error {
                     f,
                     "{criterion} ({because}) is limited to {limit} points; this input has \
                      {distinct} distinct points"
+                ),
+                UnsupportedReason::NotConvexPositionOrPolygon { interior, distinct } => write!(
+                    f,
+                    "{criterion} is not supported for general point sets yet: it needs points in \
+                     convex position or a simple polygon ({interior} of {distinct} distinct points \
+                     are interior to the convex hull)"
+                ),
+                UnsupportedReason::NoPolygonInput => write!(
+                    f,
+                    "{criterion} does not accept a polygon as input yet"
                 ),
             },
             Error::InvalidTriangulation(message) => write!(f, "invalid triangulation: {message}"),

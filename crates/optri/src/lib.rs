@@ -26,8 +26,8 @@
 //! | 2 | `structures` | [`PointSet`], [`SimplePolygon`], [`Triangulation`] and its [`Domain`], Delaunay adjacency, planar graph |
 //! | 3 | `graphs` | [`delaunay`], [`convex_hull`], [`relative_neighborhood_graph`], [`gabriel_graph`], [`minimum_spanning_tree`] |
 //! | 4 | `polygon_program` | Klincsek's polygon dynamic program over an objective |
-//! | 5 | `criteria` | one module per criterion: [`minmax_length`], [`greedy`], [`min_weight`], Delaunay |
-//! | 6 | `registry` | [`Criterion`], [`GraphKind`], [`triangulate`], [`graph`] |
+//! | 5 | `criteria` | one module per criterion: [`minmax_length`], [`greedy`], [`min_weight`], [`maxmin_area`] / [`minmax_area`], Delaunay; the polygon solvers |
+//! | 6 | `registry` | [`Criterion`], [`GraphKind`], [`triangulate`], [`triangulate_polygon`], [`graph`] |
 //! | 7 | `io` (public, feature `io`) | readers, writers, the one JSON result schema |
 //!
 //! ## Features
@@ -52,16 +52,21 @@ mod spatial;
 mod structures;
 mod timing;
 
+pub use criteria::area::{maxmin_area, maxmin_area_at_least, minmax_area, MaxMinAreaDecision};
 pub use criteria::greedy::greedy;
 pub use criteria::min_weight::min_weight;
 pub use criteria::minmax_length::minmax_length;
+pub use criteria::polygon_criteria::MAX_POLYGON_VERTICES;
 pub use criteria::{CriterionInfo, Diagnostics, Optimality, Options, Requirement};
 pub use error::{Error, PolygonProblem, Result, UnsupportedReason};
 pub use graphs::{
     convex_hull, convex_hull_edges, delaunay, delaunay_edges, gabriel_graph, minimum_spanning_tree,
     relative_neighborhood_graph,
 };
-pub use registry::{graph, triangulate, triangulate_with, Criterion, GraphKind, Solution};
+pub use registry::{
+    graph, triangulate, triangulate_polygon, triangulate_polygon_with, triangulate_with, Criterion,
+    GraphKind, Solution,
+};
 pub use structures::{Domain, PointSet, SimplePolygon, Stats, Triangulation};
 pub use timing::Phase;
 

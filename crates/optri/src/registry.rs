@@ -1,14 +1,19 @@
 //! Layer 6: the registry the front ends share (CLI, demo, Python, web). It
 //! lists every criterion and every graph kind with its name and description,
-//! looks them up by name, and runs them: [`triangulate`] and [`graph`].
+//! looks them up by name, and runs them: [`triangulate`] on point sets,
+//! [`triangulate_polygon`] on simple polygons, and [`graph`].
 //!
-//! Adding a criterion costs one variant of [`Criterion`] and one arm in
-//! [`Criterion::entry`]; everything else lives in the criterion's module.
+//! Adding a criterion costs one variant of [`Criterion`], one arm in
+//! [`Criterion::entry`] and, if it accepts polygons, one arm in
+//! [`Criterion::polygon_entry`]; everything else lives in the criterion's
+//! module.
 
-use crate::criteria::{self, CriterionInfo, Diagnostics, Optimality, Options, Solver};
-use crate::error::{Error, Result};
+use crate::criteria::{
+    self, CriterionInfo, Diagnostics, Optimality, Options, PolygonSolver, Solved, Solver,
+};
+use crate::error::{Error, Result, UnsupportedReason};
 use crate::graphs;
-use crate::structures::{PointSet, Triangulation};
+use crate::structures::{PointSet, SimplePolygon, Triangulation};
 use crate::timing::{timed, Phase};
 
 /// An optimality criterion optri can triangulate by.
@@ -21,8 +26,12 @@ pub enum Criterion {
     MinmaxLength,
     /// The greedy triangulation (shortest compatible segment first).
     Greedy,
-    /// Minimum total edge length (convex position only, for now).
+    /// Minimum total edge length (convex position or a polygon, for now).
     MinWeight,
+    /// Maximises the smallest triangle area (convex position or a polygon).
+    MaxminArea,
+    /// Minimises the largest triangle area (convex position or a polygon).
+    MinmaxArea,
 }
 
 impl Criterion {
@@ -32,6 +41,8 @@ impl Criterion {
         Criterion::MinmaxLength,
         Criterion::Greedy,
         Criterion::MinWeight,
+        Criterion::MaxminArea,
+        Criterion::MinmaxArea,
     ];
 
     /// The criterion's description and entry point.
@@ -44,7 +55,27 @@ impl Criterion {
             ),
             Criterion::Greedy => (&criteria::greedy::INFO, criteria::greedy::solve),
             Criterion::MinWeight => (&criteria::min_weight::INFO, criteria::min_weight::solve),
+            Criterion::MaxminArea => (&criteria::area::MAXMIN_INFO, criteria::area::solve_maxmin),
+            Criterion::MinmaxArea => (&criteria::area::MINMAX_INFO, criteria::area::solve_minmax),
         }
+    }
+
+    /// The criterion's entry point for simple polygons, if it has one.
+    fn polygon_entry(self) -> Option<PolygonSolver> {
+        use criteria::polygon_criteria as polygon;
+        match self {
+            Criterion::Delaunay => Some(polygon::solve_delaunay),
+            Criterion::MinmaxLength => Some(polygon::solve_minmax_length),
+            Criterion::Greedy => Some(polygon::solve_greedy),
+            Criterion::MinWeight => Some(polygon::solve_min_weight),
+            Criterion::MaxminArea => Some(criteria::area::solve_maxmin_polygon),
+            Criterion::MinmaxArea => Some(criteria::area::solve_minmax_polygon),
+        }
+    }
+
+    /// Does [`triangulate_polygon`] accept this criterion?
+    pub fn supports_polygons(self) -> bool {
+        self.polygon_entry().is_some()
     }
 
     /// Name, description, guarantee, requirements and reference.
@@ -80,7 +111,7 @@ impl Criterion {
     }
 }
 
-/// The result of [`triangulate`]: the triangulation and how it was obtained.
+/// The result of [`triangulate`] or [`triangulate_polygon`]: the triangulation and how it was obtained.
 #[derive(Clone, Debug)]
 #[non_exhaustive]
 pub struct Solution {
@@ -118,15 +149,60 @@ pub fn triangulate_with(
 ) -> Result<Solution> {
     let mut phases = Vec::new();
     let solved = (criterion.entry().1)(points, options, &mut phases)?;
-    Ok(Solution {
-        criterion,
-        exact: solved.optimality.is_exact(),
-        optimality: solved.optimality,
-        algorithm: solved.algorithm,
-        triangulation: solved.triangulation,
-        phases,
-        diagnostics: solved.diagnostics,
-    })
+    Ok(Solution::new(criterion, solved, phases))
+}
+
+/// Triangulates the interior of `polygon` by `criterion` with default
+/// [`Options`]. The triangulation's [`Domain`](crate::Domain) is the polygon
+/// and its indices are positions in the caller's ring.
+///
+/// ```
+/// use optri::{triangulate_polygon, Criterion, SimplePolygon};
+/// // An L-shape, listed clockwise: the chord 2-4 leaves the polygon.
+/// let l = SimplePolygon::new(&[[0.0, 0.0], [0.0, 2.0], [1.0, 2.0], [1.0, 1.0], [2.0, 1.0], [2.0, 0.0]])?;
+/// assert!(!l.is_diagonal(2, 4) && l.is_diagonal(0, 3) && l.is_diagonal(1, 3));
+/// let solution = triangulate_polygon(&l, Criterion::MinmaxArea)?;
+/// solution.triangulation.validate()?;
+/// assert_eq!(solution.triangulation.triangles().len(), 4);
+/// # Ok::<(), optri::Error>(())
+/// ```
+pub fn triangulate_polygon(polygon: &SimplePolygon, criterion: Criterion) -> Result<Solution> {
+    triangulate_polygon_with(polygon, criterion, &Options::default())
+}
+
+/// Triangulates the interior of `polygon` by `criterion` with `options`.
+///
+/// # Errors
+/// [`Error::Unsupported`] when the criterion takes no polygons
+/// ([`UnsupportedReason::NoPolygonInput`], see
+/// [`Criterion::supports_polygons`]) or the polygon is too large for it;
+/// [`Error::Internal`] on a bug.
+pub fn triangulate_polygon_with(
+    polygon: &SimplePolygon,
+    criterion: Criterion,
+    options: &Options,
+) -> Result<Solution> {
+    let solve = criterion.polygon_entry().ok_or(Error::Unsupported {
+        criterion: criterion.name(),
+        reason: UnsupportedReason::NoPolygonInput,
+    })?;
+    let mut phases = Vec::new();
+    let solved = solve(polygon, options, &mut phases)?;
+    Ok(Solution::new(criterion, solved, phases))
+}
+
+impl Solution {
+    fn new(criterion: Criterion, solved: Solved, phases: Vec<crate::timing::Phase>) -> Self {
+        Solution {
+            criterion,
+            exact: solved.optimality.is_exact(),
+            optimality: solved.optimality,
+            algorithm: solved.algorithm,
+            triangulation: solved.triangulation,
+            phases,
+            diagnostics: solved.diagnostics,
+        }
+    }
 }
 
 /// A proximity graph optri computes.

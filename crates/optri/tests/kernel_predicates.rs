@@ -448,3 +448,52 @@ fn predicates_equal_exact_evaluation_with_huge_and_tiny_coordinates_mixed() {
         "{zero_orient} {equal_lengths}"
     );
 }
+
+// ---------------------------------------------------------------------------
+// compare_areas on different triangles whose areas are equal or differ by
+// about one rounding: the filter must hand every such case to the exact
+// fallback.
+
+#[test]
+fn compare_areas_on_near_ties_matches_exact_areas() {
+    const SEED: u64 = 0xa4ea_5eed;
+    let mut rng = StdRng::seed_from_u64(SEED);
+    let (mut cases, mut equal) = (0usize, 0usize);
+    for _ in 0..20_000 {
+        let scale: f64 = [1.0, 1e-9, 1e12, 3.0e40][rng.gen_range(0..4)];
+        let offset = [0.0, 1e6, -7.5e15][rng.gen_range(0..3)] * scale.min(1.0);
+        let p = |rng: &mut StdRng| {
+            [
+                offset + scale * rng.gen_range(-1.0..1.0),
+                offset + scale * rng.gen_range(-1.0..1.0),
+            ]
+        };
+        let t1 = [p(&mut rng), p(&mut rng), p(&mut rng)];
+        // The same triangle translated, reflected or with rotated corners
+        // (equal exact area up to the rounding of the moved coordinates),
+        // then each coordinate nudged by a few ulps or not at all.
+        let shift = [
+            scale * rng.gen_range(-1.0..1.0),
+            scale * rng.gen_range(-1.0..1.0),
+        ];
+        let mut t2 = match rng.gen_range(0..3) {
+            0 => t1.map(|q| [q[0] + shift[0], q[1] + shift[1]]),
+            1 => [t1[1], t1[2], t1[0]],
+            _ => t1.map(|q| [-q[0], q[1]]),
+        };
+        if rng.gen_bool(0.5) {
+            for q in &mut t2 {
+                q[0] = next_up_or_down(q[0], &mut rng);
+                q[1] = next_up_or_down(q[1], &mut rng);
+            }
+        }
+        let exact =
+            oracle::twice_area(t1[0], t1[1], t1[2]).cmp(&oracle::twice_area(t2[0], t2[1], t2[2]));
+        assert_eq!(compare_areas(t1, t2), exact, "{t1:?} {t2:?}");
+        assert_eq!(compare_areas(t2, t1), exact.reverse());
+        cases += 1;
+        equal += exact.is_eq() as usize;
+    }
+    assert_eq!(cases, 20_000);
+    assert!(equal > 5_000, "{equal}");
+}

@@ -102,8 +102,8 @@ pub fn min_weight(points: &PointSet) -> Result<Triangulation> {
 
 /// Total length of the diagonals, summed in `f64` (the module's exactness
 /// caveat): an additive objective.
-struct TotalLength<'a, P: Fn(usize) -> Point> {
-    point: &'a P,
+pub(crate) struct TotalLength<'a, P: Fn(usize) -> Point> {
+    pub(crate) point: &'a P,
 }
 
 impl<P: Fn(usize) -> Point> Objective for TotalLength<'_, P> {

@@ -10,15 +10,21 @@
 //! | `minmax-length` | `minmax_length` | Edelsbrunner & Tan 1991 |
 //! | `greedy` | `greedy` | Levcopoulos & Lingas 1990; Dickerson et al. 1997 |
 //! | `min-weight` | `min_weight` | Klincsek 1980 |
+//! | `maxmin-area`, `minmax-area` | `area` | Vassilev 2005 |
+//!
+//! Simple polygons ([`crate::triangulate_polygon`]): every criterion has a
+//! [`PolygonSolver`]; those of `delaunay`, `minmax-length`, `greedy` and
+//! `min-weight` are in `polygon_criteria`, the area ones in `area`.
 
 pub(crate) mod area;
 pub(crate) mod delaunay;
 pub(crate) mod greedy;
 pub(crate) mod min_weight;
 pub(crate) mod minmax_length;
+pub(crate) mod polygon_criteria;
 
 use crate::error::Result;
-use crate::structures::{PointSet, Triangulation};
+use crate::structures::{PointSet, SimplePolygon, Triangulation};
 use crate::timing::Phase;
 
 /// How good a criterion's answer is guaranteed to be.
@@ -135,3 +141,7 @@ pub(crate) struct Solved {
 
 /// The one signature of every criterion's entry point.
 pub(crate) type Solver = fn(&PointSet, &Options, &mut Vec<Phase>) -> Result<Solved>;
+
+/// The one signature of every criterion's entry point for a simple polygon
+/// (its triangulation's domain is the polygon, its indices ring positions).
+pub(crate) type PolygonSolver = fn(&SimplePolygon, &Options, &mut Vec<Phase>) -> Result<Solved>;

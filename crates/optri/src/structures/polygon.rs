@@ -3,7 +3,7 @@
 //! decomposable criteria on simple polygons, minimum weight on polygons).
 
 use crate::error::{Error, PolygonProblem, Result};
-use crate::kernel::{dot_sign, orient_sign, segments_intersect, Point};
+use crate::kernel::{dot_sign, on_open_segment, orient_sign, segments_intersect, Point};
 use crate::structures::PointSet;
 
 /// A simple polygon: at least three distinct vertices in boundary order
@@ -170,6 +170,112 @@ impl SimplePolygon {
     pub fn is_clockwise_input(&self) -> bool {
         self.clockwise_input
     }
+
+    /// The ring position after `a` in counter-clockwise order.
+    #[inline]
+    fn ccw_next(&self, a: usize) -> usize {
+        let n = self.len();
+        if self.clockwise_input {
+            (a + n - 1) % n
+        } else {
+            (a + 1) % n
+        }
+    }
+
+    /// The ring position before `a` in counter-clockwise order.
+    #[inline]
+    fn ccw_prev(&self, a: usize) -> usize {
+        let n = self.len();
+        if self.clockwise_input {
+            (a + 1) % n
+        } else {
+            (a + n - 1) % n
+        }
+    }
+
+    /// Is the chord between ring positions `a` and `b` a *diagonal*: does its
+    /// open segment lie in the polygon's open interior? Exact (kernel
+    /// predicates only), O(n).
+    ///
+    /// Boundary edges, `a == b` and out-of-range positions are not
+    /// diagonals; neither is a chord through a vertex (e.g. along a straight
+    /// run of the boundary) or one that touches an edge.
+    ///
+    /// Why the test suffices: the open chord is connected and, once it is
+    /// known to meet the boundary nowhere, lies entirely inside or entirely
+    /// outside (Jordan); near `a` it is inside iff it leaves `a` strictly
+    /// into the interior angle. It meets a closed edge not incident to `a` or
+    /// `b` iff the closed segments intersect (a simple polygon has no vertex
+    /// on a non-incident edge, so such a meeting is never at `a` or `b`); it
+    /// meets an edge `ax` beyond `a` only if the two are collinear and
+    /// overlap, i.e. iff `x` is on the open chord (`b` cannot lie inside the
+    /// edge `ax`, again by simplicity), and likewise at `b`.
+    pub fn is_diagonal(&self, a: usize, b: usize) -> bool {
+        let n = self.len();
+        if a >= n || b >= n || a == b || self.ccw_next(a) == b || self.ccw_next(b) == a {
+            return false;
+        }
+        let v = self.vertices();
+        let (pa, pb) = (v[a], v[b]);
+        if !self.leaves_into_interior(a, pb) {
+            return false;
+        }
+        // Bounding boxes (exact coordinate comparisons) skip the edges far
+        // from the chord: an edge that meets the chord meets its box.
+        let lo = [pa[0].min(pb[0]), pa[1].min(pb[1])];
+        let hi = [pa[0].max(pb[0]), pa[1].max(pb[1])];
+        for u in 0..n {
+            let w = (u + 1) % n;
+            let (pu, pw) = (v[u], v[w]);
+            if (pu[0] < lo[0] && pw[0] < lo[0])
+                || (pu[0] > hi[0] && pw[0] > hi[0])
+                || (pu[1] < lo[1] && pw[1] < lo[1])
+                || (pu[1] > hi[1] && pw[1] > hi[1])
+            {
+                continue;
+            }
+            let incident = [u, w].iter().any(|&x| x == a || x == b);
+            if incident {
+                // The far endpoint(s) of an edge at a or b on the open chord.
+                if (u != a && u != b && on_open_segment(pu, pa, pb))
+                    || (w != a && w != b && on_open_segment(pw, pa, pb))
+                {
+                    return false;
+                }
+            } else if segments_intersect(pa, pb, pu, pw) {
+                return false;
+            }
+        }
+        true
+    }
+
+    /// Does the direction `target − vertex a` point strictly into the
+    /// interior angle at `a`? The interior is left of every counter-clockwise
+    /// edge, so the angle sweeps counter-clockwise from the ray towards the
+    /// next vertex to the ray towards the previous one.
+    fn leaves_into_interior(&self, a: usize, target: Point) -> bool {
+        let v = self.vertices();
+        let (o, next, prev) = (v[a], v[self.ccw_next(a)], v[self.ccw_prev(a)]);
+        let left_of_next = orient_sign(o, next, target);
+        let left_of_prev = orient_sign(o, prev, target);
+        match orient_sign(o, next, prev) {
+            // A convex corner: strictly left of `next`, strictly right of `prev`.
+            1 => left_of_next > 0 && left_of_prev < 0,
+            // A reflex corner: outside the closed convex exterior wedge that
+            // sweeps from `prev` to `next`.
+            -1 => !(left_of_prev >= 0 && left_of_next <= 0),
+            // A straight corner (a simple polygon never folds back): the open
+            // half-plane left of `next`.
+            _ => left_of_next > 0,
+        }
+    }
+
+    /// Is every vertex a strict left turn (a strictly convex polygon)? Then
+    /// every chord that is not a boundary edge is a diagonal.
+    pub fn is_strictly_convex(&self) -> bool {
+        let v = self.vertices();
+        (0..self.len()).all(|a| orient_sign(v[self.ccw_prev(a)], v[a], v[self.ccw_next(a)]) > 0)
+    }
 }
 
 #[cfg(test)]
@@ -187,6 +293,39 @@ mod tests {
         let q = SimplePolygon::new(&closed).unwrap();
         assert!(!q.is_clockwise_input());
         assert_eq!(q.len(), 4);
+    }
+
+    #[test]
+    fn diagonals_of_an_l_shape_and_a_straight_run() {
+        // Clockwise L-shape; the reflex corner is position 3.
+        let l = [
+            [0.0, 0.0],
+            [0.0, 2.0],
+            [1.0, 2.0],
+            [1.0, 1.0],
+            [2.0, 1.0],
+            [2.0, 0.0],
+        ];
+        let p = SimplePolygon::new(&l).unwrap();
+        let mut diagonals = Vec::new();
+        for a in 0..6 {
+            for b in a + 1..6 {
+                assert_eq!(p.is_diagonal(a, b), p.is_diagonal(b, a));
+                if p.is_diagonal(a, b) {
+                    diagonals.push([a, b]);
+                }
+            }
+        }
+        assert_eq!(diagonals, [[0, 2], [0, 3], [0, 4], [1, 3], [3, 5]]);
+        assert!(!p.is_strictly_convex());
+        // 0-2 runs along the boundary through the straight vertex 1.
+        let t = SimplePolygon::new(&[[0.0, 0.0], [1.0, 0.0], [2.0, 0.0], [1.0, 1.0]]).unwrap();
+        assert!(!t.is_diagonal(0, 2) && t.is_diagonal(1, 3) && !t.is_diagonal(0, 1));
+        assert!(!t.is_strictly_convex());
+        let square = SimplePolygon::new(&[[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]]).unwrap();
+        assert!(
+            square.is_strictly_convex() && square.is_diagonal(0, 2) && !square.is_diagonal(4, 0)
+        );
     }
 
     #[test]

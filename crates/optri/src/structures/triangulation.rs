@@ -89,7 +89,6 @@ impl Triangulation {
 
     /// Wraps triangles of a simple polygon given as ring positions,
     /// orienting each counter-clockwise.
-    #[allow(dead_code)] // the polygon criteria (area, min-weight) use it next
     pub(crate) fn from_polygon_positions(
         polygon: &SimplePolygon,
         triangles: Vec<[u32; 3]>,
