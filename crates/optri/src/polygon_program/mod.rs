@@ -15,7 +15,7 @@
 //! the recursion is exact for every objective whose [`combine`] is associative
 //! and monotone — sums (additive objectives: total length) and maxima or
 //! minima (bottleneck objectives: longest edge, smallest or largest area).
-//! O(k³) time after `k²/2` chord tests, O(k²) memory.
+//! O(k³) time after `k²/2` chord tests, O(k²) memory (two tables of k² cells).
 //!
 //! Ties: for each sub-problem the first split corner `m` (in increasing order)
 //! whose value is strictly [`better`] than all earlier ones wins, so the
@@ -66,14 +66,18 @@ pub(crate) fn optimal_triangulation<O: Objective>(
         return None;
     }
     // A cell per chord (i, j), i < j: the best value of sub-problem (i, j)
-    // and its split corner, stored together because the inner loop reads the
-    // column cell (m, j) with stride k, and one cache miss is cheaper than two.
+    // and its split corner. The inner loop walks row i (cells (i, m)) and
+    // column j (cells (m, j)); the column is kept a second time, transposed,
+    // so both walks are sequential in memory (a strided column walk misses
+    // the cache on every step once k² cells exceed it).
     const INFEASIBLE: u32 = u32::MAX; // not usable, or no allowed triangulation
     const EDGE: u32 = u32::MAX - 1; // a boundary edge: nothing inside
     let at = |i: usize, j: usize| i * k + j;
     let mut cells = vec![(objective.empty(), INFEASIBLE); k * k];
+    let mut by_end = vec![(objective.empty(), INFEASIBLE); k * k]; // by_end[j*k + i] = cells[i*k + j]
     for i in 0..k - 1 {
         cells[at(i, i + 1)].1 = EDGE;
+        by_end[at(i + 1, i)].1 = EDGE;
     }
     let with = |v: O::Value, extra: Option<O::Value>| match extra {
         Some(e) => objective.combine(v, e),
@@ -88,8 +92,12 @@ pub(crate) fn optimal_triangulation<O: Objective>(
             }
             let mut best = objective.empty();
             let mut best_m = INFEASIBLE;
+            let (row, column) = (
+                &cells[at(i, 0)..at(i, 0) + k],
+                &by_end[at(j, 0)..at(j, 0) + k],
+            );
             for m in i + 1..j {
-                let (left, right) = (cells[at(i, m)], cells[at(m, j)]);
+                let (left, right) = (row[m], column[m]);
                 if left.1 == INFEASIBLE || right.1 == INFEASIBLE || !is_triangle(i, m, j) {
                     continue;
                 }
@@ -107,6 +115,7 @@ pub(crate) fn optimal_triangulation<O: Objective>(
                 }
             }
             cells[at(i, j)] = (best, best_m);
+            by_end[at(j, i)] = (best, best_m);
         }
     }
     let mut triangles = Vec::with_capacity(k - 2);
