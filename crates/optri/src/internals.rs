@@ -10,3 +10,17 @@ pub use crate::criteria::greedy::{
 pub use crate::criteria::min_weight::MAX_POINTS as MIN_WEIGHT_MAX_POINTS;
 pub use crate::criteria::minmax_length::{minmax_length_cubic, minmax_length_with, SMALL_REGION};
 pub use crate::structures::planar_graph::{Face, PlanarGraph};
+
+/// The area criteria on points in convex position by Klincsek's cubic
+/// program (the reference Algorithm 44 is measured against): `maxmin`
+/// selects MaxMin, else MinMax. Triangles as distinct indices.
+pub fn area_by_polygon_program(points: &crate::PointSet, maxmin: bool) -> Vec<[u32; 3]> {
+    use crate::criteria::area::polygon::{convex_polygon_program, AreaBottleneck};
+    let hull = crate::spatial::convex_hull_cycle(points.points());
+    let kind = if maxmin {
+        AreaBottleneck::MaxMin
+    } else {
+        AreaBottleneck::MinMax
+    };
+    convex_polygon_program(points.points(), &hull, kind)
+}

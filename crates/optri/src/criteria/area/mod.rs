@@ -30,7 +30,7 @@
 
 mod convex;
 mod decision;
-mod polygon;
+pub(crate) mod polygon;
 
 pub use decision::{maxmin_area_at_least, MaxMinAreaDecision};
 

@@ -1,0 +1,73 @@
+//! Times the area criteria on points in strictly convex position: Algorithm
+//! 44 (the product, `optri::triangulate`) against Klincsek's cubic program on
+//! the same input, alternating runs, and reports peak memory.
+//!
+//! ```sh
+//! cargo build --release -p optri-bench --bin area_timing
+//! target/release/area_timing ratio 500 1000 2000     # product vs cubic, both criteria
+//! target/release/area_timing scale 2000 4000 8000    # product only
+//! ```
+
+use optri::{triangulate, Criterion, PointSet};
+use optri_oracle::inputs::convex_lens;
+use rand::{rngs::StdRng, SeedableRng};
+use std::time::Instant;
+
+const SEED_CONVEX: u64 = 44;
+
+fn secs<T>(f: impl FnOnce() -> T) -> (T, f64) {
+    let start = Instant::now();
+    let out = f();
+    (out, start.elapsed().as_secs_f64())
+}
+
+fn peak_rss_kb() -> String {
+    std::fs::read_to_string("/proc/self/status")
+        .ok()
+        .and_then(|s| {
+            s.lines()
+                .find(|l| l.starts_with("VmHWM"))
+                .map(|l| l.split_whitespace().nth(1).unwrap_or("?").to_string())
+        })
+        .unwrap_or_else(|| "?".into())
+}
+
+fn median(mut v: Vec<f64>) -> f64 {
+    v.sort_by(f64::total_cmp);
+    v[v.len() / 2]
+}
+
+fn main() {
+    let mut args = std::env::args().skip(1);
+    let mode = args.next().unwrap_or_else(|| "ratio".into());
+    let sizes: Vec<usize> = args.map(|a| a.parse().expect("a size")).collect();
+    let runs: usize = std::env::var("RUNS").ok().and_then(|r| r.parse().ok()).unwrap_or(1);
+    for n in sizes {
+        let points = convex_lens(&mut StdRng::seed_from_u64(SEED_CONVEX), n);
+        let ps = PointSet::new(&points).unwrap();
+        for (criterion, maxmin) in [(Criterion::MaxminArea, true), (Criterion::MinmaxArea, false)] {
+            let mut product = Vec::new();
+            let mut cubic = Vec::new();
+            for _ in 0..runs {
+                let (solution, t) = secs(|| triangulate(&ps, criterion).unwrap());
+                solution.triangulation.validate().unwrap();
+                product.push(t);
+                if mode == "ratio" {
+                    let (_, t) = secs(|| optri::internals::area_by_polygon_program(&ps, maxmin));
+                    cubic.push(t);
+                }
+            }
+            if mode == "ratio" {
+                let (p, c) = (median(product.clone()), median(cubic.clone()));
+                println!(
+                    "n={n} {}: algorithm 44 {product:.3?} s, cubic {cubic:.3?} s, median ratio cubic/product {:.1}",
+                    criterion.name(),
+                    c / p
+                );
+            } else {
+                println!("n={n} {}: algorithm 44 {product:.3?} s", criterion.name());
+            }
+        }
+        println!("  peak RSS so far: {} kB", peak_rss_kb());
+    }
+}
