@@ -11,6 +11,7 @@
 //! | `greedy` | `greedy` | Levcopoulos & Lingas 1990; Dickerson et al. 1997 |
 //! | `min-weight` | `min_weight` | Klincsek 1980 |
 
+pub(crate) mod area_general;
 pub(crate) mod delaunay;
 pub(crate) mod greedy;
 pub(crate) mod min_weight;

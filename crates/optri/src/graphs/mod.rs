@@ -15,3 +15,4 @@ pub use delaunay::{delaunay, delaunay_edges};
 pub use gabriel_graph::gabriel_graph;
 pub use minimum_spanning_tree::minimum_spanning_tree;
 pub use relative_neighborhood_graph::relative_neighborhood_graph;
+pub(crate) use relative_neighborhood_graph::rng_from_delaunay;
