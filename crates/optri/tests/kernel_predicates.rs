@@ -763,3 +763,59 @@ fn flat_corners_are_0_or_180_degrees() {
     assert_eq!(compare_corner_angles([o, e, w], [o, n, [0.0, -5.0]]), Equal);
     assert_eq!(compare_corner_angles([o, e, e], [o, w, w]), Equal);
 }
+
+/// Two triangles of (nearly) equal area: `def` is `abc` sheared along `ab`
+/// (`c` moved parallel to `ab`: exactly the same area), mirrored by a grid
+/// symmetry and translated, then one corner nudged by at most one unit.
+fn nearly_equal_areas(rng: &mut StdRng) -> [IntPoint; 6] {
+    let o = corner(rng);
+    let r = |rng: &mut StdRng, bits: u32| rng.gen_range(-(1i64 << bits)..=1 << bits);
+    let a = add(o, [r(rng, 20), r(rng, 20)]);
+    let d = [r(rng, 24), r(rng, 24)];
+    let b = add(a, d);
+    let c = add(a, [r(rng, 24), r(rng, 24)]);
+    let t = r(rng, 3);
+    let c2 = add(c, [t * d[0], t * d[1]]);
+    let k = rng.gen_range(0..8);
+    let shift = add(corner(rng), [r(rng, 20), r(rng, 20)]);
+    let image = |p: IntPoint| add(shift, symmetry([p[0] - o[0], p[1] - o[1]], k));
+    let nudge = if rng.gen_bool(0.5) {
+        [0, 0]
+    } else {
+        [rng.gen_range(-1..=1), rng.gen_range(-1..=1)]
+    };
+    [a, b, c, image(a), image(b), add(image(c2), nudge)]
+}
+
+#[test]
+fn area_comparison_at_the_coordinate_limits_is_scale_invariant() {
+    let mut rng = StdRng::seed_from_u64(2201);
+    let twice_area_int = |a: IntPoint, b: IntPoint, c: IntPoint| {
+        ((b[0] - a[0]) as i128 * (c[1] - a[1]) as i128
+            - (b[1] - a[1]) as i128 * (c[0] - a[0]) as i128)
+            .abs()
+    };
+    let (mut equal, mut unequal) = (0, 0);
+    for _ in 0..4000 {
+        let [a, b, c, d, e, f] = nearly_equal_areas(&mut rng);
+        let expected = twice_area_int(a, b, c).cmp(&twice_area_int(d, e, f));
+        (equal, unequal) = if expected.is_eq() {
+            (equal + 1, unequal)
+        } else {
+            (equal, unequal + 1)
+        };
+        for scale in limit_scales() {
+            let [fa, fb, fc, fd, fe, ff] = [a, b, c, d, e, f].map(|p| scaled(p, scale));
+            assert_eq!(
+                compare_areas([fa, fb, fc], [fd, fe, ff]),
+                expected,
+                "areas {a:?} {b:?} {c:?} vs {d:?} {e:?} {f:?} scaled by {scale:e}"
+            );
+            assert_eq!(
+                compare_areas([fd, ff, fe], [fb, fa, fc]),
+                expected.reverse()
+            );
+        }
+    }
+    assert!(equal > 1000 && unequal > 1000, "{equal} {unequal}");
+}

@@ -94,7 +94,36 @@ pub fn dot_sign(o: Point, a: Point, b: Point) -> i32 {
 }
 
 /// Exact comparison of triangle areas `|abc|` versus `|def|` (unsigned).
+///
+/// Filter: the rounded doubled area `c̃ = fl(fl(bx·cy) − fl(by·cx))` of the
+/// rounded differences carries an absolute error below `γ₄·P`, where `P` is
+/// the exact permanent `|BxCy| + |ByCx|` (two rounded differences and a
+/// product: `γ₃` per term; the subtraction: one more `u`). Taking absolute
+/// values adds nothing, and the final subtraction adds `u(1 + γ₄)(P₁ + P₂)`,
+/// so the computed difference is within `5.0001u·(P₁ + P₂)` of `|D₁| − |D₂|`.
+/// The computed permanents are at least `(1 − γ₄)` times the exact ones and
+/// the tolerance is evaluated with relative error below `γ₂`, so
+/// `8u·(p̃₁ + p̃₂)` exceeds the error. Products of two differences lie in
+/// `[2⁻³⁸⁸, 2⁴⁰⁴]` (module docs), so nothing underflows.
 pub fn compare_areas(tri1: [Point; 3], tri2: [Point; 3]) -> Ordering {
+    let rounded = |[a, b, c]: [Point; 3]| {
+        let (l, r) = ((b[0] - a[0]) * (c[1] - a[1]), (b[1] - a[1]) * (c[0] - a[0]));
+        ((l - r).abs(), l.abs() + r.abs())
+    };
+    let ((d1, p1), (d2, p2)) = (rounded(tri1), rounded(tri2));
+    let diff = d1 - d2;
+    let tolerance = 8.0 * U * (p1 + p2);
+    if diff > tolerance {
+        return Ordering::Greater;
+    }
+    if -diff > tolerance {
+        return Ordering::Less;
+    }
+    exact_area_difference(tri1, tri2)
+}
+
+/// `|D₁| − |D₂|` for the doubled signed areas `D`, exactly; returns its sign.
+fn exact_area_difference(tri1: [Point; 3], tri2: [Point; 3]) -> Ordering {
     let s1 = orient_sign(tri1[0], tri1[1], tri1[2]) as f64;
     let s2 = orient_sign(tri2[0], tri2[1], tri2[2]) as f64;
     // |D1| - |D2| = s1*D1 - s2*D2, with D = (b-a)x(c-a) expanded exactly.
