@@ -165,10 +165,23 @@ pub(crate) struct Candidate {
     pub bottleneck: [u32; 3],
 }
 
+/// Faces of `RNG ∪ hull` with more corners than this are not given to the
+/// cubic face program (about 12 ns · k³ measured, so some 12 s at the cap):
+/// if any face is larger, candidates 2 (step 3) and 3 are skipped and the
+/// result is the better of Delaunay and Algorithm 76. Near-convex inputs
+/// (most points on the hull) are the ones that reach it; points in convex
+/// position belong to the convex-polygon algorithm anyway.
+pub(crate) const MAX_FACE_CORNERS: usize = 1000;
+
 /// Every candidate, in [`CANDIDATE_NAMES`] order, with what the algorithms
 /// learnt on the way.
 pub(crate) struct Candidates {
+    /// The candidates computed: all four, or without the face programs
+    /// (Algorithm 75's step 3 and the `RNG ∪ hull` optimum) when a face
+    /// exceeds the cap.
     pub list: Vec<Candidate>,
+    /// Corners of the largest face of `RNG ∪ hull`.
+    pub largest_face: usize,
     /// `DT`'s smallest angle as a corner `[apex, a, b]`.
     pub smallest_angle: [u32; 3],
     /// Did Algorithm 75 run its step 3 (`α* ≥ 30°`)?
@@ -208,6 +221,16 @@ pub(crate) fn area_general(
 
 /// The four candidates of the module docs for `objective`.
 pub(crate) fn candidates(points: &PointSet, objective: AreaObjective) -> Result<Candidates> {
+    candidates_with_cap(points, objective, MAX_FACE_CORNERS)
+}
+
+/// [`candidates`] with the face-size cap `max_face` instead of
+/// [`MAX_FACE_CORNERS`].
+fn candidates_with_cap(
+    points: &PointSet,
+    objective: AreaObjective,
+    max_face: usize,
+) -> Result<Candidates> {
     let pts = points.points();
     let g = DelaunayGraph::with_topology(pts)?;
     let with_bottleneck = |name: &'static str, triangles: Vec<[u32; 3]>| Candidate {
@@ -219,20 +242,24 @@ pub(crate) fn candidates(points: &PointSet, objective: AreaObjective) -> Result<
     let [o, a, b] = smallest_angle.map(|v| pts[v as usize]);
     let thirty_degrees = angle_at_least_30_degrees(o, a, b);
     let faces = rng_hull_faces(pts, &g);
-    let algorithm_75 = if thirty_degrees {
-        triangulate_faces(pts, &faces, objective, true)?
-    } else {
-        g.triangles.clone()
-    };
-    let rng_hull = triangulate_faces(pts, &faces, objective, false)?;
+    let largest_face = faces.iter().map(Vec::len).max().unwrap_or(0);
+    let mut list = vec![with_bottleneck(DELAUNAY, g.triangles.clone())];
+    if !thirty_degrees {
+        list.push(with_bottleneck(ALGORITHM_75, g.triangles.clone()));
+    }
+    if largest_face <= max_face {
+        if thirty_degrees {
+            let fat = triangulate_faces(pts, &faces, objective, true)?;
+            list.push(with_bottleneck(ALGORITHM_75, fat));
+        }
+        let rng_hull = triangulate_faces(pts, &faces, objective, false)?;
+        list.push(with_bottleneck(RNG_HULL_OPTIMUM, rng_hull));
+    }
     let (algorithm_76, flips) = algorithm_76(pts, &g, smallest_angle);
+    list.push(with_bottleneck(ALGORITHM_76, algorithm_76));
     Ok(Candidates {
-        list: vec![
-            with_bottleneck(DELAUNAY, g.triangles.clone()),
-            with_bottleneck(ALGORITHM_75, algorithm_75),
-            with_bottleneck(RNG_HULL_OPTIMUM, rng_hull),
-            with_bottleneck(ALGORITHM_76, algorithm_76),
-        ],
+        list,
+        largest_face,
         smallest_angle,
         thirty_degrees,
         flips,
@@ -745,6 +772,47 @@ mod tests {
         eprintln!("{cases} cases, Algorithm 76 flipped in {flipped}, step 3 of Algorithm 75 ran in {thirty}");
     }
 
+    /// With the face programs capped away, the candidates are Delaunay,
+    /// Algorithm 75 (= Delaunay when its step 3 does not run) and
+    /// Algorithm 76, and the result is still valid and no worse than
+    /// Delaunay.
+    #[test]
+    fn face_cap_skips_the_face_programs() {
+        const SEED: u64 = 0xA4EA_0005;
+        let mut rng = StdRng::seed_from_u64(SEED);
+        let mut capped = 0;
+        for _ in 0..40 {
+            let ps = PointSet::new(&sample(&mut rng, "real", 30)).unwrap();
+            let pts = ps.points();
+            for objective in OBJECTIVES {
+                let c = candidates_with_cap(&ps, objective, 5).unwrap();
+                if c.largest_face <= 5 {
+                    assert_eq!(c.list.len(), 4);
+                    continue;
+                }
+                let names: Vec<&str> = c.list.iter().map(|k| k.name).collect();
+                if c.thirty_degrees {
+                    assert_eq!(names, [DELAUNAY, ALGORITHM_76]);
+                } else {
+                    assert_eq!(names, [DELAUNAY, ALGORITHM_75, ALGORITHM_76]);
+                }
+                let dt = value(pts, &c.list[0].triangles, objective);
+                for k in &c.list {
+                    Triangulation::from_distinct(&ps, k.triangles.clone())
+                        .validate()
+                        .unwrap();
+                    assert!(at_least_as_good(
+                        objective,
+                        &value(pts, &k.triangles, objective),
+                        &dt
+                    ));
+                }
+                capped += 1;
+            }
+        }
+        assert!(capped >= 60, "{capped}");
+    }
+
     /// The bound never contradicts the exhaustive optimum, the result never
     /// beats it, and `exact` results attain it (n ≤ 9).
     #[test]
@@ -1058,5 +1126,204 @@ mod tests {
             "{thirty_triangulations} {step_3}"
         );
         eprintln!("{sets} sets, {thirty_triangulations} 30°-triangulations, Algorithm 75 step 3 in {step_3} runs");
+    }
+
+    /// Prints the approximation ratios optimum/result (MaxMin) and
+    /// result/optimum (MinMax), mean and worst, per candidate and for the
+    /// returned result, against the exhaustive optimum (n ≤ 9), with the
+    /// improvement over Delaunay and how often each candidate wins. Run with
+    /// `cargo test -p optri --lib area_general_ratios -- --ignored --nocapture`.
+    #[test]
+    #[ignore]
+    fn area_general_ratios() {
+        const SEED: u64 = 0xA4EA_0076;
+        const SETS_PER_SIZE: usize = 300;
+        let mut rng = StdRng::seed_from_u64(SEED);
+        let f = |r: &BigRational| oracle::rational_to_f64(r);
+        for family in ["real", "uniform"] {
+            for objective in OBJECTIVES {
+                // Per candidate (+ the result): sum and worst of the ratio to
+                // the optimum, sum and best of the improvement over DT.
+                let mut ratio = [(0.0f64, 1.0f64); 5];
+                let mut over_dt = [(0.0f64, 1.0f64); 5];
+                let (mut strict_wins, mut attains_best, mut optimal) = ([0; 4], [0; 4], [0; 5]);
+                let (mut cases, mut exact, mut result_optimal) = (0, 0, 0);
+                for n in 5..=9 {
+                    for _ in 0..SETS_PER_SIZE {
+                        let Ok(ps) = PointSet::new(&sample(&mut rng, family, n)) else {
+                            continue;
+                        };
+                        let pts = ps.points();
+                        let optimum = oracle::all_triangulations(pts)
+                            .iter()
+                            .map(|t| value(pts, t, objective))
+                            .reduce(|a, b| {
+                                if at_least_as_good(objective, &a, &b) {
+                                    a
+                                } else {
+                                    b
+                                }
+                            })
+                            .unwrap();
+                        let c = candidates(&ps, objective).unwrap();
+                        let r = area_general(&ps, objective).unwrap();
+                        let mut values: Vec<BigRational> = c
+                            .list
+                            .iter()
+                            .map(|k| value(pts, &k.triangles, objective))
+                            .collect();
+                        values.push(value(pts, &r.triangles, objective));
+                        let best = &values[4];
+                        for k in 0..4 {
+                            if &values[k] == best {
+                                attains_best[k] += 1;
+                                if (0..4).all(|o| o == k || &values[o] != best) {
+                                    strict_wins[k] += 1;
+                                }
+                            }
+                        }
+                        for (k, v) in values.iter().enumerate() {
+                            let (q, d) = match objective {
+                                AreaObjective::MaxMin => {
+                                    (f(&(optimum.clone() / v)), f(&(v / &values[0])))
+                                }
+                                AreaObjective::MinMax => {
+                                    (f(&(v / &optimum)), f(&(values[0].clone() / v)))
+                                }
+                            };
+                            ratio[k] = (ratio[k].0 + q, ratio[k].1.max(q));
+                            over_dt[k] = (over_dt[k].0 + d, over_dt[k].1.max(d));
+                            optimal[k] += (v == &optimum) as usize;
+                        }
+                        exact += r.exact as usize;
+                        result_optimal += (values[4] == optimum) as usize;
+                        cases += 1;
+                    }
+                }
+                assert!(cases >= 4 * SETS_PER_SIZE, "{cases}");
+                let what = match objective {
+                    AreaObjective::MaxMin => "MaxMin area: optimum / candidate",
+                    AreaObjective::MinMax => "MinMax area: candidate / optimum",
+                };
+                println!("\n{what} — {family} points, n = 5..9, {cases} sets (seed {SEED:#x})");
+                println!(
+                    "{:<56} {:>8} {:>8} {:>8} {:>9} {:>9} {:>7} {:>7}",
+                    "candidate",
+                    "mean",
+                    "worst",
+                    "optimal",
+                    "vs DT avg",
+                    "vs DT max",
+                    "attains",
+                    "strict"
+                );
+                let names = [
+                    DELAUNAY,
+                    "Algorithm 75",
+                    "RNG ∪ hull optimum",
+                    "Algorithm 76",
+                    "returned result (best of the four)",
+                ];
+                for k in 0..5 {
+                    let (wins, strict) = if k < 4 {
+                        (attains_best[k].to_string(), strict_wins[k].to_string())
+                    } else {
+                        (String::new(), String::new())
+                    };
+                    println!(
+                        "{:<56} {:>8.4} {:>8.4} {:>8} {:>9.4} {:>9.4} {:>7} {:>7}",
+                        names[k],
+                        ratio[k].0 / cases as f64,
+                        ratio[k].1,
+                        optimal[k],
+                        over_dt[k].0 / cases as f64,
+                        over_dt[k].1,
+                        wins,
+                        strict
+                    );
+                }
+                println!(
+                    "certified exact: {exact} of {cases}; actually optimal: {result_optimal} of {cases}"
+                );
+            }
+        }
+    }
+
+    /// Prints the running time of each step at n = 1000 and 10⁴ uniform
+    /// points. Run with `cargo test --release -p optri --lib
+    /// area_general_timings -- --ignored --nocapture`.
+    #[test]
+    #[ignore]
+    fn area_general_timings() {
+        use std::time::Instant;
+        const SEED: u64 = 0xA4EA_1000;
+        let mut rng = StdRng::seed_from_u64(SEED);
+        for n in [1000, 10_000] {
+            let input: Vec<Point> = (0..n)
+                .map(|_| [rng.gen_range(0.0..1.0), rng.gen_range(0.0..1.0)])
+                .collect();
+            let ps = PointSet::new(&input).unwrap();
+            let pts = ps.points();
+            let clock = Instant::now();
+            let g = DelaunayGraph::with_topology(pts).unwrap();
+            let t_dt = clock.elapsed();
+            let clock = Instant::now();
+            let faces = rng_hull_faces(pts, &g);
+            let t_faces = clock.elapsed();
+            let largest = faces.iter().map(Vec::len).max().unwrap();
+            let cubes: usize = faces.iter().map(|f| f.len().pow(3)).sum();
+            let clock = Instant::now();
+            let _ = triangulate_faces(pts, &faces, AreaObjective::MaxMin, false).unwrap();
+            let t_maxmin = clock.elapsed();
+            let clock = Instant::now();
+            let _ = triangulate_faces(pts, &faces, AreaObjective::MinMax, false).unwrap();
+            let t_minmax = clock.elapsed();
+            let clock = Instant::now();
+            let (_, flips) = algorithm_76(pts, &g, smallest_angle(pts, &g.triangles));
+            let t_76 = clock.elapsed();
+            let hull = convex_hull_cycle(pts);
+            let clock = Instant::now();
+            let _ = certified_bound(pts, &hull, AreaObjective::MaxMin);
+            let t_bound_max = clock.elapsed();
+            let clock = Instant::now();
+            let _ = certified_bound(pts, &hull, AreaObjective::MinMax);
+            let t_bound_min = clock.elapsed();
+            let mut totals = Vec::new();
+            for objective in OBJECTIVES {
+                let clock = Instant::now();
+                let r = area_general(&ps, objective).unwrap();
+                totals.push((objective, clock.elapsed(), r.algorithm, r.exact));
+            }
+            println!(
+                "n = {n}: Delaunay {t_dt:.2?}; RNG ∪ hull faces {t_faces:.2?} ({} faces, largest {largest} corners, Σk³ = {cubes}); \
+                 face programs MaxMin {t_maxmin:.2?}, MinMax {t_minmax:.2?}; Algorithm 76 {t_76:.2?} ({flips} flips); \
+                 bound MaxMin {t_bound_max:.2?}, MinMax {t_bound_min:.2?} (h = {})",
+                faces.len(),
+                hull.len()
+            );
+            for (objective, t, name, exact) in totals {
+                println!("  area_general {objective:?}: {t:.2?}, winner: {name}, exact: {exact}");
+            }
+        }
+        // Convex position: one face with every point, just under and over
+        // the cap.
+        for n in [900, 1500] {
+            let input: Vec<Point> = (0..n)
+                .map(|i| {
+                    let t = std::f64::consts::TAU * i as f64 / n as f64;
+                    [1e6 * t.cos(), 1e6 * t.sin()]
+                })
+                .collect();
+            let ps = PointSet::new(&input).unwrap();
+            let clock = Instant::now();
+            let c = candidates(&ps, AreaObjective::MaxMin).unwrap();
+            println!(
+                "{n} points on a circle: candidates {:.2?} (largest face {} corners, {} candidates, {} flips)",
+                clock.elapsed(),
+                c.largest_face,
+                c.list.len(),
+                c.flips
+            );
+        }
     }
 }
