@@ -9,7 +9,8 @@
 //! module.
 
 use crate::criteria::{
-    self, CriterionInfo, Diagnostics, Optimality, Options, PolygonSolver, Solved, Solver,
+    self, CertifiedBound, CriterionInfo, Diagnostics, Optimality, Options, PolygonSolver, Solved,
+    Solver,
 };
 use crate::error::{Error, Result, UnsupportedReason};
 use crate::graphs;
@@ -130,6 +131,9 @@ pub struct Solution {
     pub phases: Vec<Phase>,
     /// Counters the algorithm reported (may be empty).
     pub diagnostics: Diagnostics,
+    /// For a result that is not proven optimal, a certified bound on the
+    /// optimum when one is cheap (e.g. MaxMin area of a general point set).
+    pub bound: Option<CertifiedBound>,
 }
 
 /// Triangulates `points` by `criterion` with default [`Options`].
@@ -201,6 +205,7 @@ impl Solution {
             triangulation: solved.triangulation,
             phases,
             diagnostics: solved.diagnostics,
+            bound: solved.bound,
         }
     }
 }

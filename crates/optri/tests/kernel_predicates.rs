@@ -6,8 +6,8 @@
 //! 2^-142.
 
 use optri::kernel::{
-    compare_areas, compare_lengths, dot_sign, in_half_lune, in_lune, incircle_sign, orient_sign,
-    MAX_COORDINATE, MIN_COORDINATE,
+    angle_at_least_30_degrees, compare_areas, compare_corner_angles, compare_lengths, dot_sign,
+    in_half_lune, in_lune, incircle_sign, orient_sign, MAX_COORDINATE, MIN_COORDINATE,
 };
 use optri_oracle as oracle;
 use rand::rngs::StdRng;
@@ -496,4 +496,381 @@ fn compare_areas_on_near_ties_matches_exact_areas() {
     }
     assert_eq!(cases, 20_000);
     assert!(equal > 5_000, "{equal}");
+}
+
+// ---------------------------------------------------------------------------
+// Angle predicates: the 30° test and the comparison of two corner angles,
+// both degree-4 polynomials in the coordinate differences.
+
+/// Cross and dot product of `a − o` and `b − o`, exactly in i128 (differences
+/// below 2^30, so products of four stay below 2^122).
+fn cross_dot_int(o: IntPoint, a: IntPoint, b: IntPoint) -> (i128, i128) {
+    let (ux, uy) = ((a[0] - o[0]) as i128, (a[1] - o[1]) as i128);
+    let (vx, vy) = ((b[0] - o[0]) as i128, (b[1] - o[1]) as i128);
+    (ux * vy - uy * vx, ux * vx + uy * vy)
+}
+
+/// The definition: `u·v ≤ 0` or `4(u·v)² ≤ 3|u|²|v|²` (the brief's form, not
+/// the kernel's `3(u×v)² ≥ (u·v)²`).
+fn at_least_30_int(o: IntPoint, a: IntPoint, b: IntPoint) -> bool {
+    let (_, d) = cross_dot_int(o, a, b);
+    let (u2, v2) = (squared_length_int(a, o), squared_length_int(b, o));
+    // 3|u|²|v|² can reach 2^122 · 3: compare 4d² ≤ 3 u2 v2 as
+    // (2d)² ≤ 3 u2 v2 in i128 (below 2^125).
+    d <= 0 || 4 * d * d <= 3 * u2 * v2
+}
+
+/// Angle at `p[0]` versus angle at `q[0]`, by the definition: compare
+/// `cos θ = D/(|u||v|)` (decreasing), squared with signs, as exact rationals.
+fn compare_angles_int(p: [IntPoint; 3], q: [IntPoint; 3]) -> std::cmp::Ordering {
+    use oracle::{BigInt, BigRational};
+    let cos_key = |c: [IntPoint; 3]| {
+        let (_, d) = cross_dot_int(c[0], c[1], c[2]);
+        let n = squared_length_int(c[1], c[0]) * squared_length_int(c[2], c[0]);
+        // sign(d) · d² / (|u|²|v|²) orders like cos θ (all below 2^121).
+        BigRational::new(BigInt::from(d * d.abs()), BigInt::from(n))
+    };
+    // Larger cosine, smaller angle.
+    cos_key(q).cmp(&cos_key(p))
+}
+
+/// `v` rotated by `deg` degrees and scaled by `t`, rounded to integers.
+fn rotated(v: IntPoint, deg: f64, t: f64) -> IntPoint {
+    let (s, c) = deg.to_radians().sin_cos();
+    [
+        (t * (c * v[0] as f64 - s * v[1] as f64)).round() as i64,
+        (t * (s * v[0] as f64 + c * v[1] as f64)).round() as i64,
+    ]
+}
+
+/// A corner at `o` between `w` and `x·w + y·w⊥`, where `x/y` is a Pell
+/// approximation of √3 (`x² − 3y² = 1` or `−2`, after `iterations` steps of
+/// `(x, y) → (2x + 3y, x + 2y)`): its angle is within about `1/x²` of 30°,
+/// so `|3C² − D²|` is tiny next to `C² + D²` and the filter must defer.
+/// Differences stay below 2^30 for at most 14 steps.
+fn pell_corner(rng: &mut StdRng, o: IntPoint, iterations: u32) -> [IntPoint; 3] {
+    let (mut x, mut y): (i64, i64) = if rng.gen_bool(0.5) { (2, 1) } else { (1, 1) };
+    for _ in 0..iterations {
+        (x, y) = (2 * x + 3 * y, x + 2 * y);
+    }
+    let w = [rng.gen_range(-3..=3), rng.gen_range(1..=3)];
+    let m = rng.gen_range(1..=3);
+    let v = [x * w[0] - y * w[1], x * w[1] + y * w[0]];
+    let u = [m * w[0], m * w[1]];
+    if rng.gen_bool(0.5) {
+        [o, add(o, u), add(o, v)]
+    } else {
+        [o, add(o, v), add(o, u)]
+    }
+}
+
+/// A corner `(o, a, b)` whose angle is near 30° (a ray rotated by 30° and
+/// rounded, then nudged), near 0°, 90° or 180°, or anything.
+fn corner_near_30(rng: &mut StdRng) -> [IntPoint; 3] {
+    let o = corner(rng);
+    if rng.gen_bool(0.25) {
+        let iterations = rng.gen_range(3..=14);
+        return pell_corner(rng, o, iterations);
+    }
+    let bits = rng.gen_range(2..=28);
+    let r = |rng: &mut StdRng| rng.gen_range(-(1i64 << bits)..=1 << bits);
+    let mut u = [r(rng), r(rng)];
+    if u == [0, 0] {
+        u = [1, 0];
+    }
+    let deg = match rng.gen_range(0..6) {
+        0..=2 => 30.0,
+        3 => 0.0,
+        4 => [90.0, 180.0, 150.0][rng.gen_range(0..3)],
+        _ => rng.gen_range(0.0..180.0),
+    };
+    let sign = if rng.gen_bool(0.5) { 1.0 } else { -1.0 };
+    let t = rng.gen_range(0.5..2.0);
+    let mut v = rotated(u, sign * deg, t);
+    v = add(v, [rng.gen_range(-1..=1), rng.gen_range(-1..=1)]);
+    if v == [0, 0] {
+        v = u;
+    }
+    [o, add(o, u), add(o, v)]
+}
+
+#[test]
+fn thirty_degree_test_equals_exact_integer_evaluation_at_every_scale() {
+    let mut rng = StdRng::seed_from_u64(30);
+    let (mut yes, mut no, mut close) = (0, 0, 0);
+    let cases = 6000;
+    for _ in 0..cases {
+        let [o, a, b] = corner_near_30(&mut rng);
+        let expected = at_least_30_int(o, a, b);
+        (yes, no) = if expected {
+            (yes + 1, no)
+        } else {
+            (yes, no + 1)
+        };
+        // "Close": |E| is tiny next to its scale, so the filter cannot decide.
+        let (c, d) = cross_dot_int(o, a, b);
+        let e = 3 * c * c - d * d;
+        close += (d > 0 && e.unsigned_abs() < (c * c + d * d).unsigned_abs() >> 48) as usize;
+        for scale in limit_scales() {
+            let [fo, fa, fb] = [o, a, b].map(|p| scaled(p, scale));
+            assert_eq!(
+                angle_at_least_30_degrees(fo, fa, fb),
+                expected,
+                "30° at {o:?} between {a:?} and {b:?}, scaled by {scale:e}"
+            );
+            assert_eq!(angle_at_least_30_degrees(fo, fb, fa), expected);
+        }
+    }
+    assert!(
+        yes > 1500 && no > 1500 && close > 50,
+        "{yes} {no} {close} of {cases}"
+    );
+}
+
+#[test]
+fn corner_angle_comparison_equals_exact_integer_evaluation_at_every_scale() {
+    let mut rng = StdRng::seed_from_u64(3045);
+    let (mut equal, mut unequal, mut close) = (0, 0, 0);
+    let cases = 6000;
+    for _ in 0..cases {
+        // One case in five: two Pell corners, both within about 1/x² of
+        // 30°, whose angles differ by far less than the filter resolves.
+        let pell = rng.gen_range(0..5) == 0;
+        let p = if pell {
+            let (k, o) = (rng.gen_range(10..=14), corner(&mut rng));
+            pell_corner(&mut rng, o, k)
+        } else {
+            corner_near_30(&mut rng)
+        };
+        let (u, v) = (
+            [p[1][0] - p[0][0], p[1][1] - p[0][1]],
+            [p[2][0] - p[0][0], p[2][1] - p[0][1]],
+        );
+        // q: the same angle exactly (a grid symmetry, an integer multiple,
+        // or a rotation by the Pythagorean angle of (3, 4), which scales by
+        // 5), then possibly nudged; or an unrelated near-30° corner.
+        let o = corner(&mut rng);
+        let q = match if pell { 4 } else { rng.gen_range(0..4) } {
+            0 => {
+                let k = rng.gen_range(0..8);
+                [o, add(o, symmetry(u, k)), add(o, symmetry(v, k))]
+            }
+            1 => {
+                let (m1, m2) = (rng.gen_range(1..=3), rng.gen_range(1..=3));
+                [
+                    o,
+                    add(o, [m1 * u[0], m1 * u[1]]),
+                    add(o, [m2 * v[0], m2 * v[1]]),
+                ]
+            }
+            2 => {
+                let turn = |w: IntPoint| [3 * w[0] - 4 * w[1], 4 * w[0] + 3 * w[1]];
+                [o, add(o, turn(u)), add(o, turn(v))]
+            }
+            3 => corner_near_30(&mut rng),
+            _ => {
+                let k = rng.gen_range(10..=14);
+                pell_corner(&mut rng, o, k)
+            }
+        };
+        let q = if pell || rng.gen_bool(0.5) {
+            q
+        } else {
+            [
+                q[0],
+                q[1],
+                add(q[2], [rng.gen_range(-1..=1), rng.gen_range(-1..=1)]),
+            ]
+        };
+        if q[2] == q[0] {
+            continue;
+        }
+        let expected = compare_angles_int(p, q);
+        let ((cp, dp), (cq, dq)) = (
+            cross_dot_int(p[0], p[1], p[2]),
+            cross_dot_int(q[0], q[1], q[2]),
+        );
+        let (f1, f2) = (dq * cp.abs(), dp * cq.abs());
+        close += (f1 != f2
+            && (f1 - f2).unsigned_abs() < (f1.unsigned_abs() + f2.unsigned_abs()) >> 48)
+            as usize;
+        (equal, unequal) = if expected.is_eq() {
+            (equal + 1, unequal)
+        } else {
+            (equal, unequal + 1)
+        };
+        for scale in limit_scales() {
+            let fp = p.map(|x| scaled(x, scale));
+            let fq = q.map(|x| scaled(x, scale));
+            assert_eq!(
+                compare_corner_angles(fp, fq),
+                expected,
+                "angle {p:?} versus {q:?}, scaled by {scale:e}"
+            );
+            assert_eq!(compare_corner_angles(fq, fp), expected.reverse());
+            assert_eq!(
+                compare_corner_angles([fp[0], fp[2], fp[1]], fq),
+                expected,
+                "the angle does not depend on the order of its rays"
+            );
+        }
+    }
+    assert!(
+        equal > 1000 && unequal > 1000 && close > 30,
+        "{equal} {unequal} {close} of {cases}"
+    );
+}
+
+#[test]
+fn angle_predicates_equal_rational_evaluation_on_fractional_coordinates() {
+    use oracle::{to_rational, BigRational};
+    let mut rng = StdRng::seed_from_u64(3030);
+    let rational_cross_dot = |o: Point, a: Point, b: Point| {
+        let d = |p: Point, k: usize| to_rational(p[k]) - to_rational(o[k]);
+        let (ux, uy, vx, vy) = (d(a, 0), d(a, 1), d(b, 0), d(b, 1));
+        (
+            ux.clone() * vy.clone() - uy.clone() * vx.clone(),
+            ux * vx + uy * vy,
+        )
+    };
+    let zero = BigRational::from_integer(0.into());
+    let three = BigRational::from_integer(3.into());
+    let (mut yes, mut no, mut equal) = (0, 0, 0);
+    let cases = 6000;
+    for i in 0..cases {
+        let (scale, offset) = [
+            (1.0, 0.0),
+            (1e-3, 2f64.powi(40)),
+            (2f64.powi(-100), 2f64.powi(-80)),
+            (2f64.powi(150), -(2f64.powi(152))),
+        ][i % 4];
+        let pt = |rng: &mut StdRng| {
+            [
+                offset + scale * rng.gen_range(-1.0..1.0),
+                offset + scale * rng.gen_range(-1.0..1.0),
+            ]
+        };
+        let (o, a) = (pt(&mut rng), pt(&mut rng));
+        let u = [a[0] - o[0], a[1] - o[1]];
+        let deg: f64 = if rng.gen_bool(0.7) {
+            30.0
+        } else {
+            rng.gen_range(0.0..180.0)
+        };
+        let (s, c) = deg.to_radians().sin_cos();
+        let b = [
+            next_up_or_down(o[0] + c * u[0] - s * u[1], &mut rng),
+            next_up_or_down(o[1] + s * u[0] + c * u[1], &mut rng),
+        ];
+        if a == o || b == o {
+            continue;
+        }
+        let (cr, dt) = rational_cross_dot(o, a, b);
+        let expected =
+            dt <= zero || dt.clone() * dt.clone() <= three.clone() * cr.clone() * cr.clone();
+        (yes, no) = if expected {
+            (yes + 1, no)
+        } else {
+            (yes, no + 1)
+        };
+        assert_eq!(
+            angle_at_least_30_degrees(o, a, b),
+            expected,
+            "30° {o:?} {a:?} {b:?}"
+        );
+        // Against a mirrored copy of the corner, nudged by an ulp: the same
+        // or an almost equal angle.
+        let mirror = |p: Point| [2.0 * o[0] - p[0], p[1]];
+        let q = [
+            o,
+            mirror(a),
+            [next_up_or_down(mirror(b)[0], &mut rng), mirror(b)[1]],
+        ];
+        if q[2] == o {
+            continue;
+        }
+        let (cq, dq) = rational_cross_dot(q[0], q[1], q[2]);
+        let abs = |r: BigRational| if r < zero { -r } else { r };
+        // θp < θq ⟺ D_q|C_p| − D_p|C_q| < 0, for non-flat corners.
+        if cr != zero && cq != zero {
+            let f = dq * abs(cr) - dt * abs(cq);
+            let want = f.cmp(&zero);
+            equal += want.is_eq() as usize;
+            assert_eq!(
+                compare_corner_angles([o, a, b], q),
+                want,
+                "{o:?} {a:?} {b:?} vs {q:?}"
+            );
+        }
+    }
+    assert!(yes > 1000 && no > 1000 && equal > 100, "{yes} {no} {equal}");
+}
+
+#[test]
+fn flat_corners_are_0_or_180_degrees() {
+    let (o, e, w, n) = ([0.0, 0.0], [1.0, 0.0], [-2.0, 0.0], [0.0, 1.0]);
+    assert!(!angle_at_least_30_degrees(o, e, [3.0, 0.0]));
+    assert!(angle_at_least_30_degrees(o, e, w));
+    assert!(angle_at_least_30_degrees(o, e, n));
+    use std::cmp::Ordering::*;
+    assert_eq!(compare_corner_angles([o, e, [3.0, 0.0]], [o, e, n]), Less);
+    assert_eq!(compare_corner_angles([o, e, w], [o, e, n]), Greater);
+    assert_eq!(compare_corner_angles([o, e, w], [o, n, [0.0, -5.0]]), Equal);
+    assert_eq!(compare_corner_angles([o, e, e], [o, w, w]), Equal);
+}
+
+/// Two triangles of (nearly) equal area: `def` is `abc` sheared along `ab`
+/// (`c` moved parallel to `ab`: exactly the same area), mirrored by a grid
+/// symmetry and translated, then one corner nudged by at most one unit.
+fn nearly_equal_areas(rng: &mut StdRng) -> [IntPoint; 6] {
+    let o = corner(rng);
+    let r = |rng: &mut StdRng, bits: u32| rng.gen_range(-(1i64 << bits)..=1 << bits);
+    let a = add(o, [r(rng, 20), r(rng, 20)]);
+    let d = [r(rng, 24), r(rng, 24)];
+    let b = add(a, d);
+    let c = add(a, [r(rng, 24), r(rng, 24)]);
+    let t = r(rng, 3);
+    let c2 = add(c, [t * d[0], t * d[1]]);
+    let k = rng.gen_range(0..8);
+    let shift = add(corner(rng), [r(rng, 20), r(rng, 20)]);
+    let image = |p: IntPoint| add(shift, symmetry([p[0] - o[0], p[1] - o[1]], k));
+    let nudge = if rng.gen_bool(0.5) {
+        [0, 0]
+    } else {
+        [rng.gen_range(-1..=1), rng.gen_range(-1..=1)]
+    };
+    [a, b, c, image(a), image(b), add(image(c2), nudge)]
+}
+
+#[test]
+fn area_comparison_at_the_coordinate_limits_is_scale_invariant() {
+    let mut rng = StdRng::seed_from_u64(2201);
+    let twice_area_int = |a: IntPoint, b: IntPoint, c: IntPoint| {
+        ((b[0] - a[0]) as i128 * (c[1] - a[1]) as i128
+            - (b[1] - a[1]) as i128 * (c[0] - a[0]) as i128)
+            .abs()
+    };
+    let (mut equal, mut unequal) = (0, 0);
+    for _ in 0..4000 {
+        let [a, b, c, d, e, f] = nearly_equal_areas(&mut rng);
+        let expected = twice_area_int(a, b, c).cmp(&twice_area_int(d, e, f));
+        (equal, unequal) = if expected.is_eq() {
+            (equal + 1, unequal)
+        } else {
+            (equal, unequal + 1)
+        };
+        for scale in limit_scales() {
+            let [fa, fb, fc, fd, fe, ff] = [a, b, c, d, e, f].map(|p| scaled(p, scale));
+            assert_eq!(
+                compare_areas([fa, fb, fc], [fd, fe, ff]),
+                expected,
+                "areas {a:?} {b:?} {c:?} vs {d:?} {e:?} {f:?} scaled by {scale:e}"
+            );
+            assert_eq!(
+                compare_areas([fd, ff, fe], [fb, fa, fc]),
+                expected.reverse()
+            );
+        }
+    }
+    assert!(equal > 1000 && unequal > 1000, "{equal} {unequal}");
 }

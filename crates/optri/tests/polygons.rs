@@ -547,28 +547,69 @@ fn area_criteria_on_convex_point_sets_match_the_oracle() {
     );
 }
 
+/// General point sets get the certified approximation: a valid
+/// triangulation, never worse than Delaunay, exact only when it is optimal
+/// (checked against the exhaustive optimum), with a bound that holds.
 #[test]
-fn area_criteria_refuse_general_point_sets() {
-    let ps = PointSet::new(&[[0.0, 0.0], [4.0, 0.0], [0.0, 4.0], [1.0, 1.0]]).unwrap();
-    for c in [Criterion::MaxminArea, Criterion::MinmaxArea] {
-        let e = triangulate(&ps, c).unwrap_err();
-        assert_eq!(
-            e,
-            Error::Unsupported {
-                criterion: c.name(),
-                reason: UnsupportedReason::NotConvexPositionOrPolygon {
-                    interior: 1,
-                    distinct: 4
-                }
+fn area_criteria_on_general_point_sets_are_honest() {
+    const SEED_GENERAL: u64 = 0x6e0e_a11;
+    let mut rng = StdRng::seed_from_u64(SEED_GENERAL);
+    let (mut cases, mut exact) = (0usize, 0usize);
+    for _ in 0..120 {
+        let n = rng.gen_range(5..=8);
+        let pts: Vec<Point> = (0..n)
+            .map(|_| [rng.gen_range(0..60) as f64, rng.gen_range(0..60) as f64])
+            .collect();
+        let Ok(ps) = PointSet::new(&pts) else {
+            continue;
+        };
+        if optri::convex_hull(&ps).len() == ps.len() {
+            continue; // convex position: the exact algorithms, tested above
+        }
+        let distinct: Vec<Point> = ps.points().to_vec();
+        let all = optri_oracle::enumerate::all_triangulations(&distinct);
+        let dt = optri::delaunay(&ps).unwrap();
+        for c in [Criterion::MaxminArea, Criterion::MinmaxArea] {
+            let s = triangulate(&ps, c).unwrap();
+            s.triangulation.validate().unwrap();
+            let to_distinct = |t: &optri::Triangulation| -> Vec<[u32; 3]> {
+                t.triangles()
+                    .iter()
+                    .map(|tri| tri.map(|i| ps.distinct_index(i)))
+                    .collect()
+            };
+            let (got, dt_value) = (to_distinct(&s.triangulation), to_distinct(&dt));
+            let (value, dt_v, best) = if c == Criterion::MaxminArea {
+                let v = |t: &[[u32; 3]]| optri_oracle::enumerate::min_twice_area(&distinct, t);
+                let best = all.iter().map(|t| v(t)).max().unwrap();
+                (v(&got), v(&dt_value), best)
+            } else {
+                let v = |t: &[[u32; 3]]| optri_oracle::enumerate::max_twice_area(&distinct, t);
+                let best = all.iter().map(|t| v(t)).min().unwrap();
+                (v(&got), v(&dt_value), best)
+            };
+            if c == Criterion::MaxminArea {
+                assert!(value >= dt_v, "{pts:?}: worse than Delaunay");
+            } else {
+                assert!(value <= dt_v, "{pts:?}: worse than Delaunay");
             }
-        );
-        assert!(
-            e.to_string()
-                .contains("not supported for general point sets yet"),
-            "{e}"
-        );
+            if s.exact {
+                assert_eq!(value, best, "{pts:?}: exact but not optimal");
+                exact += 1;
+            }
+            let bound = s.bound.clone().expect("general sets report a bound");
+            let b = optri_oracle::enumerate::min_twice_area(ps.input_points(), &[bound.triangle]);
+            if c == Criterion::MaxminArea {
+                assert!(bound.upper && best <= b, "{pts:?}: the upper bound fails");
+            } else {
+                assert!(!bound.upper && best >= b, "{pts:?}: the lower bound fails");
+            }
+            cases += 1;
+        }
     }
-    assert!(maxmin_area(&ps).is_err() && minmax_area(&ps).is_err());
+    assert!(cases >= 150 && exact >= 20, "{cases} {exact}");
+    let ps = PointSet::new(&[[0.0, 0.0], [4.0, 0.0], [0.0, 4.0], [1.0, 1.0]]).unwrap();
+    assert!(maxmin_area(&ps).is_ok() && minmax_area(&ps).is_ok());
     assert_eq!(
         Criterion::from_name("MAXMIN-AREA").unwrap(),
         Criterion::MaxminArea

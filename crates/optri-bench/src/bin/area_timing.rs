@@ -41,11 +41,17 @@ fn main() {
     let mut args = std::env::args().skip(1);
     let mode = args.next().unwrap_or_else(|| "ratio".into());
     let sizes: Vec<usize> = args.map(|a| a.parse().expect("a size")).collect();
-    let runs: usize = std::env::var("RUNS").ok().and_then(|r| r.parse().ok()).unwrap_or(1);
+    let runs: usize = std::env::var("RUNS")
+        .ok()
+        .and_then(|r| r.parse().ok())
+        .unwrap_or(1);
     for n in sizes {
         let points = convex_lens(&mut StdRng::seed_from_u64(SEED_CONVEX), n);
         let ps = PointSet::new(&points).unwrap();
-        for (criterion, maxmin) in [(Criterion::MaxminArea, true), (Criterion::MinmaxArea, false)] {
+        for (criterion, maxmin) in [
+            (Criterion::MaxminArea, true),
+            (Criterion::MinmaxArea, false),
+        ] {
             let mut product = Vec::new();
             let mut cubic = Vec::new();
             for _ in 0..runs {

@@ -24,5 +24,6 @@ pub(crate) fn solve(points: &PointSet, _: &Options, phases: &mut Vec<Phase>) -> 
         algorithm: "spade bulk-load Delaunay (exact predicates)".to_string(),
         optimality: Optimality::Exact,
         diagnostics: Diagnostics::default(),
+        bound: None,
     })
 }

@@ -47,6 +47,7 @@ pub(crate) fn solve(points: &PointSet, _: &Options, phases: &mut Vec<Phase>) -> 
                 .to_string(),
         optimality: Optimality::UpToRounding,
         diagnostics: Diagnostics::default(),
+        bound: None,
     })
 }
 

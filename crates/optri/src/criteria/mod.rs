@@ -130,6 +130,20 @@ impl Diagnostics {
     }
 }
 
+/// A certified bound on the optimal value of a criterion whose result is
+/// not proven optimal: the optimum is no better than `triangle`'s measure.
+#[derive(Clone, Debug, PartialEq)]
+#[non_exhaustive]
+pub struct CertifiedBound {
+    /// The triangle (input indices) whose measure is the bound.
+    pub triangle: [u32; 3],
+    /// Its measure, rounded for reporting (e.g. an area); decided exactly.
+    pub value: f64,
+    /// `true`: no triangulation does better than `value` from above (a
+    /// MaxMin criterion's optimum is at most `value`); `false`: from below.
+    pub upper: bool,
+}
+
 /// What a criterion's `solve` returns to the registry.
 pub(crate) struct Solved {
     pub triangulation: Triangulation,
@@ -137,6 +151,8 @@ pub(crate) struct Solved {
     pub algorithm: String,
     pub optimality: Optimality,
     pub diagnostics: Diagnostics,
+    /// For results that are not proven optimal: how far off they can be.
+    pub bound: Option<CertifiedBound>,
 }
 
 /// The one signature of every criterion's entry point.

@@ -142,6 +142,7 @@ pub(crate) fn solve_min_weight(
             .to_string(),
         optimality: Optimality::UpToRounding,
         diagnostics: Diagnostics::default(),
+        bound: None,
     })
 }
 
@@ -164,6 +165,7 @@ pub(crate) fn solve_minmax_length(
             .to_string(),
         optimality: Optimality::Exact,
         diagnostics: Diagnostics::default(),
+        bound: None,
     })
 }
 
@@ -233,6 +235,7 @@ pub(crate) fn solve_greedy(
             .to_string(),
         optimality: Optimality::Exact,
         diagnostics: Diagnostics::default(),
+        bound: None,
     })
 }
 
@@ -310,6 +313,7 @@ pub(crate) fn solve_delaunay(
             .to_string(),
         optimality: Optimality::Exact,
         diagnostics: Diagnostics::default(),
+        bound: None,
     })
 }
 

@@ -16,3 +16,4 @@ pub use gabriel_graph::gabriel_graph;
 pub use minimum_spanning_tree::minimum_spanning_tree;
 pub(crate) use relative_neighborhood_graph::perturbed_rng_from_delaunay;
 pub use relative_neighborhood_graph::relative_neighborhood_graph;
+pub(crate) use relative_neighborhood_graph::rng_from_delaunay;

@@ -98,6 +98,11 @@ impl Serialize for TriangulationReport<'_> {
             exact: run.map(|s| s.exact),
             optimality: optimality.map(Optimality::name),
             optimality_bound: optimality.and_then(bound),
+            bound: run.and_then(|s| s.bound.as_ref()).map(|b| BoundDocument {
+                kind: if b.upper { "upper" } else { "lower" },
+                triangle: b.triangle,
+                area: b.value,
+            }),
             algorithm: run.map(|s| s.algorithm.as_str()),
             points: t.points().len(),
             distinct_points: t.point_set().len(),
@@ -113,6 +118,15 @@ impl Serialize for TriangulationReport<'_> {
     }
 }
 
+/// A certified bound on the optimum (`Solution::bound`): the optimum's
+/// measure is at most (`"upper"`) or at least (`"lower"`) `triangle`'s area.
+#[derive(serde::Serialize)]
+struct BoundDocument {
+    kind: &'static str,
+    triangle: [u32; 3],
+    area: f64,
+}
+
 /// The fields of a triangulation document, in the order written.
 #[derive(serde::Serialize)]
 struct TriangulationDocument<'a> {
@@ -126,6 +140,8 @@ struct TriangulationDocument<'a> {
     optimality: Option<&'static str>,
     #[serde(skip_serializing_if = "Option::is_none")]
     optimality_bound: Option<&'static str>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    bound: Option<BoundDocument>,
     #[serde(skip_serializing_if = "Option::is_none")]
     algorithm: Option<&'a str>,
     points: usize,

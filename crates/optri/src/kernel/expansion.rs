@@ -90,6 +90,17 @@ impl Expansion {
         self.add_product(sign * b, d);
     }
 
+    /// Adds `sign * a * b` exactly, for expansions `a` and `b` and `sign` a
+    /// power of two times ±1 (so that scaling a component is exact): every
+    /// pair of components is multiplied exactly by [`two_product`].
+    pub fn add_expansion_product(&mut self, a: &Expansion, b: &Expansion, sign: f64) {
+        for &x in &a.components {
+            for &y in &b.components {
+                self.add_product(sign * x, y);
+            }
+        }
+    }
+
     /// The exact sign of the sum: -1, 0 or 1.
     pub fn sign(&self) -> i32 {
         match self.components.last() {
@@ -128,6 +139,23 @@ mod tests {
         assert_eq!(sign_of_sum(&[1e16, -1.0, -1e16]), -1);
         assert_eq!(sign_of_sum(&[1e16, -1e16]), 0);
         assert_eq!(sign_of_sum(&[]), 0);
+    }
+
+    #[test]
+    fn products_of_expansions_are_exact() {
+        // (1 + 2^-60)(1 - 2^-60) = 1 - 2^-120, invisible in f64.
+        let tiny = 2f64.powi(-60);
+        let (mut a, mut b) = (Expansion::new(), Expansion::new());
+        a.add(1.0);
+        a.add(tiny);
+        b.add(1.0);
+        b.add(-tiny);
+        let mut e = Expansion::new();
+        e.add_expansion_product(&a, &b, 2.0);
+        e.add(-2.0);
+        assert_eq!(e.sign(), -1);
+        e.add(2.0 * tiny * tiny);
+        assert_eq!(e.sign(), 0);
     }
 
     #[test]

@@ -177,6 +177,128 @@ pub fn cross_sign(a: Point, b: Point, c: Point, d: Point) -> i32 {
     sum.sign()
 }
 
+/// The rounded cross and dot products of `u = a − o`, `v = b − o`, with
+/// their permanents `|ux·vy| + |uy·vx|` and `|ux·vx| + |uy·vy|` (the error
+/// scales of the filters below).
+#[inline]
+fn rounded_cross_dot(o: Point, a: Point, b: Point) -> [f64; 4] {
+    let (ux, uy, vx, vy) = (a[0] - o[0], a[1] - o[1], b[0] - o[0], b[1] - o[1]);
+    let (xy, yx, xx, yy) = (ux * vy, uy * vx, ux * vx, uy * vy);
+    [xy - yx, xx + yy, xy.abs() + yx.abs(), xx.abs() + yy.abs()]
+}
+
+/// The exact cross product `u × v` and dot product `u · v` of
+/// `u = a − o`, `v = b − o`, as expansions (each difference is an exact
+/// two-term value, each product of two such an exact four-term sum).
+fn exact_cross_dot(o: Point, a: Point, b: Point) -> (Expansion, Expansion) {
+    let (ux, uy) = (two_diff(a[0], o[0]), two_diff(a[1], o[1]));
+    let (vx, vy) = (two_diff(b[0], o[0]), two_diff(b[1], o[1]));
+    let (mut cross, mut dot) = (Expansion::new(), Expansion::new());
+    cross.add_two_term_product(ux, vy, 1.0);
+    cross.add_two_term_product(uy, vx, -1.0);
+    dot.add_two_term_product(ux, vx, 1.0);
+    dot.add_two_term_product(uy, vy, 1.0);
+    (cross, dot)
+}
+
+/// Exact: is the angle at `o` between the rays `o → a` and `o → b` at least
+/// 30°? (The angle is in `[0°, 180°]`; `a` and `b` must differ from `o`.)
+///
+/// With `u = a − o`, `v = b − o`: the angle is at least 30° iff
+/// `u·v ≤ 0` (at least 90°) or `4(u·v)² ≤ 3|u|²|v|²` (cos² ≤ 3/4). By
+/// Lagrange's identity `|u|²|v|² = (u·v)² + (u×v)²` the second condition is
+/// `E = 3(u×v)² − (u·v)² ≥ 0` (tan² ≥ 1/3), a degree-4 polynomial in the
+/// coordinate differences, which is what we evaluate. With rational
+/// coordinates `E` is never zero for `u × v ≠ 0` (`√3` is irrational), so an
+/// angle of exactly 30° cannot occur; the exact fallback still decides every
+/// near tie correctly.
+///
+/// Filter (`u = 2⁻⁵³`, `γₖ = ku/(1−ku)`). The rounded differences and one
+/// product give each computed product of differences a relative error `γ₃`,
+/// the subtraction (addition) one more `u`: the computed cross `c̃` and dot
+/// `d̃` satisfy `|c̃ − C| ≤ γ₄·P_c` and `|d̃ − D| ≤ γ₄·P_d`, where
+/// `P_c = |UxVy| + |UyVx| ≥ |C|` and `P_d = |UxVx| + |UyVy| ≥ |D|` are the
+/// exact permanents. Then `|3c̃² − d̃² − E| ≤ 3|c̃ − C||c̃ + C| + |d̃ − D||d̃ + D|
+/// ≤ (2 + γ₄)γ₄(3P_c² + P_d²)`, and evaluating `3c̃² − d̃²` (two squares, one
+/// scaling by 3, one subtraction) adds at most `γ₃(3c̃² + d̃²) ≤
+/// γ₃(1 + γ₄)²(3P_c² + P_d²)`. In total the error is below
+/// `11.001u·(3P_c² + P_d²)`. The computed permanents are at least
+/// `(1 − γ₄)` times the exact ones and the tolerance is itself evaluated
+/// with relative error below `γ₅`, so `16u·(3p̃_c² + p̃_d²)` exceeds the error
+/// bound. The coordinate range keeps every product of four differences
+/// within `[2⁻⁷⁷⁶, 2⁸¹⁰]` (module docs), so nothing underflows or overflows.
+pub fn angle_at_least_30_degrees(o: Point, a: Point, b: Point) -> bool {
+    if dot_sign(o, a, b) <= 0 {
+        return true;
+    }
+    let [c, d, pc, pd] = rounded_cross_dot(o, a, b);
+    let e = 3.0 * (c * c) - d * d;
+    let tolerance = 16.0 * U * (3.0 * (pc * pc) + pd * pd);
+    if e > tolerance {
+        return true;
+    }
+    if -e > tolerance {
+        return false;
+    }
+    let (cross, dot) = exact_cross_dot(o, a, b);
+    let mut e = Expansion::new();
+    // 3C² as 2C² + C²: scaling a component by 2 is exact.
+    e.add_expansion_product(&cross, &cross, 2.0);
+    e.add_expansion_product(&cross, &cross, 1.0);
+    e.add_expansion_product(&dot, &dot, -1.0);
+    e.sign() >= 0
+}
+
+/// Exact comparison of two angles in `[0°, 180°]`: the angle at `p[0]`
+/// between the rays to `p[1]` and `p[2]` versus the angle at `q[0]` between
+/// the rays to `q[1]` and `q[2]`. The rays' points must differ from their
+/// apexes.
+///
+/// A flat corner (cross product zero, exactly) is 0° or 180° by the sign of
+/// its dot product. Otherwise both angles lie in `(0°, 180°)`, where the
+/// cotangent `D/|C|` (dot over absolute cross) is strictly decreasing, so
+/// `θ_p < θ_q ⟺ D_p/|C_p| > D_q/|C_q| ⟺ F = D_q·|C_p| − D_p·|C_q| < 0`, a
+/// degree-4 polynomial (the signs of `C` come exactly from [`orient_sign`]).
+///
+/// Filter: as in [`angle_at_least_30_degrees`], `|c̃ − C| ≤ γ₄P_c` and
+/// `|d̃ − D| ≤ γ₄P_d` for each corner, so `|d̃_q·|c̃_p| − D_q|C_p|| ≤
+/// (2 + γ₄)γ₄·P_{d,q}P_{c,p}` (and the same for the other product); the
+/// two products and the subtraction add `γ₂(1 + γ₄)²` times the same
+/// permanents. The error is below `10.001u·(P_{d,q}P_{c,p} + P_{d,p}P_{c,q})`,
+/// and `16u` times the computed permanents exceeds it (same argument).
+pub fn compare_corner_angles(p: [Point; 3], q: [Point; 3]) -> Ordering {
+    debug_assert!(p[1] != p[0] && p[2] != p[0] && q[1] != q[0] && q[2] != q[0]);
+    let sp = orient_sign(p[0], p[1], p[2]);
+    let sq = orient_sign(q[0], q[1], q[2]);
+    // 0: a flat 0° corner, 1: inside (0°, 180°), 2: a flat 180° corner.
+    let class = |s: i32, c: [Point; 3]| match s {
+        0 if dot_sign(c[0], c[1], c[2]) > 0 => 0,
+        0 => 2,
+        _ => 1,
+    };
+    let (kp, kq) = (class(sp, p), class(sq, q));
+    if kp != 1 || kq != 1 {
+        return kp.cmp(&kq);
+    }
+    let [cp, dp, pcp, pdp] = rounded_cross_dot(p[0], p[1], p[2]);
+    let [cq, dq, pcq, pdq] = rounded_cross_dot(q[0], q[1], q[2]);
+    let (cp, cq) = (cp * sp as f64, cq * sq as f64);
+    let f = dq * cp - dp * cq;
+    let tolerance = 16.0 * U * (pdq * pcp + pdp * pcq);
+    if f > tolerance {
+        return Ordering::Greater;
+    }
+    if -f > tolerance {
+        return Ordering::Less;
+    }
+    let (cross_p, dot_p) = exact_cross_dot(p[0], p[1], p[2]);
+    let (cross_q, dot_q) = exact_cross_dot(q[0], q[1], q[2]);
+    let mut e = Expansion::new();
+    e.add_expansion_product(&dot_q, &cross_p, sp as f64);
+    e.add_expansion_product(&dot_p, &cross_q, -(sq as f64));
+    e.sign().cmp(&0)
+}
+
 /// Exact counter-clockwise angular order of directions `a - o` and `b - o`,
 /// starting from the positive x-axis.
 pub fn compare_angles(o: Point, a: Point, b: Point) -> Ordering {

@@ -5,10 +5,10 @@
 //!
 //! | input | algorithm | time |
 //! |---|---|---|
-//! | points in strictly convex position, strictly convex polygon | `convex` (Algorithm 44) | O(n² log n) once merged; a temporary O(n³) stand-in now |
+//! | points in strictly convex position, strictly convex polygon | `convex` (Algorithm 44 as repaired; Algorithm 49 for the decision) | O(n² log n) time, O(n²) space |
 //! | convex position with collinear boundary points | the polygon program on the hull, flat triangles forbidden | O(n³) |
 //! | simple polygon | the polygon program on its diagonals (Algorithm 21, with the visibility test its listing omits) | O(n³) |
-//! | other point sets | not supported yet ([`UnsupportedReason::NotConvexPositionOrPolygon`]) | — |
+//! | other point sets | `general`: the best of Delaunay, Algorithm 75 (30°-triangulations over RNG ∪ hull), the optimum over all triangulations containing RNG ∪ hull, and Algorithm 76 (area-equalising flips); exact only when it meets a certified bound (reported in `Solution::bound`) | O(Σ k_f³) over the faces of RNG ∪ hull |
 //!
 //! Both measures are bottlenecks, so they decompose over a diagonal (thesis
 //! §2.1; brief §5: an optimum of a polygon is assembled from optima of the
@@ -30,14 +30,15 @@
 
 mod convex;
 mod decision;
+mod general;
 pub(crate) mod polygon;
 
 pub use decision::{maxmin_area_at_least, MaxMinAreaDecision};
 
 use super::polygon_criteria::{check_size, corner_point, polygon_program, MAX_POLYGON_VERTICES};
-use super::{CriterionInfo, Diagnostics, Optimality, Options, Requirement, Solved};
+use super::{CertifiedBound, CriterionInfo, Diagnostics, Optimality, Options, Requirement, Solved};
 use crate::error::{Error, Result, UnsupportedReason};
-use crate::kernel::orient_sign;
+use crate::kernel::{metrics::area, orient_sign};
 use crate::spatial::convex_hull_cycle;
 use crate::structures::{PointSet, SimplePolygon, Triangulation};
 use crate::timing::{timed, Phase};
@@ -46,22 +47,29 @@ use polygon::{convex_polygon_program, AreaBottleneck, BottleneckArea};
 const REFERENCE: &str = "T. S. Vassilev, Optimal area triangulation, PhD thesis, \
                          University of Saskatchewan, 2005 (Algorithms 21 and 44)";
 
+/// The weakest guarantee over all inputs: exact in convex position and on
+/// polygons, an approximation (exact when certified) on general sets.
+const GENERAL_OPTIMALITY: Optimality = Optimality::Approximation {
+    bound: "exact in convex position and on simple polygons; on general point sets never worse \
+            than Delaunay, exact when it meets the certified bound",
+};
+
 pub(crate) const MAXMIN_INFO: CriterionInfo = CriterionInfo {
     name: "maxmin-area",
-    description: "maximises the smallest triangle area (points in convex position, or a simple \
-                  polygon)",
-    optimality: Optimality::Exact,
-    requirement: Requirement::ConvexPosition,
+    description: "maximises the smallest triangle area (exact in convex position and on simple \
+                  polygons; general point sets: certified approximation)",
+    optimality: GENERAL_OPTIMALITY,
+    requirement: Requirement::AnyPointSet,
     options: &[],
     reference: REFERENCE,
 };
 
 pub(crate) const MINMAX_INFO: CriterionInfo = CriterionInfo {
     name: "minmax-area",
-    description: "minimises the largest triangle area (points in convex position, or a simple \
-                  polygon)",
-    optimality: Optimality::Exact,
-    requirement: Requirement::ConvexPosition,
+    description: "minimises the largest triangle area (exact in convex position and on simple \
+                  polygons; general point sets: certified approximation)",
+    optimality: GENERAL_OPTIMALITY,
+    requirement: Requirement::AnyPointSet,
     options: &[],
     reference: REFERENCE,
 };
@@ -127,11 +135,13 @@ pub(crate) fn solve_minmax_polygon(
 /// triangle area, exactly. Polygons: [`crate::triangulate_polygon`] with
 /// [`crate::Criterion::MaxminArea`].
 ///
+/// Points not in convex position get the best of four approximations (see
+/// the module table; `optri::triangulate` reports whether it is provably
+/// optimal and a certified bound).
+///
 /// # Errors
-/// [`Error::Unsupported`] with
-/// [`UnsupportedReason::NotConvexPositionOrPolygon`] if some point is inside
-/// the convex hull, or [`UnsupportedReason::TooManyPoints`] above 4000
-/// distinct points.
+/// [`UnsupportedReason::TooManyPoints`] above 12 000 points in strictly
+/// convex position, or 4000 in convex position with collinear hull points.
 pub fn maxmin_area(points: &PointSet) -> Result<Triangulation> {
     solve_points(points, AreaBottleneck::MaxMin, &mut Vec::new()).map(|s| s.triangulation)
 }
@@ -151,6 +161,7 @@ fn solved(triangulation: Triangulation, algorithm: &str) -> Solved {
         algorithm: algorithm.to_string(),
         optimality: Optimality::Exact,
         diagnostics: Diagnostics::default(),
+        bound: None,
     }
 }
 
@@ -163,13 +174,7 @@ fn solve_points(
     let pts = points.points();
     let hull = convex_hull_cycle(pts);
     if hull.len() != pts.len() {
-        return Err(Error::Unsupported {
-            criterion,
-            reason: UnsupportedReason::NotConvexPositionOrPolygon {
-                interior: pts.len() - hull.len(),
-                distinct: pts.len(),
-            },
-        });
+        return solve_general(points, kind, phases);
     }
     let k = hull.len();
     let p = |c: usize| pts[hull[c] as usize];
@@ -232,4 +237,41 @@ fn solve_polygon(
         triangulation,
         "Klincsek dynamic program on the polygon's diagonals, O(n^3), exact area comparisons",
     ))
+}
+
+/// General point sets (not in convex position): the best of Delaunay,
+/// Algorithm 75, the optimum over triangulations containing RNG ∪ hull and
+/// Algorithm 76 (`general.rs`), exact only when it meets the certified bound.
+fn solve_general(
+    points: &PointSet,
+    kind: AreaBottleneck,
+    phases: &mut Vec<Phase>,
+) -> Result<Solved> {
+    let objective = match kind {
+        AreaBottleneck::MaxMin => general::AreaObjective::MaxMin,
+        AreaBottleneck::MinMax => general::AreaObjective::MinMax,
+    };
+    let result = timed(phases, kind.criterion(), || {
+        general::area_general(points, objective)
+    })?;
+    let triangulation = Triangulation::from_distinct(points, result.triangles);
+    let pts = points.points();
+    let bound = result.bound.map(|t| CertifiedBound {
+        triangle: t.map(|d| points.input_index(d)),
+        value: area(pts[t[0] as usize], pts[t[1] as usize], pts[t[2] as usize]),
+        upper: kind == AreaBottleneck::MaxMin,
+    });
+    Ok(Solved {
+        triangulation,
+        algorithm: result.algorithm,
+        optimality: if result.exact {
+            Optimality::Exact
+        } else {
+            Optimality::Approximation {
+                bound: "never worse than Delaunay; the optimum is within the certified `bound`",
+            }
+        },
+        diagnostics: Diagnostics::default(),
+        bound,
+    })
 }

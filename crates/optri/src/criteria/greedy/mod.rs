@@ -58,6 +58,7 @@ pub(crate) fn solve(points: &PointSet, _: &Options, phases: &mut Vec<Phase>) -> 
         algorithm: format!("{} ({})", algorithm.name(), algorithm.description()),
         optimality: Optimality::Exact,
         diagnostics: Diagnostics::default(),
+        bound: None,
     })
 }
 

@@ -190,6 +190,7 @@ pub(crate) fn solve(points: &PointSet, _: &Options, phases: &mut Vec<Phase>) -> 
         algorithm,
         optimality: Optimality::Exact,
         diagnostics,
+        bound: None,
     })
 }
 

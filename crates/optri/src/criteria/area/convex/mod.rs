@@ -51,7 +51,7 @@
 
 // The second MaxMin route, triangle thresholds and witness values serve the
 // tests that check the routes against each other.
-#![cfg_attr(not(test), allow(dead_code))]
+#![allow(dead_code)]
 
 mod decision;
 mod maxmin;
