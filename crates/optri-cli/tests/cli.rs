@@ -428,9 +428,9 @@ fn demo_draws_every_criterion() {
         );
     }
     assert!(
-        titles
-            .iter()
-            .all(|t| t.ends_with("— demo set") || t.ends_with("— convex set")),
+        titles.iter().all(|t| t.ends_with("— demo set")
+            || t.ends_with("— convex set")
+            || t.ends_with("— polygon set")),
         "{titles:?}"
     );
     // Min-weight needs convex position, so it is drawn on the convex set,
@@ -453,6 +453,23 @@ fn demo_draws_every_criterion() {
         "{text}"
     );
     assert!(row("delaunay (exact)", "demo"), "{text}");
+    // The area criteria need convex position: drawn on the convex set.
+    for label in ["maxmin-area (exact)", "minmax-area (exact)"] {
+        assert!(row(label, "convex"), "{label}: {text}");
+    }
+    // The polygon set: min-weight and minmax-area inside a simple polygon,
+    // with its boundary drawn.
+    for title in [
+        "min-weight (uncertified) — polygon set",
+        "minmax-area (exact) — polygon set",
+    ] {
+        assert!(titles.contains(&title.to_string()), "{titles:?}");
+    }
+    assert_eq!(svg.matches("<polygon class=\"boundary\"").count(), 2);
+    assert!(
+        text.contains("polygon set: a simple polygon of 12 vertices"),
+        "{text}"
+    );
     assert!(!text.contains("skipped"), "{text}");
     assert!(text.contains("merged 1 duplicate point"), "{text}");
     assert!(text.contains("convex set: 40 points"), "{text}");
