@@ -22,7 +22,7 @@ pub(crate) struct Cli {
 
 #[derive(Subcommand)]
 pub(crate) enum Command {
-    /// Triangulate a point set by a criterion.
+    /// Triangulate a point set (or a simple polygon's interior) by a criterion.
     Triangulate(TriangulateArgs),
     /// Compute a proximity graph (convex hull, RNG, Gabriel, MST, Delaunay edges).
     Graph(GraphArgs),
@@ -32,9 +32,11 @@ pub(crate) enum Command {
 
 #[derive(Args)]
 pub(crate) struct InputArgs {
-    /// Point file (text, .node, .tsp, .geojson/.json), or `-` for stdin.
+    /// Point file (text, .node, .tsp, .geojson/.json), or `-` for stdin. `triangulate` also
+    /// takes a simple polygon (a Triangle .poly, or a GeoJSON Polygon without points) and
+    /// triangulates its interior.
     pub input: String,
-    /// Input format: text, node, tsplib, geojson (default: by extension, else by content).
+    /// Input format: text, node, poly, tsplib, geojson (default: by extension, else by content).
     #[arg(long, value_name = "FMT")]
     pub input_format: Option<String>,
 }

@@ -4,7 +4,7 @@
 
 use crate::commands::Run;
 use crate::CliResult;
-use optri::{Criterion, GraphKind, Phase, PointSet, Solution};
+use optri::{Criterion, Domain, GraphKind, Phase, PointSet, Solution};
 use std::io::Write;
 use std::path::PathBuf;
 
@@ -87,10 +87,28 @@ fn wrote(text: &mut String, written: &[PathBuf]) {
 pub(crate) fn triangulation_summary(run: &Run, solution: &Solution, written: &[PathBuf]) -> String {
     let stats = solution.triangulation.stats();
     let points = &run.points;
+    let domain = match (&run.polygon, solution.triangulation.domain()) {
+        (Some(p), Domain::Polygon { .. }) => format!(
+            "polygon interior ({} vertices, given {})",
+            p.len(),
+            if p.is_clockwise_input() {
+                "clockwise"
+            } else {
+                "counter-clockwise"
+            }
+        ),
+        _ => "convex hull".to_string(),
+    };
+    let boundary = if run.polygon.is_some() {
+        "boundary points"
+    } else {
+        "hull points"
+    };
     let mut text = format!(
         "criterion: {} ({}) via {}\n\
+         domain: {domain}\n\
          points: {} input, {} distinct{}\n\
-         triangles: {}, edges: {}, hull points: {}\n\
+         triangles: {}, edges: {}, {boundary}: {}\n\
          edge length: max {}, total {}\n\
          angles: min {}°, max {}°\n\
          areas: min {}, max {}\n\

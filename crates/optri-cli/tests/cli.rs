@@ -428,9 +428,9 @@ fn demo_draws_every_criterion() {
         );
     }
     assert!(
-        titles
-            .iter()
-            .all(|t| t.ends_with("— demo set") || t.ends_with("— convex set")),
+        titles.iter().all(|t| t.ends_with("— demo set")
+            || t.ends_with("— convex set")
+            || t.ends_with("— polygon set")),
         "{titles:?}"
     );
     // Min-weight needs convex position, so it is drawn on the convex set,
@@ -453,6 +453,23 @@ fn demo_draws_every_criterion() {
         "{text}"
     );
     assert!(row("delaunay (exact)", "demo"), "{text}");
+    // The area criteria need convex position: drawn on the convex set.
+    for label in ["maxmin-area (exact)", "minmax-area (exact)"] {
+        assert!(row(label, "convex"), "{label}: {text}");
+    }
+    // The polygon set: min-weight and minmax-area inside a simple polygon,
+    // with its boundary drawn.
+    for title in [
+        "min-weight (uncertified) — polygon set",
+        "minmax-area (exact) — polygon set",
+    ] {
+        assert!(titles.contains(&title.to_string()), "{titles:?}");
+    }
+    assert_eq!(svg.matches("<polygon class=\"boundary\"").count(), 2);
+    assert!(
+        text.contains("polygon set: a simple polygon of 12 vertices"),
+        "{text}"
+    );
     assert!(!text.contains("skipped"), "{text}");
     assert!(text.contains("merged 1 duplicate point"), "{text}");
     assert!(text.contains("convex set: 40 points"), "{text}");
@@ -897,4 +914,160 @@ fn help_and_names_come_from_the_library_registry() {
         .to_string();
     let err = String::from_utf8_lossy(&out.stderr);
     assert!(err.contains(&expected), "{err}");
+}
+
+/// An L-shaped hexagon as a GeoJSON Feature (closed ring, clockwise) and the
+/// same ring as a Triangle `.poly` (1-based, segments in order).
+const L_RING: [[f64; 2]; 6] = [
+    [0.0, 0.0],
+    [0.0, 2.0],
+    [1.0, 2.0],
+    [1.0, 1.0],
+    [2.0, 1.0],
+    [2.0, 0.0],
+];
+const L_GEOJSON: &str = r#"{"type":"Feature","properties":{"name":"L"},"geometry":{"type":"Polygon",
+    "coordinates":[[[0,0],[0,2],[1,2],[1,1],[2,1],[2,0],[0,0]]]}}"#;
+const L_POLY: &str = "# an L\n6 2 0 1\n1 0 0 1\n2 0 2 1\n3 1 2 1\n4 1 1 1\n5 2 1 1\n6 2 0 1\n\
+                      6 1\n1 1 2 1\n2 2 3 1\n3 3 4 1\n4 4 5 1\n5 5 6 1\n6 6 1 1\n0\n";
+
+#[test]
+fn polygon_inputs_are_triangulated_inside_by_every_polygon_criterion() {
+    let dir = scratch("polygons");
+    let geojson = write(&dir, "l.geojson", L_GEOJSON);
+    let poly = write(&dir, "l.poly", L_POLY);
+    let polygon = optri::SimplePolygon::new(&L_RING).unwrap();
+    let n = L_RING.len();
+    let mut tested = 0;
+    for input in [&geojson, &poly] {
+        for c in optri::Criterion::ALL
+            .iter()
+            .filter(|c| c.supports_polygons())
+        {
+            let json = stdout_json(&run(&[
+                "triangulate",
+                input,
+                "--criterion",
+                c.name(),
+                "--json",
+            ]));
+            assert_eq!(json["domain"], "polygon", "{input} {}", c.name());
+            assert_eq!(json["criterion"], c.name());
+            assert_eq!(json["coordinates"], serde_json::json!(L_RING));
+            let triangles: Vec<[u32; 3]> =
+                serde_json::from_value(json["triangles"].clone()).unwrap();
+            assert_eq!(triangles.len(), n - 2, "{input} {}", c.name());
+            assert!(triangles.iter().flatten().all(|&i| (i as usize) < n));
+            // The triangles cover the polygon exactly, and match the library.
+            optri::Triangulation::from_polygon_triangles(&polygon, triangles.clone()).unwrap();
+            let lib = optri::triangulate_polygon(&polygon, *c).unwrap();
+            assert_eq!(triangles, lib.triangulation.triangles(), "{}", c.name());
+            let back = optri::io::triangulation_from_json(&json).unwrap();
+            assert_eq!(back.triangles(), &triangles[..]);
+            tested += 1;
+        }
+    }
+    assert!(tested >= 2 * 6, "{tested}");
+    // The summary names the domain; the outputs are written, the SVG with
+    // the boundary.
+    let svg = dir.join("l.svg");
+    let ele = dir.join("l.ele");
+    let out = run(&[
+        "triangulate",
+        &poly,
+        "--criterion",
+        "minmax-area",
+        "-o",
+        svg.to_str().unwrap(),
+        "-o",
+        ele.to_str().unwrap(),
+        "-o",
+        dir.join("l-out.geojson").to_str().unwrap(),
+        "-o",
+        dir.join("l.json").to_str().unwrap(),
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        text.contains("domain: polygon interior (6 vertices, given clockwise)"),
+        "{text}"
+    );
+    let svg = std::fs::read_to_string(svg).unwrap();
+    assert_eq!(svg.matches("<polygon class=\"boundary\"").count(), 1);
+    let ele = std::fs::read_to_string(ele).unwrap();
+    assert!(ele.lines().any(|l| l == "4 3 0"), "{ele}");
+    let file: Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("l.json")).unwrap()).unwrap();
+    assert_eq!(file["domain"], "polygon");
+    // Stdin with an explicit format.
+    let json = stdout_json(&run_stdin(
+        &["triangulate", "-", "--input-format", "poly", "--json"],
+        L_POLY,
+    ));
+    assert_eq!(json["domain"], "polygon");
+    // A point file's document says its domain too.
+    let points = write(&dir, "square.csv", SQUARE);
+    let json = stdout_json(&run(&["triangulate", &points, "--json"]));
+    assert_eq!(json["domain"], "convex-hull");
+    // `graph` reads a .poly's vertices as points.
+    let json = stdout_json(&run(&["graph", &poly, "--kind", "hull", "--json"]));
+    assert_eq!(json["points"], n);
+}
+
+#[test]
+fn bad_polygons_fail_cleanly_naming_what_is_wrong() {
+    let dir = scratch("bad-polygons");
+    let bow = write(
+        &dir,
+        "bow.geojson",
+        r#"{"type":"Polygon","coordinates":[[[0,0],[2,2],[2,0],[0,2],[0,0]]]}"#,
+    );
+    assert_fails(
+        &run(&["triangulate", &bow, "--criterion", "minmax-area"]),
+        &["bow.geojson", "edge 0-1 meets edge 2-3"],
+    );
+    let holes = write(
+        &dir,
+        "holes.geojson",
+        r#"{"type":"FeatureCollection","features":[{"type":"Feature","geometry":{"type":"Polygon",
+        "coordinates":[[[0,0],[4,0],[4,4],[0,4],[0,0]],[[1,1],[1,2],[2,2],[1,1]]]}}]}"#,
+    );
+    assert_fails(
+        &run(&["triangulate", &holes]),
+        &[
+            "holes.geojson",
+            "features[0].geometry",
+            "holes are not supported yet",
+        ],
+    );
+    let poly_holes = write(&dir, "h.poly", &L_POLY.replace("\n0\n", "\n1\n1 0.5 0.5\n"));
+    assert_fails(
+        &run(&["triangulate", &poly_holes]),
+        &["h.poly:16:", "holes are not supported yet"],
+    );
+    // Two cycles in a .poly name the line of the second.
+    let two = write(
+        &dir,
+        "two.poly",
+        "6 2\n0 0 0\n1 1 0\n2 0 1\n3 5 5\n4 6 5\n5 5 6\n6 0\n\
+         0 0 1\n1 1 2\n2 2 0\n3 3 4\n4 4 5\n5 5 3\n",
+    );
+    assert_fails(
+        &run(&["triangulate", &two]),
+        &["two.poly:12:", "more than one cycle"],
+    );
+    // A self-intersecting .poly ring is caught by the polygon check.
+    let crossing = write(
+        &dir,
+        "x.poly",
+        "4 2\n0 0 0\n1 2 2\n2 2 0\n3 0 2\n4 0\n0 0 1\n1 1 2\n2 2 3\n3 3 0\n",
+    );
+    assert_fails(
+        &run(&["triangulate", &crossing]),
+        &["x.poly", "edge 0-1 meets edge 2-3"],
+    );
 }

@@ -6,7 +6,7 @@ use crate::report;
 use crate::CliResult;
 use optri::io::{self, InputFormat, OutputFormat};
 use optri::kernel::Point;
-use optri::{Criterion, PointSet, Requirement, Triangulation};
+use optri::{Criterion, PointSet, Requirement, SimplePolygon, Triangulation};
 use std::time::Instant;
 
 /// The built-in point set of `optri demo`.
@@ -14,6 +14,25 @@ const DEMO_POINTS: &str = include_str!("../demo_points.txt");
 /// The demo's second, strictly convex point set, for the criteria that need
 /// convex position ([`Requirement::ConvexPosition`]).
 const DEMO_CONVEX_POINTS: &str = include_str!("../demo_convex_points.txt");
+
+/// The demo's simple polygon (a notched, star-like outline, counter-clockwise),
+/// triangulated inside by the criteria of [`DEMO_POLYGON_CRITERIA`].
+const DEMO_POLYGON: [Point; 12] = [
+    [0.0, 0.0],
+    [4.0, 1.0],
+    [8.0, 0.0],
+    [7.0, 4.0],
+    [9.0, 7.0],
+    [6.0, 6.5],
+    [5.0, 9.0],
+    [3.5, 5.5],
+    [1.0, 8.0],
+    [1.5, 5.0],
+    [-1.0, 3.5],
+    [2.0, 2.5],
+];
+/// The criteria drawn on [`DEMO_POLYGON`] (those that support polygons).
+const DEMO_POLYGON_CRITERIA: [Criterion; 2] = [Criterion::MinWeight, Criterion::MinmaxArea];
 
 /// One triangulation of the demo: which point set, the criterion with
 /// `(exact)` or `(uncertified)`, the panel title (both of those), the result
@@ -105,6 +124,30 @@ pub(crate) fn run(args: DemoArgs) -> CliResult<()> {
                 .map_err(|e| format!("{} on the convex demo set: {e}", criterion.name()))?;
             results.push(r);
         }
+    }
+    let polygon =
+        SimplePolygon::new(&DEMO_POLYGON).map_err(|e| input_error("built-in demo polygon", e))?;
+    text.push_str(&format!(
+        "polygon set: a simple polygon of {} vertices, triangulated inside by {}\n",
+        polygon.len(),
+        DEMO_POLYGON_CRITERIA.map(Criterion::name).join(" and ")
+    ));
+    for criterion in DEMO_POLYGON_CRITERIA
+        .into_iter()
+        .filter(|c| c.supports_polygons())
+    {
+        let t0 = Instant::now();
+        let solution = optri::triangulate_polygon(&polygon, criterion)
+            .map_err(|e| format!("{} on the demo polygon: {e}", criterion.name()))?;
+        let ms = ms_since(t0);
+        let label = report::label(criterion, solution.exact);
+        results.push(DemoResult {
+            set: "polygon",
+            title: format!("{label} — polygon set"),
+            label,
+            triangulation: solution.triangulation,
+            ms,
+        });
     }
     let panels: Vec<(&str, &Triangulation)> = results
         .iter()

@@ -8,7 +8,12 @@ use crate::CliResult;
 use optri::io::{self, GraphReport, OutputFormat};
 
 pub(crate) fn run(args: GraphArgs) -> CliResult<()> {
-    let mut run = Run::start(&args.input, &args.output, OutputFormat::from_path_for_graph)?;
+    let mut run = Run::start(
+        &args.input,
+        &args.output,
+        OutputFormat::from_path_for_graph,
+        false,
+    )?;
     let (edges, phases) = optri::graph(&run.points, args.kind).map_err(|e| e.to_string())?;
     run.timing.phases.extend(phases);
     let title = run.title(args.kind.name());

@@ -7,9 +7,8 @@ pub(crate) mod triangulate;
 
 use crate::args::InputArgs;
 use crate::CliResult;
-use optri::io::{self, InputFormat, OutputFormat};
-use optri::kernel::Point;
-use optri::{Error, Phase, PointSet};
+use optri::io::{self, Input, InputFormat, OutputFormat};
+use optri::{Error, Phase, PointSet, SimplePolygon};
 use std::io::Read;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
@@ -19,8 +18,11 @@ use std::time::Instant;
 pub(crate) struct Run {
     /// The name of the input for messages: its path, or `<stdin>`.
     pub source: String,
-    /// The validated input.
+    /// The validated input (for a polygon, its vertices in ring order).
     pub points: PointSet,
+    /// The validated polygon, when the input is one (a `.poly`, or a GeoJSON
+    /// `Polygon` without points) and the command takes polygons.
+    pub polygon: Option<SimplePolygon>,
     /// `read`, `validate`, then whatever the command adds, `write` and `total`.
     pub timing: Timing,
 }
@@ -29,11 +31,13 @@ impl Run {
     /// Checks every output path with `format_for` (before any work, so a
     /// typo costs nothing), refuses outputs that would overwrite the input,
     /// then reads and validates the input, timing `read` (from the start)
-    /// and `validate`.
+    /// and `validate`. With `polygons`, a polygon input is read as one
+    /// ([`io::read_input`]); otherwise every input is read as points.
     pub fn start(
         input: &InputArgs,
         outputs: &[PathBuf],
         format_for: fn(&Path) -> optri::Result<OutputFormat>,
+        polygons: bool,
     ) -> CliResult<Self> {
         let mut timing = Timing {
             start: Instant::now(),
@@ -44,13 +48,22 @@ impl Run {
             formats.push(format_for(path).map_err(|e| e.to_string())?);
         }
         refuse_overwriting_input(input, outputs, &formats)?;
-        let (points, source) = read_input(input)?;
+        let (input, source) = read_input(input, polygons)?;
         timing.phases.push(Phase {
             name: "read",
             ms: ms_since(timing.start),
         });
         let t0 = Instant::now();
-        let points = PointSet::new(&points).map_err(|e| input_error(&source, e))?;
+        let (points, polygon) = match input {
+            Input::Points(points) => (
+                PointSet::new(&points).map_err(|e| input_error(&source, e))?,
+                None,
+            ),
+            Input::Polygon(ring) => {
+                let polygon = SimplePolygon::new(&ring).map_err(|e| input_error(&source, e))?;
+                (polygon.point_set().clone(), Some(polygon))
+            }
+        };
         timing.phases.push(Phase {
             name: "validate",
             ms: ms_since(t0),
@@ -58,6 +71,7 @@ impl Run {
         Ok(Self {
             source,
             points,
+            polygon,
             timing,
         })
     }
@@ -124,8 +138,9 @@ pub(crate) fn input_error(source: &str, e: Error) -> String {
     }
 }
 
-/// Reads the input points; returns them with the name to use in messages.
-fn read_input(args: &InputArgs) -> CliResult<(Vec<Point>, String)> {
+/// Reads the input (points, or with `polygons` possibly a polygon); returns
+/// it with the name to use in messages.
+fn read_input(args: &InputArgs, polygons: bool) -> CliResult<(Input, String)> {
     let format = args
         .input_format
         .as_deref()
@@ -139,12 +154,23 @@ fn read_input(args: &InputArgs) -> CliResult<(Vec<Point>, String)> {
             .read_to_string(&mut text)
             .map_err(|e| format!("cannot read stdin: {e}"))?;
         let format = format.unwrap_or_else(|| InputFormat::sniff(&text));
-        let points = io::read_points(&text, format).map_err(|e| input_error(&source, e))?;
-        Ok((points, source))
+        let input = if polygons {
+            io::read_input(&text, format)
+        } else {
+            io::read_points(&text, format).map(Input::Points)
+        };
+        Ok((input.map_err(|e| input_error(&source, e))?, source))
     } else {
-        let points = io::read_points_file(Path::new(&args.input), format)
-            .map_err(|e| input_error(&args.input, e))?;
-        Ok((points, args.input.clone()))
+        let path = Path::new(&args.input);
+        let input = if polygons {
+            io::read_input_file(path, format)
+        } else {
+            io::read_points_file(path, format).map(Input::Points)
+        };
+        Ok((
+            input.map_err(|e| input_error(&args.input, e))?,
+            args.input.clone(),
+        ))
     }
 }
 

@@ -1,4 +1,5 @@
-//! `optri triangulate`: one criterion over a point file.
+//! `optri triangulate`: one criterion over a point file (its convex hull) or
+//! a polygon file (the polygon's interior).
 
 use super::Run;
 use crate::args::TriangulateArgs;
@@ -10,8 +11,28 @@ use optri::Criterion;
 pub(crate) fn run(args: TriangulateArgs) -> CliResult<()> {
     // Check everything the user typed before any work.
     let criterion = Criterion::from_name(&args.criterion).map_err(|e| e.to_string())?;
-    let mut run = Run::start(&args.input, &args.output, OutputFormat::from_path)?;
-    let solution = optri::triangulate(&run.points, criterion).map_err(|e| e.to_string())?;
+    let mut run = Run::start(&args.input, &args.output, OutputFormat::from_path, true)?;
+    let solution = match &run.polygon {
+        Some(polygon) => {
+            if !criterion.supports_polygons() {
+                let supported: Vec<&str> = Criterion::ALL
+                    .iter()
+                    .filter(|c| c.supports_polygons())
+                    .map(|c| c.name())
+                    .collect();
+                return Err(format!(
+                    "{}: the input is a polygon, and criterion {} does not triangulate \
+                     polygons; criteria that do: {}",
+                    run.source,
+                    criterion.name(),
+                    supported.join(", ")
+                ));
+            }
+            optri::triangulate_polygon(polygon, criterion)
+        }
+        None => optri::triangulate(&run.points, criterion),
+    }
+    .map_err(|e| e.to_string())?;
     run.timing.phases.extend(solution.phases.iter().cloned());
     let title = run.title(&report::label(criterion, solution.exact));
     // A JSON output holds the phases timed so far (the write and the total

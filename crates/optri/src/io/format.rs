@@ -5,7 +5,8 @@ use crate::error::{Error, Result};
 use std::path::{Path, PathBuf};
 
 /// The supported input extensions, for messages.
-const SUPPORTED_INPUTS: &str = ".txt .xy .csv .pts (text), .node, .tsp, .geojson .json";
+const SUPPORTED_INPUTS: &str =
+    ".txt .xy .csv .pts (text), .node, .poly (polygon), .tsp, .geojson .json";
 
 /// The supported output extensions, for messages.
 const SUPPORTED_OUTPUTS: &str = ".json, .svg, .ele (writes the sibling .node too), .geojson";
@@ -15,7 +16,8 @@ fn lowercase_extension(path: &Path) -> Option<String> {
     Some(path.extension()?.to_str()?.to_ascii_lowercase())
 }
 
-/// The point-file formats optri reads.
+/// The input formats optri reads: point files and, for
+/// [`read_input`](super::read_input), polygon files.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum InputFormat {
     /// One point per line, `x y` (separated by spaces, tabs, commas or
@@ -31,13 +33,22 @@ pub enum InputFormat {
     /// Triangle's `.node`: a header `n dim attributes boundary_marker`, then
     /// `id x y [attributes…] [marker]` per vertex.
     Node,
+    /// Triangle's `.poly` holding one simple polygon: a `.node` vertex
+    /// section, a segment section whose segments form exactly one closed
+    /// cycle through every vertex, and an empty (or no) hole section. Always
+    /// a polygon input ([`Input::Polygon`](super::Input::Polygon)); read as
+    /// points, it gives the ring's vertices in boundary order.
+    Poly,
     /// TSPLIB `.tsp` with a `NODE_COORD_SECTION` (coordinates taken as they
     /// are, also for `GEO` and `ATT` instances).
     Tsplib,
     /// GeoJSON `Point`/`MultiPoint` geometries (bare, in a `Feature`, a
     /// `FeatureCollection` or a `GeometryCollection`); the other geometry
     /// types (`LineString`, `Polygon`, their `Multi` forms) are skipped, so
-    /// optri's own GeoJSON output reads back as its points. Also optri's own
+    /// optri's own GeoJSON output reads back as its points. A document with
+    /// no `Point`/`MultiPoint` but one `Polygon` (or a `MultiPolygon` of one
+    /// polygon, without holes) is a polygon input for
+    /// [`read_input`](super::read_input): the outer ring. Also optri's own
     /// JSON documents (an object without `"type"`): their `"coordinates"`, or
     /// the `"points"` array of documents before schema version 1.
     GeoJson,
@@ -48,6 +59,7 @@ impl InputFormat {
     pub const ALL: &'static [InputFormat] = &[
         InputFormat::Text,
         InputFormat::Node,
+        InputFormat::Poly,
         InputFormat::Tsplib,
         InputFormat::GeoJson,
     ];
@@ -57,13 +69,14 @@ impl InputFormat {
         match self {
             InputFormat::Text => "text",
             InputFormat::Node => "node",
+            InputFormat::Poly => "poly",
             InputFormat::Tsplib => "tsplib",
             InputFormat::GeoJson => "geojson",
         }
     }
 
     /// The format implied by `path`'s extension (case-insensitive):
-    /// `.txt .xy .csv .pts` → Text, `.node` → Node, `.tsp` → Tsplib,
+    /// `.txt .xy .csv .pts` → Text, `.node` → Node, `.poly` → Poly, `.tsp` → Tsplib,
     /// `.geojson .json` → GeoJson.
     ///
     /// # Errors
@@ -76,6 +89,7 @@ impl InputFormat {
         match lowercase_extension(path).as_deref() {
             Some("txt" | "xy" | "csv" | "pts") => Ok(InputFormat::Text),
             Some("node") => Ok(InputFormat::Node),
+            Some("poly") => Ok(InputFormat::Poly),
             Some("tsp") => Ok(InputFormat::Tsplib),
             Some("geojson" | "json") => Ok(InputFormat::GeoJson),
             _ => Err(Error::Io(format!(
@@ -86,7 +100,7 @@ impl InputFormat {
         }
     }
 
-    /// Looks a format up by name (`text`, `node`, `tsplib`, `geojson`; also
+    /// Looks a format up by name (`text`, `node`, `poly`, `tsplib`, `geojson`; also
     /// the aliases `txt`, `tsp`, `json`).
     ///
     /// # Errors
@@ -95,6 +109,7 @@ impl InputFormat {
         match name.to_ascii_lowercase().as_str() {
             "text" | "txt" | "xy" | "csv" => Ok(InputFormat::Text),
             "node" => Ok(InputFormat::Node),
+            "poly" => Ok(InputFormat::Poly),
             "tsplib" | "tsp" => Ok(InputFormat::Tsplib),
             "geojson" | "json" => Ok(InputFormat::GeoJson),
             _ => Err(Error::UnknownName {
@@ -108,7 +123,7 @@ impl InputFormat {
     /// Guesses the format from the content (for stdin and unknown
     /// extensions): a leading `{` means GeoJSON, a TSPLIB keyword line
     /// (`NAME`, `TYPE`, `DIMENSION`, `NODE_COORD_SECTION`) means TSPLIB,
-    /// anything else is read as text. `.node` files are not guessed.
+    /// anything else is read as text. `.node` and `.poly` files are not guessed.
     pub fn sniff(text: &str) -> Self {
         let trimmed = text.trim_start();
         if trimmed.starts_with('{') {
@@ -195,6 +210,7 @@ mod tests {
         for (path, format) in [
             ("a/b.CSV", InputFormat::Text),
             ("b.node", InputFormat::Node),
+            ("b.POLY", InputFormat::Poly),
             ("b.tsp", InputFormat::Tsplib),
             ("b.json", InputFormat::GeoJson),
         ] {

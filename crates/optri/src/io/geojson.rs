@@ -6,7 +6,7 @@
 //! [`InputFormat::GeoJson`]: super::InputFormat::GeoJson
 
 use super::json::document_coordinates;
-use super::{check_coordinate, parse};
+use super::{check_coordinate, parse, Input, HOLES_UNSUPPORTED};
 use crate::error::Result;
 use crate::kernel::Point;
 use crate::structures::Triangulation;
@@ -25,8 +25,17 @@ fn json_type(v: &Value) -> &'static str {
 }
 
 pub(super) fn read_geojson(text: &str) -> Result<Vec<Point>> {
+    match read_geojson_input(text, false)? {
+        Input::Points(points) | Input::Polygon(points) => Ok(points),
+    }
+}
+
+/// Reads a GeoJSON document as points or, when it holds no `Point` or
+/// `MultiPoint` but one `Polygon` (or a `MultiPolygon` of one polygon), and
+/// `polygons` is set, as that polygon's outer ring (closing vertex dropped).
+pub(super) fn read_geojson_input(text: &str, polygons: bool) -> Result<Input> {
     if text.trim().is_empty() {
-        return Ok(Vec::new());
+        return Ok(Input::Points(Vec::new()));
     }
     let root: Value =
         serde_json::from_str(text).map_err(|e| parse(e.line(), format!("invalid JSON: {e}")))?;
@@ -36,9 +45,12 @@ pub(super) fn read_geojson(text: &str) -> Result<Vec<Point>> {
     let geojson = root.get("type").is_some();
     if let Some((name, list)) = document_coordinates(&root).filter(|_| !geojson) {
         collect_positions(list, name, &mut found.points)?;
-        return Ok(found.points);
+        return Ok(Input::Points(found.points));
     }
     collect_geojson(&root, "the document", &mut found)?;
+    if found.points.is_empty() && polygons && !found.polygons.is_empty() {
+        return polygon_ring(&found.polygons).map(Input::Polygon);
+    }
     if found.points.is_empty() {
         let what = if found.skipped.is_empty() {
             "no geometries at all".to_string()
@@ -55,21 +67,102 @@ pub(super) fn read_geojson(text: &str) -> Result<Vec<Point>> {
             format!("GeoJSON: no Point or MultiPoint geometry found (the document has {what})"),
         ));
     }
-    Ok(found.points)
+    Ok(Input::Points(found.points))
 }
 
-/// What [`collect_geojson`] gathers: the points, and how many geometries of
-/// each point-less type were skipped (in first-seen order, for the message
-/// when nothing else is found).
+/// The outer ring of the one polygon among `polygons` (`Polygon` and
+/// `MultiPolygon` geometries with where they are), without its closing
+/// vertex.
+fn polygon_ring(polygons: &[(String, &Value)]) -> Result<Vec<Point>> {
+    // Every polygon as (where, its rings).
+    let mut all: Vec<(String, &Value)> = Vec::new();
+    for (at, geometry) in polygons {
+        let kind = geometry.get("type").and_then(Value::as_str).unwrap_or("");
+        let Some(coordinates) = geometry.get("coordinates") else {
+            return Err(parse(
+                0,
+                format!("GeoJSON: {at}: {kind} lacks \"coordinates\""),
+            ));
+        };
+        if kind == "MultiPolygon" {
+            let Some(list) = coordinates.as_array() else {
+                return Err(parse(
+                    0,
+                    format!(
+                        "GeoJSON: {at}: expected an array of polygons, found {}",
+                        json_type(coordinates)
+                    ),
+                ));
+            };
+            for (k, p) in list.iter().enumerate() {
+                all.push((format!("{at}.coordinates[{k}]"), p));
+            }
+        } else {
+            all.push((at.clone(), coordinates));
+        }
+    }
+    if all.len() != 1 {
+        let places: Vec<&str> = all.iter().map(|(at, _)| at.as_str()).take(4).collect();
+        return Err(parse(
+            0,
+            format!(
+                "GeoJSON: the document has {} polygons ({}{}) and no points; optri \
+                 triangulates one simple polygon per file",
+                all.len(),
+                places.join(", "),
+                if all.len() > places.len() {
+                    ", …"
+                } else {
+                    ""
+                }
+            ),
+        ));
+    }
+    let (at, rings) = &all[0];
+    let Some(rings) = rings.as_array() else {
+        return Err(parse(
+            0,
+            format!(
+                "GeoJSON: {at}: expected an array of rings, found {}",
+                json_type(rings)
+            ),
+        ));
+    };
+    match rings.len() {
+        0 => return Err(parse(0, format!("GeoJSON: {at}: the polygon has no ring"))),
+        1 => {}
+        k => {
+            return Err(parse(
+                0,
+                format!(
+                    "GeoJSON: {at}: {HOLES_UNSUPPORTED} (the polygon has {} hole ring(s))",
+                    k - 1
+                ),
+            ))
+        }
+    }
+    let mut ring = Vec::new();
+    collect_positions(&rings[0], &format!("{at}[0]"), &mut ring)?;
+    if ring.len() > 1 && ring.first() == ring.last() {
+        ring.pop();
+    }
+    Ok(ring)
+}
+
+/// What [`collect_geojson`] gathers: the points, the polygon geometries
+/// (with where they are), and how many geometries of each point-less type
+/// were skipped (in first-seen order, for the message when nothing else is
+/// found).
 #[derive(Default)]
-struct GeoJsonPoints {
+struct GeoJsonPoints<'v> {
     points: Vec<Point>,
+    polygons: Vec<(String, &'v Value)>,
     skipped: Vec<(&'static str, usize)>,
 }
 
 /// Appends the points of a GeoJSON object; `at` describes where it is, for
 /// messages (JSON values carry no line numbers, so errors name the path).
-fn collect_geojson(v: &Value, at: &str, found: &mut GeoJsonPoints) -> Result<()> {
+fn collect_geojson<'v>(v: &'v Value, at: &str, found: &mut GeoJsonPoints<'v>) -> Result<()> {
     /// Valid GeoJSON geometries that hold no points of their own.
     const POINTLESS: [&str; 4] = ["LineString", "MultiLineString", "Polygon", "MultiPolygon"];
     let bad = |m: String| Err(parse(0, format!("GeoJSON: {at}: {m}")));
@@ -116,6 +209,9 @@ fn collect_geojson(v: &Value, at: &str, found: &mut GeoJsonPoints) -> Result<()>
                      and MultiPoint; LineString, Polygon and their Multi forms are skipped)"
                 ));
             };
+            if matches!(kind, "Polygon" | "MultiPolygon") {
+                found.polygons.push((at.to_string(), v));
+            }
             match found.skipped.iter_mut().find(|(k, _)| *k == kind) {
                 Some((_, n)) => *n += 1,
                 None => found.skipped.push((kind, 1)),
@@ -302,6 +398,64 @@ mod tests {
             .unwrap(),
             vec![[1.0, 2.0], [3.0, 4.0]]
         );
+    }
+
+    #[test]
+    fn geojson_polygon_inputs() {
+        use crate::io::{read_input, read_polygon, Input};
+        let square = vec![[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [0.0, 2.0]];
+        // A Feature with a closed outer ring: the closing vertex is dropped.
+        let feature = r#"{"type":"Feature","properties":{},"geometry":{"type":"Polygon",
+            "coordinates":[[[0,0],[2,0],[2,2],[0,2],[0,0]]]}}"#;
+        assert_eq!(
+            read_input(feature, InputFormat::GeoJson).unwrap(),
+            Input::Polygon(square.clone())
+        );
+        // Clockwise and unclosed rings are returned as given.
+        let clockwise = r#"{"type":"Polygon","coordinates":[[[0,0],[0,2],[2,2],[2,0]]]}"#;
+        assert_eq!(
+            read_polygon(clockwise, InputFormat::GeoJson).unwrap(),
+            vec![[0.0, 0.0], [0.0, 2.0], [2.0, 2.0], [2.0, 0.0]]
+        );
+        // A MultiPolygon of one polygon, in a FeatureCollection.
+        let multi = r#"{"type":"FeatureCollection","features":[{"type":"Feature","geometry":
+            {"type":"MultiPolygon","coordinates":[[[[0,0],[2,0],[2,2],[0,2],[0,0]]]]}}]}"#;
+        assert_eq!(read_polygon(multi, InputFormat::GeoJson).unwrap(), square);
+        // Holes and several polygons are refused, naming the geometry.
+        let holes = r#"{"type":"FeatureCollection","features":[{"type":"Feature","geometry":
+            {"type":"Polygon","coordinates":[[[0,0],[4,0],[4,4],[0,4],[0,0]],
+            [[1,1],[1,2],[2,2],[1,1]]]}}]}"#;
+        let e = read_input(holes, InputFormat::GeoJson)
+            .unwrap_err()
+            .to_string();
+        assert!(
+            e.contains("features[0].geometry") && e.contains("holes are not supported yet"),
+            "{e}"
+        );
+        let two = r#"{"type":"MultiPolygon","coordinates":[[[[0,0],[1,0],[0,1],[0,0]]],
+            [[[5,5],[6,5],[5,6],[5,5]]]]}"#;
+        let e = read_input(two, InputFormat::GeoJson)
+            .unwrap_err()
+            .to_string();
+        assert!(
+            e.contains("2 polygons") && e.contains("one simple polygon"),
+            "{e}"
+        );
+        // With points, the document is a point input and polygons (even with
+        // holes) are skipped, as read_points does.
+        let mixed = r#"{"type":"GeometryCollection","geometries":[
+            {"type":"Point","coordinates":[7,7]},
+            {"type":"Polygon","coordinates":[[[0,0],[4,0],[4,4],[0,0]],[[1,1],[2,1],[1,2],[1,1]]]}]}"#;
+        assert_eq!(
+            read_input(mixed, InputFormat::GeoJson).unwrap(),
+            Input::Points(vec![[7.0, 7.0]])
+        );
+        let e = read_polygon(mixed, InputFormat::GeoJson)
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("holds points, not a polygon"), "{e}");
+        // read_points keeps refusing a polygon-only document.
+        assert!(read_points(feature, InputFormat::GeoJson).is_err());
     }
 
     #[test]

@@ -22,7 +22,7 @@ use crate::criteria::{Diagnostics, Optimality};
 use crate::error::{Error, Result};
 use crate::kernel::Point;
 use crate::registry::{GraphKind, Solution};
-use crate::structures::{PointSet, Stats, Triangulation};
+use crate::structures::{Domain, PointSet, SimplePolygon, Stats, Triangulation};
 use crate::timing::Phase;
 use serde::ser::{Serialize, Serializer};
 use serde_json::Value;
@@ -94,6 +94,7 @@ impl Serialize for TriangulationReport<'_> {
         TriangulationDocument {
             schema_version: SCHEMA_VERSION,
             document: "triangulation",
+            domain: domain_name(t.domain()),
             criterion: run.map(|s| s.criterion.name()),
             exact: run.map(|s| s.exact),
             optimality: optimality.map(Optimality::name),
@@ -132,6 +133,7 @@ struct BoundDocument {
 struct TriangulationDocument<'a> {
     schema_version: u32,
     document: &'static str,
+    domain: &'static str,
     #[serde(skip_serializing_if = "Option::is_none")]
     criterion: Option<&'static str>,
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -256,6 +258,16 @@ struct GraphDocument<'a> {
     coordinates: &'a [Point],
 }
 
+/// The `"domain"` of a triangulation document: `"convex-hull"` or
+/// `"polygon"` (the interior of a simple polygon whose ring is the
+/// coordinates, in order).
+pub(super) fn domain_name(domain: &Domain) -> &'static str {
+    match domain {
+        Domain::Polygon { .. } => "polygon",
+        _ => "convex-hull",
+    }
+}
+
 /// The guarantee of an approximation, if the result is one.
 fn bound(optimality: Optimality) -> Option<&'static str> {
     match optimality {
@@ -366,7 +378,6 @@ pub fn triangulation_from_json(value: &Value) -> Result<Triangulation> {
             .ok_or_else(|| bad("no \"triangles\""))?,
     )
     .map_err(|e| bad(&format!("\"triangles\": {e}")))?;
-    let point_set = PointSet::new(&points)?;
     if let Some(i) = triangles
         .iter()
         .flatten()
@@ -374,7 +385,17 @@ pub fn triangulation_from_json(value: &Value) -> Result<Triangulation> {
     {
         return Err(bad(&format!("triangle index {i} out of range")));
     }
-    Triangulation::from_triangles(&point_set, triangles)
+    match value.get("domain").and_then(Value::as_str) {
+        Some("polygon") => {
+            Triangulation::from_polygon_triangles(&SimplePolygon::new(&points)?, triangles)
+        }
+        None | Some("convex-hull") => {
+            Triangulation::from_triangles(&PointSet::new(&points)?, triangles)
+        }
+        Some(other) => Err(bad(&format!(
+            "\"domain\" is \"{other}\", not \"convex-hull\" or \"polygon\""
+        ))),
+    }
 }
 
 #[cfg(test)]
@@ -388,6 +409,7 @@ mod tests {
     const TRIANGULATION_FIELDS: &[&str] = &[
         "schema_version",
         "document",
+        "domain",
         "points",
         "distinct_points",
         "duplicates",
@@ -511,6 +533,34 @@ mod tests {
         let back = triangulation_from_json(&v).unwrap();
         assert_eq!(back.triangles(), t.triangles());
         assert_eq!(read_points(&text, InputFormat::GeoJson).unwrap(), pts);
+    }
+
+    #[test]
+    fn a_polygon_document_says_its_domain_and_reads_back() {
+        // An L-shape, clockwise.
+        let ring = [
+            [0.0, 0.0],
+            [0.0, 2.0],
+            [1.0, 2.0],
+            [1.0, 1.0],
+            [2.0, 1.0],
+            [2.0, 0.0],
+        ];
+        let polygon = SimplePolygon::new(&ring).unwrap();
+        let solution = crate::triangulate_polygon(&polygon, Criterion::MinWeight).unwrap();
+        let v = solution_to_json(&solution);
+        assert_eq!(v["domain"], "polygon");
+        assert_eq!(v["coordinates"], json!(ring));
+        assert_eq!(v["triangles"].as_array().unwrap().len(), ring.len() - 2);
+        let back = triangulation_from_json(&v).unwrap();
+        assert_eq!(back.triangles(), solution.triangulation.triangles());
+        assert_eq!(back.domain(), solution.triangulation.domain());
+        let hull = triangulation_to_json(&delaunay(&PointSet::new(&ring).unwrap()).unwrap());
+        assert_eq!(hull["domain"], "convex-hull");
+        let mut odd = v.clone();
+        odd["domain"] = json!("torus");
+        let e = triangulation_from_json(&odd).unwrap_err().to_string();
+        assert!(e.contains("torus"), "{e}");
     }
 
     #[test]

@@ -6,12 +6,16 @@
 //! | `format` | [`InputFormat`] by extension, name or content; [`OutputFormat`] by extension | |
 //! | `text` | `x y` per line | |
 //! | `node` | Triangle `.node` | `.node` + `.ele` ([`triangulation_to_triangle_files`]) |
+//! | `poly` | Triangle `.poly`: one closed boundary, no holes | |
 //! | `tsplib` | TSPLIB `.tsp` | |
-//! | `geojson` | `Point`/`MultiPoint` | triangulations and graphs |
+//! | `geojson` | `Point`/`MultiPoint`; one `Polygon` (outer ring) | triangulations and graphs |
 //! | `json` | [`triangulation_from_json`]; its `coordinates` through the GeoJSON reader | the one result schema: [`TriangulationReport`], [`GraphReport`] |
 //! | `svg` | | single picture, graph, multi-panel comparison |
 //!
-//! [`read_points`] / [`read_points_file`] pick the reader,
+//! [`read_points`] / [`read_points_file`] pick the reader of points,
+//! [`read_polygon`] / [`read_polygon_file`] of a simple polygon's ring, and
+//! [`read_input`] / [`read_input_file`] say which of the two a file holds
+//! ([`Input`]);
 //! [`write_triangulation`] / [`write_graph`] (and their `_report` forms, which
 //! write a whole [`TriangulationReport`] / [`GraphReport`] as `.json`) the
 //! writer by extension.
@@ -34,6 +38,7 @@ mod format;
 mod geojson;
 mod json;
 mod node;
+mod poly;
 mod svg;
 mod text;
 mod tsplib;
@@ -52,6 +57,98 @@ use crate::kernel::{self, CoordinateProblem, Point, MAX_COORDINATE, MIN_COORDINA
 use crate::structures::Triangulation;
 use std::path::{Path, PathBuf};
 
+/// The message of every reader for a polygon with holes.
+const HOLES_UNSUPPORTED: &str = "polygons with holes are not supported yet";
+
+/// What an input file holds: points (to triangulate their convex hull) or
+/// the ring of a simple polygon (to triangulate its interior), as
+/// [`read_input`] tells them apart.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Input {
+    /// The points in file order.
+    Points(Vec<Point>),
+    /// A polygon's vertices in boundary order (either orientation), the
+    /// closing vertex not repeated; position `i` is input index `i`.
+    Polygon(Vec<Point>),
+}
+
+impl Input {
+    /// The points, or the polygon's vertices in ring order.
+    pub fn points(&self) -> &[Point] {
+        match self {
+            Input::Points(p) | Input::Polygon(p) => p,
+        }
+    }
+}
+
+/// Parses `text` in `format` as points or a polygon: a `.poly` is always a
+/// polygon; a GeoJSON document is points if it has any `Point`/`MultiPoint`
+/// geometry (its polygons are then skipped, as [`read_points`] does) and
+/// otherwise a polygon if it has exactly one `Polygon` (or a `MultiPolygon`
+/// of one polygon); the other formats are points.
+///
+/// # Errors
+/// As [`read_points`]; for a GeoJSON polygon input, [`Error::Parse`] naming
+/// the geometry when it has holes ("polygons with holes are not supported
+/// yet") or when there is more than one polygon.
+pub fn read_input(text: &str, format: InputFormat) -> Result<Input> {
+    let text = text.strip_prefix('\u{feff}').unwrap_or(text);
+    let input = match format {
+        InputFormat::Poly => Input::Polygon(poly::read_poly(text)?),
+        InputFormat::GeoJson => geojson::read_geojson_input(text, true)?,
+        _ => Input::Points(read_points(text, format)?),
+    };
+    if input.points().is_empty() {
+        return Err(parse(0, "no points found in the input"));
+    }
+    Ok(input)
+}
+
+/// Reads an input file as [`read_input`] does; `format: None` picks the
+/// format as [`read_points_file`] does.
+///
+/// # Errors
+/// As [`read_points_file`] and [`read_input`].
+pub fn read_input_file(path: &Path, format: Option<InputFormat>) -> Result<Input> {
+    let (text, format) = read_text(path, format)?;
+    read_input(&text, format)
+}
+
+/// Parses a simple polygon's ring (boundary order, closing vertex dropped)
+/// from a `.poly` or a GeoJSON `Polygon` (see [`read_input`]). The ring is
+/// not validated: [`crate::SimplePolygon::new`] does that.
+///
+/// # Errors
+/// As [`read_input`], and [`Error::Parse`] (line 0) when the input holds
+/// points rather than a polygon.
+pub fn read_polygon(text: &str, format: InputFormat) -> Result<Vec<Point>> {
+    match read_input(text, format)? {
+        Input::Polygon(ring) => Ok(ring),
+        Input::Points(_) => Err(not_a_polygon(format)),
+    }
+}
+
+/// Reads a polygon file as [`read_polygon`] does; `format: None` picks the
+/// format as [`read_points_file`] does.
+///
+/// # Errors
+/// As [`read_points_file`] and [`read_polygon`].
+pub fn read_polygon_file(path: &Path, format: Option<InputFormat>) -> Result<Vec<Point>> {
+    let (text, format) = read_text(path, format)?;
+    read_polygon(&text, format)
+}
+
+fn not_a_polygon(format: InputFormat) -> Error {
+    parse(
+        0,
+        format!(
+            "the {} input holds points, not a polygon (polygons are read from a GeoJSON \
+             Polygon or a Triangle .poly)",
+            format.name()
+        ),
+    )
+}
+
 /// Parses `text` in `format`.
 ///
 /// # Errors
@@ -63,6 +160,7 @@ pub fn read_points(text: &str, format: InputFormat) -> Result<Vec<Point>> {
     let points = match format {
         InputFormat::Text => text::read_text(text)?,
         InputFormat::Node => node::read_node(text)?,
+        InputFormat::Poly => poly::read_poly(text)?,
         InputFormat::Tsplib => tsplib::read_tsplib(text)?,
         InputFormat::GeoJson => geojson::read_geojson(text)?,
     };
@@ -81,12 +179,18 @@ pub fn read_points(text: &str, format: InputFormat) -> Result<Vec<Point>> {
 /// errors of [`read_points`] (with their line numbers; callers prefix the
 /// path).
 pub fn read_points_file(path: &Path, format: Option<InputFormat>) -> Result<Vec<Point>> {
+    let (text, format) = read_text(path, format)?;
+    read_points(&text, format)
+}
+
+/// A file's text and its format (given, else by extension, else by content).
+fn read_text(path: &Path, format: Option<InputFormat>) -> Result<(String, InputFormat)> {
     let text = std::fs::read_to_string(path)
         .map_err(|e| Error::Io(format!("cannot read '{}': {e}", path.display())))?;
     let format = format
         .or_else(|| InputFormat::from_path(path).ok())
         .unwrap_or_else(|| InputFormat::sniff(&text));
-    read_points(&text, format)
+    Ok((text, format))
 }
 
 fn write_file(path: &Path, contents: &str) -> Result<()> {

@@ -9,9 +9,10 @@ use crate::kernel::Point;
 use crate::structures::Triangulation;
 use std::fmt::Write;
 
-pub(super) fn read_node(text: &str) -> Result<Vec<Point>> {
-    let mut lines = text
-        .lines()
+/// The non-empty lines of a Triangle file, comments stripped, as
+/// `(1-based line, tokens)`.
+pub(super) fn token_lines(text: &str) -> impl Iterator<Item = (usize, Vec<&str>)> {
+    text.lines()
         .enumerate()
         .map(|(i, l)| {
             (
@@ -19,9 +20,44 @@ pub(super) fn read_node(text: &str) -> Result<Vec<Point>> {
                 strip_comment(l).split_whitespace().collect::<Vec<_>>(),
             )
         })
-        .filter(|(_, t)| !t.is_empty());
-    let Some((header_line, header)) = lines.next() else {
+        .filter(|(_, t)| !t.is_empty())
+}
+
+pub(super) fn read_node(text: &str) -> Result<Vec<Point>> {
+    let mut lines = token_lines(text);
+    let Some(section) = read_vertex_section(&mut lines)? else {
         return Ok(Vec::new());
+    };
+    if let Some((line, _)) = lines.next() {
+        return Err(parse(
+            line,
+            format!(
+                "more vertex lines than the {} the header announces",
+                section.points.len()
+            ),
+        ));
+    }
+    Ok(section.points)
+}
+
+/// The vertex section of a `.node` or `.poly` file.
+pub(super) struct VertexSection {
+    /// The vertices in file order.
+    pub points: Vec<Point>,
+    /// The id of the first vertex (0 or 1); the ids run on from it.
+    pub first_id: usize,
+    /// The line of the section header.
+    pub header_line: usize,
+}
+
+/// Reads a vertex-section header `n dim attributes boundary_marker` and its
+/// `n` vertex lines `id x y [attributes…] [marker]` from `lines`; `None` if
+/// there are no lines at all.
+pub(super) fn read_vertex_section<'t>(
+    lines: &mut impl Iterator<Item = (usize, Vec<&'t str>)>,
+) -> Result<Option<VertexSection>> {
+    let Some((header_line, header)) = lines.next() else {
+        return Ok(None);
     };
     let field = |k: usize, what: &str| -> Result<usize> {
         match header.get(k) {
@@ -54,13 +90,10 @@ pub(super) fn read_node(text: &str) -> Result<Vec<Point>> {
     let columns = 3 + attributes + markers;
     let mut points = Vec::with_capacity(count.min(1 << 20));
     let mut first_id = None;
-    for (line, tokens) in lines {
-        if points.len() == count {
-            return Err(parse(
-                line,
-                format!("more vertex lines than the {count} the header announces"),
-            ));
-        }
+    while points.len() < count {
+        let Some((line, tokens)) = lines.next() else {
+            break;
+        };
         if tokens.len() != columns {
             return Err(parse(
                 line,
@@ -100,7 +133,11 @@ pub(super) fn read_node(text: &str) -> Result<Vec<Point>> {
             ),
         ));
     }
-    Ok(points)
+    Ok(Some(VertexSection {
+        points,
+        first_id: first_id.unwrap_or(0),
+        header_line,
+    }))
 }
 
 /// A coordinate in shortest round-trip notation, with an exponent for very

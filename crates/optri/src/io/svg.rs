@@ -11,7 +11,7 @@
 //! title as one `<text class="title" …>`, so tests can count and read them.
 
 use crate::kernel::{metrics, Point};
-use crate::structures::Triangulation;
+use crate::structures::{Domain, Triangulation};
 use std::fmt::Write;
 
 /// Plot width of one panel, pixels.
@@ -33,6 +33,9 @@ struct Panel<'a> {
     edges: &'a [[u32; 2]],
     longest: Option<[u32; 2]>,
     worst: Option<[u32; 3]>,
+    /// A polygon domain's boundary cycle (input indices), drawn as one
+    /// `<polygon class="boundary">` under the edges.
+    boundary: Option<&'a [u32]>,
 }
 
 /// A number for captions: about five significant digits.
@@ -110,6 +113,10 @@ fn triangulation_panel<'a>(
         edges,
         longest: Some(t.longest_edge()),
         worst: worst_triangle(t),
+        boundary: match t.domain() {
+            Domain::Polygon { boundary } => Some(boundary),
+            _ => None,
+        },
     }
 }
 
@@ -189,6 +196,21 @@ fn draw_panel(out: &mut String, x0: f64, y0: f64, plot_h: f64, panel: &Panel) {
             x0 + MARGIN,
             y0 + 40.0 + 14.0 * k as f64,
             escape(line)
+        );
+    }
+    if let Some(boundary) = panel.boundary {
+        let corners: Vec<String> = boundary
+            .iter()
+            .map(|&i| {
+                let (x, y) = map(panel.all_points[i as usize]);
+                format!("{x:.2},{y:.2}")
+            })
+            .collect();
+        let _ = writeln!(
+            out,
+            r##"<polygon class="boundary" points="{}" fill="#e8eef8" stroke="#1b2f52" stroke-width="{:.2}" stroke-linejoin="round"/>"##,
+            corners.join(" "),
+            (edge_width * 2.5).max(1.5)
         );
     }
     if let Some(tri) = panel.worst {
@@ -295,6 +317,7 @@ pub fn graph_to_svg(points: &[Point], edges: &[[u32; 2]], title: &str) -> String
         edges,
         longest: None,
         worst: None,
+        boundary: None,
     };
     let plot_h = plot_height(points);
     let mut body = String::new();
@@ -378,6 +401,20 @@ mod tests {
         let g = graph_to_svg(t.points(), &[[0, 1], [1, 2]], "graph");
         assert_eq!(g.matches("<line class=\"edge\"").count(), 2);
         assert!(!g.contains("class=\"longest\""));
+    }
+
+    #[test]
+    fn a_polygon_triangulation_draws_its_boundary() {
+        let ring = [[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [1.0, 1.0], [0.0, 2.0]];
+        let polygon = crate::SimplePolygon::new(&ring).unwrap();
+        let t = crate::triangulate_polygon(&polygon, crate::Criterion::MinmaxArea)
+            .unwrap()
+            .triangulation;
+        let svg = triangulation_to_svg(&t, "notch");
+        assert_eq!(svg.matches("<polygon class=\"boundary\"").count(), 1);
+        assert_eq!(svg.matches("<line class=\"edge\"").count(), t.edges().len());
+        let hull = crate::delaunay(&crate::PointSet::new(&ring).unwrap()).unwrap();
+        assert!(!triangulation_to_svg(&hull, "hull").contains("class=\"boundary\""));
     }
 
     #[test]
