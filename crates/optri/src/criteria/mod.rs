@@ -8,7 +8,7 @@
 //! |---|---|---|
 //! | `delaunay` | `delaunay` | Delaunay 1934; via spade |
 //! | `minmax-length` | `minmax_length` | Edelsbrunner & Tan 1991 |
-//! | `greedy` | `greedy` | Levcopoulos & Lingas 1990; Dickerson et al. 1997 |
+//! | `greedy` | `greedy` | Levcopoulos & Lingas 1987; Dickerson et al. 1997 |
 //! | `min-weight` | `min_weight` | Klincsek 1980 |
 //! | `maxmin-area`, `minmax-area` | `area` | Vassilev 2005 |
 //!
