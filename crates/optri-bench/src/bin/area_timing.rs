@@ -50,6 +50,21 @@ fn main() {
     for n in sizes {
         let points = convex_lens(&mut StdRng::seed_from_u64(SEED_CONVEX), n);
         let ps = PointSet::new(&points).unwrap();
+        if mode == "search" {
+            // The second MaxMin route: sort the table's values, binary-search
+            // them with Algorithm 49's O(n²) decision (brief §2.5).
+            let ring: Vec<[f64; 2]> = optri::convex_hull(&ps)
+                .iter()
+                .map(|&i| ps.input_points()[i as usize])
+                .collect();
+            let polygon = optri::SimplePolygon::new(&ring).unwrap();
+            let (t, secs_search) =
+                secs(|| optri::MaxMinAreaDecision::new(&polygon).unwrap().optimum());
+            t.validate().unwrap();
+            println!("n={n} maxmin-area by sort-and-search: {secs_search:.3} s");
+            println!("  peak RSS so far: {} kB", peak_rss_kb());
+            continue;
+        }
         for (criterion, maxmin) in [
             (Criterion::MaxminArea, true),
             (Criterion::MinmaxArea, false),
