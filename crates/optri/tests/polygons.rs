@@ -661,3 +661,93 @@ fn polygon_program_timings() {
         }
     }
 }
+
+/// Points in strictly convex position (Algorithm 44) against the exhaustive
+/// optimum, n ≤ 9: random lenses, rounded circles kept only when strictly
+/// convex, lattice-symmetric octagons and huge or negative coordinates.
+#[test]
+fn convex_area_optima_equal_exhaustive_enumeration() {
+    const SEED_CONVEX_EXHAUSTIVE: u64 = 0x0044_0009;
+    let mut rng = StdRng::seed_from_u64(SEED_CONVEX_EXHAUSTIVE);
+    let mut sets: Vec<Vec<Point>> = Vec::new();
+    for _ in 0..300 {
+        let n = rng.gen_range(4..=9);
+        sets.push(optri_oracle::inputs::convex_lens(&mut rng, n));
+    }
+    for _ in 0..300 {
+        let n = rng.gen_range(3..=9);
+        sets.push(optri_oracle::inputs::rounded_circle(&mut rng, n, 40.0));
+    }
+    // Centrally symmetric lattice octagons: every edge has a parallel twin.
+    for a in 1..=4 {
+        for b in 1..=4 {
+            let (a, b) = (a as f64, b as f64);
+            sets.push(vec![
+                [a, 0.0],
+                [a + b, b],
+                [a + b, a + b],
+                [a, a + 2.0 * b],
+                [0.0, a + 2.0 * b],
+                [-b, a + b],
+                [-b, b],
+                [0.0, 0.0],
+            ]);
+        }
+    }
+    let huge: Vec<Vec<Point>> = sets
+        .iter()
+        .take(100)
+        .map(|s| {
+            s.iter()
+                .map(|p| [p[0] * 2f64.powi(40) - 3e15, -p[1] * 2f64.powi(30)])
+                .collect()
+        })
+        .collect();
+    sets.extend(huge);
+    let (mut checked, mut ties) = (0usize, 0usize);
+    for pts in &sets {
+        let Ok(ps) = PointSet::new(pts) else { continue };
+        let hull = optri::convex_hull(&ps);
+        let k = hull.len();
+        let p = |i: usize| ps.input_points()[hull[i % k] as usize];
+        let strictly = k == ps.len()
+            && (0..k).all(|i| optri::kernel::orient_sign(p(i), p(i + 1), p(i + 2)) > 0);
+        if !strictly {
+            continue;
+        }
+        let distinct = ps.points().to_vec();
+        let all = optri_oracle::enumerate::all_triangulations(&distinct);
+        for c in [Criterion::MaxminArea, Criterion::MinmaxArea] {
+            let s = triangulate(&ps, c).unwrap();
+            s.triangulation.validate().unwrap();
+            assert!(
+                s.exact && s.algorithm.contains("Algorithm 44"),
+                "{}",
+                s.algorithm
+            );
+            let got: Vec<[u32; 3]> = s
+                .triangulation
+                .triangles()
+                .iter()
+                .map(|t| t.map(|i| ps.distinct_index(i)))
+                .collect();
+            let (value, values): (_, Vec<_>) = if c == Criterion::MaxminArea {
+                let v = |t: &[[u32; 3]]| optri_oracle::enumerate::min_twice_area(&distinct, t);
+                (v(&got), all.iter().map(|t| v(t)).collect())
+            } else {
+                let v = |t: &[[u32; 3]]| optri_oracle::enumerate::max_twice_area(&distinct, t);
+                (v(&got), all.iter().map(|t| v(t)).collect())
+            };
+            let best = if c == Criterion::MaxminArea {
+                values.iter().max().unwrap()
+            } else {
+                values.iter().min().unwrap()
+            };
+            assert_eq!(&value, best, "{c:?} on {pts:?}");
+            ties += (values.iter().filter(|v| *v == best).count() > 1) as usize;
+            checked += 1;
+        }
+    }
+    eprintln!("convex sets checked (criterion runs): {checked}, with tied optima: {ties}");
+    assert!(checked >= 900 && ties >= 50, "{checked} {ties}");
+}
