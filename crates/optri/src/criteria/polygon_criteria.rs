@@ -42,11 +42,10 @@ use super::{Diagnostics, Optimality, Options, Solved};
 use crate::error::{Error, Result, UnsupportedReason};
 use crate::kernel::{compare_lengths, orient_sign, properly_cross, segment_order, Point};
 use crate::parallel::prelude::*;
-use crate::polygon_program::{optimal_triangulation, Objective};
+use crate::polygon_program::{optimal_triangulation, LargestDiagonal, Objective};
 use crate::structures::{PlanarGraph, SimplePolygon, Triangulation};
 use crate::timing::{timed, Phase, Stopwatch};
 use spade::{ConstrainedDelaunayTriangulation, Point2, Triangulation as _};
-use std::cmp::Ordering;
 use std::collections::HashMap;
 
 /// Largest polygon the polygon program accepts (O(n²) tables, O(n³) time).
@@ -154,10 +153,9 @@ pub(crate) fn solve_minmax_length(
     phases: &mut Vec<Phase>,
 ) -> Result<Solved> {
     let p = corner_point(polygon);
-    let objective = LongestDiagonal {
-        point: &p,
-        k: polygon.len(),
-    };
+    let objective = LargestDiagonal::new(polygon.len(), |s: [usize; 2], t: [usize; 2]| {
+        compare_lengths(p(s[0]), p(s[1]), p(t[0]), p(t[1]))
+    });
     let triangulation = polygon_program(polygon, "minmax-length", &objective, phases)?;
     Ok(Solved {
         triangulation,
@@ -167,58 +165,6 @@ pub(crate) fn solve_minmax_length(
         diagnostics: Diagnostics::default(),
         bound: None,
     })
-}
-
-/// The longest diagonal of a partial triangulation, as a chord number
-/// `i * k + j` of corners ([`LongestDiagonal::NONE`] while there is none): a
-/// bottleneck objective compared by the kernel's exact [`compare_lengths`].
-struct LongestDiagonal<'a, P: Fn(usize) -> Point> {
-    point: &'a P,
-    k: usize,
-}
-
-impl<P: Fn(usize) -> Point> LongestDiagonal<'_, P> {
-    const NONE: u32 = u32::MAX;
-
-    fn compare(&self, c: u32, d: u32) -> Ordering {
-        if c == d {
-            return Ordering::Equal;
-        }
-        let p = |chord: u32, end: usize| {
-            let c = chord as usize;
-            (self.point)(if end == 0 { c / self.k } else { c % self.k })
-        };
-        compare_lengths(p(c, 0), p(c, 1), p(d, 0), p(d, 1))
-    }
-}
-
-impl<P: Fn(usize) -> Point> Objective for LongestDiagonal<'_, P> {
-    type Value = u32;
-    fn empty(&self) -> u32 {
-        Self::NONE
-    }
-    fn diagonal(&self, i: usize, j: usize) -> Option<u32> {
-        Some((i * self.k + j) as u32)
-    }
-    fn triangle(&self, _: usize, _: usize, _: usize) -> Option<u32> {
-        None
-    }
-    fn combine(&self, s: u32, t: u32) -> u32 {
-        if s == Self::NONE {
-            return t;
-        }
-        if t == Self::NONE || self.compare(s, t) != Ordering::Less {
-            s
-        } else {
-            t
-        }
-    }
-    fn better(&self, s: u32, t: u32) -> bool {
-        if t == Self::NONE {
-            return false;
-        }
-        s == Self::NONE || self.compare(s, t) == Ordering::Less
-    }
 }
 
 /// `greedy` on a polygon: [`greedy_polygon`].

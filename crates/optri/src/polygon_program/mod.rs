@@ -44,6 +44,62 @@ pub(crate) trait Objective {
     fn better(&self, a: Self::Value, b: Self::Value) -> bool;
 }
 
+/// A bottleneck objective over diagonals: the largest diagonal under a
+/// caller's total order `compare(chord, chord)` on corner pairs (exact
+/// length comparisons for minmax length, under any metric). Values are chord
+/// numbers `i * k + j`, or [`LargestDiagonal::NONE`] while there is none.
+pub(crate) struct LargestDiagonal<F: Fn([usize; 2], [usize; 2]) -> std::cmp::Ordering> {
+    k: usize,
+    compare: F,
+}
+
+impl<F: Fn([usize; 2], [usize; 2]) -> std::cmp::Ordering> LargestDiagonal<F> {
+    /// No diagonal yet (a sub-polygon with nothing inside).
+    pub(crate) const NONE: u32 = u32::MAX;
+
+    /// The objective on a polygon of `k` corners ordered by `compare`.
+    pub(crate) fn new(k: usize, compare: F) -> Self {
+        Self { k, compare }
+    }
+
+    fn order(&self, c: u32, d: u32) -> std::cmp::Ordering {
+        if c == d {
+            return std::cmp::Ordering::Equal;
+        }
+        let chord = |c: u32| [c as usize / self.k, c as usize % self.k];
+        (self.compare)(chord(c), chord(d))
+    }
+}
+
+impl<F: Fn([usize; 2], [usize; 2]) -> std::cmp::Ordering> Objective for LargestDiagonal<F> {
+    type Value = u32;
+    fn empty(&self) -> u32 {
+        Self::NONE
+    }
+    fn diagonal(&self, i: usize, j: usize) -> Option<u32> {
+        Some((i * self.k + j) as u32)
+    }
+    fn triangle(&self, _: usize, _: usize, _: usize) -> Option<u32> {
+        None
+    }
+    fn combine(&self, s: u32, t: u32) -> u32 {
+        if s == Self::NONE {
+            return t;
+        }
+        if t == Self::NONE || self.order(s, t) != std::cmp::Ordering::Less {
+            s
+        } else {
+            t
+        }
+    }
+    fn better(&self, s: u32, t: u32) -> bool {
+        if t == Self::NONE {
+            return false;
+        }
+        s == Self::NONE || self.order(s, t) == std::cmp::Ordering::Less
+    }
+}
+
 /// An optimal triangulation: triangles as corner triples `[i, m, j]` with
 /// `i < m < j`, and its cost.
 pub(crate) struct Triangulated<V> {

@@ -10,7 +10,7 @@
 use crate::kernel::{
     compare_lengths, compare_lengths_symbolic, dot_sign, orient_sign, orient_symbolic, Point,
 };
-use crate::polygon_program::{optimal_triangulation, Objective};
+use crate::polygon_program::{optimal_triangulation, LargestDiagonal};
 use std::cmp::Ordering;
 
 /// A region: `vertices[i]` is the distinct-point index at position `i`, in
@@ -322,11 +322,7 @@ impl<'a> Region<'a> {
             k,
             |i, j| short_enough(i, j) && (convex || self.is_diagonal(i, j)),
             |i, m, j| self.orient(v[i], v[m], v[j]) > 0,
-            &LongestDiagonal {
-                region: self,
-                lengths,
-                k,
-            },
+            &LargestDiagonal::new(k, |s, t| lengths.compare(self, s, t)),
         )
         .expect("a polygonal region always has a triangulation");
         solved
@@ -334,55 +330,5 @@ impl<'a> Region<'a> {
             .into_iter()
             .map(|t| t.map(|c| v[c]))
             .collect()
-    }
-}
-
-/// The longest diagonal of a region's triangulation, as a chord number
-/// `i * k + j` ([`LongestDiagonal::NONE`] while there is none): a bottleneck
-/// objective whose comparisons are exact length comparisons.
-struct LongestDiagonal<'a> {
-    region: &'a Region<'a>,
-    lengths: &'a ChordLengths,
-    k: usize,
-}
-
-impl LongestDiagonal<'_> {
-    const NONE: u32 = u32::MAX;
-
-    fn compare(&self, c: u32, d: u32) -> Ordering {
-        if c == d {
-            return Ordering::Equal;
-        }
-        let chord = |c: u32| [c as usize / self.k, c as usize % self.k];
-        self.lengths.compare(self.region, chord(c), chord(d))
-    }
-}
-
-impl Objective for LongestDiagonal<'_> {
-    type Value = u32;
-    fn empty(&self) -> u32 {
-        Self::NONE
-    }
-    fn diagonal(&self, i: usize, j: usize) -> Option<u32> {
-        Some((i * self.k + j) as u32)
-    }
-    fn triangle(&self, _: usize, _: usize, _: usize) -> Option<u32> {
-        None
-    }
-    fn combine(&self, s: u32, t: u32) -> u32 {
-        if s == Self::NONE {
-            return t;
-        }
-        if t == Self::NONE || self.compare(s, t) != Ordering::Less {
-            s
-        } else {
-            t
-        }
-    }
-    fn better(&self, s: u32, t: u32) -> bool {
-        if t == Self::NONE {
-            return false;
-        }
-        s == Self::NONE || self.compare(s, t) == Ordering::Less
     }
 }
