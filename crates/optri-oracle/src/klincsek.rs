@@ -1,5 +1,5 @@
 //! Klincsek's dynamic program for optimal triangulations of a polygon
-//! (seeds/004, Algorithm 21), extended to *weakly simple* polygons.
+//! (Vassilev, *Optimal area triangulation*, 2005, Algorithm 21), extended to *weakly simple* polygons.
 //!
 //! The polygon is a counter-clockwise cycle of vertex indices in which a
 //! vertex may repeat (zero-width cracks, as in the bounded faces of

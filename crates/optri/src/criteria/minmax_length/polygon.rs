@@ -1,5 +1,5 @@
 //! A polygonal region of `ch(S) ∪ rng(S)` as a cyclic sequence of
-//! *positions* (000_5891e11f36dd26ad.txt §3): a vertex may occur at several
+//! *positions* (Edelsbrunner & Tan 1991, §3): a vertex may occur at several
 //! positions when the region has zero-width cracks, and each position is
 //! treated as its own corner ("cracks opened up a tiny amount").
 //!
