@@ -220,8 +220,17 @@ fn solve_polygon(
     phases: &mut Vec<Phase>,
 ) -> Result<Solved> {
     let criterion = kind.criterion();
-    check_size(polygon, criterion)?;
     if polygon.is_strictly_convex() {
+        if polygon.len() > MAX_CONVEX_VERTICES {
+            return Err(Error::Unsupported {
+                criterion,
+                reason: UnsupportedReason::TooManyPoints {
+                    limit: MAX_CONVEX_VERTICES,
+                    distinct: polygon.len(),
+                    because: "Algorithm 44's O(n²) tables",
+                },
+            });
+        }
         let triangles = timed(phases, criterion, || {
             kind.convex(polygon.vertices(), polygon.counter_clockwise())
         });
@@ -230,6 +239,7 @@ fn solve_polygon(
             CONVEX_ALGORITHM,
         ));
     }
+    check_size(polygon, criterion)?;
     let p = corner_point(polygon);
     let objective = BottleneckArea { point: &p, kind };
     let triangulation = polygon_program(polygon, criterion, &objective, phases)?;
