@@ -106,6 +106,62 @@ fn faces_of(points: &[Point], edges: &[[u32; 2]]) -> Vec<[u32; 3]> {
     tris
 }
 
+/// Every maximal set of pairwise compatible items (include/exclude search
+/// with pruning), given for each item the items it conflicts with
+/// (`conflicts[s]`, ascending). The triangulations of a point set or a
+/// polygon are the maximal sets of pairwise non-crossing segments or
+/// diagonals.
+pub fn maximal_compatible_sets(conflicts: &[Vec<usize>]) -> Vec<Vec<usize>> {
+    // An excluded item must end up in conflict with a chosen one
+    // (maximality); once the search passes its last conflict without that,
+    // prune.
+    let last_conflict: Vec<Option<usize>> = conflicts.iter().map(|c| c.last().copied()).collect();
+    struct Search<'a> {
+        conflicts: &'a [Vec<usize>],
+        last_conflict: &'a [Option<usize>],
+        chosen: Vec<bool>,
+        excluded: Vec<usize>,
+        out: Vec<Vec<usize>>,
+    }
+    impl Search<'_> {
+        fn covered(&self, s: usize) -> bool {
+            self.conflicts[s].iter().any(|&t| self.chosen[t])
+        }
+        fn run(&mut self, idx: usize) {
+            for &s in &self.excluded {
+                if !self.covered(s) && !matches!(self.last_conflict[s], Some(l) if l >= idx) {
+                    return;
+                }
+            }
+            if idx == self.chosen.len() {
+                self.out
+                    .push((0..idx).filter(|&s| self.chosen[s]).collect());
+                return;
+            }
+            if self.covered(idx) {
+                // Conflicts with a chosen item: excluded, and already covered.
+                self.run(idx + 1);
+                return;
+            }
+            self.chosen[idx] = true;
+            self.run(idx + 1);
+            self.chosen[idx] = false;
+            self.excluded.push(idx);
+            self.run(idx + 1);
+            self.excluded.pop();
+        }
+    }
+    let mut search = Search {
+        conflicts,
+        last_conflict: &last_conflict,
+        chosen: vec![false; conflicts.len()],
+        excluded: Vec::new(),
+        out: Vec::new(),
+    };
+    search.run(0);
+    search.out
+}
+
 /// Every triangulation of the distinct points `points` (at most
 /// [`MAX_ENUMERATION_POINTS`]), each as canonical triangles (counter-clockwise,
 /// smallest index first) in sorted order; the list itself is sorted.
@@ -132,55 +188,8 @@ pub fn all_triangulations(points: &[Point]) -> Vec<Vec<[u32; 3]>> {
                 .collect()
         })
         .collect();
-    // An excluded segment must end up crossed by a chosen one (maximality);
-    // once the search passes its last crosser without that, prune.
-    let last_crosser: Vec<Option<usize>> = crossers.iter().map(|c| c.last().copied()).collect();
-
-    struct Search<'a> {
-        crossers: &'a [Vec<usize>],
-        last_crosser: &'a [Option<usize>],
-        chosen: Vec<bool>,
-        excluded: Vec<usize>,
-        out: Vec<Vec<usize>>,
-    }
-    impl Search<'_> {
-        fn covered(&self, s: usize) -> bool {
-            self.crossers[s].iter().any(|&t| self.chosen[t])
-        }
-        fn run(&mut self, idx: usize) {
-            for &s in &self.excluded {
-                if !self.covered(s) && !matches!(self.last_crosser[s], Some(l) if l >= idx) {
-                    return;
-                }
-            }
-            if idx == self.chosen.len() {
-                self.out
-                    .push((0..idx).filter(|&s| self.chosen[s]).collect());
-                return;
-            }
-            if !self.covered(idx) {
-                self.chosen[idx] = true;
-                self.run(idx + 1);
-                self.chosen[idx] = false;
-                self.excluded.push(idx);
-                self.run(idx + 1);
-                self.excluded.pop();
-            } else {
-                // Crosses a chosen segment: necessarily excluded, already covered.
-                self.run(idx + 1);
-            }
-        }
-    }
-    let mut search = Search {
-        crossers: &crossers,
-        last_crosser: &last_crosser,
-        chosen: vec![false; m],
-        excluded: Vec::new(),
-        out: Vec::new(),
-    };
-    search.run(0);
-    let mut all: Vec<Vec<[u32; 3]>> = search
-        .out
+    let sets = maximal_compatible_sets(&crossers);
+    let mut all: Vec<Vec<[u32; 3]>> = sets
         .iter()
         .map(|chosen| {
             let edges: Vec<[u32; 2]> = chosen.iter().map(|&s| segs[s]).collect();

@@ -277,52 +277,7 @@ pub fn polygon_triangulations(ring: &[Point]) -> Vec<Vec<[u32; 3]>> {
                 .collect()
         })
         .collect();
-    let last_crosser: Vec<Option<usize>> = crossers.iter().map(|c| c.last().copied()).collect();
-    struct Search<'a> {
-        crossers: &'a [Vec<usize>],
-        last_crosser: &'a [Option<usize>],
-        chosen: Vec<bool>,
-        excluded: Vec<usize>,
-        out: Vec<Vec<usize>>,
-    }
-    impl Search<'_> {
-        fn covered(&self, s: usize) -> bool {
-            self.crossers[s].iter().any(|&t| self.chosen[t])
-        }
-        fn run(&mut self, idx: usize) {
-            // An excluded diagonal must end up crossed (maximality).
-            for &s in &self.excluded {
-                if !self.covered(s) && !matches!(self.last_crosser[s], Some(l) if l >= idx) {
-                    return;
-                }
-            }
-            if idx == self.chosen.len() {
-                self.out
-                    .push((0..idx).filter(|&s| self.chosen[s]).collect());
-                return;
-            }
-            if self.covered(idx) {
-                self.run(idx + 1);
-                return;
-            }
-            self.chosen[idx] = true;
-            self.run(idx + 1);
-            self.chosen[idx] = false;
-            self.excluded.push(idx);
-            self.run(idx + 1);
-            self.excluded.pop();
-        }
-    }
-    let mut search = Search {
-        crossers: &crossers,
-        last_crosser: &last_crosser,
-        chosen: vec![false; m],
-        excluded: Vec::new(),
-        out: Vec::new(),
-    };
-    search.run(0);
-    let mut all: Vec<Vec<[u32; 3]>> = search
-        .out
+    let mut all: Vec<Vec<[u32; 3]>> = crate::enumerate::maximal_compatible_sets(&crossers)
         .iter()
         .map(|set| {
             let chosen: Vec<[u32; 2]> = set.iter().map(|&s| diags[s]).collect();

@@ -198,33 +198,30 @@ fn draw_panel(out: &mut String, x0: f64, y0: f64, plot_h: f64, panel: &Panel) {
             escape(line)
         );
     }
-    if let Some(boundary) = panel.boundary {
-        let corners: Vec<String> = boundary
+    // The `points` attribute of a polygon through the given input indices.
+    let polygon_points = |indices: &[u32]| -> String {
+        let corners: Vec<String> = indices
             .iter()
             .map(|&i| {
                 let (x, y) = map(panel.all_points[i as usize]);
                 format!("{x:.2},{y:.2}")
             })
             .collect();
+        corners.join(" ")
+    };
+    if let Some(boundary) = panel.boundary {
         let _ = writeln!(
             out,
             r##"<polygon class="boundary" points="{}" fill="#e8eef8" stroke="#1b2f52" stroke-width="{:.2}" stroke-linejoin="round"/>"##,
-            corners.join(" "),
+            polygon_points(boundary),
             (edge_width * 2.5).max(1.5)
         );
     }
     if let Some(tri) = panel.worst {
-        let corners: Vec<String> = tri
-            .iter()
-            .map(|&i| {
-                let (x, y) = map(panel.all_points[i as usize]);
-                format!("{x:.2},{y:.2}")
-            })
-            .collect();
         let _ = writeln!(
             out,
             r##"<polygon class="worst" points="{}" fill="#f4a742" fill-opacity="0.6" stroke="#e07b00" stroke-width="{:.2}" stroke-linejoin="round"/>"##,
-            corners.join(" "),
+            polygon_points(&tri),
             (edge_width * 2.5).max(1.5)
         );
     }

@@ -38,3 +38,12 @@ pub(crate) fn convex_hull_cycle(points: &[Point]) -> Vec<u32> {
     hull.pop();
     hull
 }
+
+/// Does the cycle (indices into `points`) turn strictly left at every
+/// vertex? For a hull cycle that means no three hull vertices are collinear:
+/// the points are in strictly convex position.
+pub(crate) fn is_strictly_convex_cycle(points: &[Point], cycle: &[u32]) -> bool {
+    let k = cycle.len();
+    let p = |c: usize| points[cycle[c % k] as usize];
+    (0..k).all(|c| orient_sign(p(c), p(c + 1), p(c + 2)) > 0)
+}

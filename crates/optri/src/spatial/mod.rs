@@ -9,5 +9,5 @@ mod morton;
 
 pub(crate) use bbox::bounding_box;
 pub(crate) use grid::{fmax, fmin, SparseGrid};
-pub(crate) use hull::convex_hull_cycle;
+pub(crate) use hull::{convex_hull_cycle, is_strictly_convex_cycle};
 pub(crate) use morton::morton_order;

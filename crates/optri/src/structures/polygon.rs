@@ -4,6 +4,7 @@
 
 use crate::error::{Error, PolygonProblem, Result};
 use crate::kernel::{dot_sign, on_open_segment, orient_sign, segments_intersect, Point};
+use crate::spatial::is_strictly_convex_cycle;
 use crate::structures::PointSet;
 
 /// A simple polygon: at least three distinct vertices in boundary order
@@ -273,8 +274,7 @@ impl SimplePolygon {
     /// Is every vertex a strict left turn (a strictly convex polygon)? Then
     /// every chord that is not a boundary edge is a diagonal.
     pub fn is_strictly_convex(&self) -> bool {
-        let v = self.vertices();
-        (0..self.len()).all(|a| orient_sign(v[self.ccw_prev(a)], v[a], v[self.ccw_next(a)]) > 0)
+        is_strictly_convex_cycle(self.vertices(), &self.counter_clockwise)
     }
 }
 

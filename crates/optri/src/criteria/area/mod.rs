@@ -38,8 +38,8 @@ pub use decision::{maxmin_area_at_least, MaxMinAreaDecision};
 use super::polygon_criteria::{check_size, corner_point, polygon_program, MAX_POLYGON_VERTICES};
 use super::{CertifiedBound, CriterionInfo, Diagnostics, Optimality, Options, Requirement, Solved};
 use crate::error::{Error, Result, UnsupportedReason};
-use crate::kernel::{metrics::area, orient_sign};
-use crate::spatial::convex_hull_cycle;
+use crate::kernel::metrics::area;
+use crate::spatial::{convex_hull_cycle, is_strictly_convex_cycle};
 use crate::structures::{PointSet, SimplePolygon, Triangulation};
 use crate::timing::{timed, Phase};
 use polygon::{convex_polygon_program, AreaBottleneck, BottleneckArea};
@@ -176,9 +176,7 @@ fn solve_points(
     if hull.len() != pts.len() {
         return solve_general(points, kind, phases);
     }
-    let k = hull.len();
-    let p = |c: usize| pts[hull[c] as usize];
-    let strictly_convex = (0..k).all(|c| orient_sign(p(c), p((c + 1) % k), p((c + 2) % k)) > 0);
+    let strictly_convex = is_strictly_convex_cycle(pts, &hull);
     let (limit, because) = if strictly_convex {
         (MAX_CONVEX_VERTICES, "Algorithm 44's O(n²) tables")
     } else {

@@ -33,9 +33,9 @@ mod semicircular;
 
 use super::{CriterionInfo, Diagnostics, Optimality, Options, Requirement, Solved};
 use crate::error::Result;
-use crate::kernel::{orient_sign, Point};
+use crate::kernel::Point;
 use crate::parallel::prelude::*;
-use crate::spatial::convex_hull_cycle;
+use crate::spatial::{convex_hull_cycle, is_strictly_convex_cycle};
 use crate::structures::{PlanarGraph, PointSet, Triangulation};
 use crate::timing::{Phase, Stopwatch};
 
@@ -309,15 +309,7 @@ pub(crate) fn convex_polygon(points: &[Point]) -> Option<Vec<u32>> {
     if hull.len() != points.len() {
         return None;
     }
-    let k = hull.len();
-    let strictly_convex = (0..k).all(|i| {
-        orient_sign(
-            points[hull[i] as usize],
-            points[hull[(i + 1) % k] as usize],
-            points[hull[(i + 2) % k] as usize],
-        ) > 0
-    });
-    strictly_convex.then_some(hull)
+    is_strictly_convex_cycle(points, &hull).then_some(hull)
 }
 
 /// Is every point a vertex of a strictly convex polygon (no three collinear)?
