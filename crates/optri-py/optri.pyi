@@ -1,0 +1,138 @@
+"""Exact optimal planar triangulations and proximity graphs (type stubs).
+
+Every name and description comes from the library's registry, and every
+result attribute is a field of the JSON document ``optri triangulate --json``
+prints (schema version ``SCHEMA_VERSION``).
+"""
+
+from os import PathLike
+from pathlib import Path
+from typing import Any, Dict, List, Optional, Sequence, TypedDict, Union
+
+import numpy as np
+import numpy.typing as npt
+
+__version__: str
+SCHEMA_VERSION: int
+
+ArrayLike = npt.ArrayLike
+StrPath = Union[str, "PathLike[str]"]
+IndexArray = npt.NDArray[np.int64]
+PointArray = npt.NDArray[np.float64]
+
+class Stats(TypedDict):
+    max_edge_length: float
+    longest_edge: List[int]
+    total_edge_length: float
+    min_area: float
+    max_area: float
+    min_angle_deg: float
+    max_angle_deg: float
+    triangles: int
+    edges: int
+    hull_points: int
+
+class Bound(TypedDict):
+    kind: str
+    triangle: List[int]
+    area: float
+
+class CriterionEntry(TypedDict):
+    name: str
+    description: str
+    optimality: str
+    options: List[str]
+    polygons: bool
+    reference: str
+
+class GraphKindEntry(TypedDict):
+    name: str
+    description: str
+
+class Triangulation:
+    """An optimal (or, where ``exact`` is False, best known) triangulation.
+
+    The arrays are read-only; indices are 0-based input indices (ring
+    positions for a polygon).
+    """
+
+    @property
+    def points(self) -> PointArray:
+        """(n, 2) float64: every input point, merged duplicates included."""
+    @property
+    def simplices(self) -> IndexArray:
+        """(m, 3) int64: the triangles, counter-clockwise."""
+    @property
+    def edges(self) -> IndexArray:
+        """(k, 2) int64: every edge once, ``[a, b]`` with a < b, sorted."""
+    @property
+    def duplicates(self) -> IndexArray:
+        """(d, 2) int64: merged duplicates as ``[dropped, kept]``."""
+    @property
+    def criterion(self) -> str:
+        """The criterion's registry name."""
+    @property
+    def exact(self) -> bool:
+        """True iff the result is provably optimal."""
+    @property
+    def optimality(self) -> str:
+        """"exact", "up-to-rounding" or "approximation"."""
+    @property
+    def bound(self) -> Optional[Bound]:
+        """A certified bound on the optimum, when the criterion gives one."""
+    @property
+    def algorithm(self) -> str:
+        """The algorithm that ran, in words."""
+    @property
+    def domain(self) -> str:
+        """"convex-hull" or "polygon"."""
+    @property
+    def distinct_points(self) -> int:
+        """The number of distinct points."""
+    @property
+    def stats(self) -> Stats:
+        """Quality measures (the CLI's ``stats``)."""
+    @property
+    def diagnostics(self) -> Dict[str, int]:
+        """Counters the algorithm reported."""
+    @property
+    def timing_ms(self) -> Dict[str, float]:
+        """Milliseconds per phase: "validate", the library's phases, "total"."""
+    @property
+    def document(self) -> Dict[str, Any]:
+        """The whole JSON document as a dict."""
+    def to_json(self, pretty: bool = False) -> str:
+        """The JSON document ``optri triangulate --json`` prints."""
+    def write(self, path: StrPath) -> List[Path]:
+        """Writes .json, .svg, .geojson or .ele (+ .node); returns the paths."""
+
+def triangulate(points: ArrayLike, criterion: str = "delaunay", **options: Any) -> Triangulation:
+    """Triangulates the convex hull of an (n, 2) point array by ``criterion``."""
+
+def triangulate_polygon(
+    vertices: ArrayLike, criterion: str = "delaunay", **options: Any
+) -> Triangulation:
+    """Triangulates the interior of a simple polygon given as an (n, 2) ring."""
+
+def compare(
+    points: ArrayLike, criteria: Optional[Sequence[str]] = None, **options: Any
+) -> Dict[str, Triangulation]:
+    """Every criterion (or those named) on one input, by criterion name."""
+
+def graph(points: ArrayLike, kind: str) -> IndexArray:
+    """The (k, 2) int64 edges of a proximity graph: hull, delaunay, rng, gabriel, mst."""
+
+def graph_document(points: ArrayLike, kind: str) -> Dict[str, Any]:
+    """The JSON document ``optri graph --json`` prints, as a dict."""
+
+def criteria() -> List[CriterionEntry]:
+    """Every criterion of the registry, in display order."""
+
+def graph_kinds() -> List[GraphKindEntry]:
+    """Every proximity graph kind of the registry."""
+
+def read_points(path: StrPath, format: Optional[str] = None) -> PointArray:
+    """Reads a point file (text, node, poly, tsplib, geojson) as an (n, 2) array."""
+
+def read_polygon(path: StrPath, format: Optional[str] = None) -> PointArray:
+    """Reads a simple polygon's ring (.poly or GeoJSON Polygon) as an (n, 2) array."""

@@ -1,0 +1,278 @@
+//! `optri.Triangulation`: one result of `triangulate`, `triangulate_polygon`
+//! or `compare`. Every scalar and dictionary attribute is a field of the
+//! library's triangulation document (`optri::io::TriangulationReport`, the
+//! document `optri triangulate --json` prints), so the Python names are the
+//! JSON names and cannot drift from them; the arrays come from the same
+//! triangulation the document describes.
+
+use crate::convert::{index_array, json_text_to_py, point_array, to_py_err};
+use numpy::PyArray2;
+use optri::io::{self, TriangulationReport};
+use optri::{Error, Phase, Solution};
+use pyo3::exceptions::PyRuntimeError;
+use pyo3::prelude::*;
+use serde::de::{Deserialize, Deserializer, IgnoredAny, MapAccess, Visitor};
+use serde_json::value::RawValue;
+use std::fmt;
+use std::path::PathBuf;
+
+/// The fields left out of [`Fields`]: the long arrays, which are numpy
+/// attributes instead.
+const ARRAY_FIELDS: &[&str] = &["triangles", "edges", "coordinates", "duplicates"];
+
+/// The fields of a triangulation document as their JSON texts, in document
+/// order, without [`ARRAY_FIELDS`] (skipped while parsing, never built).
+/// Kept as text so that `json.loads` gives every nested dictionary (stats,
+/// timing_ms in phase order) with the library's key order.
+struct Fields(Vec<(String, Box<RawValue>)>);
+
+impl<'de> Deserialize<'de> for Fields {
+    fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+        struct FieldsVisitor;
+        impl<'de> Visitor<'de> for FieldsVisitor {
+            type Value = Fields;
+            fn expecting(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+                f.write_str("a JSON object")
+            }
+            fn visit_map<A: MapAccess<'de>>(self, mut map: A) -> Result<Fields, A::Error> {
+                let mut fields = Vec::new();
+                while let Some(key) = map.next_key::<String>()? {
+                    if ARRAY_FIELDS.contains(&key.as_str()) {
+                        map.next_value::<IgnoredAny>()?;
+                    } else {
+                        let value = map.next_value::<Box<RawValue>>()?;
+                        fields.push((key, value));
+                    }
+                }
+                Ok(Fields(fields))
+            }
+        }
+        deserializer.deserialize_map(FieldsVisitor)
+    }
+}
+
+impl Fields {
+    fn get(&self, name: &str) -> Option<&str> {
+        self.0
+            .iter()
+            .find(|(key, _)| key == name)
+            .map(|(_, value)| value.get())
+    }
+}
+
+/// An optimal (or, where `exact` is false, best known) triangulation.
+///
+/// Attributes follow scipy.spatial.Delaunay: `points` (n, 2) float64, every
+/// input point; `simplices` (m, 3) int64, counter-clockwise triangles as
+/// input indices; `edges` (k, 2) int64, sorted `[a, b]` pairs with a < b;
+/// `duplicates` (d, 2) int64, `[dropped, kept]` input indices of merged
+/// duplicate points. The arrays are read-only. The other attributes are the
+/// fields of the JSON document `optri triangulate --json` prints (see
+/// `document` and `to_json`).
+#[pyclass(frozen, module = "optri")]
+pub struct Triangulation {
+    solution: Solution,
+    /// `validate`, the library's phases, `total`.
+    phases: Vec<Phase>,
+    /// The triangulation document's fields.
+    fields: Fields,
+    points: Py<PyArray2<f64>>,
+    simplices: Py<PyArray2<i64>>,
+    edges: Py<PyArray2<i64>>,
+    duplicates: Py<PyArray2<i64>>,
+}
+
+/// A result computed without the GIL, before its numpy arrays exist.
+pub(crate) struct Computed {
+    solution: Solution,
+    phases: Vec<Phase>,
+    fields: Fields,
+    edges: Vec<[u32; 2]>,
+}
+
+impl Computed {
+    /// Writes the document of `solution` timed by `phases` and keeps its
+    /// fields (no Python object is touched, so this runs with the GIL
+    /// released).
+    pub(crate) fn new(solution: Solution, phases: Vec<Phase>) -> optri::Result<Self> {
+        let bug = |e: serde_json::Error| Error::Internal(format!("the JSON document: {e}"));
+        let text = serde_json::to_string(
+            &TriangulationReport::of_solution(&solution).with_timing(&phases),
+        )
+        .map_err(bug)?;
+        let fields: Fields = serde_json::from_str(&text).map_err(bug)?;
+        let edges = solution.triangulation.edges();
+        Ok(Computed {
+            solution,
+            phases,
+            fields,
+            edges,
+        })
+    }
+
+    /// The Python object, with its arrays.
+    pub(crate) fn into_py(self, py: Python<'_>) -> PyResult<Triangulation> {
+        let t = &self.solution.triangulation;
+        Ok(Triangulation {
+            points: point_array(py, t.points())?,
+            simplices: index_array(py, t.triangles())?,
+            edges: index_array(py, &self.edges)?,
+            duplicates: index_array(py, t.point_set().duplicates())?,
+            solution: self.solution,
+            phases: self.phases,
+            fields: self.fields,
+        })
+    }
+}
+
+impl Triangulation {
+    fn report(&self) -> TriangulationReport<'_> {
+        TriangulationReport::of_solution(&self.solution).with_timing(&self.phases)
+    }
+
+    /// The document field `name` (`None` when the document has no such
+    /// field, as for `bound` on most results).
+    fn field<'py>(&self, py: Python<'py>, name: &str) -> PyResult<Bound<'py, PyAny>> {
+        match self.fields.get(name) {
+            Some(text) => json_text_to_py(py, text),
+            None => Ok(py.None().into_bound(py)),
+        }
+    }
+}
+
+#[pymethods]
+impl Triangulation {
+    /// (n, 2) float64: every input point, merged duplicates included.
+    #[getter]
+    fn points<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray2<f64>> {
+        self.points.bind(py).clone()
+    }
+
+    /// (m, 3) int64: the triangles as input indices, counter-clockwise.
+    #[getter]
+    fn simplices<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray2<i64>> {
+        self.simplices.bind(py).clone()
+    }
+
+    /// (k, 2) int64: every edge once, `[a, b]` with a < b, sorted.
+    #[getter]
+    fn edges<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray2<i64>> {
+        self.edges.bind(py).clone()
+    }
+
+    /// (d, 2) int64: merged duplicates as `[dropped, kept]` input indices;
+    /// a dropped index appears in no simplex.
+    #[getter]
+    fn duplicates<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray2<i64>> {
+        self.duplicates.bind(py).clone()
+    }
+
+    /// The criterion's registry name, e.g. "minmax-length".
+    #[getter]
+    fn criterion<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        self.field(py, "criterion")
+    }
+
+    /// True iff the result is provably optimal for the criterion.
+    #[getter]
+    fn exact<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        self.field(py, "exact")
+    }
+
+    /// The guarantee: "exact", "up-to-rounding" or "approximation".
+    #[getter]
+    fn optimality<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        self.field(py, "optimality")
+    }
+
+    /// A certified bound on the optimum when the result is not proven
+    /// optimal and the criterion certifies one, else None.
+    #[getter]
+    fn bound<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        self.field(py, "bound")
+    }
+
+    /// The algorithm that ran, in words.
+    #[getter]
+    fn algorithm<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        self.field(py, "algorithm")
+    }
+
+    /// What the triangles cover: "convex-hull" or "polygon".
+    #[getter]
+    fn domain<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        self.field(py, "domain")
+    }
+
+    /// The number of distinct points after merging duplicates.
+    #[getter]
+    fn distinct_points<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        self.field(py, "distinct_points")
+    }
+
+    /// Quality measures, the CLI's `stats`: max_edge_length, longest_edge,
+    /// total_edge_length, min_area, max_area, min_angle_deg, max_angle_deg,
+    /// triangles, edges, hull_points.
+    #[getter]
+    fn stats<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        self.field(py, "stats")
+    }
+
+    /// Counters the algorithm reported (may be empty).
+    #[getter]
+    fn diagnostics<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        self.field(py, "diagnostics")
+    }
+
+    /// Wall-clock milliseconds per phase: "validate", the library's phases,
+    /// "total".
+    #[getter]
+    fn timing_ms<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        self.field(py, "timing_ms")
+    }
+
+    /// The whole JSON document (schema version `optri.SCHEMA_VERSION`) as a
+    /// dict, arrays as lists: `json.loads(self.to_json())`.
+    #[getter]
+    fn document<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        json_text_to_py(py, &self.to_json(false)?)
+    }
+
+    /// The JSON document `optri triangulate --json` prints for this result
+    /// (one line; `pretty=True` indents it as `-o FILE.json` does).
+    #[pyo3(signature = (pretty = false))]
+    fn to_json(&self, pretty: bool) -> PyResult<String> {
+        let report = self.report();
+        let text = if pretty {
+            serde_json::to_string_pretty(&report)
+        } else {
+            serde_json::to_string(&report)
+        };
+        text.map_err(|e| PyRuntimeError::new_err(format!("cannot write the JSON document: {e}")))
+    }
+
+    /// Writes the triangulation to `path`, the format by its extension as
+    /// the CLI's `-o`: .json (this document), .svg, .geojson, or .ele (and
+    /// the .node beside it). Returns the paths written.
+    fn write(&self, py: Python<'_>, path: PathBuf) -> PyResult<Vec<PathBuf>> {
+        let title = path
+            .file_name()
+            .map(|n| n.to_string_lossy().into_owned())
+            .unwrap_or_default();
+        let report = self.report();
+        py.detach(|| io::write_triangulation_report(&report, &path, &title))
+            .map_err(to_py_err)
+    }
+
+    fn __repr__(&self) -> String {
+        let t = &self.solution.triangulation;
+        format!(
+            "Triangulation(criterion={:?}, exact={}, domain={}, points={}, simplices={})",
+            self.solution.criterion.name(),
+            if self.solution.exact { "True" } else { "False" },
+            self.fields.get("domain").unwrap_or("?"),
+            t.points().len(),
+            t.triangles().len(),
+        )
+    }
+}

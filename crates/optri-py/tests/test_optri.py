@@ -1,0 +1,505 @@
+"""Tests of the Python bindings against an independent brute-force reference
+(oracle.py), known optimal values, the CLI's JSON document and the library's
+error messages."""
+
+import itertools
+import json
+import math
+import os
+import pathlib
+import random
+import subprocess
+import threading
+import time
+
+import numpy as np
+import pytest
+
+import optri
+import oracle
+
+HERE = pathlib.Path(__file__).resolve().parent
+REPO = HERE.parents[2]
+
+STATS_KEYS = {
+    "max_edge_length",
+    "longest_edge",
+    "total_edge_length",
+    "min_area",
+    "max_area",
+    "min_angle_deg",
+    "max_angle_deg",
+    "triangles",
+    "edges",
+    "hull_points",
+}
+
+SQUARE_AND_CENTRE = [(0, 0), (2, 0), (2, 2), (0, 2), (1, 1)]
+
+
+def names():
+    return [c["name"] for c in optri.criteria()]
+
+
+def random_points(rnd, n, size=60):
+    """n distinct integer points with pairwise distinct lengths, not all collinear."""
+    while True:
+        pts = list({(rnd.randrange(size), rnd.randrange(size)) for _ in range(n)})
+        if len(pts) < n:
+            continue
+        lengths = [oracle.dist2(p, q) for p, q in itertools.combinations(pts, 2)]
+        if len(set(lengths)) == len(lengths) and len(oracle.hull(pts)) >= 3:
+            return pts
+
+
+def convex_points(rnd, n):
+    """n integer points in strictly convex position, in random order."""
+    while True:
+        angles = sorted(rnd.uniform(0, 2 * math.pi) for _ in range(3 * n))
+        pts = [(round(1000 * math.cos(a)), round(1000 * math.sin(a))) for a in angles]
+        ring = oracle.hull(pts)
+        if len(ring) >= n:
+            ring = ring[:n]
+            if len(oracle.hull(ring)) == n:
+                rnd.shuffle(ring)
+                return ring
+
+
+def check_triangulation(t, points):
+    """Counter-clockwise simplices of input indices that exactly tile the
+    convex hull of the distinct points, each of which is a vertex."""
+    s = t.simplices
+    assert s.dtype == np.int64 and s.ndim == 2 and s.shape[1] == 3
+    dropped = {int(d) for d, _ in t.duplicates}
+    distinct = {i for i in range(len(points)) if i not in dropped}
+    for a, b, c in s.tolist():
+        assert oracle.orient(points[a], points[b], points[c]) > 0, (a, b, c)
+    assert set(s.ravel().tolist()) == distinct
+    total = sum(oracle.orient(points[a], points[b], points[c]) for a, b, c in s.tolist())
+    assert total == oracle.double_area(oracle.hull(points))
+    assert t.stats["triangles"] == len(s)
+    assert t.simplices.tolist() == t.document["triangles"]
+    return s.tolist()
+
+
+def measures(points, tris):
+    edges = {tuple(sorted(e)) for a, b, c in tris for e in ((a, b), (b, c), (c, a))}
+    areas = [oracle.orient(points[a], points[b], points[c]) for a, b, c in tris]
+    return {
+        "max_len2": max(oracle.dist2(points[i], points[j]) for i, j in edges),
+        "weight": sum(math.sqrt(oracle.dist2(points[i], points[j])) for i, j in edges),
+        "min_area2": min(areas),
+        "max_area2": max(areas),
+        "edges": edges,
+    }
+
+
+def optima(points):
+    """The brute-force optimum of every measure over all triangulations."""
+    all_measures = [measures(points, oracle.triangles(points, e)) for e in oracle.triangulations(points)]
+    return {
+        "max_len2": min(m["max_len2"] for m in all_measures),
+        "weight": min(m["weight"] for m in all_measures),
+        "maxmin_area2": max(m["min_area2"] for m in all_measures),
+        "minmax_area2": min(m["max_area2"] for m in all_measures),
+        "maxmin_angle": max(
+            oracle.min_angle(points, oracle.triangles(points, e)) for e in oracle.triangulations(points)
+        ),
+        "count": len(all_measures),
+    }
+
+
+# --- known optimal values -------------------------------------------------
+
+
+def test_square_with_centre_has_one_triangulation_and_its_values():
+    # The centre lies on both diagonals, so the fan of 4 triangles is the only
+    # triangulation; every criterion that takes interior points returns it.
+    assert optima(SQUARE_AND_CENTRE)["count"] == 1
+    results = optri.compare(SQUARE_AND_CENTRE)
+    assert list(results) == [n for n in names() if n != "min-weight"]
+    for name, t in results.items():
+        tris = check_triangulation(t, SQUARE_AND_CENTRE)
+        assert sorted(tuple(sorted(x)) for x in tris) == [(0, 1, 4), (0, 3, 4), (1, 2, 4), (2, 3, 4)], name
+        assert t.stats["max_edge_length"] == 2.0
+        assert t.stats["total_edge_length"] == pytest.approx(8 + 4 * math.sqrt(2), rel=1e-15)
+        assert t.stats["min_area"] == t.stats["max_area"] == 1.0
+        assert t.stats["min_angle_deg"] == pytest.approx(45.0, rel=1e-12)
+        assert t.stats["max_angle_deg"] == pytest.approx(90.0, rel=1e-12)
+        assert t.stats["hull_points"] == 4 and t.stats["edges"] == 8
+        assert t.exact, name
+
+
+def test_rectangle_with_inner_point_minmax_length_is_the_long_side():
+    t = optri.triangulate([[0, 0], [4, 0], [0, 3], [4, 3], [2, 1]], criterion="minmax-length")
+    assert t.exact and t.criterion == "minmax-length"
+    assert t.stats["max_edge_length"] == 4.0
+    assert len(t.simplices) == 4
+
+
+def test_pentagon_min_weight_is_a_fan_of_the_two_short_diagonals():
+    # A regular pentagon: every triangulation uses two diagonals of the same
+    # length, so the weight is 5 sides + 2 diagonals.
+    pts = [(math.cos(2 * math.pi * k / 5), math.sin(2 * math.pi * k / 5)) for k in range(5)]
+    t = optri.triangulate(pts, "min-weight")
+    side = 2 * math.sin(math.pi / 5)
+    diagonal = 2 * math.sin(2 * math.pi / 5)
+    assert t.stats["total_edge_length"] == pytest.approx(5 * side + 2 * diagonal, rel=1e-12)
+    assert t.optimality == "up-to-rounding" and t.exact is False
+
+
+# --- against the brute-force oracle --------------------------------------
+
+
+@pytest.mark.parametrize("seed", range(12))
+def test_general_sets_match_the_brute_force_optima(seed):
+    rnd = random.Random(seed)
+    pts = random_points(rnd, 5 + seed % 3)
+    best = optima(pts)
+    results = optri.compare(pts)
+    assert "min-weight" not in results or len(oracle.hull(pts)) == len(pts)
+    for name, t in results.items():
+        m = measures(pts, check_triangulation(t, pts))
+        if name == "minmax-length":
+            assert t.exact and m["max_len2"] == best["max_len2"]
+            assert t.stats["max_edge_length"] == pytest.approx(math.sqrt(best["max_len2"]), rel=1e-15)
+        elif name == "greedy":
+            assert t.exact and m["edges"] == oracle.greedy(pts)
+        elif name == "delaunay":
+            assert t.stats["min_angle_deg"] == pytest.approx(best["maxmin_angle"], rel=1e-9)
+        elif name == "maxmin-area":
+            # Never better than the optimum; equal to it when it says exact,
+            # and a certified upper bound on the optimum when it does not.
+            assert m["min_area2"] <= best["maxmin_area2"]
+            if t.exact:
+                assert m["min_area2"] == best["maxmin_area2"]
+            else:
+                assert t.bound["kind"] == "upper" and 2 * t.bound["area"] >= best["maxmin_area2"]
+        elif name == "minmax-area":
+            assert m["max_area2"] >= best["minmax_area2"]
+            if t.exact:
+                assert m["max_area2"] == best["minmax_area2"]
+            else:
+                assert t.bound["kind"] == "lower" and 2 * t.bound["area"] <= best["minmax_area2"]
+
+
+@pytest.mark.parametrize("seed", range(8))
+def test_convex_sets_match_the_brute_force_optima(seed):
+    rnd = random.Random(100 + seed)
+    pts = convex_points(rnd, 5 + seed % 4)
+    best = optima(pts)
+    results = optri.compare(pts)
+    assert list(results) == names()
+    for name, t in results.items():
+        m = measures(pts, check_triangulation(t, pts))
+        if name == "min-weight":
+            assert m["weight"] == pytest.approx(best["weight"], rel=1e-12)
+        elif name == "maxmin-area":
+            assert t.exact and m["min_area2"] == best["maxmin_area2"]
+        elif name == "minmax-area":
+            assert t.exact and m["max_area2"] == best["minmax_area2"]
+        elif name == "minmax-length":
+            assert t.exact and m["max_len2"] == best["max_len2"]
+
+
+# Inputs on which neither the Delaunay nor the greedy triangulation
+# minimises the longest edge (found by search against the oracle).
+LONGEST_EDGE_TRAPS = [
+    [(24, 8), (18, 27), (21, 9), (25, 14), (0, 14), (13, 5)],
+    [(15, 21), (11, 9), (29, 6), (28, 25), (23, 24)],
+    [(4, 0), (2, 17), (24, 27), (27, 4), (27, 0), (15, 25)],
+    [(27, 5), (8, 27), (19, 23), (1, 1), (27, 6), (28, 11)],
+]
+
+
+@pytest.mark.parametrize("pts", LONGEST_EDGE_TRAPS)
+def test_minmax_length_beats_delaunay_and_greedy_where_they_differ(pts):
+    best = optima(pts)["max_len2"]
+    results = optri.compare(pts, criteria=["minmax-length", "delaunay", "greedy"])
+    got = {name: measures(pts, check_triangulation(t, pts))["max_len2"] for name, t in results.items()}
+    assert got["minmax-length"] == best
+    assert got["delaunay"] > best and got["greedy"] > best
+
+
+def test_delaunay_simplices_have_empty_circumcircles():
+    rnd = random.Random(5)
+    pts = [(rnd.randrange(-1000, 1000), rnd.randrange(-1000, 1000)) for _ in range(200)]
+    t = optri.triangulate(pts, "delaunay")
+    tris = check_triangulation(t, pts)
+
+    def incircle(a, b, c, d):
+        rows = [(p[0] - d[0], p[1] - d[1]) for p in (a, b, c)]
+        rows = [(x, y, x * x + y * y) for x, y in rows]
+        (a1, a2, a3), (b1, b2, b3), (c1, c2, c3) = rows
+        return a1 * (b2 * c3 - b3 * c2) - a2 * (b1 * c3 - b3 * c1) + a3 * (b1 * c2 - b2 * c1)
+
+    used = {p for tri in tris for p in tri}
+    for a, b, c in tris:
+        for d in used - {a, b, c}:
+            assert incircle(pts[a], pts[b], pts[c], pts[d]) <= 0
+
+
+# --- graphs ----------------------------------------------------------------
+
+GRID = [(x, y) for x in range(3) for y in range(3)]
+
+
+@pytest.mark.parametrize(
+    "kind,count",
+    # Gabriel uses the closed disc, so the grid's diagonals are not edges.
+    [("gabriel", 12), ("rng", 12), ("mst", 8), ("hull", 8), ("delaunay", 16)],
+)
+def test_graph_edge_counts_on_a_3x3_grid(kind, count):
+    edges = optri.graph(np.array(GRID, dtype=float), kind=kind)
+    assert edges.dtype == np.int64 and edges.shape == (count, 2)
+
+
+def test_gabriel_grid_edges_are_the_unit_edges():
+    edges = optri.graph(GRID, kind="gabriel").tolist()
+    assert all(oracle.dist2(GRID[a], GRID[b]) == 1 for a, b in edges)
+
+
+@pytest.mark.parametrize("seed", range(6))
+def test_graphs_match_their_definitions(seed):
+    rnd = random.Random(200 + seed)
+    pts = random_points(rnd, 12, size=40)
+    as_set = lambda kind: {tuple(e) for e in optri.graph(pts, kind).tolist()}  # noqa: E731
+    assert as_set("gabriel") == oracle.gabriel(pts)
+    assert as_set("rng") == oracle.rng(pts)
+    assert as_set("mst") == oracle.mst(pts)
+    # The hull: a closed counter-clockwise cycle with every point on or left
+    # of every edge, and no point inside an edge (collinear boundary points
+    # are vertices).
+    ring = optri.graph(pts, "hull").tolist()
+    assert [b for _, b in ring] == [a for a, _ in ring[1:] + ring[:1]]
+    for a, b in ring:
+        assert all(oracle.orient(pts[a], pts[b], p) >= 0 for p in pts)
+        assert not any(oracle.on_open_segment(p, pts[a], pts[b]) for p in pts)
+    assert {pts[a] for a, _ in ring} >= set(oracle.hull(pts))
+
+
+def test_graph_document_is_the_clis_graph_document():
+    doc = optri.graph_document(GRID + [GRID[4]], "rng")
+    assert doc["document"] == "graph" and doc["kind"] == "rng"
+    assert doc["schema_version"] == optri.SCHEMA_VERSION
+    assert doc["duplicates"] == [[9, 4]] and doc["distinct_points"] == 9
+    assert len(doc["edges"]) == 12
+    assert list(doc["timing_ms"]) == ["validate", "rng", "total"]
+
+
+# --- the document and the CLI ---------------------------------------------
+
+
+def test_attributes_are_the_documents_fields():
+    pts = [(0, 0), (4, 0), (0, 3), (4, 3), (2, 1), (4, 0)]
+    t = optri.triangulate(pts, criterion="greedy")
+    doc = t.document
+    assert doc == json.loads(t.to_json()) == json.loads(t.to_json(pretty=True))
+    assert doc["schema_version"] == optri.SCHEMA_VERSION and doc["document"] == "triangulation"
+    for name in ("criterion", "exact", "optimality", "algorithm", "domain", "stats", "diagnostics", "timing_ms"):
+        assert getattr(t, name) == doc[name], name
+    assert set(t.stats) == STATS_KEYS
+    assert list(t.timing_ms)[0] == "validate" and list(t.timing_ms)[-1] == "total"
+    assert t.duplicates.tolist() == doc["duplicates"] == [[5, 1]]
+    assert t.edges.tolist() == doc["edges"]
+    assert t.points.tolist() == doc["coordinates"]
+    assert t.distinct_points == 5 and doc["points"] == 6
+    assert 5 not in t.simplices
+    assert t.bound is None
+    with pytest.raises(ValueError):
+        t.simplices[0, 0] = 1  # the arrays are read-only
+    assert "greedy" in repr(t)
+
+
+def cli():
+    path = os.environ.get("OPTRI_CLI") or str(REPO / "target" / "debug" / "optri")
+    if not os.path.exists(path):
+        pytest.skip("no optri binary (set OPTRI_CLI)")
+    return path
+
+
+@pytest.mark.parametrize("criterion", ["minmax-length", "maxmin-area"])
+def test_document_equals_the_clis_json(tmp_path, criterion):
+    rnd = random.Random(9)
+    pts = [(rnd.uniform(-5, 5), rnd.uniform(-5, 5)) for _ in range(60)] + [(0.5, 0.25)] * 2
+    path = tmp_path / "points.txt"
+    path.write_text("".join(f"{x!r} {y!r}\n" for x, y in pts))
+    out = subprocess.run(
+        [cli(), "triangulate", str(path), "--criterion", criterion, "--json"],
+        check=True,
+        capture_output=True,
+        text=True,
+    ).stdout
+    theirs = json.loads(out)
+    ours = optri.triangulate(optri.read_points(path), criterion).document
+    assert list(ours) == list(theirs)
+    assert list(ours["stats"]) == list(theirs["stats"])
+    for doc in (ours, theirs):
+        del doc["timing_ms"]
+    assert ours == theirs
+
+
+def test_write_and_read_back(tmp_path):
+    pts = SQUARE_AND_CENTRE + [(3, 1)]
+    t = optri.triangulate(pts, "minmax-area")
+    written = t.write(tmp_path / "t.json")
+    assert [pathlib.Path(p) for p in written] == [tmp_path / "t.json"]
+    assert json.loads((tmp_path / "t.json").read_text())["triangles"] == t.simplices.tolist()
+    assert optri.read_points(tmp_path / "t.json").tolist() == [list(map(float, p)) for p in pts]
+    assert len(t.write(str(tmp_path / "t.ele"))) == 2
+    with pytest.raises(OSError, match="t.png"):
+        t.write(tmp_path / "t.png")
+
+
+# --- polygons ----------------------------------------------------------------
+
+L_SHAPE = [(0, 0), (0, 2), (1, 2), (1, 1), (2, 1), (2, 0)]  # clockwise
+
+
+@pytest.mark.parametrize("criterion", [c["name"] for c in optri.criteria() if c["polygons"]])
+def test_polygon_interior(criterion):
+    t = optri.triangulate_polygon(L_SHAPE, criterion=criterion)
+    assert t.domain == "polygon" and len(t.simplices) == len(L_SHAPE) - 2
+    total = 0
+    for a, b, c in t.simplices.tolist():
+        o = oracle.orient(L_SHAPE[a], L_SHAPE[b], L_SHAPE[c])
+        assert o > 0
+        total += o
+    assert total == -oracle.double_area(L_SHAPE)
+    # The chord 2-4 leaves the polygon.
+    assert [2, 4] not in t.edges.tolist()
+
+
+def test_self_intersecting_polygon_is_refused_naming_the_edges():
+    with pytest.raises(ValueError, match="not a simple polygon"):
+        optri.triangulate_polygon([(0, 0), (2, 2), (2, 0), (0, 2)])
+
+
+# --- the registry ------------------------------------------------------------
+
+
+def test_criteria_and_kinds_come_from_the_registry():
+    entries = optri.criteria()
+    assert names()[:3] == ["delaunay", "minmax-length", "greedy"]
+    for e in entries:
+        assert set(e) == {"name", "description", "optimality", "options", "polygons", "reference"}
+        assert e["description"] and e["reference"]
+    assert [k["name"] for k in optri.graph_kinds()] == ["hull", "delaunay", "rng", "gabriel", "mst"]
+    # Names are case-insensitive, as in the CLI.
+    assert optri.triangulate(SQUARE_AND_CENTRE, "DELAUNAY").criterion == "delaunay"
+
+
+def test_compare_named_criteria_runs_exactly_those():
+    r = optri.compare(SQUARE_AND_CENTRE, criteria=["greedy", "delaunay"])
+    assert list(r) == ["greedy", "delaunay"]
+    with pytest.raises(ValueError, match="min-weight is only supported for points in convex position"):
+        optri.compare(SQUARE_AND_CENTRE, criteria=["min-weight"])
+
+
+# --- bad input -----------------------------------------------------------------
+
+
+@pytest.mark.parametrize(
+    "points,message",
+    [
+        ([[0, 0], [1, float("nan")], [2, 3]], "point 1 has a non-finite coordinate"),
+        ([[0, 0], [1, float("inf")], [2, 3]], "point 1 has a non-finite coordinate"),
+        ([[0, 0], [1e300, 1], [2, 3]], "outside the exact range"),
+        ([[0, 0], [1, 1]], "at least 3 distinct points, the input has 2"),
+        ([[0, 0], [1, 1], [0, 0], [1, 1]], "at least 3 distinct points, the input has 2"),
+        ([[0, 0], [1, 1], [2, 2], [3, 3]], "all 4 distinct points are collinear"),
+        ([[0, 0, 0], [1, 1, 1], [2, 0, 1]], r"shape \(n, 2\), got \(3, 3\)"),
+        ([0, 1, 2], r"shape \(n, 2\), got \(3,\)"),
+        ([], r"shape \(n, 2\), got \(0,\)"),
+        (np.zeros((2, 3, 2)), r"shape \(n, 2\), got \(2, 3, 2\)"),
+        ([["a", "b"], ["c", "d"], ["e", "f"]], "could not convert"),
+        ([[0, 0], [1], [2, 3]], "array-like of numbers"),
+    ],
+)
+def test_bad_points_raise_value_error_with_the_librarys_message(points, message):
+    with pytest.raises(ValueError, match=message):
+        optri.triangulate(points, criterion="delaunay")
+
+
+def test_unknown_names_list_what_is_available():
+    with pytest.raises(ValueError) as e:
+        optri.triangulate(SQUARE_AND_CENTRE, criterion="fastest")
+    assert "unknown criterion 'fastest'; available: " + ", ".join(names()) in str(e.value)
+    with pytest.raises(ValueError, match="unknown graph kind 'voronoi'; available: hull, delaunay, rng, gabriel, mst"):
+        optri.graph(SQUARE_AND_CENTRE, kind="voronoi")
+    with pytest.raises(ValueError, match="unknown option 'metric' for criterion minmax-length; available: none"):
+        optri.triangulate(SQUARE_AND_CENTRE, criterion="minmax-length", metric="l1")
+    with pytest.raises(ValueError, match="unknown option 'metric'"):
+        optri.compare(SQUARE_AND_CENTRE, metric="l1")
+    with pytest.raises(ValueError, match="unknown input format 'xls'"):
+        optri.read_points("points.xls", format="xls")
+
+
+def test_unsupported_input_names_the_criterion():
+    with pytest.raises(ValueError, match=r"min-weight .*\(1 of 5 distinct points are interior"):
+        optri.triangulate(SQUARE_AND_CENTRE, criterion="min-weight")
+
+
+def test_read_points_formats_and_errors(tmp_path):
+    text = tmp_path / "pts.txt"
+    text.write_text("# x y\n0 0\n1 0\n0.5 2.5\n")
+    assert optri.read_points(text).tolist() == [[0, 0], [1, 0], [0.5, 2.5]]
+    tsp = tmp_path / "a.tsp"
+    tsp.write_text("NAME: a\nTYPE: TSP\nDIMENSION: 3\nNODE_COORD_SECTION\n1 0 0\n2 3 0\n3 0 4\nEOF\n")
+    assert optri.read_points(tsp).shape == (3, 2)
+    bad = tmp_path / "bad.txt"
+    bad.write_text("0 0\n1 0\n1 x\n")
+    with pytest.raises(ValueError, match=r"bad.txt:3: 'x' is not a number"):
+        optri.read_points(bad)
+    with pytest.raises(OSError, match="cannot read"):
+        optri.read_points(tmp_path / "missing.txt")
+    poly = tmp_path / "l.geojson"
+    poly.write_text(json.dumps({"type": "Polygon", "coordinates": [[list(p) for p in L_SHAPE + L_SHAPE[:1]]]}))
+    assert optri.read_polygon(poly).tolist() == [list(map(float, p)) for p in L_SHAPE]
+    with pytest.raises(ValueError, match="holds points, not a polygon"):
+        optri.read_polygon(text)
+
+
+# --- threads -------------------------------------------------------------------
+
+
+def test_the_gil_is_released_while_the_library_works():
+    # While a worker thread triangulates, this thread keeps running Python:
+    # if the GIL were held, one gap between two of its iterations would span
+    # the whole computation.
+    rnd = np.random.default_rng(1)
+    pts = rnd.random((300_000, 2))
+    span = {}
+
+    def work():
+        span["start"] = time.perf_counter()
+        optri.triangulate(pts, "delaunay")
+        span["end"] = time.perf_counter()
+
+    worker = threading.Thread(target=work)
+    stamps = []
+    worker.start()
+    while worker.is_alive():
+        stamps.append(time.perf_counter())
+    worker.join()
+    inside = [s for s in stamps if span["start"] <= s <= span["end"]]
+    duration = span["end"] - span["start"]
+    gaps = np.diff([span["start"]] + inside + [span["end"]])
+    assert gaps.max() < 0.5 * duration, (gaps.max(), duration)
+
+
+def test_concurrent_calls_give_the_sequential_results():
+    rnd = np.random.default_rng(2)
+    inputs = [rnd.random((2000, 2)) for _ in range(4)]
+    expected = [optri.triangulate(p, "minmax-length").simplices.tolist() for p in inputs]
+    got = [None] * len(inputs)
+
+    def work(i):
+        got[i] = optri.triangulate(inputs[i], "minmax-length").simplices.tolist()
+
+    threads = [threading.Thread(target=work, args=(i,)) for i in range(len(inputs))]
+    for th in threads:
+        th.start()
+    for th in threads:
+        th.join()
+    assert got == expected
