@@ -27,7 +27,7 @@ use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
 use std::path::PathBuf;
 use std::time::Instant;
-use triangulation::{Computed, Triangulation};
+use triangulation::Triangulation;
 
 fn ms_since(start: Instant) -> f64 {
     start.elapsed().as_secs_f64() * 1e3
@@ -94,22 +94,34 @@ fn solve(
     validate: &Phase,
     criterion: Criterion,
     options: &Options,
-) -> optri::Result<Computed> {
+) -> optri::Result<Timed> {
     let start = Instant::now();
     let solution = optri::triangulate_with(set, criterion, options)?;
-    timed(solution, validate, start)
+    Ok(timed(solution, validate, start))
 }
 
 /// `solution` with its phases between `validate` and `total` (since `start`,
 /// plus the validation).
-fn timed(solution: optri::Solution, validate: &Phase, start: Instant) -> optri::Result<Computed> {
+fn timed(solution: optri::Solution, validate: &Phase, start: Instant) -> Timed {
     let mut phases = vec![validate.clone()];
     phases.extend(solution.phases.iter().cloned());
     phases.push(Phase {
         name: "total",
         ms: validate.ms + ms_since(start),
     });
-    Computed::new(solution, phases)
+    Timed { solution, phases }
+}
+
+/// A library result and the phases its document reports.
+struct Timed {
+    solution: optri::Solution,
+    phases: Vec<Phase>,
+}
+
+impl Timed {
+    fn into_py(self, py: Python<'_>) -> PyResult<Triangulation> {
+        Triangulation::new(py, self.solution, self.phases)
+    }
 }
 
 /// Triangulates the convex hull of ``points`` by ``criterion``.
@@ -134,13 +146,13 @@ fn triangulate(
     let criterion = Criterion::from_name(criterion).map_err(to_py_err)?;
     let options = options_from(&[criterion], options)?;
     let points = points_arg(py, points, "points")?;
-    let computed = py
+    let result = py
         .detach(|| {
             let (set, validate) = point_set(&points)?;
             solve(&set, &validate, criterion, &options)
         })
         .map_err(to_py_err)?;
-    computed.into_py(py)
+    result.into_py(py)
 }
 
 /// Triangulates the interior of the simple polygon ``vertices`` (an (n, 2)
@@ -162,7 +174,7 @@ fn triangulate_polygon(
     let criterion = Criterion::from_name(criterion).map_err(to_py_err)?;
     let options = options_from(&[criterion], options)?;
     let ring = points_arg(py, vertices, "vertices")?;
-    let computed = py
+    let result = py
         .detach(|| {
             let start = Instant::now();
             let polygon = SimplePolygon::new(&ring)?;
@@ -172,10 +184,10 @@ fn triangulate_polygon(
             };
             let start = Instant::now();
             let solution = optri::triangulate_polygon_with(&polygon, criterion, &options)?;
-            timed(solution, &validate, start)
+            Ok::<_, Error>(timed(solution, &validate, start))
         })
         .map_err(to_py_err)?;
-    computed.into_py(py)
+    result.into_py(py)
 }
 
 /// Triangulates ``points`` by several criteria: a dict from criterion name
@@ -211,7 +223,7 @@ fn compare(
             let mut results = Vec::with_capacity(chosen.len());
             for &criterion in &chosen {
                 match solve(&set, &validate, criterion, &options) {
-                    Ok(computed) => results.push((criterion, computed)),
+                    Ok(result) => results.push((criterion, result)),
                     // "Every criterion that accepts the input."
                     Err(Error::Unsupported { .. }) if every => {}
                     Err(e) => return Err(e),
@@ -221,8 +233,8 @@ fn compare(
         })
         .map_err(to_py_err)?;
     let dict = PyDict::new(py);
-    for (criterion, computed) in results {
-        dict.set_item(criterion.name(), computed.into_py(py)?)?;
+    for (criterion, result) in results {
+        dict.set_item(criterion.name(), result.into_py(py)?)?;
     }
     Ok(dict.unbind())
 }

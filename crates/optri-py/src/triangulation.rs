@@ -8,13 +8,14 @@
 use crate::convert::{index_array, json_text_to_py, point_array, to_py_err};
 use numpy::PyArray2;
 use optri::io::{self, TriangulationReport};
-use optri::{Error, Phase, Solution};
+use optri::{Phase, Solution};
 use pyo3::exceptions::PyRuntimeError;
 use pyo3::prelude::*;
 use serde::de::{Deserialize, Deserializer, IgnoredAny, MapAccess, Visitor};
 use serde_json::value::RawValue;
 use std::fmt;
 use std::path::PathBuf;
+use std::sync::OnceLock;
 
 /// The fields left out of [`Fields`]: the long arrays, which are numpy
 /// attributes instead.
@@ -68,72 +69,64 @@ impl Fields {
 /// `duplicates` (d, 2) int64, `[dropped, kept]` input indices of merged
 /// duplicate points. The arrays are read-only. The other attributes are the
 /// fields of the JSON document `optri triangulate --json` prints (see
-/// `document` and `to_json`).
+/// `document` and `to_json`), written on the first access to one of them
+/// (for large inputs that costs about as much as the quality measures of
+/// `stats`), and `edges` is built on its first access.
 #[pyclass(frozen, module = "optri")]
 pub struct Triangulation {
     solution: Solution,
     /// `validate`, the library's phases, `total`.
     phases: Vec<Phase>,
-    /// The triangulation document's fields.
-    fields: Fields,
+    /// The document's fields, written on first use: the document's `stats`
+    /// cost about as much as a Delaunay triangulation, so a caller who only
+    /// wants the simplices does not pay for them.
+    fields: OnceLock<Fields>,
     points: Py<PyArray2<f64>>,
     simplices: Py<PyArray2<i64>>,
-    edges: Py<PyArray2<i64>>,
     duplicates: Py<PyArray2<i64>>,
-}
-
-/// A result computed without the GIL, before its numpy arrays exist.
-pub(crate) struct Computed {
-    solution: Solution,
-    phases: Vec<Phase>,
-    fields: Fields,
-    edges: Vec<[u32; 2]>,
-}
-
-impl Computed {
-    /// Writes the document of `solution` timed by `phases` and keeps its
-    /// fields (no Python object is touched, so this runs with the GIL
-    /// released).
-    pub(crate) fn new(solution: Solution, phases: Vec<Phase>) -> optri::Result<Self> {
-        let bug = |e: serde_json::Error| Error::Internal(format!("the JSON document: {e}"));
-        let text = serde_json::to_string(
-            &TriangulationReport::of_solution(&solution).with_timing(&phases),
-        )
-        .map_err(bug)?;
-        let fields: Fields = serde_json::from_str(&text).map_err(bug)?;
-        let edges = solution.triangulation.edges();
-        Ok(Computed {
-            solution,
-            phases,
-            fields,
-            edges,
-        })
-    }
-
-    /// The Python object, with its arrays.
-    pub(crate) fn into_py(self, py: Python<'_>) -> PyResult<Triangulation> {
-        let t = &self.solution.triangulation;
-        Ok(Triangulation {
-            points: point_array(py, t.points())?,
-            simplices: index_array(py, t.triangles())?,
-            edges: index_array(py, &self.edges)?,
-            duplicates: index_array(py, t.point_set().duplicates())?,
-            solution: self.solution,
-            phases: self.phases,
-            fields: self.fields,
-        })
-    }
+    /// Built on first use, as `fields`.
+    edges: OnceLock<Py<PyArray2<i64>>>,
 }
 
 impl Triangulation {
+    /// The result object of `solution`, timed by `phases`.
+    pub(crate) fn new(py: Python<'_>, solution: Solution, phases: Vec<Phase>) -> PyResult<Self> {
+        let t = &solution.triangulation;
+        Ok(Triangulation {
+            points: point_array(py, t.points())?,
+            simplices: index_array(py, t.triangles())?,
+            duplicates: index_array(py, t.point_set().duplicates())?,
+            edges: OnceLock::new(),
+            fields: OnceLock::new(),
+            solution,
+            phases,
+        })
+    }
+
     fn report(&self) -> TriangulationReport<'_> {
         TriangulationReport::of_solution(&self.solution).with_timing(&self.phases)
+    }
+
+    /// The document's fields, written (without the GIL) on first use. Two
+    /// threads may both write them; one result is kept, and they are equal.
+    fn fields(&self, py: Python<'_>) -> PyResult<&Fields> {
+        if let Some(fields) = self.fields.get() {
+            return Ok(fields);
+        }
+        let report = self.report();
+        let fields = py
+            .detach(|| {
+                let text = serde_json::to_string(&report)?;
+                serde_json::from_str::<Fields>(&text)
+            })
+            .map_err(|e| PyRuntimeError::new_err(format!("the JSON document: {e}")))?;
+        Ok(self.fields.get_or_init(|| fields))
     }
 
     /// The document field `name` (`None` when the document has no such
     /// field, as for `bound` on most results).
     fn field<'py>(&self, py: Python<'py>, name: &str) -> PyResult<Bound<'py, PyAny>> {
-        match self.fields.get(name) {
+        match self.fields(py)?.get(name) {
             Some(text) => json_text_to_py(py, text),
             None => Ok(py.None().into_bound(py)),
         }
@@ -156,8 +149,13 @@ impl Triangulation {
 
     /// (k, 2) int64: every edge once, `[a, b]` with a < b, sorted.
     #[getter]
-    fn edges<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray2<i64>> {
-        self.edges.bind(py).clone()
+    fn edges<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArray2<i64>>> {
+        if let Some(edges) = self.edges.get() {
+            return Ok(edges.bind(py).clone());
+        }
+        let t = &self.solution.triangulation;
+        let edges = index_array(py, &py.detach(|| t.edges()))?;
+        Ok(self.edges.get_or_init(|| edges).bind(py).clone())
     }
 
     /// (d, 2) int64: merged duplicates as `[dropped, kept]` input indices;
@@ -267,10 +265,13 @@ impl Triangulation {
     fn __repr__(&self) -> String {
         let t = &self.solution.triangulation;
         format!(
-            "Triangulation(criterion={:?}, exact={}, domain={}, points={}, simplices={})",
+            "Triangulation(criterion={:?}, exact={}, domain={:?}, points={}, simplices={})",
             self.solution.criterion.name(),
             if self.solution.exact { "True" } else { "False" },
-            self.fields.get("domain").unwrap_or("?"),
+            match self.solution.triangulation.domain() {
+                optri::Domain::Polygon { .. } => "polygon",
+                _ => "convex-hull",
+            },
             t.points().len(),
             t.triangles().len(),
         )

@@ -312,7 +312,13 @@ def test_attributes_are_the_documents_fields():
 
 
 def cli():
-    path = os.environ.get("OPTRI_CLI") or str(REPO / "target" / "debug" / "optri")
+    """The optri binary: $OPTRI_CLI (which must exist; CI sets it), else the
+    workspace's debug build if there is one."""
+    path = os.environ.get("OPTRI_CLI")
+    if path:
+        assert os.path.exists(path), f"OPTRI_CLI={path} does not exist"
+        return path
+    path = str(REPO / "target" / "debug" / "optri")
     if not os.path.exists(path):
         pytest.skip("no optri binary (set OPTRI_CLI)")
     return path
