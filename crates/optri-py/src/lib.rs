@@ -3,7 +3,7 @@
 //!
 //! The module is a thin front end over the library's registry
 //! ([`optri::Criterion::ALL`], [`optri::GraphKind::ALL`], their `info()`
-//! and `from_name`) and its one result schema ([`optri::io::json`]): a
+//! and `from_name`) and its one result schema ([`optri::io::TriangulationReport`]): a
 //! criterion that lands in the registry is callable from Python without a
 //! change here, and every result attribute is a field of the document
 //! `optri triangulate --json` prints. Conventions follow `scipy.spatial`:
