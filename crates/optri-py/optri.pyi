@@ -7,7 +7,7 @@ prints (schema version ``SCHEMA_VERSION``).
 
 from os import PathLike
 from pathlib import Path
-from typing import Any, Dict, List, Optional, Sequence, TypedDict, Union
+from typing import Any, Dict, List, Optional, Sequence, TypedDict, Union, final
 
 import numpy as np
 import numpy.typing as npt
@@ -15,12 +15,12 @@ import numpy.typing as npt
 __version__: str
 SCHEMA_VERSION: int
 
-ArrayLike = npt.ArrayLike
-StrPath = Union[str, "PathLike[str]"]
-IndexArray = npt.NDArray[np.int64]
-PointArray = npt.NDArray[np.float64]
+_ArrayLike = npt.ArrayLike
+_StrPath = Union[str, "PathLike[str]"]
+_IndexArray = npt.NDArray[np.int64]
+_PointArray = npt.NDArray[np.float64]
 
-class Stats(TypedDict):
+class _Stats(TypedDict):
     max_edge_length: float
     longest_edge: List[int]
     total_edge_length: float
@@ -32,12 +32,12 @@ class Stats(TypedDict):
     edges: int
     hull_points: int
 
-class Bound(TypedDict):
+class _Bound(TypedDict):
     kind: str
     triangle: List[int]
     area: float
 
-class CriterionEntry(TypedDict):
+class _CriterionEntry(TypedDict):
     name: str
     description: str
     optimality: str
@@ -45,10 +45,11 @@ class CriterionEntry(TypedDict):
     polygons: bool
     reference: str
 
-class GraphKindEntry(TypedDict):
+class _GraphKindEntry(TypedDict):
     name: str
     description: str
 
+@final
 class Triangulation:
     """An optimal (or, where ``exact`` is False, best known) triangulation.
 
@@ -57,16 +58,16 @@ class Triangulation:
     """
 
     @property
-    def points(self) -> PointArray:
+    def points(self) -> _PointArray:
         """(n, 2) float64: every input point, merged duplicates included."""
     @property
-    def simplices(self) -> IndexArray:
+    def simplices(self) -> _IndexArray:
         """(m, 3) int64: the triangles, counter-clockwise."""
     @property
-    def edges(self) -> IndexArray:
+    def edges(self) -> _IndexArray:
         """(k, 2) int64: every edge once, ``[a, b]`` with a < b, sorted."""
     @property
-    def duplicates(self) -> IndexArray:
+    def duplicates(self) -> _IndexArray:
         """(d, 2) int64: merged duplicates as ``[dropped, kept]``."""
     @property
     def criterion(self) -> str:
@@ -78,7 +79,7 @@ class Triangulation:
     def optimality(self) -> str:
         """"exact", "up-to-rounding" or "approximation"."""
     @property
-    def bound(self) -> Optional[Bound]:
+    def bound(self) -> Optional[_Bound]:
         """A certified bound on the optimum, when the criterion gives one."""
     @property
     def algorithm(self) -> str:
@@ -90,7 +91,7 @@ class Triangulation:
     def distinct_points(self) -> int:
         """The number of distinct points."""
     @property
-    def stats(self) -> Stats:
+    def stats(self) -> _Stats:
         """Quality measures (the CLI's ``stats``)."""
     @property
     def diagnostics(self) -> Dict[str, int]:
@@ -103,36 +104,36 @@ class Triangulation:
         """The whole JSON document as a dict."""
     def to_json(self, pretty: bool = False) -> str:
         """The JSON document ``optri triangulate --json`` prints."""
-    def write(self, path: StrPath) -> List[Path]:
+    def write(self, path: _StrPath) -> List[Path]:
         """Writes .json, .svg, .geojson or .ele (+ .node); returns the paths."""
 
-def triangulate(points: ArrayLike, criterion: str = "delaunay", **options: Any) -> Triangulation:
+def triangulate(points: _ArrayLike, criterion: str = "delaunay", **options: Any) -> Triangulation:
     """Triangulates the convex hull of an (n, 2) point array by ``criterion``."""
 
 def triangulate_polygon(
-    vertices: ArrayLike, criterion: str = "delaunay", **options: Any
+    vertices: _ArrayLike, criterion: str = "delaunay", **options: Any
 ) -> Triangulation:
     """Triangulates the interior of a simple polygon given as an (n, 2) ring."""
 
 def compare(
-    points: ArrayLike, criteria: Optional[Sequence[str]] = None, **options: Any
+    points: _ArrayLike, criteria: Optional[Sequence[str]] = None, **options: Any
 ) -> Dict[str, Triangulation]:
     """Every criterion (or those named) on one input, by criterion name."""
 
-def graph(points: ArrayLike, kind: str) -> IndexArray:
+def graph(points: _ArrayLike, kind: str) -> _IndexArray:
     """The (k, 2) int64 edges of a proximity graph: hull, delaunay, rng, gabriel, mst."""
 
-def graph_document(points: ArrayLike, kind: str) -> Dict[str, Any]:
+def graph_document(points: _ArrayLike, kind: str) -> Dict[str, Any]:
     """The JSON document ``optri graph --json`` prints, as a dict."""
 
-def criteria() -> List[CriterionEntry]:
+def criteria() -> List[_CriterionEntry]:
     """Every criterion of the registry, in display order."""
 
-def graph_kinds() -> List[GraphKindEntry]:
+def graph_kinds() -> List[_GraphKindEntry]:
     """Every proximity graph kind of the registry."""
 
-def read_points(path: StrPath, format: Optional[str] = None) -> PointArray:
+def read_points(path: _StrPath, format: Optional[str] = None) -> _PointArray:
     """Reads a point file (text, node, poly, tsplib, geojson) as an (n, 2) array."""
 
-def read_polygon(path: StrPath, format: Optional[str] = None) -> PointArray:
+def read_polygon(path: _StrPath, format: Optional[str] = None) -> _PointArray:
     """Reads a simple polygon's ring (.poly or GeoJSON Polygon) as an (n, 2) array."""
