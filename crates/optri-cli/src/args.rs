@@ -104,6 +104,18 @@ pub(crate) struct ServeArgs {
     /// Port to listen on (0 picks a free one, printed on startup).
     #[arg(long, default_value_t = 8000)]
     pub port: u16,
+    /// Refuse requests with more points than this (422).
+    #[arg(long, default_value_t = 20_000, value_name = "N")]
+    pub max_points: usize,
+    /// Answer 503 when a computation takes longer than this many seconds.
+    #[arg(long, default_value_t = 20.0, value_name = "SECONDS")]
+    pub time_limit: f64,
+    /// Refuse request bodies larger than this many MiB (413).
+    #[arg(long, default_value_t = 8, value_name = "MIB")]
+    pub max_body_mib: usize,
+    /// Most computations running at once; more requests get 503.
+    #[arg(long, default_value_t = 2, value_name = "N")]
+    pub max_running: usize,
 }
 
 #[derive(Args)]

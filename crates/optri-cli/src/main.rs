@@ -11,12 +11,14 @@
 //!   registry);
 //! - `commands`: `triangulate`, `graph`, `compare`, `serve`, `demo`, and their
 //!   shared prelude;
-//! - `report`: the summaries and the JSON documents on stdout.
+//! - `report`: the summaries and the JSON documents on stdout;
+//! - `web`: the playground page and JSON API that `serve` answers with.
 #![forbid(unsafe_code)]
 
 mod args;
 mod commands;
 mod report;
+mod web;
 
 use args::{Cli, Command};
 use clap::Parser;
