@@ -100,7 +100,7 @@ enum Points {
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
 struct TriangulateRequest {
-    points: Vec<[f64; 2]>,
+    points: Vec<Vec<f64>>,
     #[serde(default = "default_criterion")]
     criterion: String,
     #[serde(default)]
@@ -114,7 +114,7 @@ fn default_criterion() -> String {
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
 struct CompareRequest {
-    points: Vec<[f64; 2]>,
+    points: Vec<Vec<f64>>,
     #[serde(default)]
     criteria: Vec<String>,
     #[serde(default)]
@@ -231,8 +231,9 @@ impl Api {
         })
     }
 
-    /// Validates the points of a request (timed as `validate`).
-    fn points(&self, points: &[[f64; 2]], polygon: bool) -> Result<(Points, Phase), Refusal> {
+    /// Validates the points of a request (timed as `validate`): each an
+    /// `[x, y]` pair (400 otherwise), then as the library does (422).
+    fn points(&self, points: &[Vec<f64>], polygon: bool) -> Result<(Points, Phase), Refusal> {
         if points.len() > self.limits.max_points {
             return Err((
                 422,
@@ -245,10 +246,21 @@ impl Api {
             ));
         }
         let t0 = Instant::now();
+        let points = points
+            .iter()
+            .enumerate()
+            .map(|(i, p)| match p[..] {
+                [x, y] => Ok([x, y]),
+                _ => Err(bad_request(format!(
+                    "point {i} has {} numbers; each point is [x, y]",
+                    p.len()
+                ))),
+            })
+            .collect::<Result<Vec<[f64; 2]>, Refusal>>()?;
         let points = if polygon {
-            Points::Polygon(SimplePolygon::new(points).map_err(|e| library_error(&e))?)
+            Points::Polygon(SimplePolygon::new(&points).map_err(|e| library_error(&e))?)
         } else {
-            Points::Set(PointSet::new(points).map_err(|e| library_error(&e))?)
+            Points::Set(PointSet::new(&points).map_err(|e| library_error(&e))?)
         };
         Ok((
             points,
