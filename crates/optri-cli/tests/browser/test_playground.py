@@ -202,6 +202,18 @@ def test_generators_paste_and_downloads(page):
     settle(page)
     assert page.locator("#editor circle").count() == 5
     assert drawn_triangles(page, "delaunay") == 4
+    # Upload: the server reads the file by its extension (TSPLIB here).
+    with tempfile.TemporaryDirectory() as tmp:
+        tsp = Path(tmp) / "six.tsp"
+        tsp.write_text("NAME: six\nTYPE: TSP\nDIMENSION: 6\nEDGE_WEIGHT_TYPE: EUC_2D\n"
+                       "NODE_COORD_SECTION\n1 0 0\n2 8 0\n3 8 6\n4 0 6\n5 3 2\n6 5 4\nEOF\n")
+        page.set_input_files("#file", str(tsp))
+        settle(page)
+    assert page.locator("#editor circle").count() == 6
+    assert drawn_triangles(page, "delaunay") == 2 * 6 - 4 - 2
+    page.fill("#paste", "x,y\n0,0\n10,0\n10,10\n0,10\n3,4\n")
+    page.click("#load-text")
+    settle(page)
     with page.expect_download() as d:
         page.click("#download-json")
     doc = json.loads(Path(d.value.path()).read_text())
