@@ -26,6 +26,10 @@ pub(crate) enum Command {
     Triangulate(TriangulateArgs),
     /// Compute a proximity graph (convex hull, RNG, Gabriel, MST, Delaunay edges).
     Graph(GraphArgs),
+    /// Triangulate one input by every criterion (or the chosen ones) and compare the results.
+    Compare(CompareArgs),
+    /// Serve the web playground and its JSON API.
+    Serve(ServeArgs),
     /// Triangulate a built-in point set by every criterion and draw them side by side.
     Demo(DemoArgs),
 }
@@ -73,6 +77,45 @@ pub(crate) struct GraphArgs {
     /// document as `-o FILE.json`; see docs/json-schema.md).
     #[arg(long)]
     pub json: bool,
+}
+
+#[derive(Args)]
+pub(crate) struct CompareArgs {
+    #[command(flatten)]
+    pub input: InputArgs,
+    /// Comma-separated criteria to compare, in this order (case-insensitive; default: every
+    /// criterion). Criteria that refuse the input are listed with the reason.
+    #[arg(long, value_delimiter = ',', value_name = "A,B,...")]
+    pub criteria: Vec<String>,
+    /// Write the panels side by side (.svg) or the comparison document (.json). Repeatable.
+    #[arg(long, short, value_name = "FILE")]
+    pub output: Vec<PathBuf>,
+    /// Print the comparison document (`{"results": [...]}`, one triangulation document per
+    /// criterion; see docs/json-schema.md) instead of the table.
+    #[arg(long)]
+    pub json: bool,
+}
+
+#[derive(Args)]
+pub(crate) struct ServeArgs {
+    /// Address to listen on (use 0.0.0.0 to accept other machines; there is no authentication).
+    #[arg(long, default_value = "127.0.0.1")]
+    pub host: String,
+    /// Port to listen on (0 picks a free one, printed on startup).
+    #[arg(long, default_value_t = 8000)]
+    pub port: u16,
+    /// Refuse requests with more points than this (422).
+    #[arg(long, default_value_t = 20_000, value_name = "N")]
+    pub max_points: usize,
+    /// Answer 503 when a computation takes longer than this many seconds.
+    #[arg(long, default_value_t = 20.0, value_name = "SECONDS")]
+    pub time_limit: f64,
+    /// Refuse request bodies larger than this many MiB (413).
+    #[arg(long, default_value_t = 8, value_name = "MIB")]
+    pub max_body_mib: usize,
+    /// Most computations running at once; more requests get 503.
+    #[arg(long, default_value_t = 2, value_name = "N")]
+    pub max_running: usize,
 }
 
 #[derive(Args)]

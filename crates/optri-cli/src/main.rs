@@ -9,13 +9,16 @@
 //!
 //! - `args`: the clap types (criteria and graph kinds from the library's
 //!   registry);
-//! - `commands`: `triangulate`, `graph`, `demo`, and their shared prelude;
-//! - `report`: the summaries and the JSON documents on stdout.
+//! - `commands`: `triangulate`, `graph`, `compare`, `serve`, `demo`, and their
+//!   shared prelude;
+//! - `report`: the summaries and the JSON documents on stdout;
+//! - `web`: the playground page and JSON API that `serve` answers with.
 #![forbid(unsafe_code)]
 
 mod args;
 mod commands;
 mod report;
+mod web;
 
 use args::{Cli, Command};
 use clap::Parser;
@@ -33,6 +36,8 @@ fn main() -> ExitCode {
     let result = match cli.command {
         Command::Triangulate(args) => commands::triangulate::run(args),
         Command::Graph(args) => commands::graph::run(args),
+        Command::Compare(args) => commands::compare::run(args),
+        Command::Serve(args) => commands::serve::run(args),
         Command::Demo(args) => commands::demo::run(args),
     };
     match result {

@@ -162,3 +162,204 @@ pub(crate) fn graph_summary(
     wrote(&mut text, written);
     text
 }
+
+/// About six significant digits, plain for everyday magnitudes, for tables.
+fn significant(v: f64) -> String {
+    let a = v.abs();
+    if a == 0.0 {
+        "0".to_string()
+    } else if (1e-3..1e7).contains(&a) {
+        let decimals = (5 - a.log10().floor() as i32).max(0) as usize;
+        format!("{v:.decimals$}")
+    } else {
+        format!("{v:.5e}")
+    }
+}
+
+/// One column of the comparison table: its heading, the measure, and
+/// whether smaller is better.
+struct Column {
+    heading: &'static str,
+    value: fn(&Solution, &optri::Stats) -> f64,
+    smaller_is_better: bool,
+}
+
+/// The columns of `optri compare`: every quality measure, then the time.
+const COLUMNS: &[Column] = &[
+    Column {
+        heading: "max edge",
+        value: |_, s| s.max_edge_length,
+        smaller_is_better: true,
+    },
+    Column {
+        heading: "total length",
+        value: |_, s| s.total_edge_length,
+        smaller_is_better: true,
+    },
+    Column {
+        heading: "min area",
+        value: |_, s| s.min_area,
+        smaller_is_better: false,
+    },
+    Column {
+        heading: "max area",
+        value: |_, s| s.max_area,
+        smaller_is_better: true,
+    },
+    Column {
+        heading: "min angle°",
+        value: |_, s| s.min_angle_deg,
+        smaller_is_better: false,
+    },
+    Column {
+        heading: "max angle°",
+        value: |_, s| s.max_angle_deg,
+        smaller_is_better: true,
+    },
+    Column {
+        heading: "time ms",
+        value: |s, _| s.phases.iter().map(|p| p.ms).sum(),
+        smaller_is_better: true,
+    },
+];
+
+/// The table of `optri compare`: one row per criterion that triangulated the
+/// input, one column per measure with the best value of each column marked
+/// `*` (on the rounded values shown; ties are all marked), results that are
+/// not provably optimal flagged in the `guarantee` column, and the criteria
+/// that refused the input listed with the library's reason.
+pub(crate) fn comparison_table(run: &Run, results: &[optri::Comparison]) -> String {
+    let points = &run.points;
+    let mut text = format!(
+        "{}: {} points ({} distinct{}), {}\n\n",
+        run.source,
+        points.input_points().len(),
+        points.len(),
+        duplicates_note(points),
+        if run.polygon.is_some() {
+            "polygon interior"
+        } else {
+            "convex hull"
+        },
+    );
+    let solved: Vec<&Solution> = results
+        .iter()
+        .filter_map(|(_, r)| r.as_ref().ok())
+        .collect();
+    // Stats walk every triangle: once per solution.
+    let stats: Vec<optri::Stats> = solved.iter().map(|s| s.triangulation.stats()).collect();
+    // Each cell's text; the best (by the value shown) gets a `*`.
+    let mut cells: Vec<Vec<String>> = solved
+        .iter()
+        .map(|s| {
+            let flag = if s.exact { "" } else { " (!)" };
+            vec![
+                s.criterion.name().to_string(),
+                format!("{}{flag}", s.optimality.name()),
+            ]
+        })
+        .collect();
+    for column in COLUMNS {
+        let shown: Vec<String> = solved
+            .iter()
+            .zip(&stats)
+            .map(|(s, st)| significant((column.value)(s, st)))
+            .collect();
+        let parsed: Vec<f64> = shown
+            .iter()
+            .map(|t| t.parse().unwrap_or(f64::NAN))
+            .collect();
+        let best =
+            parsed
+                .iter()
+                .copied()
+                .filter(|v| !v.is_nan())
+                .reduce(if column.smaller_is_better {
+                    f64::min
+                } else {
+                    f64::max
+                });
+        for (row, (t, v)) in cells.iter_mut().zip(shown.iter().zip(&parsed)) {
+            let mark = if Some(*v) == best && solved.len() > 1 {
+                " *"
+            } else {
+                "  "
+            };
+            row.push(format!("{t}{mark}"));
+        }
+    }
+    let headings: Vec<&str> = ["criterion", "guarantee"]
+        .into_iter()
+        .chain(COLUMNS.iter().map(|c| c.heading))
+        .collect();
+    let widths: Vec<usize> = (0..headings.len())
+        .map(|k| {
+            cells
+                .iter()
+                .map(|r| r[k].chars().count())
+                .chain([headings[k].chars().count() + if k >= 2 { 2 } else { 0 }])
+                .max()
+                .unwrap_or(0)
+        })
+        .collect();
+    let line = |row: &[String]| -> String {
+        let mut l = String::new();
+        for (k, cell) in row.iter().enumerate() {
+            let pad = widths[k] - cell.chars().count();
+            if k < 2 {
+                l.push_str(cell);
+                l.push_str(&" ".repeat(pad + 2));
+            } else {
+                l.push_str(&" ".repeat(pad));
+                l.push_str(cell);
+                l.push(' ');
+            }
+        }
+        l.trim_end().to_string() + "\n"
+    };
+    let heading_row: Vec<String> = headings
+        .iter()
+        .enumerate()
+        .map(|(k, h)| {
+            if k >= 2 {
+                format!("{h}  ")
+            } else {
+                h.to_string()
+            }
+        })
+        .collect();
+    if !solved.is_empty() {
+        text.push_str(&line(&heading_row));
+        for row in &cells {
+            text.push_str(&line(row));
+        }
+        text.push_str("\n* best in its column (smallest, or largest for min area and min angle)\n");
+    }
+    for s in solved.iter().filter(|s| !s.exact) {
+        let why = match s.optimality {
+            optri::Optimality::Approximation { bound } => format!("an approximation ({bound})"),
+            optri::Optimality::UpToRounding => {
+                "optimal up to floating-point rounding of sums".to_string()
+            }
+            _ => s.optimality.name().to_string(),
+        };
+        let bound = s.bound.as_ref().map_or(String::new(), |b| {
+            format!(
+                "; the optimum is {} {} (certified)",
+                if b.upper { "at most" } else { "at least" },
+                significant(b.value)
+            )
+        });
+        text.push_str(&format!(
+            "(!) {} is not proven optimal here: {why}{bound}\n",
+            s.criterion.name()
+        ));
+    }
+    for (criterion, result) in results {
+        if let Err(e) = result {
+            text.push_str(&format!("refused: {}: {e}\n", criterion.name()));
+        }
+    }
+    text.push_str(&format!("time: {}\n", timing_text(&run.timing.phases)));
+    text
+}

@@ -27,7 +27,7 @@
 //! | 3 | `graphs` | [`delaunay`], [`convex_hull`], [`relative_neighborhood_graph`], [`gabriel_graph`], [`minimum_spanning_tree`] |
 //! | 4 | `polygon_program` | Klincsek's polygon dynamic program over an objective |
 //! | 5 | `criteria` | one module per criterion: [`minmax_length`], [`greedy`], [`min_weight`], [`maxmin_area`] / [`minmax_area`], Delaunay; the polygon solvers |
-//! | 6 | `registry` | [`Criterion`], [`GraphKind`], [`triangulate`], [`triangulate_polygon`], [`graph`] |
+//! | 6 | `registry` | [`Criterion`], [`GraphKind`], [`triangulate`], [`triangulate_polygon`], [`compare`], [`graph`] |
 //! | 7 | `io` (public, feature `io`) | readers, writers, the one JSON result schema |
 //!
 //! ## Features
@@ -64,8 +64,8 @@ pub use graphs::{
     relative_neighborhood_graph,
 };
 pub use registry::{
-    graph, triangulate, triangulate_polygon, triangulate_polygon_with, triangulate_with, Criterion,
-    GraphKind, Solution,
+    compare, compare_polygon, graph, triangulate, triangulate_polygon, triangulate_polygon_with,
+    triangulate_with, Comparison, Criterion, GraphKind, Solution,
 };
 pub use structures::{Domain, PointSet, SimplePolygon, Stats, Triangulation};
 pub use timing::Phase;

@@ -195,6 +195,57 @@ pub fn triangulate_polygon_with(
     Ok(Solution::new(criterion, solved, phases))
 }
 
+/// The result of one criterion in [`compare`]: its solution, or the error
+/// with which it refused the input (e.g. [`Error::Unsupported`] for a
+/// criterion that needs convex position).
+pub type Comparison = (Criterion, Result<Solution>);
+
+/// Triangulates `points` by each of `criteria`, in the order given, or by
+/// every criterion of [`Criterion::ALL`] when `criteria` is empty. A
+/// criterion that refuses the input is reported with its error and does not
+/// stop the others, so a front end can show what each criterion says about
+/// one input side by side (`optri compare`, the web playground, Python).
+///
+/// ```
+/// use optri::{compare, Criterion, Options, PointSet};
+/// let points = PointSet::new(&[[0.0, 0.0], [4.0, 0.0], [0.0, 3.0], [4.0, 3.0], [2.0, 1.0]])?;
+/// let results = compare(&points, &[], &Options::default());
+/// assert_eq!(results.len(), Criterion::ALL.len());
+/// // The point (2, 1) is interior: min-weight needs convex position for now.
+/// let (_, min_weight) = results.iter().find(|(c, _)| *c == Criterion::MinWeight).unwrap();
+/// assert!(min_weight.is_err());
+/// # Ok::<(), optri::Error>(())
+/// ```
+pub fn compare(points: &PointSet, criteria: &[Criterion], options: &Options) -> Vec<Comparison> {
+    chosen(criteria)
+        .iter()
+        .map(|&c| (c, triangulate_with(points, c, options)))
+        .collect()
+}
+
+/// [`compare`] on the interior of a simple polygon: each criterion through
+/// [`triangulate_polygon_with`] (a criterion without a polygon solver is
+/// reported with [`UnsupportedReason::NoPolygonInput`]).
+pub fn compare_polygon(
+    polygon: &SimplePolygon,
+    criteria: &[Criterion],
+    options: &Options,
+) -> Vec<Comparison> {
+    chosen(criteria)
+        .iter()
+        .map(|&c| (c, triangulate_polygon_with(polygon, c, options)))
+        .collect()
+}
+
+/// `criteria`, or every criterion when it is empty.
+fn chosen(criteria: &[Criterion]) -> &[Criterion] {
+    if criteria.is_empty() {
+        Criterion::ALL
+    } else {
+        criteria
+    }
+}
+
 impl Solution {
     fn new(criterion: Criterion, solved: Solved, phases: Vec<crate::timing::Phase>) -> Self {
         Solution {
@@ -320,5 +371,43 @@ mod tests {
                 ..
             })
         ));
+    }
+
+    #[test]
+    fn compare_runs_every_criterion_or_the_chosen_ones_in_order() {
+        // A square with its centre: min-weight and the convex-only area
+        // criteria may refuse it, but every criterion is reported.
+        let points =
+            PointSet::new(&[[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [0.0, 2.0], [1.0, 0.7]]).unwrap();
+        let all = compare(&points, &[], &Options::default());
+        let names: Vec<Criterion> = all.iter().map(|(c, _)| *c).collect();
+        assert_eq!(names, Criterion::ALL);
+        for (c, r) in &all {
+            match r {
+                Ok(s) => {
+                    assert_eq!(s.criterion, *c);
+                    s.triangulation.validate().unwrap();
+                }
+                Err(e) => assert!(matches!(e, Error::Unsupported { .. }), "{c:?}: {e}"),
+            }
+        }
+        assert!(all[0].1.is_ok(), "Delaunay accepts every point set");
+        let two = compare(
+            &points,
+            &[Criterion::Greedy, Criterion::Delaunay],
+            &Options::default(),
+        );
+        assert_eq!(two.len(), 2);
+        assert_eq!(
+            (two[0].0, two[1].0),
+            (Criterion::Greedy, Criterion::Delaunay)
+        );
+        let polygon =
+            SimplePolygon::new(&[[0.0, 0.0], [2.0, 0.0], [1.0, 1.0], [2.0, 2.0], [0.0, 2.0]])
+                .unwrap();
+        for (c, r) in compare_polygon(&polygon, &[], &Options::default()) {
+            let s = r.unwrap_or_else(|e| panic!("{c:?}: {e}"));
+            assert_eq!(s.triangulation.triangles().len(), 3);
+        }
     }
 }

@@ -1,8 +1,10 @@
 //! The subcommands, and the prelude that `triangulate` and `graph` share:
 //! check the outputs, read and validate the input, time every step, write.
 
+pub(crate) mod compare;
 pub(crate) mod demo;
 pub(crate) mod graph;
+pub(crate) mod serve;
 pub(crate) mod triangulate;
 
 use crate::args::InputArgs;

@@ -6,7 +6,9 @@
 //!   it comes from [`triangulate`](crate::triangulate), how it was obtained
 //!   (criterion, optimality, algorithm, diagnostics, timings);
 //! - `"graph"`: [`GraphReport`] — an edge set over the points and, when it
-//!   comes from [`graph`](crate::graph), its kind and timings.
+//!   comes from [`graph`](crate::graph), its kind and timings;
+//! - `"comparison"`: [`ComparisonReport`] — the results of
+//!   [`compare`](crate::compare), each a triangulation document or an error.
 //!
 //! `docs/json-schema.md` in the repository lists every field with its type
 //! and meaning. The reports implement `serde::Serialize` (fields in the
@@ -21,7 +23,7 @@
 use crate::criteria::{Diagnostics, Optimality};
 use crate::error::{Error, Result};
 use crate::kernel::Point;
-use crate::registry::{GraphKind, Solution};
+use crate::registry::{Comparison, GraphKind, Solution};
 use crate::structures::{Domain, PointSet, SimplePolygon, Stats, Triangulation};
 use crate::timing::Phase;
 use serde::ser::{Serialize, Serializer};
@@ -258,6 +260,99 @@ struct GraphDocument<'a> {
     coordinates: &'a [Point],
 }
 
+/// The results of [`compare`](crate::compare) as a JSON document
+/// (`"document": "comparison"`): `{"schema_version", "document",
+/// "timing_ms"?, "results": [...]}`, where each result is exactly the
+/// triangulation document of [`TriangulationReport::of_solution`] (what
+/// `optri triangulate --json` prints) or, for a criterion that refused the
+/// input, `{"criterion", "error"}` with the library's message.
+#[derive(Clone, Copy, Debug)]
+pub struct ComparisonReport<'a> {
+    results: &'a [Comparison],
+    timing: Option<&'a [Phase]>,
+}
+
+impl<'a> ComparisonReport<'a> {
+    /// The document of `results`.
+    pub fn new(results: &'a [Comparison]) -> Self {
+        Self {
+            results,
+            timing: None,
+        }
+    }
+
+    /// Reports `phases` (e.g. a front end's `read`, `validate` and `total`
+    /// around the whole comparison) as the document's own `timing_ms`; each
+    /// result keeps the phases of its own run.
+    pub fn with_timing(self, phases: &'a [Phase]) -> Self {
+        Self {
+            timing: Some(phases),
+            ..self
+        }
+    }
+
+    /// The results described.
+    pub fn results(&self) -> &'a [Comparison] {
+        self.results
+    }
+
+    /// The document as a JSON value.
+    pub fn to_json(&self) -> Value {
+        to_value(self)
+    }
+}
+
+impl Serialize for ComparisonReport<'_> {
+    fn serialize<S: Serializer>(&self, serializer: S) -> std::result::Result<S::Ok, S::Error> {
+        ComparisonDocument {
+            schema_version: SCHEMA_VERSION,
+            document: "comparison",
+            timing_ms: self.timing.map(TimingMap),
+            results: self.results.iter().map(ComparisonEntry).collect(),
+        }
+        .serialize(serializer)
+    }
+}
+
+/// The fields of a comparison document, in the order written.
+#[derive(serde::Serialize)]
+struct ComparisonDocument<'a> {
+    schema_version: u32,
+    document: &'static str,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    timing_ms: Option<TimingMap<'a>>,
+    results: Vec<ComparisonEntry<'a>>,
+}
+
+/// One result of a comparison: a triangulation document, or the refusal.
+struct ComparisonEntry<'a>(&'a Comparison);
+
+impl Serialize for ComparisonEntry<'_> {
+    fn serialize<S: Serializer>(&self, serializer: S) -> std::result::Result<S::Ok, S::Error> {
+        match &self.0 {
+            (_, Ok(solution)) => TriangulationReport::of_solution(solution).serialize(serializer),
+            (criterion, Err(e)) => ErrorDocument {
+                criterion: criterion.name(),
+                error: e.to_string(),
+            }
+            .serialize(serializer),
+        }
+    }
+}
+
+/// A criterion that refused the input, in a comparison document.
+#[derive(serde::Serialize)]
+struct ErrorDocument {
+    criterion: &'static str,
+    error: String,
+}
+
+/// The document of [`compare`](crate::compare)'s results:
+/// [`ComparisonReport::new`] as a value.
+pub fn comparison_to_json(results: &[Comparison]) -> Value {
+    ComparisonReport::new(results).to_json()
+}
+
 /// The `"domain"` of a triangulation document: `"convex-hull"` or
 /// `"polygon"` (the interior of a simple polygon whose ring is the
 /// coordinates, in order).
@@ -433,6 +528,8 @@ mod tests {
         "total_edge_length",
         "min_area",
         "max_area",
+        "smallest_triangle",
+        "largest_triangle",
         "min_angle_deg",
         "max_angle_deg",
         "triangles",
@@ -665,6 +762,57 @@ mod tests {
     }
 
     #[test]
+    fn a_comparison_holds_each_run_document_unchanged_and_the_refusals() {
+        use crate::{compare, Options};
+        let ps = PointSet::new(&awkward_points()).unwrap();
+        let results = compare(
+            &ps,
+            &[Criterion::Greedy, Criterion::MinWeight],
+            &Options::default(),
+        );
+        let v = comparison_to_json(&results);
+        assert_eq!(
+            keys(&v),
+            sorted(&[&["schema_version", "document", "results"]])
+        );
+        assert_eq!(v["document"], "comparison");
+        let entries = v["results"].as_array().unwrap();
+        assert_eq!(entries.len(), 2);
+        let greedy = results[0].1.as_ref().unwrap();
+        assert_eq!(entries[0], solution_to_json(greedy));
+        // The awkward points have interior points: min-weight refuses them.
+        let refusal = results[1].1.as_ref().unwrap_err();
+        assert_eq!(
+            entries[1],
+            json!({"criterion": "min-weight", "error": refusal.to_string()})
+        );
+        let phases = [Phase {
+            name: "total",
+            ms: 1.5,
+        }];
+        let timed = ComparisonReport::new(&results)
+            .with_timing(&phases)
+            .to_json();
+        assert_eq!(timed["timing_ms"], json!({"total": 1.5}));
+    }
+
+    #[test]
+    fn the_highlighted_triangles_are_the_exact_extremes() {
+        let t = delaunay(&PointSet::new(&awkward_points()).unwrap()).unwrap();
+        let s = t.stats();
+        let area = |tri: [u32; 3]| {
+            let [a, b, c] = tri.map(|i| t.points()[i as usize]);
+            crate::kernel::metrics::area(a, b, c)
+        };
+        assert!(t.triangles().contains(&s.smallest_triangle));
+        assert_eq!(area(s.smallest_triangle), s.min_area);
+        assert_eq!(area(s.largest_triangle), s.max_area);
+        let v = triangulation_to_json(&t);
+        assert_eq!(v["stats"]["smallest_triangle"], json!(s.smallest_triangle));
+        assert_eq!(v["stats"]["largest_triangle"], json!(s.largest_triangle));
+    }
+
+    #[test]
     fn the_schema_document_names_every_field() {
         let path = concat!(env!("CARGO_MANIFEST_DIR"), "/../../docs/json-schema.md");
         let doc = std::fs::read_to_string(path).unwrap();
@@ -678,7 +826,7 @@ mod tests {
             STATS_FIELDS,
             GRAPH_FIELDS,
             GRAPH_RUN_FIELDS,
-            &["optimality_bound"],
+            &["optimality_bound", "results", "error"],
         ]
         .concat()
         {

@@ -9,7 +9,7 @@
 //! | `poly` | Triangle `.poly`: one closed boundary, no holes | |
 //! | `tsplib` | TSPLIB `.tsp` | |
 //! | `geojson` | `Point`/`MultiPoint`; one `Polygon` (outer ring) | triangulations and graphs |
-//! | `json` | [`triangulation_from_json`]; its `coordinates` through the GeoJSON reader | the one result schema: [`TriangulationReport`], [`GraphReport`] |
+//! | `json` | [`triangulation_from_json`]; its `coordinates` through the GeoJSON reader | the one result schema: [`TriangulationReport`], [`GraphReport`], [`ComparisonReport`] |
 //! | `svg` | | single picture, graph, multi-panel comparison |
 //!
 //! [`read_points`] / [`read_points_file`] pick the reader of points,
@@ -46,8 +46,8 @@ mod tsplib;
 pub use format::{InputFormat, OutputFormat};
 pub use geojson::{graph_to_geojson, triangulation_to_geojson};
 pub use json::{
-    graph_to_json, solution_to_json, triangulation_from_json, triangulation_to_json, GraphReport,
-    TriangulationReport, SCHEMA_VERSION,
+    comparison_to_json, graph_to_json, solution_to_json, triangulation_from_json,
+    triangulation_to_json, ComparisonReport, GraphReport, TriangulationReport, SCHEMA_VERSION,
 };
 pub use node::triangulation_to_triangle_files;
 pub use svg::{graph_to_svg, panels_to_svg, triangulation_to_svg};

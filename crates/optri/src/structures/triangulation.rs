@@ -3,7 +3,7 @@
 //! interior), exact validation, and quality measures.
 
 use crate::error::{Error, Result};
-use crate::kernel::{self, compare_lengths, orient_sign, Point};
+use crate::kernel::{self, compare_areas, compare_lengths, orient_sign, Point};
 use crate::spatial::convex_hull_cycle;
 use crate::structures::{PointSet, SimplePolygon};
 #[cfg(feature = "io")]
@@ -50,6 +50,13 @@ pub struct Stats {
     pub min_area: f64,
     /// Largest triangle area.
     pub max_area: f64,
+    /// The triangle of smallest area, as input indices (counter-clockwise),
+    /// chosen by exact area comparison (ties: the first in
+    /// [`Triangulation::triangles`] order); `min_area` is its rounded area.
+    pub smallest_triangle: [u32; 3],
+    /// The triangle of largest area, chosen as `smallest_triangle` is;
+    /// `max_area` is its rounded area.
+    pub largest_triangle: [u32; 3],
     /// Smallest interior angle, degrees.
     pub min_angle_deg: f64,
     /// Largest interior angle, degrees.
@@ -201,6 +208,8 @@ impl Triangulation {
                 .sum(),
             min_area: f64::INFINITY,
             max_area: 0.0,
+            smallest_triangle: self.triangles[0],
+            largest_triangle: self.triangles[0],
             min_angle_deg: 180.0,
             max_angle_deg: 0.0,
             triangles: self.triangles.len(),
@@ -215,6 +224,13 @@ impl Triangulation {
             let area = kernel::metrics::area(a, b, c);
             stats.min_area = stats.min_area.min(area);
             stats.max_area = stats.max_area.max(area);
+            let corners = |t: [u32; 3]| t.map(|i| self.point(i));
+            if compare_areas([a, b, c], corners(stats.smallest_triangle)).is_lt() {
+                stats.smallest_triangle = *t;
+            }
+            if compare_areas([a, b, c], corners(stats.largest_triangle)).is_gt() {
+                stats.largest_triangle = *t;
+            }
             for ang in kernel::metrics::angles_deg(a, b, c) {
                 stats.min_angle_deg = stats.min_angle_deg.min(ang);
                 stats.max_angle_deg = stats.max_angle_deg.max(ang);

@@ -1,0 +1,405 @@
+//! The web playground's JSON API, as a function from a request (method,
+//! path, body) to a [`Reply`], so that the HTTP loop in `commands::serve`
+//! only moves bytes. Every answer is built by the library: the registry
+//! ([`Criterion::ALL`], [`optri::compare`]), the readers ([`io::read_input`])
+//! and the result schema ([`TriangulationReport`], [`ComparisonReport`]), so
+//! a criterion that lands later appears in the page without changes here.
+//!
+//! | request | answer |
+//! |---|---|
+//! | `GET /` | the page ([`INDEX_HTML`], embedded; no external resources) |
+//! | `GET /api/criteria` | `{"criteria": [{name, description, optimality, requirement, supports_polygons, options, reference}], "limits": {…}}` |
+//! | `POST /api/triangulate` `{"points": [[x, y], …], "criterion"?, "polygon"?}` | the triangulation document of `optri triangulate --json` |
+//! | `POST /api/compare` `{"points", "criteria"?: [names], "polygon"?}` | the comparison document of `optri compare --json` |
+//! | `POST /api/read` `{"text", "filename"?, "format"?}` | `{"points": [[x, y], …], "polygon": bool, "format"}`: a file parsed by the library's readers |
+//!
+//! Errors are `{"error": message}` with the library's message: 400 for a
+//! request that is not the documented JSON (syntax, types, unknown fields,
+//! unknown criterion or format), 404/405 for other paths and methods, 413 for
+//! a body over [`Limits::max_body_bytes`], 422 for input the library refuses
+//! (too few points, collinear, out-of-range coordinates, a criterion that
+//! does not support the input, more than [`Limits::max_points`] points) and
+//! 503 when [`Limits::max_running`] computations are already running or one
+//! exceeds [`Limits::time_limit`] (its thread then finishes in the background
+//! and still counts as running, so a flood of slow requests cannot pile up).
+
+use optri::io::{self, ComparisonReport, InputFormat, TriangulationReport};
+use optri::{Criterion, Error, Options, Phase, PointSet, Requirement, SimplePolygon, Solution};
+use serde::Deserialize;
+use serde_json::{json, Value};
+use std::path::Path;
+use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::{mpsc, Arc};
+use std::time::{Duration, Instant};
+
+/// The page, embedded in the binary: plain HTML, CSS and JavaScript.
+pub(crate) const INDEX_HTML: &str = include_str!("index.html");
+
+/// What the server refuses, so one request cannot take the machine.
+#[derive(Clone, Debug)]
+pub(crate) struct Limits {
+    /// Largest request body, bytes (larger: 413).
+    pub max_body_bytes: usize,
+    /// Most points one triangulate or compare request may hold (more: 422).
+    pub max_points: usize,
+    /// Longest a computation may take before the answer is 503.
+    pub time_limit: Duration,
+    /// Most computations running at once (more: 503).
+    pub max_running: usize,
+}
+
+/// An HTTP answer: status, content type and body.
+#[derive(Debug)]
+pub(crate) struct Reply {
+    pub status: u16,
+    pub content_type: &'static str,
+    pub body: String,
+}
+
+const JSON: &str = "application/json";
+
+impl Reply {
+    fn json(status: u16, value: &impl serde::Serialize) -> Self {
+        match serde_json::to_string(value) {
+            Ok(body) => Reply {
+                status,
+                content_type: JSON,
+                body,
+            },
+            Err(e) => Reply::error(500, format!("cannot encode the answer: {e}")),
+        }
+    }
+
+    pub(crate) fn error(status: u16, message: impl Into<String>) -> Self {
+        Reply::json(status, &json!({ "error": message.into() }))
+    }
+}
+
+/// The API's state shared by the worker threads.
+pub(crate) struct Api {
+    limits: Limits,
+    running: Arc<AtomicUsize>,
+}
+
+/// One slot of [`Limits::max_running`], released when the computation (not
+/// the request) ends.
+struct Slot(Arc<AtomicUsize>);
+
+impl Drop for Slot {
+    fn drop(&mut self) {
+        self.0.fetch_sub(1, Ordering::SeqCst);
+    }
+}
+
+/// The points of a request: a point set, or a polygon's ring.
+enum Points {
+    Set(PointSet),
+    Polygon(SimplePolygon),
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct TriangulateRequest {
+    points: Vec<Vec<f64>>,
+    #[serde(default = "default_criterion")]
+    criterion: String,
+    #[serde(default)]
+    polygon: bool,
+}
+
+fn default_criterion() -> String {
+    Criterion::Delaunay.name().to_string()
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct CompareRequest {
+    points: Vec<Vec<f64>>,
+    #[serde(default)]
+    criteria: Vec<String>,
+    #[serde(default)]
+    polygon: bool,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct ReadRequest {
+    text: String,
+    #[serde(default)]
+    filename: Option<String>,
+    #[serde(default)]
+    format: Option<String>,
+}
+
+/// A failed request: its status and message.
+type Refusal = (u16, String);
+
+/// 400: the request is not the documented JSON.
+fn bad_request(e: impl std::fmt::Display) -> Refusal {
+    (400, format!("invalid request: {e}"))
+}
+
+/// The status of a library error: 422 (the input is refused), 500 for a bug.
+fn library_error(e: &Error) -> Refusal {
+    let status = if matches!(e, Error::Internal(_)) {
+        500
+    } else {
+        422
+    };
+    (status, e.to_string())
+}
+
+fn parse<T: serde::de::DeserializeOwned>(body: &[u8]) -> Result<T, Refusal> {
+    serde_json::from_slice(body).map_err(bad_request)
+}
+
+fn requirement_name(r: Requirement) -> &'static str {
+    match r {
+        Requirement::AnyPointSet => "any-point-set",
+        Requirement::ConvexPosition => "convex-position",
+        _ => "other",
+    }
+}
+
+impl Api {
+    pub(crate) fn new(limits: Limits) -> Self {
+        Api {
+            limits,
+            running: Arc::new(AtomicUsize::new(0)),
+        }
+    }
+
+    /// Answers one request. `body` is at most `max_body_bytes` long (the
+    /// HTTP loop answers 413 itself otherwise).
+    pub(crate) fn respond(&self, method: &str, path: &str, body: &[u8]) -> Reply {
+        // The query string plays no part in any answer.
+        let path = path.split('?').next().unwrap_or(path);
+        let result = match (method, path) {
+            ("GET", "/" | "/index.html") => {
+                return Reply {
+                    status: 200,
+                    content_type: "text/html; charset=utf-8",
+                    body: INDEX_HTML.to_string(),
+                }
+            }
+            ("GET", "/api/criteria") => Ok(Reply::json(200, &self.criteria())),
+            ("POST", "/api/triangulate") => self.triangulate(body),
+            ("POST", "/api/compare") => self.compare(body),
+            ("POST", "/api/read") => read(body),
+            (_, "/" | "/index.html" | "/api/criteria") => {
+                Err((405, format!("{path} answers GET only")))
+            }
+            (_, "/api/triangulate" | "/api/compare" | "/api/read") => {
+                Err((405, format!("{path} answers POST only")))
+            }
+            _ => Err((
+                404,
+                format!(
+                    "no such page: {path} (the API is GET /api/criteria, POST /api/triangulate, \
+                     POST /api/compare, POST /api/read)"
+                ),
+            )),
+        };
+        result.unwrap_or_else(|(status, message)| Reply::error(status, message))
+    }
+
+    fn criteria(&self) -> Value {
+        let criteria: Vec<Value> = Criterion::ALL
+            .iter()
+            .map(|&c| {
+                let info = c.info();
+                json!({
+                    "name": info.name,
+                    "description": info.description,
+                    "optimality": info.optimality.name(),
+                    "requirement": requirement_name(info.requirement),
+                    "supports_polygons": c.supports_polygons(),
+                    "options": info.options,
+                    "reference": info.reference,
+                })
+            })
+            .collect();
+        json!({
+            "criteria": criteria,
+            "formats": InputFormat::ALL.iter().map(|f| f.name()).collect::<Vec<_>>(),
+            "limits": {
+                "max_body_bytes": self.limits.max_body_bytes,
+                "max_points": self.limits.max_points,
+                "time_limit_s": self.limits.time_limit.as_secs_f64(),
+                "max_running": self.limits.max_running,
+            },
+        })
+    }
+
+    /// Validates the points of a request (timed as `validate`): each an
+    /// `[x, y]` pair (400 otherwise), then as the library does (422).
+    fn points(&self, points: &[Vec<f64>], polygon: bool) -> Result<(Points, Phase), Refusal> {
+        if points.len() > self.limits.max_points {
+            return Err((
+                422,
+                format!(
+                    "{} points is more than this server's limit of {} per request; use the \
+                     command line (optri triangulate / optri compare) for large inputs",
+                    points.len(),
+                    self.limits.max_points
+                ),
+            ));
+        }
+        let t0 = Instant::now();
+        let points = points
+            .iter()
+            .enumerate()
+            .map(|(i, p)| match p[..] {
+                [x, y] => Ok([x, y]),
+                _ => Err(bad_request(format!(
+                    "point {i} has {} numbers; each point is [x, y]",
+                    p.len()
+                ))),
+            })
+            .collect::<Result<Vec<[f64; 2]>, Refusal>>()?;
+        let points = if polygon {
+            Points::Polygon(SimplePolygon::new(&points).map_err(|e| library_error(&e))?)
+        } else {
+            Points::Set(PointSet::new(&points).map_err(|e| library_error(&e))?)
+        };
+        Ok((
+            points,
+            Phase {
+                name: "validate",
+                ms: ms_since(t0),
+            },
+        ))
+    }
+
+    /// Runs `work` on its own thread within the limits.
+    fn compute<T: Send + 'static>(
+        &self,
+        work: impl FnOnce() -> T + Send + 'static,
+    ) -> Result<T, Refusal> {
+        let busy = self
+            .running
+            .fetch_update(Ordering::SeqCst, Ordering::SeqCst, |n| {
+                (n < self.limits.max_running).then_some(n + 1)
+            })
+            .is_err();
+        if busy {
+            return Err((
+                503,
+                format!(
+                    "the server is busy ({} computations running); try again shortly",
+                    self.limits.max_running
+                ),
+            ));
+        }
+        let slot = Slot(Arc::clone(&self.running));
+        let (send, receive) = mpsc::channel();
+        std::thread::spawn(move || {
+            let _slot = slot;
+            // The receiver may have given up (time limit): nothing to do then.
+            let _ = send.send(work());
+        });
+        match receive.recv_timeout(self.limits.time_limit) {
+            Ok(value) => Ok(value),
+            Err(mpsc::RecvTimeoutError::Timeout) => Err((
+                503,
+                format!(
+                    "the computation took longer than this server's limit of {} s; use the \
+                     command line for this input",
+                    self.limits.time_limit.as_secs_f64()
+                ),
+            )),
+            Err(mpsc::RecvTimeoutError::Disconnected) => Err((
+                500,
+                "internal error: the computation failed (this is a bug, please report it)"
+                    .to_string(),
+            )),
+        }
+    }
+
+    fn triangulate(&self, body: &[u8]) -> Result<Reply, Refusal> {
+        let start = Instant::now();
+        let request: TriangulateRequest = parse(body)?;
+        let criterion = Criterion::from_name(&request.criterion).map_err(bad_request)?;
+        let (points, validate) = self.points(&request.points, request.polygon)?;
+        let solution: Solution = self
+            .compute(move || match &points {
+                Points::Set(p) => optri::triangulate_with(p, criterion, &Options::default()),
+                Points::Polygon(p) => {
+                    optri::triangulate_polygon_with(p, criterion, &Options::default())
+                }
+            })?
+            .map_err(|e| library_error(&e))?;
+        let mut phases = vec![validate];
+        phases.extend(solution.phases.iter().cloned());
+        phases.push(Phase {
+            name: "total",
+            ms: ms_since(start),
+        });
+        // Serialised directly, so the fields keep the documented order.
+        Ok(Reply::json(
+            200,
+            &TriangulationReport::of_solution(&solution).with_timing(&phases),
+        ))
+    }
+
+    fn compare(&self, body: &[u8]) -> Result<Reply, Refusal> {
+        let start = Instant::now();
+        let request: CompareRequest = parse(body)?;
+        let criteria = request
+            .criteria
+            .iter()
+            .map(|n| Criterion::from_name(n))
+            .collect::<optri::Result<Vec<_>>>()
+            .map_err(bad_request)?;
+        let (points, validate) = self.points(&request.points, request.polygon)?;
+        let t0 = Instant::now();
+        let results = self.compute(move || match &points {
+            Points::Set(p) => optri::compare(p, &criteria, &Options::default()),
+            Points::Polygon(p) => optri::compare_polygon(p, &criteria, &Options::default()),
+        })?;
+        let phases = [
+            validate,
+            Phase {
+                name: "compare",
+                ms: ms_since(t0),
+            },
+            Phase {
+                name: "total",
+                ms: ms_since(start),
+            },
+        ];
+        Ok(Reply::json(
+            200,
+            &ComparisonReport::new(&results).with_timing(&phases),
+        ))
+    }
+}
+
+/// `POST /api/read`: parses a file's text with the library's readers; the
+/// format is `format` if given, else the `filename`'s extension, else
+/// guessed from the content (as the CLI does for stdin).
+fn read(body: &[u8]) -> Result<Reply, Refusal> {
+    let request: ReadRequest = parse(body)?;
+    let format = match (&request.format, &request.filename) {
+        (Some(name), _) => InputFormat::from_name(name).map_err(bad_request)?,
+        (None, Some(name)) => InputFormat::from_path(Path::new(name))
+            .unwrap_or_else(|_| InputFormat::sniff(&request.text)),
+        (None, None) => InputFormat::sniff(&request.text),
+    };
+    let input = io::read_input(&request.text, format).map_err(|e| {
+        let name = request.filename.as_deref().unwrap_or("the input");
+        (422, format!("{name}: {e}"))
+    })?;
+    Ok(Reply::json(
+        200,
+        &json!({
+            "points": input.points(),
+            "polygon": matches!(input, io::Input::Polygon(_)),
+            "format": format.name(),
+        }),
+    ))
+}
+
+fn ms_since(start: Instant) -> f64 {
+    start.elapsed().as_secs_f64() * 1e3
+}
