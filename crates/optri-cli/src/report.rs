@@ -2,9 +2,10 @@
 //! by the library, [`optri::io::TriangulationReport`] and
 //! [`optri::io::GraphReport`]), and the one way to write to stdout.
 
-use crate::commands::Run;
+use crate::commands::{Run, Validated};
 use crate::CliResult;
-use optri::{Criterion, Domain, GraphKind, Phase, PointSet, Solution};
+use optri::io::{Arithmetic, TriangulationReport};
+use optri::{Criterion, Domain, GraphKind, Phase, PointGraph, PointSet, Solution};
 use std::io::Write;
 use std::path::PathBuf;
 
@@ -62,7 +63,11 @@ fn number(v: f64) -> String {
 
 /// `; merged N duplicate point(s)`, or nothing.
 pub(crate) fn duplicates_note(points: &PointSet) -> String {
-    match points.duplicates().len() {
+    merged_note(points.duplicates().len())
+}
+
+fn merged_note(duplicates: usize) -> String {
+    match duplicates {
         0 => String::new(),
         1 => "; merged 1 duplicate point".to_string(),
         n => format!("; merged {n} duplicate points"),
@@ -83,11 +88,33 @@ fn wrote(text: &mut String, written: &[PathBuf]) {
     }
 }
 
+/// The `arithmetic:` line: how the coordinates were computed with.
+fn arithmetic_line(run: &Run) -> String {
+    match (run.read.arithmetic, &run.read.scaled) {
+        (Arithmetic::DecimalExact, Some(s)) => format!(
+            "arithmetic: decimal-exact (the decimals as written, times 10^{})\n",
+            s.exponent
+        ),
+        (Arithmetic::DecimalExact, None) => {
+            "arithmetic: decimal-exact (the decimals as written)\n".to_string()
+        }
+        (Arithmetic::Binary64, _) => "arithmetic: binary64 (the nearest doubles of the \
+                                      decimals written; they do not scale to integers below 2^53)\n"
+            .to_string(),
+    }
+}
+
 /// The summary of `optri triangulate`.
-pub(crate) fn triangulation_summary(run: &Run, solution: &Solution, written: &[PathBuf]) -> String {
-    let stats = solution.triangulation.stats();
-    let points = &run.points;
-    let domain = match (&run.polygon, solution.triangulation.domain()) {
+pub(crate) fn triangulation_summary(
+    run: &Run,
+    validated: &Validated,
+    document: &TriangulationReport,
+    solution: &Solution,
+    written: &[PathBuf],
+) -> String {
+    let stats = document.stats();
+    let points = &validated.points;
+    let domain = match (&validated.polygon, solution.triangulation.domain()) {
         (Some(p), Domain::Polygon { .. }) => format!(
             "polygon interior ({} vertices, given {})",
             p.len(),
@@ -99,7 +126,7 @@ pub(crate) fn triangulation_summary(run: &Run, solution: &Solution, written: &[P
         ),
         _ => "convex hull".to_string(),
     };
-    let boundary = if run.polygon.is_some() {
+    let boundary = if validated.polygon.is_some() {
         "boundary points"
     } else {
         "hull points"
@@ -112,6 +139,7 @@ pub(crate) fn triangulation_summary(run: &Run, solution: &Solution, written: &[P
          edge length: max {}, total {}\n\
          angles: min {}°, max {}°\n\
          areas: min {}, max {}\n\
+         {}\
          time: {}\n",
         solution.criterion.name(),
         exactness(solution.exact),
@@ -128,6 +156,7 @@ pub(crate) fn triangulation_summary(run: &Run, solution: &Solution, written: &[P
         number(stats.max_angle_deg),
         number(stats.min_area),
         number(stats.max_area),
+        arithmetic_line(run),
         timing_text(&run.timing.phases),
     );
     wrote(&mut text, written);
@@ -138,11 +167,11 @@ pub(crate) fn triangulation_summary(run: &Run, solution: &Solution, written: &[P
 pub(crate) fn graph_summary(
     run: &Run,
     kind: GraphKind,
-    edges: &[[u32; 2]],
+    graph: &PointGraph,
     written: &[PathBuf],
 ) -> String {
-    let points = &run.points;
-    let coordinates = points.input_points();
+    let coordinates = run.read.input.points();
+    let edges = &graph.edges;
     let total: f64 = edges
         .iter()
         .map(|&[a, b]| {
@@ -150,13 +179,14 @@ pub(crate) fn graph_summary(
         })
         .sum();
     let mut text = format!(
-        "graph: {}\npoints: {} input, {} distinct{}\nedges: {}, total length {}\ntime: {}\n",
+        "graph: {}\npoints: {} input, {} distinct{}\nedges: {}, total length {}\n{}time: {}\n",
         kind.name(),
         coordinates.len(),
-        points.len(),
-        duplicates_note(points),
+        graph.distinct,
+        merged_note(graph.duplicates.len()),
         edges.len(),
         number(total),
+        arithmetic_line(run),
         timing_text(&run.timing.phases),
     );
     wrote(&mut text, written);

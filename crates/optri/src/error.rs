@@ -27,6 +27,11 @@ pub enum Error {
         /// Number of distinct points after merging duplicates.
         distinct: usize,
     },
+    /// Fewer than two distinct points, so no graph has an edge.
+    TooFewPointsForGraph {
+        /// Number of distinct points after merging duplicates.
+        distinct: usize,
+    },
     /// All distinct points lie on one line, so no triangle exists.
     AllCollinear {
         /// Number of distinct points.
@@ -151,6 +156,10 @@ impl fmt::Display for Error {
             Error::TooFewPoints { distinct } => write!(
                 f,
                 "a triangulation needs at least 3 distinct points, the input has {distinct}"
+            ),
+            Error::TooFewPointsForGraph { distinct } => write!(
+                f,
+                "a graph needs at least 2 distinct points, the input has {distinct}"
             ),
             Error::AllCollinear { distinct } => write!(
                 f,

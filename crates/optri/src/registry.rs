@@ -276,6 +276,95 @@ impl GraphKind {
     }
 }
 
+/// A proximity graph of points that need not form a [`PointSet`]
+/// ([`graph_of_points`]).
+#[derive(Clone, Debug, PartialEq)]
+#[non_exhaustive]
+pub struct PointGraph {
+    /// The edges, as input-index pairs (see [`GraphKind`]).
+    pub edges: Vec<[u32; 2]>,
+    /// The timed phase.
+    pub phases: Vec<Phase>,
+    /// The number of distinct points.
+    pub distinct: usize,
+    /// Every merged duplicate as `[dropped, kept]` input indices.
+    pub duplicates: Vec<[u32; 2]>,
+}
+
+/// The graph `kind` of any points with at least two distinct ones: as
+/// [`graph`] when they form a [`PointSet`], and for two distinct points or
+/// points all on one line the path through them in their order along the
+/// line, for every kind. That path is the minimum spanning tree, the RNG and
+/// the Gabriel graph (consecutive points have empty lunes and diametral
+/// disks; any other pair has a point between them); it is the hull (a
+/// segment, every point on it a boundary point, listed from the
+/// lexicographically smallest end); and it is the Delaunay graph, the dual
+/// of the Voronoi diagram, whose cells are parallel strips of which only
+/// consecutive ones share an edge. Edges are sorted `[min, max]` input-index
+/// pairs, the hull's in path order.
+///
+/// # Errors
+/// The coordinate errors of [`PointSet::new`]; [`Error::TooFewPointsForGraph`]
+/// for fewer than two distinct points.
+pub fn graph_of_points(points: &[crate::kernel::Point], kind: GraphKind) -> Result<PointGraph> {
+    match PointSet::new(points) {
+        Ok(point_set) => {
+            let (edges, phases) = graph(&point_set, kind)?;
+            Ok(PointGraph {
+                edges,
+                phases,
+                distinct: point_set.len(),
+                duplicates: point_set.duplicates().to_vec(),
+            })
+        }
+        Err(Error::TooFewPoints { distinct } | Error::AllCollinear { distinct }) if distinct >= 2 => {
+            let mut phases = Vec::new();
+            let (path, duplicates) = timed(&mut phases, kind.name(), || collinear_path(points));
+            let distinct = path.len();
+            let mut edges: Vec<[u32; 2]> = path.windows(2).map(|w| [w[0], w[1]]).collect();
+            if kind != GraphKind::Hull {
+                edges.iter_mut().for_each(|e| e.sort_unstable());
+                edges.sort_unstable();
+            }
+            Ok(PointGraph {
+                edges,
+                phases,
+                distinct,
+                duplicates,
+            })
+        }
+        Err(Error::TooFewPoints { distinct } | Error::AllCollinear { distinct }) => {
+            Err(Error::TooFewPointsForGraph { distinct })
+        }
+        Err(e) => Err(e),
+    }
+}
+
+/// The distinct points of collinear `points` (input indices of first
+/// occurrences) in lexicographic order, which is their order along the line
+/// (comparisons of doubles are exact), and the merged duplicates.
+fn collinear_path(points: &[crate::kernel::Point]) -> (Vec<u32>, Vec<[u32; 2]>) {
+    let mut seen = std::collections::HashMap::with_capacity(points.len());
+    let mut duplicates = Vec::new();
+    let mut distinct = Vec::new();
+    for (i, p) in points.iter().enumerate() {
+        // -0.0 and 0.0 are the same point, as in `PointSet`.
+        let key = [(p[0] + 0.0).to_bits(), (p[1] + 0.0).to_bits()];
+        match seen.get(&key) {
+            Some(&kept) => duplicates.push([i as u32, kept]),
+            None => {
+                seen.insert(key, i as u32);
+                distinct.push(i as u32);
+            }
+        }
+    }
+    distinct.sort_by(|&a, &b| {
+        let (p, q) = (points[a as usize], points[b as usize]);
+        p[0].total_cmp(&q[0]).then(p[1].total_cmp(&q[1]))
+    });
+    (distinct, duplicates)
+}
+
 /// The edges of the graph `kind` of `points`, as input-index pairs (see
 /// [`GraphKind`] for the edge convention), with its timed phase.
 pub fn graph(points: &PointSet, kind: GraphKind) -> Result<(Vec<[u32; 2]>, Vec<Phase>)> {

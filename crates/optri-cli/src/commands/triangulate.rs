@@ -11,8 +11,15 @@ use optri::Criterion;
 pub(crate) fn run(args: TriangulateArgs) -> CliResult<()> {
     // Check everything the user typed before any work.
     let criterion = Criterion::from_name(&args.criterion).map_err(|e| e.to_string())?;
-    let mut run = Run::start(&args.input, &args.output, OutputFormat::from_path, true)?;
-    let solution = match &run.polygon {
+    let mut run = Run::start(
+        &args.input,
+        &args.output,
+        OutputFormat::from_path,
+        true,
+        args.style.quiet,
+    )?;
+    let validated = run.validate()?;
+    let solution = match &validated.polygon {
         Some(polygon) => {
             if !criterion.supports_polygons() {
                 let supported: Vec<&str> = Criterion::ALL
@@ -30,7 +37,7 @@ pub(crate) fn run(args: TriangulateArgs) -> CliResult<()> {
             }
             optri::triangulate_polygon(polygon, criterion)
         }
-        None => optri::triangulate(&run.points, criterion),
+        None => optri::triangulate(&validated.points, criterion),
     }
     .map_err(|e| e.to_string())?;
     run.timing.phases.extend(solution.phases.iter().cloned());
@@ -38,14 +45,21 @@ pub(crate) fn run(args: TriangulateArgs) -> CliResult<()> {
     // A JSON output holds the phases timed so far (the write and the total
     // are still running).
     let timed = run.timing.phases.clone();
-    let document = TriangulationReport::of_solution(&solution).with_timing(&timed);
+    let style = args.style.json_style();
+    let document = TriangulationReport::of_solution(&solution)
+        .with_input(&run.read)
+        .with_timing(&timed);
     let written = run.timing.write(&args.output, |path| {
-        io::write_triangulation_report(&document, path, &title)
+        io::write_triangulation_report_styled(&document, path, &title, style)
     })?;
     run.timing.finish();
+    let document = TriangulationReport::of_solution(&solution)
+        .with_input(&run.read)
+        .with_timing(&run.timing.phases);
     if args.json {
-        let document = TriangulationReport::of_solution(&solution).with_timing(&run.timing.phases);
         return report::emit_json(&document);
     }
-    report::emit(&report::triangulation_summary(&run, &solution, &written))
+    report::emit(&report::triangulation_summary(
+        &run, &validated, &document, &solution, &written,
+    ))
 }
