@@ -98,9 +98,11 @@ fn arithmetic_line(run: &Run) -> String {
         (Arithmetic::DecimalExact, None) => {
             "arithmetic: decimal-exact (the decimals as written)\n".to_string()
         }
-        (Arithmetic::Binary64, _) => "arithmetic: binary64 (the nearest doubles of the \
+        (Arithmetic::Binary64, _) => {
+            "arithmetic: binary64 (the nearest doubles of the \
                                       decimals written; they do not scale to integers below 2^53)\n"
-            .to_string(),
+                .to_string()
+        }
     }
 }
 

@@ -64,8 +64,8 @@ pub use graphs::{
     relative_neighborhood_graph,
 };
 pub use registry::{
-    graph, graph_of_points, triangulate, triangulate_polygon, triangulate_polygon_with, triangulate_with, Criterion,
-    GraphKind, PointGraph, Solution,
+    graph, graph_of_points, triangulate, triangulate_polygon, triangulate_polygon_with,
+    triangulate_with, Criterion, GraphKind, PointGraph, Solution,
 };
 pub use structures::{Domain, PointSet, SimplePolygon, Stats, Triangulation};
 pub use timing::Phase;

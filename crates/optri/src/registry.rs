@@ -317,7 +317,9 @@ pub fn graph_of_points(points: &[crate::kernel::Point], kind: GraphKind) -> Resu
                 duplicates: point_set.duplicates().to_vec(),
             })
         }
-        Err(Error::TooFewPoints { distinct } | Error::AllCollinear { distinct }) if distinct >= 2 => {
+        Err(Error::TooFewPoints { distinct } | Error::AllCollinear { distinct })
+            if distinct >= 2 =>
+        {
             let mut phases = Vec::new();
             let (path, duplicates) = timed(&mut phases, kind.name(), || collinear_path(points));
             let distinct = path.len();

@@ -11,7 +11,12 @@ use rand::{rngs::StdRng, Rng, SeedableRng};
 fn decimal(v: i64, k: u32) -> String {
     let p = 10i64.pow(k);
     let sign = if v < 0 { "-" } else { "" };
-    format!("{sign}{}.{:0width$}", v.abs() / p, v.abs() % p, width = k as usize)
+    format!(
+        "{sign}{}.{:0width$}",
+        v.abs() / p,
+        v.abs() % p,
+        width = k as usize
+    )
 }
 
 /// Twice the signed area of integer points, exactly.
@@ -25,7 +30,10 @@ fn orient(a: [i64; 2], b: [i64; 2], c: [i64; 2]) -> i128 {
 fn assert_no_flat_triangle(triangles: &[[u32; 3]], ints: &[[i64; 2]], what: &str) {
     for t in triangles {
         let [a, b, c] = t.map(|i| ints[i as usize]);
-        assert!(orient(a, b, c) > 0, "{what}: triangle {t:?} is flat as written");
+        assert!(
+            orient(a, b, c) > 0,
+            "{what}: triangle {t:?} is flat as written"
+        );
     }
 }
 
@@ -39,7 +47,11 @@ fn points_collinear_as_written_stay_collinear() {
         // the hull, and points on one side of its line.
         let p = [rng.gen_range(-900..900i64), rng.gen_range(-900..900i64)];
         let d = [rng.gen_range(1..300i64), rng.gen_range(-300..300i64)];
-        let mut ints = vec![p, [p[0] + d[0], p[1] + d[1]], [p[0] + 2 * d[0], p[1] + 2 * d[1]]];
+        let mut ints = vec![
+            p,
+            [p[0] + d[0], p[1] + d[1]],
+            [p[0] + 2 * d[0], p[1] + 2 * d[1]],
+        ];
         // Normal pointing to the left of d: the other points go there.
         let n = [-d[1], d[0]];
         for _ in 0..rng.gen_range(2..7) {
@@ -76,14 +88,21 @@ fn points_collinear_as_written_stay_collinear() {
             hull.edges.iter().any(|e| e[0] == 1),
             "{text}: the middle point is on the hull as written"
         );
-        for criterion in [Criterion::Delaunay, Criterion::MinmaxLength, Criterion::Greedy] {
+        for criterion in [
+            Criterion::Delaunay,
+            Criterion::MinmaxLength,
+            Criterion::Greedy,
+        ] {
             let solution = triangulate(&points, criterion).unwrap();
             solution.triangulation.validate().unwrap();
             assert_no_flat_triangle(solution.triangulation.triangles(), &ints, &text);
         }
     }
     assert!(cases >= 250, "{cases}");
-    assert!(binary_not_collinear >= 50, "{binary_not_collinear} of {cases}");
+    assert!(
+        binary_not_collinear >= 50,
+        "{binary_not_collinear} of {cases}"
+    );
 }
 
 #[test]
@@ -97,7 +116,11 @@ fn the_classic_tenths_are_collinear() {
     let d = read.input.points();
     assert_ne!(optri::kernel::orient_sign(d[0], d[1], d[2]), 0);
     let points = PointSet::new(read.working_points()).unwrap();
-    for criterion in [Criterion::Delaunay, Criterion::MinmaxLength, Criterion::Greedy] {
+    for criterion in [
+        Criterion::Delaunay,
+        Criterion::MinmaxLength,
+        Criterion::Greedy,
+    ] {
         let t = triangulate(&points, criterion).unwrap().triangulation;
         // Collinear as written: (0.2, 0.6) is a hull vertex and the one
         // triangle that would be flat is absent.
@@ -152,7 +175,10 @@ fn inputs_that_do_not_scale_are_binary64() {
     // GeoJSON: short literals are decimals; a long one makes the document binary64.
     let short = r#"{"type":"MultiPoint","coordinates":[[0.1,0.3],[0.2,0.6],[0.3,0.9],[0.3,0.1]]}"#;
     let read = read_points_exact(short, InputFormat::GeoJson).unwrap();
-    assert_eq!((read.arithmetic, read.scale_exponent()), (Arithmetic::DecimalExact, 1));
+    assert_eq!(
+        (read.arithmetic, read.scale_exponent()),
+        (Arithmetic::DecimalExact, 1)
+    );
     let long = short.replace("0.1]", "0.10000000000000001]");
     let read = read_points_exact(&long, InputFormat::GeoJson).unwrap();
     assert_eq!(read.arithmetic, Arithmetic::Binary64);
@@ -162,6 +188,9 @@ fn inputs_that_do_not_scale_are_binary64() {
     assert_eq!(read.working_points()[1], [2.0, 6.0]);
     let poly = "3 2\n1 0.5 0\n2 0 0.25\n3 0 0\n3 0\n1 1 3\n2 3 2\n3 2 1\n";
     let read = optri::io::read_input_exact(poly, InputFormat::Poly).unwrap();
-    assert_eq!(read.working_points(), [[50.0, 0.0], [0.0, 0.0], [0.0, 25.0]]);
+    assert_eq!(
+        read.working_points(),
+        [[50.0, 0.0], [0.0, 0.0], [0.0, 25.0]]
+    );
     assert_eq!(read.input.points(), [[0.5, 0.0], [0.0, 0.0], [0.0, 0.25]]);
 }

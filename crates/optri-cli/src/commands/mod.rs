@@ -66,7 +66,10 @@ impl Run {
         let (read, source) = read_input(input, polygons)?;
         if !quiet {
             for warning in &read.warnings {
-                let _ = writeln!(std::io::stderr().lock(), "optri: warning: {source}: {warning}");
+                let _ = writeln!(
+                    std::io::stderr().lock(),
+                    "optri: warning: {source}: {warning}"
+                );
             }
         }
         timing.phases.push(Phase {
@@ -124,7 +127,10 @@ fn check_writable(file: &Path) -> CliResult<()> {
         return if parent.exists() {
             fail(format!("'{}' is not a directory", parent.display()))
         } else {
-            fail(format!("the directory '{}' does not exist", parent.display()))
+            fail(format!(
+                "the directory '{}' does not exist",
+                parent.display()
+            ))
         };
     }
     if file.is_dir() {

@@ -232,9 +232,11 @@ impl DecimalScaler {
         let k = match self.exponent {
             None => need,
             Some(k) if need > k => {
-                let Some(factor) = power_of_ten(need - k)
-                    .filter(|&f| self.largest.checked_mul(f).is_some_and(|v| v < EXACT_INTEGER_LIMIT))
-                else {
+                let Some(factor) = power_of_ten(need - k).filter(|&f| {
+                    self.largest
+                        .checked_mul(f)
+                        .is_some_and(|v| v < EXACT_INTEGER_LIMIT)
+                }) else {
                     self.scaled = None;
                     return;
                 };
@@ -289,7 +291,9 @@ fn power_of_ten(p: i64) -> Option<u64> {
 /// `|k| ≤ 22`, where `10^|k|` is an exact double.
 pub(super) fn unscale(v: f64, k: i32) -> f64 {
     // Parsing `1e{k}` gives the double nearest to 10^|k|.
-    let p: f64 = format!("1e{}", k.unsigned_abs()).parse().unwrap_or(f64::INFINITY);
+    let p: f64 = format!("1e{}", k.unsigned_abs())
+        .parse()
+        .unwrap_or(f64::INFINITY);
     if k >= 0 {
         v / p
     } else {
@@ -314,7 +318,9 @@ pub(super) fn json_literals_are_short(text: &str) -> bool {
             }
             b'-' | b'0'..=b'9' => {
                 let start = i;
-                while i < bytes.len() && matches!(bytes[i], b'-' | b'+' | b'.' | b'e' | b'E' | b'0'..=b'9') {
+                while i < bytes.len()
+                    && matches!(bytes[i], b'-' | b'+' | b'.' | b'e' | b'E' | b'0'..=b'9')
+                {
                     i += 1;
                 }
                 let token = &text[start..i];
@@ -354,7 +360,18 @@ mod tests {
         assert_eq!(d("1.05E-3"), Some((false, 105, -5)));
         assert_eq!(d("-0.000"), Some((true, 0, 0)));
         assert_eq!(d("9007199254740991"), Some((false, 9007199254740991, 0)));
-        for bad in ["9007199254740993", "0.12345678901234567", "inf", "nan", "0x10", ".", "1e", "1.2.3", "e5", ""] {
+        for bad in [
+            "9007199254740993",
+            "0.12345678901234567",
+            "inf",
+            "nan",
+            "0x10",
+            ".",
+            "1e",
+            "1.2.3",
+            "e5",
+            "",
+        ] {
             assert_eq!(d(bad), None, "{bad}");
         }
     }
@@ -367,13 +384,19 @@ mod tests {
         assert_eq!(s.exponent, 2);
         assert_eq!(s.points, vec![[10.0, 10.0], [25.0, -300.0], [10000.0, 0.0]]);
         // Integers: the doubles are the values, no copy.
-        assert_eq!(scaled(&["1", "2", "-7", "0"]), (Arithmetic::DecimalExact, None));
+        assert_eq!(
+            scaled(&["1", "2", "-7", "0"]),
+            (Arithmetic::DecimalExact, None)
+        );
         // Multiples of a thousand scale down.
         let (_, s) = scaled(&["1000", "2e3", "3000", "-5000"]);
         assert_eq!(s.unwrap().exponent, -3);
         // Too many digits after scaling, or a non-decimal: binary64.
         assert_eq!(scaled(&["1e15", "0.1"]).0, Arithmetic::Binary64);
-        assert_eq!(scaled(&["0.1", "0.12345678901234567"]).0, Arithmetic::Binary64);
+        assert_eq!(
+            scaled(&["0.1", "0.12345678901234567"]).0,
+            Arithmetic::Binary64
+        );
         assert_eq!(scaled(&["1e-400", "1"]).0, Arithmetic::Binary64);
         assert_eq!(unscale(30.0, 1), 3.0);
         assert_eq!(unscale(3.0, -3), 3000.0);
@@ -381,8 +404,12 @@ mod tests {
 
     #[test]
     fn long_json_literals_are_found_outside_strings() {
-        assert!(json_literals_are_short(r#"{"a":[0.1,-2.5e-3,1234567890.12345],"b":"0.12345678901234567"}"#));
+        assert!(json_literals_are_short(
+            r#"{"a":[0.1,-2.5e-3,1234567890.12345],"b":"0.12345678901234567"}"#
+        ));
         assert!(!json_literals_are_short(r#"{"a":[0.10000000000000001]}"#));
-        assert!(json_literals_are_short(r#"{"a\"":[100000000000000000000000]}"#));
+        assert!(json_literals_are_short(
+            r#"{"a\"":[100000000000000000000000]}"#
+        ));
     }
 }

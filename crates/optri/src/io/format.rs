@@ -289,9 +289,18 @@ mod tests {
         assert_eq!(InputFormat::sniff("1 2\n3 4\n"), InputFormat::Text);
         // Triangle files by their vertex section; an `x y z` cloud whose
         // first row looks like a header is still text.
-        assert_eq!(InputFormat::sniff("# c\n3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n"), InputFormat::Node);
-        assert_eq!(InputFormat::sniff("3 2\n0 0 0\n1 1 0\n2 0 1\n3 0\n0 0 1\n1 1 2\n2 2 0\n"), InputFormat::Poly);
-        assert_eq!(InputFormat::sniff("3 2 0\n1 0 0\n5 1 0\n3 0 1\n"), InputFormat::Text);
+        assert_eq!(
+            InputFormat::sniff("# c\n3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n"),
+            InputFormat::Node
+        );
+        assert_eq!(
+            InputFormat::sniff("3 2\n0 0 0\n1 1 0\n2 0 1\n3 0\n0 0 1\n1 1 2\n2 2 0\n"),
+            InputFormat::Poly
+        );
+        assert_eq!(
+            InputFormat::sniff("3 2 0\n1 0 0\n5 1 0\n3 0 1\n"),
+            InputFormat::Text
+        );
         assert_eq!(InputFormat::sniff("3 2\n1 0\n2 1\n"), InputFormat::Text);
         let e = read_points_file(Path::new("/nonexistent/x.txt"), None).unwrap_err();
         assert!(

@@ -588,8 +588,7 @@ mod tests {
             }
         }
         // The point features, read by the GeoJSON reader, give the input.
-        let points_only =
-            serde_json::json!({"type": "FeatureCollection", "features": features[t.triangles().len()..]});
+        let points_only = serde_json::json!({"type": "FeatureCollection", "features": features[t.triangles().len()..]});
         assert_eq!(
             read_points(&points_only.to_string(), InputFormat::GeoJson).unwrap(),
             pts

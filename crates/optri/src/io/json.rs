@@ -18,14 +18,14 @@
 //! point, merged duplicates included, so the document describes the input as
 //! given.
 
+use super::decimal::unscale;
+use super::{Arithmetic, ReadInput};
 use crate::criteria::{Diagnostics, Optimality};
 use crate::error::{Error, Result};
 use crate::kernel::Point;
 use crate::registry::{GraphKind, Solution};
 use crate::structures::{Domain, PointSet, SimplePolygon, Stats, Triangulation};
 use crate::timing::Phase;
-use super::decimal::unscale;
-use super::{Arithmetic, ReadInput};
 use serde::ser::{Serialize, Serializer};
 use serde_json::Value;
 

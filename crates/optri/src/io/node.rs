@@ -115,7 +115,11 @@ pub(super) fn read_vertex_section<'t>(
                 line,
                 format!(
                     "vertex id {id} out of sequence (expected {})",
-                    if base > 1 { 0 } else { base + points.points.len() }
+                    if base > 1 {
+                        0
+                    } else {
+                        base + points.points.len()
+                    }
                 ),
             ));
         }

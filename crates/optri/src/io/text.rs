@@ -84,8 +84,10 @@ pub(super) fn read_text(text: &str) -> Result<Collected> {
                 return Err(parse(
                     line,
                     format!(
-                        "{} columns, but line {first} has {n}; every row must have the same number of columns",
-                        tokens.len()
+                        "{} column{}, but line {first} has {n}; every row must have the same number \
+                         of columns",
+                        tokens.len(),
+                        if tokens.len() == 1 { "" } else { "s" }
                     ),
                 ));
             }
@@ -135,13 +137,20 @@ mod tests {
         assert_eq!(read.input.points(), [[1.0, 2.0], [3.0, 4.0]]);
         assert_eq!(
             read.warnings,
-            ["line 1: rows have 3 columns and no header names them; reading columns 1 and 2 \
-              as x y and ignoring column 3 (a header line such as `x y z` names them)"]
+            [
+                "line 1: rows have 3 columns and no header names them; reading columns 1 and 2 \
+              as x y and ignoring column 3 (a header line such as `x y z` names them)"
+            ]
         );
         let read = read_points_exact("# c\n1 2 9 8\n3 4 9 8\n", InputFormat::Text).unwrap();
-        assert!(read.warnings[0].starts_with("line 2:") && read.warnings[0].contains("columns 3 to 4"));
+        assert!(
+            read.warnings[0].starts_with("line 2:") && read.warnings[0].contains("columns 3 to 4")
+        );
         for named in ["x y z\n1 2 9\n3 4 9\n", "1 2\n3 4\n"] {
-            assert!(read_points_exact(named, InputFormat::Text).unwrap().warnings.is_empty());
+            assert!(read_points_exact(named, InputFormat::Text)
+                .unwrap()
+                .warnings
+                .is_empty());
         }
         assert_eq!(
             read_points("\u{feff}-1e3 2.5E-2\r\n", InputFormat::Text).unwrap(),
