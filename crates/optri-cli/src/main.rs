@@ -10,11 +10,13 @@
 //! - `args`: the clap types (criteria and graph kinds from the library's
 //!   registry);
 //! - `commands`: `triangulate`, `graph`, `demo`, and their shared prelude;
+//! - `progress`: the progress line on stderr (terminals only);
 //! - `report`: the summaries and the JSON documents on stdout.
 #![forbid(unsafe_code)]
 
 mod args;
 mod commands;
+mod progress;
 mod report;
 
 use args::{Cli, Command};

@@ -152,7 +152,9 @@ pub fn triangulate_with(
     options: &Options,
 ) -> Result<Solution> {
     let mut phases = Vec::new();
+    options.report(criterion.name(), 0.0);
     let solved = (criterion.entry().1)(points, options, &mut phases)?;
+    options.report(criterion.name(), 1.0);
     Ok(Solution::new(criterion, solved, phases))
 }
 
@@ -191,7 +193,9 @@ pub fn triangulate_polygon_with(
         reason: UnsupportedReason::NoPolygonInput,
     })?;
     let mut phases = Vec::new();
+    options.report(criterion.name(), 0.0);
     let solved = solve(polygon, options, &mut phases)?;
+    options.report(criterion.name(), 1.0);
     Ok(Solution::new(criterion, solved, phases))
 }
 
@@ -392,6 +396,56 @@ mod tests {
         assert_eq!(
             Criterion::from_name("delaunay").unwrap(),
             Criterion::Delaunay
+        );
+    }
+
+    #[test]
+    fn the_progress_hook_hears_the_run_start_and_end() {
+        use std::sync::{Arc, Mutex};
+        let heard = Arc::new(Mutex::new(Vec::new()));
+        let log = Arc::clone(&heard);
+        let options = Options::default().with_progress(crate::criteria::Progress::new(
+            move |phase, fraction| log.lock().unwrap().push((phase.to_string(), fraction)),
+        ));
+        let points = PointSet::new(&[[0.0, 0.0], [1.0, 0.0], [0.0, 1.0], [1.0, 1.0]]).unwrap();
+        triangulate_with(&points, Criterion::Greedy, &options).unwrap();
+        assert_eq!(
+            *heard.lock().unwrap(),
+            [("greedy".to_string(), 0.0), ("greedy".to_string(), 1.0)]
+        );
+        assert_eq!(options.clone(), options);
+        assert_ne!(options, Options::default());
+    }
+
+    #[test]
+    fn graphs_of_two_and_of_collinear_points_are_the_path() {
+        // Input order scrambled along the line y = 2x, with a duplicate.
+        let line = [[2.0, 4.0], [0.0, 0.0], [3.0, 6.0], [1.0, 2.0], [0.0, 0.0]];
+        for &kind in GraphKind::ALL {
+            let g = graph_of_points(&line, kind).unwrap();
+            assert_eq!(g.distinct, 4);
+            assert_eq!(g.duplicates, [[4, 1]]);
+            let expected: &[[u32; 2]] = if kind == GraphKind::Hull {
+                &[[1, 3], [3, 0], [0, 2]]
+            } else {
+                &[[0, 2], [0, 3], [1, 3]]
+            };
+            assert_eq!(g.edges, expected, "{kind:?}");
+        }
+        let two = graph_of_points(&[[5.0, 1.0], [-1.0, 1.0]], GraphKind::Mst).unwrap();
+        assert_eq!(two.edges, [[0, 1]]);
+        assert_eq!(
+            graph_of_points(&[[1.0, 1.0], [1.0, 1.0]], GraphKind::Rng).unwrap_err(),
+            Error::TooFewPointsForGraph { distinct: 1 }
+        );
+        // Not collinear: the ordinary graphs.
+        let square = [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]];
+        let g = graph_of_points(&square, GraphKind::Mst).unwrap();
+        assert_eq!(
+            g.edges,
+            graph(&PointSet::new(&square).unwrap(), GraphKind::Mst)
+                .unwrap()
+                .0
         );
     }
 

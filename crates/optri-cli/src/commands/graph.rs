@@ -16,8 +16,12 @@ pub(crate) fn run(args: GraphArgs) -> CliResult<()> {
         false,
         args.style.quiet,
     )?;
-    let graph = optri::graph_of_points(run.read.working_points(), args.kind)
-        .map_err(|e| input_error(&run.source, e))?;
+    run.progress.phase(args.kind.name());
+    let graph = optri::graph_of_points(run.read.working_points(), args.kind).map_err(|e| {
+        run.progress.finish();
+        input_error(&run.source, e)
+    })?;
+    run.progress.phase("writing");
     run.timing.phases.extend(graph.phases.iter().cloned());
     let title = run.title(args.kind.name());
     let timed = run.timing.phases.clone();
@@ -36,7 +40,9 @@ pub(crate) fn run(args: GraphArgs) -> CliResult<()> {
     let style = args.style.json_style();
     let written = run.timing.write(&args.output, |path| {
         io::write_graph_report_styled(&document(&timed), path, &title, style)
-    })?;
+    });
+    run.progress.finish();
+    let written = written?;
     run.timing.finish();
     let phases = run.timing.phases.clone();
     if args.json {

@@ -6,6 +6,7 @@ pub(crate) mod graph;
 pub(crate) mod triangulate;
 
 use crate::args::InputArgs;
+use crate::progress::Progress;
 use crate::CliResult;
 use optri::io::{self, Input, InputFormat, OutputFormat, ReadInput};
 use optri::{Error, Phase, PointSet, SimplePolygon};
@@ -23,6 +24,8 @@ pub(crate) struct Run {
     pub read: ReadInput,
     /// `read`, `validate`, then whatever the command adds, `write` and `total`.
     pub timing: Timing,
+    /// The progress line on stderr.
+    pub progress: Progress,
 }
 
 /// A validated input: the points the algorithms run on and, for a polygon
@@ -63,13 +66,18 @@ impl Run {
                 check_writable(&file)?;
             }
         }
-        let (read, source) = read_input(input, polygons)?;
+        let progress = Progress::new(quiet);
+        progress.phase(format!("reading {}", input.input));
+        let (read, source) = read_input(input, polygons).inspect_err(|_| progress.finish())?;
+        progress.phase("validating");
         if !quiet {
             for warning in &read.warnings {
-                let _ = writeln!(
-                    std::io::stderr().lock(),
-                    "optri: warning: {source}: {warning}"
-                );
+                progress.suspend(|| {
+                    let _ = writeln!(
+                        std::io::stderr().lock(),
+                        "optri: warning: {source}: {warning}"
+                    );
+                });
             }
         }
         timing.phases.push(Phase {
@@ -80,6 +88,7 @@ impl Run {
             source,
             read,
             timing,
+            progress,
         })
     }
 

@@ -18,7 +18,8 @@ pub(crate) fn run(args: TriangulateArgs) -> CliResult<()> {
         true,
         args.style.quiet,
     )?;
-    let validated = run.validate()?;
+    let validated = run.validate().inspect_err(|_| run.progress.finish())?;
+    let options = optri::Options::default().with_progress(run.progress.hook());
     let solution = match &validated.polygon {
         Some(polygon) => {
             if !criterion.supports_polygons() {
@@ -27,6 +28,7 @@ pub(crate) fn run(args: TriangulateArgs) -> CliResult<()> {
                     .filter(|c| c.supports_polygons())
                     .map(|c| c.name())
                     .collect();
+                run.progress.finish();
                 return Err(format!(
                     "{}: the input is a polygon, and criterion {} does not triangulate \
                      polygons; criteria that do: {}",
@@ -35,11 +37,15 @@ pub(crate) fn run(args: TriangulateArgs) -> CliResult<()> {
                     supported.join(", ")
                 ));
             }
-            optri::triangulate_polygon(polygon, criterion)
+            optri::triangulate_polygon_with(polygon, criterion, &options)
         }
-        None => optri::triangulate(&validated.points, criterion),
+        None => optri::triangulate_with(&validated.points, criterion, &options),
     }
-    .map_err(|e| e.to_string())?;
+    .map_err(|e| {
+        run.progress.finish();
+        e.to_string()
+    })?;
+    run.progress.phase("writing");
     run.timing.phases.extend(solution.phases.iter().cloned());
     let title = run.title(&report::label(criterion, solution.exact));
     // A JSON output holds the phases timed so far (the write and the total
@@ -51,7 +57,9 @@ pub(crate) fn run(args: TriangulateArgs) -> CliResult<()> {
         .with_timing(&timed);
     let written = run.timing.write(&args.output, |path| {
         io::write_triangulation_report_styled(&document, path, &title, style)
-    })?;
+    });
+    run.progress.finish();
+    let written = written?;
     run.timing.finish();
     let document = TriangulationReport::of_solution(&solution)
         .with_input(&run.read)
