@@ -749,8 +749,9 @@ fn greedy_names_its_algorithm_and_matches_the_library() {
         ));
         assert_eq!(json["criterion"], "greedy");
         assert_eq!(json["exact"], true);
-        let named = json["algorithm"].as_str().unwrap();
-        assert!(named.starts_with(&format!("{algorithm} (")), "{named}");
+        assert_eq!(json["algorithm"], *algorithm);
+        let detail = json["algorithm_detail"].as_str().unwrap();
+        assert!(detail.starts_with(&format!("{algorithm} (")), "{detail}");
         let points = optri::io::read_points(text, optri::io::InputFormat::Text).unwrap();
         let lib =
             optri::triangulate(&PointSet::new(&points).unwrap(), optri::Criterion::Greedy).unwrap();

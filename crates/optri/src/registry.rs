@@ -123,8 +123,12 @@ pub struct Solution {
     pub exact: bool,
     /// The guarantee of this result.
     pub optimality: Optimality,
-    /// The algorithm that ran (e.g. `"spade bulk load"`).
+    /// The algorithm that ran, short (e.g. `"spade bulk-load Delaunay"`,
+    /// greedy's `"general"`).
     pub algorithm: String,
+    /// The algorithm in full: its paper, steps and bounds, and what happened
+    /// on this input (it starts with [`algorithm`](Self::algorithm)).
+    pub algorithm_detail: String,
     /// The triangulation.
     pub triangulation: Triangulation,
     /// Timed phases, in order.
@@ -205,13 +209,27 @@ impl Solution {
             criterion,
             exact: solved.optimality.is_exact(),
             optimality: solved.optimality,
-            algorithm: solved.algorithm,
+            algorithm: short_algorithm(&solved.algorithm).to_string(),
+            algorithm_detail: solved.algorithm,
             triangulation: solved.triangulation,
             phases,
             diagnostics: solved.diagnostics,
             bound: solved.bound,
         }
     }
+}
+
+/// The short name of an algorithm description: the criteria write
+/// `"name: details"`, `"name (details)"`, `"name; details"` or
+/// `"name, details"`, and the name is what comes before the first of those
+/// separators.
+fn short_algorithm(detail: &str) -> &str {
+    let end = [": ", " (", "; ", ", "]
+        .iter()
+        .filter_map(|sep| detail.find(sep))
+        .min()
+        .unwrap_or(detail.len());
+    &detail[..end]
 }
 
 /// A proximity graph optri computes.
@@ -397,6 +415,25 @@ mod tests {
             Criterion::from_name("delaunay").unwrap(),
             Criterion::Delaunay
         );
+    }
+
+    #[test]
+    fn algorithm_names_are_short_and_the_details_kept() {
+        assert_eq!(short_algorithm("general (exact rounds)"), "general");
+        assert_eq!(
+            short_algorithm("Vassilev Algorithm 75: optimal"),
+            "Vassilev Algorithm 75"
+        );
+        assert_eq!(short_algorithm("Klincsek, O(n^3); up to"), "Klincsek");
+        assert_eq!(short_algorithm("plain"), "plain");
+        let points = PointSet::new(&[[0.0, 0.0], [3.0, 0.0], [0.0, 3.0], [1.0, 1.0]]).unwrap();
+        for &criterion in Criterion::ALL {
+            let Ok(s) = triangulate(&points, criterion) else {
+                continue;
+            };
+            assert!(s.algorithm.len() <= 40, "{criterion:?}: {}", s.algorithm);
+            assert!(s.algorithm_detail.starts_with(&s.algorithm));
+        }
     }
 
     #[test]

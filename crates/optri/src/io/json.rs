@@ -177,6 +177,7 @@ impl Serialize for TriangulationReport<'_> {
                 area: self.bound_area(b.value),
             }),
             algorithm: run.map(|s| s.algorithm.as_str()),
+            algorithm_detail: run.map(|s| s.algorithm_detail.as_str()),
             points: t.points().len(),
             distinct_points: t.point_set().len(),
             duplicates: t.point_set().duplicates(),
@@ -220,6 +221,8 @@ struct TriangulationDocument<'a> {
     bound: Option<BoundDocument>,
     #[serde(skip_serializing_if = "Option::is_none")]
     algorithm: Option<&'a str>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    algorithm_detail: Option<&'a str>,
     points: usize,
     distinct_points: usize,
     duplicates: &'a [[u32; 2]],
@@ -536,6 +539,7 @@ mod tests {
         "exact",
         "optimality",
         "algorithm",
+        "algorithm_detail",
         "diagnostics",
         "timing_ms",
     ];
@@ -790,7 +794,11 @@ mod tests {
             STATS_FIELDS,
             GRAPH_FIELDS,
             GRAPH_RUN_FIELDS,
-            &["optimality_bound"],
+            &[
+                "optimality_bound",
+                "coordinate_arithmetic",
+                "coordinate_scale",
+            ],
         ]
         .concat()
         {
