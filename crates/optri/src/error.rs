@@ -131,6 +131,11 @@ pub enum PolygonProblem {
         /// The later position.
         second: usize,
     },
+    /// The polygon has holes (interior rings), which are not supported yet.
+    HasHoles {
+        /// Number of interior rings.
+        holes: usize,
+    },
     /// Two edges meet other than at the vertex that adjacent edges share.
     EdgesIntersect {
         /// The first edge, as `[i, i + 1]` positions.
@@ -235,6 +240,10 @@ impl fmt::Display for PolygonProblem {
             PolygonProblem::RepeatedVertex { first, second } => write!(
                 f,
                 "vertices {first} and {second} are the same point (a vertex may occur once)"
+            ),
+            PolygonProblem::HasHoles { holes } => write!(
+                f,
+                "polygons with holes are not supported yet (this one has {holes})"
             ),
             PolygonProblem::EdgesIntersect { first, second } => write!(
                 f,
