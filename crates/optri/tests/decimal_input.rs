@@ -70,7 +70,7 @@ fn points_collinear_as_written_stay_collinear() {
         let Ok(points) = PointSet::new(read.working_points()) else {
             continue; // a point landed on another
         };
-        if points.duplicates().len() > 0 {
+        if !points.duplicates().is_empty() {
             continue;
         }
         // Did rounding to doubles break the collinearity? (Then the test

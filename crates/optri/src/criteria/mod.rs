@@ -120,7 +120,10 @@ impl Options {
 /// a front end can draw a progress bar without the library depending on
 /// one. Two hooks are equal only if they are the same closure.
 #[derive(Clone)]
-pub struct Progress(std::sync::Arc<dyn Fn(&str, f64) + Send + Sync>);
+pub struct Progress(std::sync::Arc<ProgressFn>);
+
+/// What a [`Progress`] hook calls: `(phase, fraction)`.
+type ProgressFn = dyn Fn(&str, f64) + Send + Sync;
 
 impl Progress {
     /// A hook calling `f(phase, fraction)`.

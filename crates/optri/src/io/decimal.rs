@@ -153,7 +153,7 @@ fn parse_decimal(token: &str) -> Option<Decimal> {
     if mantissa == 0 {
         exponent = 0;
     }
-    if mantissa > 0 && mantissa >= EXACT_INTEGER_LIMIT {
+    if mantissa >= EXACT_INTEGER_LIMIT {
         return None;
     }
     Some(Decimal {
