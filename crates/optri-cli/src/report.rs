@@ -2,7 +2,7 @@
 //! by the library, [`optri::io::TriangulationReport`] and
 //! [`optri::io::GraphReport`]), and the one way to write to stdout.
 
-use crate::commands::{Run, Validated};
+use crate::commands::{Reading, Run};
 use crate::CliResult;
 use optri::io::{Arithmetic, TriangulationReport};
 use optri::{Criterion, Domain, GraphKind, Phase, PointGraph, PointSet, Solution};
@@ -89,8 +89,8 @@ fn wrote(text: &mut String, written: &[PathBuf]) {
 }
 
 /// The `arithmetic:` line: how the coordinates were computed with.
-fn arithmetic_line(run: &Run) -> String {
-    match (run.read.arithmetic, &run.read.scaled) {
+fn arithmetic_line(read: &optri::io::ReadInput) -> String {
+    match (read.arithmetic, &read.scaled) {
         (Arithmetic::DecimalExact, Some(s)) => format!(
             "arithmetic: decimal-exact (the decimals as written, times 10^{})\n",
             s.exponent
@@ -109,14 +109,13 @@ fn arithmetic_line(run: &Run) -> String {
 /// The summary of `optri triangulate`.
 pub(crate) fn triangulation_summary(
     run: &Run,
-    validated: &Validated,
     document: &TriangulationReport,
     solution: &Solution,
     written: &[PathBuf],
 ) -> String {
     let stats = document.stats();
-    let points = &validated.points;
-    let domain = match (&validated.polygon, solution.triangulation.domain()) {
+    let points = &run.points;
+    let domain = match (&run.polygon, solution.triangulation.domain()) {
         (Some(p), Domain::Polygon { .. }) => format!(
             "polygon interior ({} vertices, given {})",
             p.len(),
@@ -128,7 +127,7 @@ pub(crate) fn triangulation_summary(
         ),
         _ => "convex hull".to_string(),
     };
-    let boundary = if validated.polygon.is_some() {
+    let boundary = if run.polygon.is_some() {
         "boundary points"
     } else {
         "hull points"
@@ -158,7 +157,7 @@ pub(crate) fn triangulation_summary(
         number(stats.max_angle_deg),
         number(stats.min_area),
         number(stats.max_area),
-        arithmetic_line(run),
+        arithmetic_line(&run.read),
         timing_text(&run.timing.phases),
     );
     wrote(&mut text, written);
@@ -167,7 +166,7 @@ pub(crate) fn triangulation_summary(
 
 /// The summary of `optri graph`.
 pub(crate) fn graph_summary(
-    run: &Run,
+    run: &Reading,
     kind: GraphKind,
     graph: &PointGraph,
     written: &[PathBuf],
@@ -188,7 +187,7 @@ pub(crate) fn graph_summary(
         merged_note(graph.duplicates.len()),
         edges.len(),
         number(total),
-        arithmetic_line(run),
+        arithmetic_line(&run.read),
         timing_text(&run.timing.phases),
     );
     wrote(&mut text, written);

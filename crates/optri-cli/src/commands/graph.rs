@@ -2,14 +2,14 @@
 //! registry ([`optri::graph_of_points`]: also two points and collinear
 //! points).
 
-use super::{input_error, Run};
+use super::{input_error, Reading};
 use crate::args::GraphArgs;
 use crate::report;
 use crate::CliResult;
 use optri::io::{self, GraphReport, OutputFormat};
 
 pub(crate) fn run(args: GraphArgs) -> CliResult<()> {
-    let mut run = Run::start(
+    let mut run = Reading::start(
         &args.input,
         &args.output,
         OutputFormat::from_path_for_graph,

@@ -14,9 +14,9 @@ use std::io::{Read, Write};
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
-/// One run of a command over an input file: what was read, where it came
-/// from, and the phases timed so far.
-pub(crate) struct Run {
+/// A command's input as read, before validation: what was read, where it
+/// came from, and the phases timed so far.
+pub(crate) struct Reading {
     /// The name of the input for messages: its path, or `<stdin>`.
     pub source: String,
     /// The input with the user's values, the arithmetic and the scaled
@@ -28,9 +28,16 @@ pub(crate) struct Run {
     pub progress: Progress,
 }
 
-/// A validated input: the points the algorithms run on and, for a polygon
-/// input, the polygon.
-pub(crate) struct Validated {
+/// One run of a command over a validated input.
+pub(crate) struct Run {
+    /// The name of the input for messages: its path, or `<stdin>`.
+    pub source: String,
+    /// The input as read (the user's values, the arithmetic).
+    pub read: ReadInput,
+    /// `read`, `validate`, then whatever the command adds, `write` and `total`.
+    pub timing: Timing,
+    /// The progress line on stderr.
+    pub progress: Progress,
     /// The validated working points (for a polygon, its vertices in ring order).
     pub points: PointSet,
     /// The validated polygon, when the input is one (a `.poly`, or a GeoJSON
@@ -39,6 +46,25 @@ pub(crate) struct Validated {
 }
 
 impl Run {
+    /// [`Reading::start`] (with warnings) then [`Reading::validate`]: the
+    /// form of the commands that take no `--quiet`.
+    #[allow(dead_code)] // `triangulate` and `graph` pass `--quiet` to `Reading::start`
+    pub fn start(
+        input: &InputArgs,
+        outputs: &[PathBuf],
+        format_for: fn(&Path) -> optri::Result<OutputFormat>,
+        polygons: bool,
+    ) -> CliResult<Self> {
+        Reading::start(input, outputs, format_for, polygons, false)?.validate()
+    }
+
+    /// A picture title: the input's file name, then `what`.
+    pub fn title(&self, what: &str) -> String {
+        format!("{} — {what}", display_name(&self.source))
+    }
+}
+
+impl Reading {
     /// Checks every output path with `format_for` and that it can be
     /// written (before any work, so a typo or a missing directory costs
     /// nothing), refuses outputs that would overwrite the input, then reads
@@ -93,28 +119,30 @@ impl Run {
     }
 
     /// Validates the working points (or the polygon), timed as `validate`.
-    pub fn validate(&mut self) -> CliResult<Validated> {
+    pub fn validate(mut self) -> CliResult<Run> {
         let t0 = Instant::now();
         let points = self.read.working_points();
         let validated = match &self.read.input {
-            Input::Points(_) => Validated {
-                points: PointSet::new(points).map_err(|e| input_error(&self.source, e))?,
-                polygon: None,
-            },
-            Input::Polygon(_) => {
-                let polygon =
-                    SimplePolygon::new(points).map_err(|e| input_error(&self.source, e))?;
-                Validated {
-                    points: polygon.point_set().clone(),
-                    polygon: Some(polygon),
-                }
-            }
+            Input::Points(_) => PointSet::new(points).map(|p| (p, None)),
+            Input::Polygon(_) => SimplePolygon::new(points)
+                .map(|polygon| (polygon.point_set().clone(), Some(polygon))),
         };
+        let (points, polygon) = validated.map_err(|e| {
+            self.progress.finish();
+            input_error(&self.source, e)
+        })?;
         self.timing.phases.push(Phase {
             name: "validate",
             ms: ms_since(t0),
         });
-        Ok(validated)
+        Ok(Run {
+            source: self.source,
+            read: self.read,
+            timing: self.timing,
+            progress: self.progress,
+            points,
+            polygon,
+        })
     }
 
     /// A picture title: the input's file name, then `what`.

@@ -1,7 +1,7 @@
 //! `optri triangulate`: one criterion over a point file (its convex hull) or
 //! a polygon file (the polygon's interior).
 
-use super::Run;
+use super::Reading;
 use crate::args::TriangulateArgs;
 use crate::report;
 use crate::CliResult;
@@ -11,16 +11,16 @@ use optri::Criterion;
 pub(crate) fn run(args: TriangulateArgs) -> CliResult<()> {
     // Check everything the user typed before any work.
     let criterion = Criterion::from_name(&args.criterion).map_err(|e| e.to_string())?;
-    let mut run = Run::start(
+    let mut run = Reading::start(
         &args.input,
         &args.output,
         OutputFormat::from_path,
         true,
         args.style.quiet,
-    )?;
-    let validated = run.validate().inspect_err(|_| run.progress.finish())?;
+    )?
+    .validate()?;
     let options = optri::Options::default().with_progress(run.progress.hook());
-    let solution = match &validated.polygon {
+    let solution = match &run.polygon {
         Some(polygon) => {
             if !criterion.supports_polygons() {
                 let supported: Vec<&str> = Criterion::ALL
@@ -39,7 +39,7 @@ pub(crate) fn run(args: TriangulateArgs) -> CliResult<()> {
             }
             optri::triangulate_polygon_with(polygon, criterion, &options)
         }
-        None => optri::triangulate_with(&validated.points, criterion, &options),
+        None => optri::triangulate_with(&run.points, criterion, &options),
     }
     .map_err(|e| {
         run.progress.finish();
@@ -68,6 +68,6 @@ pub(crate) fn run(args: TriangulateArgs) -> CliResult<()> {
         return report::emit_json(&document);
     }
     report::emit(&report::triangulation_summary(
-        &run, &validated, &document, &solution, &written,
+        &run, &document, &solution, &written,
     ))
 }
