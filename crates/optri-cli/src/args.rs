@@ -52,15 +52,39 @@ pub(crate) struct TriangulateArgs {
     /// Optimality criterion (case-insensitive).
     #[arg(long, default_value = "delaunay", value_parser = criterion_names())]
     pub criterion: String,
-    /// Write the triangulation; format by extension: .json .svg .geojson, or .ele, which
-    /// also writes the points to the .node file beside it (X.ele writes X.node; refused if
-    /// X.node is the input). Repeatable.
+    /// Write the triangulation; format by extension: .json .svg .geojson, or .ele / .edge
+    /// (Triangle's triangles / edges), which also write the points to the .node file beside
+    /// them (X.ele writes X.node; refused if X.node is the input). Repeatable.
     #[arg(long, short, value_name = "FILE")]
     pub output: Vec<PathBuf>,
     /// Print one JSON object with the result to stdout instead of a summary (the same
     /// document as `-o FILE.json`; see docs/json-schema.md).
     #[arg(long)]
     pub json: bool,
+    #[command(flatten)]
+    pub style: StyleArgs,
+}
+
+/// Layout and chatter: shared by `triangulate` and `graph`.
+#[derive(Args)]
+pub(crate) struct StyleArgs {
+    /// Indent JSON and GeoJSON output files (default: compact, one line).
+    #[arg(long)]
+    pub pretty: bool,
+    /// No warnings (e.g. about ignored columns) on stderr.
+    #[arg(long, short)]
+    pub quiet: bool,
+}
+
+impl StyleArgs {
+    /// The layout of JSON and GeoJSON files.
+    pub fn json_style(&self) -> optri::io::JsonStyle {
+        if self.pretty {
+            optri::io::JsonStyle::Pretty
+        } else {
+            optri::io::JsonStyle::Compact
+        }
+    }
 }
 
 #[derive(Args)]
@@ -70,13 +94,16 @@ pub(crate) struct GraphArgs {
     /// Which graph (case-insensitive).
     #[arg(long, value_parser = graph_kinds())]
     pub kind: GraphKind,
-    /// Write the graph; format by extension: .svg .json .geojson. Repeatable.
+    /// Write the graph; format by extension: .svg .json .geojson, or .edge (Triangle's
+    /// format), which also writes the points to the .node file beside it. Repeatable.
     #[arg(long, short, value_name = "FILE")]
     pub output: Vec<PathBuf>,
     /// Print one JSON object with the edges to stdout instead of a summary (the same
     /// document as `-o FILE.json`; see docs/json-schema.md).
     #[arg(long)]
     pub json: bool,
+    #[command(flatten)]
+    pub style: StyleArgs,
 }
 
 #[derive(Args)]

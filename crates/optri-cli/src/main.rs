@@ -11,12 +11,14 @@
 //!   registry);
 //! - `commands`: `triangulate`, `graph`, `compare`, `serve`, `demo`, and their
 //!   shared prelude;
+//! - `progress`: the progress line on stderr (terminals only);
 //! - `report`: the summaries and the JSON documents on stdout;
 //! - `web`: the playground page and JSON API that `serve` answers with.
 #![forbid(unsafe_code)]
 
 mod args;
 mod commands;
+mod progress;
 mod report;
 mod web;
 

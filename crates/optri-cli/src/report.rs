@@ -2,9 +2,10 @@
 //! by the library, [`optri::io::TriangulationReport`] and
 //! [`optri::io::GraphReport`]), and the one way to write to stdout.
 
-use crate::commands::Run;
+use crate::commands::{Reading, Run};
 use crate::CliResult;
-use optri::{Criterion, Domain, GraphKind, Phase, PointSet, Solution};
+use optri::io::{Arithmetic, TriangulationReport};
+use optri::{Criterion, Domain, GraphKind, Phase, PointGraph, PointSet, Solution};
 use std::io::Write;
 use std::path::PathBuf;
 
@@ -62,7 +63,11 @@ fn number(v: f64) -> String {
 
 /// `; merged N duplicate point(s)`, or nothing.
 pub(crate) fn duplicates_note(points: &PointSet) -> String {
-    match points.duplicates().len() {
+    merged_note(points.duplicates().len())
+}
+
+fn merged_note(duplicates: usize) -> String {
+    match duplicates {
         0 => String::new(),
         1 => "; merged 1 duplicate point".to_string(),
         n => format!("; merged {n} duplicate points"),
@@ -83,9 +88,32 @@ fn wrote(text: &mut String, written: &[PathBuf]) {
     }
 }
 
+/// The `arithmetic:` line: how the coordinates were computed with.
+fn arithmetic_line(read: &optri::io::ReadInput) -> String {
+    match (read.arithmetic, &read.scaled) {
+        (Arithmetic::DecimalExact, Some(s)) => format!(
+            "arithmetic: decimal-exact (the decimals as written, times 10^{})\n",
+            s.exponent
+        ),
+        (Arithmetic::DecimalExact, None) => {
+            "arithmetic: decimal-exact (the decimals as written)\n".to_string()
+        }
+        (Arithmetic::Binary64, _) => {
+            "arithmetic: binary64 (the nearest doubles of the \
+                                      decimals written; they do not scale to integers below 2^53)\n"
+                .to_string()
+        }
+    }
+}
+
 /// The summary of `optri triangulate`.
-pub(crate) fn triangulation_summary(run: &Run, solution: &Solution, written: &[PathBuf]) -> String {
-    let stats = solution.triangulation.stats();
+pub(crate) fn triangulation_summary(
+    run: &Run,
+    document: &TriangulationReport,
+    solution: &Solution,
+    written: &[PathBuf],
+) -> String {
+    let stats = document.stats();
     let points = &run.points;
     let domain = match (&run.polygon, solution.triangulation.domain()) {
         (Some(p), Domain::Polygon { .. }) => format!(
@@ -112,6 +140,7 @@ pub(crate) fn triangulation_summary(run: &Run, solution: &Solution, written: &[P
          edge length: max {}, total {}\n\
          angles: min {}°, max {}°\n\
          areas: min {}, max {}\n\
+         {}\
          time: {}\n",
         solution.criterion.name(),
         exactness(solution.exact),
@@ -128,6 +157,7 @@ pub(crate) fn triangulation_summary(run: &Run, solution: &Solution, written: &[P
         number(stats.max_angle_deg),
         number(stats.min_area),
         number(stats.max_area),
+        arithmetic_line(&run.read),
         timing_text(&run.timing.phases),
     );
     wrote(&mut text, written);
@@ -136,13 +166,13 @@ pub(crate) fn triangulation_summary(run: &Run, solution: &Solution, written: &[P
 
 /// The summary of `optri graph`.
 pub(crate) fn graph_summary(
-    run: &Run,
+    run: &Reading,
     kind: GraphKind,
-    edges: &[[u32; 2]],
+    graph: &PointGraph,
     written: &[PathBuf],
 ) -> String {
-    let points = &run.points;
-    let coordinates = points.input_points();
+    let coordinates = run.read.input.points();
+    let edges = &graph.edges;
     let total: f64 = edges
         .iter()
         .map(|&[a, b]| {
@@ -150,13 +180,14 @@ pub(crate) fn graph_summary(
         })
         .sum();
     let mut text = format!(
-        "graph: {}\npoints: {} input, {} distinct{}\nedges: {}, total length {}\ntime: {}\n",
+        "graph: {}\npoints: {} input, {} distinct{}\nedges: {}, total length {}\n{}time: {}\n",
         kind.name(),
         coordinates.len(),
-        points.len(),
-        duplicates_note(points),
+        graph.distinct,
+        merged_note(graph.duplicates.len()),
         edges.len(),
         number(total),
+        arithmetic_line(&run.read),
         timing_text(&run.timing.phases),
     );
     wrote(&mut text, written);

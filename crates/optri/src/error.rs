@@ -27,6 +27,11 @@ pub enum Error {
         /// Number of distinct points after merging duplicates.
         distinct: usize,
     },
+    /// Fewer than two distinct points, so no graph has an edge.
+    TooFewPointsForGraph {
+        /// Number of distinct points after merging duplicates.
+        distinct: usize,
+    },
     /// All distinct points lie on one line, so no triangle exists.
     AllCollinear {
         /// Number of distinct points.
@@ -126,6 +131,11 @@ pub enum PolygonProblem {
         /// The later position.
         second: usize,
     },
+    /// The polygon has holes (interior rings), which are not supported yet.
+    HasHoles {
+        /// Number of interior rings.
+        holes: usize,
+    },
     /// Two edges meet other than at the vertex that adjacent edges share.
     EdgesIntersect {
         /// The first edge, as `[i, i + 1]` positions.
@@ -151,6 +161,10 @@ impl fmt::Display for Error {
             Error::TooFewPoints { distinct } => write!(
                 f,
                 "a triangulation needs at least 3 distinct points, the input has {distinct}"
+            ),
+            Error::TooFewPointsForGraph { distinct } => write!(
+                f,
+                "a graph needs at least 2 distinct points, the input has {distinct}"
             ),
             Error::AllCollinear { distinct } => write!(
                 f,
@@ -226,6 +240,10 @@ impl fmt::Display for PolygonProblem {
             PolygonProblem::RepeatedVertex { first, second } => write!(
                 f,
                 "vertices {first} and {second} are the same point (a vertex may occur once)"
+            ),
+            PolygonProblem::HasHoles { holes } => write!(
+                f,
+                "polygons with holes are not supported yet (this one has {holes})"
             ),
             PolygonProblem::EdgesIntersect { first, second } => write!(
                 f,

@@ -57,15 +57,18 @@ pub use criteria::greedy::greedy;
 pub use criteria::min_weight::min_weight;
 pub use criteria::minmax_length::minmax_length;
 pub use criteria::polygon_criteria::MAX_POLYGON_VERTICES;
-pub use criteria::{CertifiedBound, CriterionInfo, Diagnostics, Optimality, Options, Requirement};
+pub use criteria::{
+    CertifiedBound, CriterionInfo, Diagnostics, Optimality, Options, Progress, Requirement,
+};
 pub use error::{Error, PolygonProblem, Result, UnsupportedReason};
 pub use graphs::{
     convex_hull, convex_hull_edges, delaunay, delaunay_edges, gabriel_graph, minimum_spanning_tree,
     relative_neighborhood_graph,
 };
 pub use registry::{
-    compare, compare_polygon, graph, triangulate, triangulate_polygon, triangulate_polygon_with,
-    triangulate_with, Comparison, Criterion, GraphKind, Solution,
+    compare, compare_polygon, graph, graph_of_points, triangulate, triangulate_polygon,
+    triangulate_polygon_with, triangulate_with, Comparison, Criterion, GraphKind, PointGraph,
+    Solution,
 };
 pub use structures::{Domain, PointSet, SimplePolygon, Stats, Triangulation};
 pub use timing::Phase;

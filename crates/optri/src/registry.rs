@@ -123,8 +123,12 @@ pub struct Solution {
     pub exact: bool,
     /// The guarantee of this result.
     pub optimality: Optimality,
-    /// The algorithm that ran (e.g. `"spade bulk load"`).
+    /// The algorithm that ran, short (e.g. `"spade bulk-load Delaunay"`,
+    /// greedy's `"general"`).
     pub algorithm: String,
+    /// The algorithm in full: its paper, steps and bounds, and what happened
+    /// on this input (it starts with [`algorithm`](Self::algorithm)).
+    pub algorithm_detail: String,
     /// The triangulation.
     pub triangulation: Triangulation,
     /// Timed phases, in order.
@@ -152,7 +156,9 @@ pub fn triangulate_with(
     options: &Options,
 ) -> Result<Solution> {
     let mut phases = Vec::new();
+    options.report(criterion.name(), 0.0);
     let solved = (criterion.entry().1)(points, options, &mut phases)?;
+    options.report(criterion.name(), 1.0);
     Ok(Solution::new(criterion, solved, phases))
 }
 
@@ -191,7 +197,9 @@ pub fn triangulate_polygon_with(
         reason: UnsupportedReason::NoPolygonInput,
     })?;
     let mut phases = Vec::new();
+    options.report(criterion.name(), 0.0);
     let solved = solve(polygon, options, &mut phases)?;
+    options.report(criterion.name(), 1.0);
     Ok(Solution::new(criterion, solved, phases))
 }
 
@@ -252,13 +260,27 @@ impl Solution {
             criterion,
             exact: solved.optimality.is_exact(),
             optimality: solved.optimality,
-            algorithm: solved.algorithm,
+            algorithm: short_algorithm(&solved.algorithm).to_string(),
+            algorithm_detail: solved.algorithm,
             triangulation: solved.triangulation,
             phases,
             diagnostics: solved.diagnostics,
             bound: solved.bound,
         }
     }
+}
+
+/// The short name of an algorithm description: the criteria write
+/// `"name: details"`, `"name (details)"`, `"name; details"` or
+/// `"name, details"`, and the name is what comes before the first of those
+/// separators.
+fn short_algorithm(detail: &str) -> &str {
+    let end = [": ", " (", "; ", ", "]
+        .iter()
+        .filter_map(|sep| detail.find(sep))
+        .min()
+        .unwrap_or(detail.len());
+    &detail[..end]
 }
 
 /// A proximity graph optri computes.
@@ -327,6 +349,97 @@ impl GraphKind {
     }
 }
 
+/// A proximity graph of points that need not form a [`PointSet`]
+/// ([`graph_of_points`]).
+#[derive(Clone, Debug, PartialEq)]
+#[non_exhaustive]
+pub struct PointGraph {
+    /// The edges, as input-index pairs (see [`GraphKind`]).
+    pub edges: Vec<[u32; 2]>,
+    /// The timed phase.
+    pub phases: Vec<Phase>,
+    /// The number of distinct points.
+    pub distinct: usize,
+    /// Every merged duplicate as `[dropped, kept]` input indices.
+    pub duplicates: Vec<[u32; 2]>,
+}
+
+/// The graph `kind` of any points with at least two distinct ones: as
+/// [`graph`] when they form a [`PointSet`], and for two distinct points or
+/// points all on one line the path through them in their order along the
+/// line, for every kind. That path is the minimum spanning tree, the RNG and
+/// the Gabriel graph (consecutive points have empty lunes and diametral
+/// disks; any other pair has a point between them); it is the hull (a
+/// segment, every point on it a boundary point, listed from the
+/// lexicographically smallest end); and it is the Delaunay graph, the dual
+/// of the Voronoi diagram, whose cells are parallel strips of which only
+/// consecutive ones share an edge. Edges are sorted `[min, max]` input-index
+/// pairs, the hull's in path order.
+///
+/// # Errors
+/// The coordinate errors of [`PointSet::new`]; [`Error::TooFewPointsForGraph`]
+/// for fewer than two distinct points.
+pub fn graph_of_points(points: &[crate::kernel::Point], kind: GraphKind) -> Result<PointGraph> {
+    match PointSet::new(points) {
+        Ok(point_set) => {
+            let (edges, phases) = graph(&point_set, kind)?;
+            Ok(PointGraph {
+                edges,
+                phases,
+                distinct: point_set.len(),
+                duplicates: point_set.duplicates().to_vec(),
+            })
+        }
+        Err(Error::TooFewPoints { distinct } | Error::AllCollinear { distinct })
+            if distinct >= 2 =>
+        {
+            let mut phases = Vec::new();
+            let (path, duplicates) = timed(&mut phases, kind.name(), || collinear_path(points));
+            let distinct = path.len();
+            let mut edges: Vec<[u32; 2]> = path.windows(2).map(|w| [w[0], w[1]]).collect();
+            if kind != GraphKind::Hull {
+                edges.iter_mut().for_each(|e| e.sort_unstable());
+                edges.sort_unstable();
+            }
+            Ok(PointGraph {
+                edges,
+                phases,
+                distinct,
+                duplicates,
+            })
+        }
+        Err(Error::TooFewPoints { distinct } | Error::AllCollinear { distinct }) => {
+            Err(Error::TooFewPointsForGraph { distinct })
+        }
+        Err(e) => Err(e),
+    }
+}
+
+/// The distinct points of collinear `points` (input indices of first
+/// occurrences) in lexicographic order, which is their order along the line
+/// (comparisons of doubles are exact), and the merged duplicates.
+fn collinear_path(points: &[crate::kernel::Point]) -> (Vec<u32>, Vec<[u32; 2]>) {
+    let mut seen = std::collections::HashMap::with_capacity(points.len());
+    let mut duplicates = Vec::new();
+    let mut distinct = Vec::new();
+    for (i, p) in points.iter().enumerate() {
+        // -0.0 and 0.0 are the same point, as in `PointSet`.
+        let key = [(p[0] + 0.0).to_bits(), (p[1] + 0.0).to_bits()];
+        match seen.get(&key) {
+            Some(&kept) => duplicates.push([i as u32, kept]),
+            None => {
+                seen.insert(key, i as u32);
+                distinct.push(i as u32);
+            }
+        }
+    }
+    distinct.sort_by(|&a, &b| {
+        let (p, q) = (points[a as usize], points[b as usize]);
+        p[0].total_cmp(&q[0]).then(p[1].total_cmp(&q[1]))
+    });
+    (distinct, duplicates)
+}
+
 /// The edges of the graph `kind` of `points`, as input-index pairs (see
 /// [`GraphKind`] for the edge convention), with its timed phase.
 pub fn graph(points: &PointSet, kind: GraphKind) -> Result<(Vec<[u32; 2]>, Vec<Phase>)> {
@@ -352,6 +465,75 @@ mod tests {
         assert_eq!(
             Criterion::from_name("delaunay").unwrap(),
             Criterion::Delaunay
+        );
+    }
+
+    #[test]
+    fn algorithm_names_are_short_and_the_details_kept() {
+        assert_eq!(short_algorithm("general (exact rounds)"), "general");
+        assert_eq!(
+            short_algorithm("Vassilev Algorithm 75: optimal"),
+            "Vassilev Algorithm 75"
+        );
+        assert_eq!(short_algorithm("Klincsek, O(n^3); up to"), "Klincsek");
+        assert_eq!(short_algorithm("plain"), "plain");
+        let points = PointSet::new(&[[0.0, 0.0], [3.0, 0.0], [0.0, 3.0], [1.0, 1.0]]).unwrap();
+        for &criterion in Criterion::ALL {
+            let Ok(s) = triangulate(&points, criterion) else {
+                continue;
+            };
+            assert!(s.algorithm.len() <= 40, "{criterion:?}: {}", s.algorithm);
+            assert!(s.algorithm_detail.starts_with(&s.algorithm));
+        }
+    }
+
+    #[test]
+    fn the_progress_hook_hears_the_run_start_and_end() {
+        use std::sync::{Arc, Mutex};
+        let heard = Arc::new(Mutex::new(Vec::new()));
+        let log = Arc::clone(&heard);
+        let options = Options::default().with_progress(crate::criteria::Progress::new(
+            move |phase, fraction| log.lock().unwrap().push((phase.to_string(), fraction)),
+        ));
+        let points = PointSet::new(&[[0.0, 0.0], [1.0, 0.0], [0.0, 1.0], [1.0, 1.0]]).unwrap();
+        triangulate_with(&points, Criterion::Greedy, &options).unwrap();
+        assert_eq!(
+            *heard.lock().unwrap(),
+            [("greedy".to_string(), 0.0), ("greedy".to_string(), 1.0)]
+        );
+        assert_eq!(options.clone(), options);
+        assert_ne!(options, Options::default());
+    }
+
+    #[test]
+    fn graphs_of_two_and_of_collinear_points_are_the_path() {
+        // Input order scrambled along the line y = 2x, with a duplicate.
+        let line = [[2.0, 4.0], [0.0, 0.0], [3.0, 6.0], [1.0, 2.0], [0.0, 0.0]];
+        for &kind in GraphKind::ALL {
+            let g = graph_of_points(&line, kind).unwrap();
+            assert_eq!(g.distinct, 4);
+            assert_eq!(g.duplicates, [[4, 1]]);
+            let expected: &[[u32; 2]] = if kind == GraphKind::Hull {
+                &[[1, 3], [3, 0], [0, 2]]
+            } else {
+                &[[0, 2], [0, 3], [1, 3]]
+            };
+            assert_eq!(g.edges, expected, "{kind:?}");
+        }
+        let two = graph_of_points(&[[5.0, 1.0], [-1.0, 1.0]], GraphKind::Mst).unwrap();
+        assert_eq!(two.edges, [[0, 1]]);
+        assert_eq!(
+            graph_of_points(&[[1.0, 1.0], [1.0, 1.0]], GraphKind::Rng).unwrap_err(),
+            Error::TooFewPointsForGraph { distinct: 1 }
+        );
+        // Not collinear: the ordinary graphs.
+        let square = [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]];
+        let g = graph_of_points(&square, GraphKind::Mst).unwrap();
+        assert_eq!(
+            g.edges,
+            graph(&PointSet::new(&square).unwrap(), GraphKind::Mst)
+                .unwrap()
+                .0
         );
     }
 

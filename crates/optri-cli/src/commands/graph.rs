@@ -1,32 +1,52 @@
 //! `optri graph`: one proximity graph of a point file, through the library's
-//! registry ([`optri::graph`]).
+//! registry ([`optri::graph_of_points`]: also two points and collinear
+//! points).
 
-use super::Run;
+use super::{input_error, Reading};
 use crate::args::GraphArgs;
 use crate::report;
 use crate::CliResult;
 use optri::io::{self, GraphReport, OutputFormat};
 
 pub(crate) fn run(args: GraphArgs) -> CliResult<()> {
-    let mut run = Run::start(
+    let mut run = Reading::start(
         &args.input,
         &args.output,
         OutputFormat::from_path_for_graph,
         false,
+        args.style.quiet,
     )?;
-    let (edges, phases) = optri::graph(&run.points, args.kind).map_err(|e| e.to_string())?;
-    run.timing.phases.extend(phases);
+    run.progress.phase(args.kind.name());
+    let graph = optri::graph_of_points(run.read.working_points(), args.kind).map_err(|e| {
+        run.progress.finish();
+        input_error(&run.source, e)
+    })?;
+    run.progress.phase("writing");
+    run.timing.phases.extend(graph.phases.iter().cloned());
     let title = run.title(args.kind.name());
     let timed = run.timing.phases.clone();
-    let document = GraphReport::of_graph(&run.points, args.kind, &edges).with_timing(&timed);
+    let points = run.read.input.points();
+    let document = |phases| {
+        GraphReport::of_points(
+            points,
+            args.kind,
+            &graph.edges,
+            graph.distinct,
+            &graph.duplicates,
+        )
+        .with_input(&run.read)
+        .with_timing(phases)
+    };
+    let style = args.style.json_style();
     let written = run.timing.write(&args.output, |path| {
-        io::write_graph_report(&document, path, &title)
-    })?;
+        io::write_graph_report_styled(&document(&timed), path, &title, style)
+    });
+    run.progress.finish();
+    let written = written?;
     run.timing.finish();
+    let phases = run.timing.phases.clone();
     if args.json {
-        let document =
-            GraphReport::of_graph(&run.points, args.kind, &edges).with_timing(&run.timing.phases);
-        return report::emit_json(&document);
+        return report::emit_json(&document(&phases));
     }
-    report::emit(&report::graph_summary(&run, args.kind, &edges, &written))
+    report::emit(&report::graph_summary(&run, args.kind, &graph, &written))
 }

@@ -8,38 +8,77 @@ pub(crate) mod serve;
 pub(crate) mod triangulate;
 
 use crate::args::InputArgs;
+use crate::progress::Progress;
 use crate::CliResult;
-use optri::io::{self, Input, InputFormat, OutputFormat};
+use optri::io::{self, Input, InputFormat, OutputFormat, ReadInput};
 use optri::{Error, Phase, PointSet, SimplePolygon};
-use std::io::Read;
+use std::io::{Read, Write};
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
-/// One run of a command over an input file: the validated points, where they
+/// A command's input as read, before validation: what was read, where it
 /// came from, and the phases timed so far.
+pub(crate) struct Reading {
+    /// The name of the input for messages: its path, or `<stdin>`.
+    pub source: String,
+    /// The input with the user's values, the arithmetic and the scaled
+    /// points the algorithms run on.
+    pub read: ReadInput,
+    /// `read`, `validate`, then whatever the command adds, `write` and `total`.
+    pub timing: Timing,
+    /// The progress line on stderr.
+    pub progress: Progress,
+}
+
+/// One run of a command over a validated input.
 pub(crate) struct Run {
     /// The name of the input for messages: its path, or `<stdin>`.
     pub source: String,
-    /// The validated input (for a polygon, its vertices in ring order).
+    /// The input as read (the user's values, the arithmetic).
+    pub read: ReadInput,
+    /// `read`, `validate`, then whatever the command adds, `write` and `total`.
+    pub timing: Timing,
+    /// The progress line on stderr.
+    pub progress: Progress,
+    /// The validated working points (for a polygon, its vertices in ring order).
     pub points: PointSet,
     /// The validated polygon, when the input is one (a `.poly`, or a GeoJSON
     /// `Polygon` without points) and the command takes polygons.
     pub polygon: Option<SimplePolygon>,
-    /// `read`, `validate`, then whatever the command adds, `write` and `total`.
-    pub timing: Timing,
 }
 
 impl Run {
-    /// Checks every output path with `format_for` (before any work, so a
-    /// typo costs nothing), refuses outputs that would overwrite the input,
-    /// then reads and validates the input, timing `read` (from the start)
-    /// and `validate`. With `polygons`, a polygon input is read as one
-    /// ([`io::read_input`]); otherwise every input is read as points.
+    /// [`Reading::start`] (with warnings) then [`Reading::validate`]: the
+    /// form of the commands that take no `--quiet`.
+    #[allow(dead_code)] // `triangulate` and `graph` pass `--quiet` to `Reading::start`
     pub fn start(
         input: &InputArgs,
         outputs: &[PathBuf],
         format_for: fn(&Path) -> optri::Result<OutputFormat>,
         polygons: bool,
+    ) -> CliResult<Self> {
+        Reading::start(input, outputs, format_for, polygons, false)?.validate()
+    }
+
+    /// A picture title: the input's file name, then `what`.
+    pub fn title(&self, what: &str) -> String {
+        format!("{} — {what}", display_name(&self.source))
+    }
+}
+
+impl Reading {
+    /// Checks every output path with `format_for` and that it can be
+    /// written (before any work, so a typo or a missing directory costs
+    /// nothing), refuses outputs that would overwrite the input, then reads
+    /// the input, timing `read` from the start, and reports the reader's
+    /// warnings on stderr unless `quiet`. With `polygons`, a polygon input is
+    /// read as one; otherwise every input is read as points.
+    pub fn start(
+        input: &InputArgs,
+        outputs: &[PathBuf],
+        format_for: fn(&Path) -> optri::Result<OutputFormat>,
+        polygons: bool,
+        quiet: bool,
     ) -> CliResult<Self> {
         let mut timing = Timing {
             start: Instant::now(),
@@ -50,37 +89,106 @@ impl Run {
             formats.push(format_for(path).map_err(|e| e.to_string())?);
         }
         refuse_overwriting_input(input, outputs, &formats)?;
-        let (input, source) = read_input(input, polygons)?;
+        for (path, format) in outputs.iter().zip(&formats) {
+            for file in format.files_written(path) {
+                check_writable(&file)?;
+            }
+        }
+        let progress = Progress::new(quiet);
+        progress.phase(format!("reading {}", input.input));
+        let (read, source) = read_input(input, polygons).inspect_err(|_| progress.finish())?;
+        progress.phase("validating");
+        if !quiet {
+            for warning in &read.warnings {
+                progress.suspend(|| {
+                    let _ = writeln!(
+                        std::io::stderr().lock(),
+                        "optri: warning: {source}: {warning}"
+                    );
+                });
+            }
+        }
         timing.phases.push(Phase {
             name: "read",
             ms: ms_since(timing.start),
         });
+        Ok(Self {
+            source,
+            read,
+            timing,
+            progress,
+        })
+    }
+
+    /// Validates the working points (or the polygon), timed as `validate`.
+    pub fn validate(mut self) -> CliResult<Run> {
         let t0 = Instant::now();
-        let (points, polygon) = match input {
-            Input::Points(points) => (
-                PointSet::new(&points).map_err(|e| input_error(&source, e))?,
-                None,
-            ),
-            Input::Polygon(ring) => {
-                let polygon = SimplePolygon::new(&ring).map_err(|e| input_error(&source, e))?;
-                (polygon.point_set().clone(), Some(polygon))
-            }
+        let points = self.read.working_points();
+        let validated = match &self.read.input {
+            Input::Points(_) => PointSet::new(points).map(|p| (p, None)),
+            Input::Polygon(_) => SimplePolygon::new(points)
+                .map(|polygon| (polygon.point_set().clone(), Some(polygon))),
         };
-        timing.phases.push(Phase {
+        let (points, polygon) = validated.map_err(|e| {
+            self.progress.finish();
+            input_error(&self.source, e)
+        })?;
+        self.timing.phases.push(Phase {
             name: "validate",
             ms: ms_since(t0),
         });
-        Ok(Self {
-            source,
+        Ok(Run {
+            source: self.source,
+            read: self.read,
+            timing: self.timing,
+            progress: self.progress,
             points,
             polygon,
-            timing,
         })
     }
 
     /// A picture title: the input's file name, then `what`.
     pub fn title(&self, what: &str) -> String {
         format!("{} — {what}", display_name(&self.source))
+    }
+}
+
+/// Fails unless `file` can be written: its directory exists, it is not a
+/// directory, and it can be opened for writing (an existing file is opened
+/// without truncating it; a new one is created and removed again).
+fn check_writable(file: &Path) -> CliResult<()> {
+    let fail = |why: String| Err(format!("cannot write '{}': {why}", file.display()));
+    let parent = match file.parent() {
+        Some(p) if !p.as_os_str().is_empty() => p,
+        _ => Path::new("."),
+    };
+    if !parent.is_dir() {
+        return if parent.exists() {
+            fail(format!("'{}' is not a directory", parent.display()))
+        } else {
+            fail(format!(
+                "the directory '{}' does not exist",
+                parent.display()
+            ))
+        };
+    }
+    if file.is_dir() {
+        return fail("it is a directory".to_string());
+    }
+    let existed = file.exists();
+    match std::fs::OpenOptions::new()
+        .write(true)
+        .create(true)
+        .truncate(false)
+        .open(file)
+    {
+        Ok(_) => {
+            if !existed {
+                let _ = std::fs::remove_file(file);
+            }
+            Ok(())
+        }
+        Err(e) => fail(e.to_string()),
     }
 }
 
@@ -140,9 +248,9 @@ pub(crate) fn input_error(source: &str, e: Error) -> String {
     }
 }
 
-/// Reads the input (points, or with `polygons` possibly a polygon); returns
-/// it with the name to use in messages.
-fn read_input(args: &InputArgs, polygons: bool) -> CliResult<(Input, String)> {
+/// Reads the input (points, or with `polygons` possibly a polygon) with its
+/// decimal values; returns it with the name to use in messages.
+fn read_input(args: &InputArgs, polygons: bool) -> CliResult<(ReadInput, String)> {
     let format = args
         .input_format
         .as_deref()
@@ -156,21 +264,17 @@ fn read_input(args: &InputArgs, polygons: bool) -> CliResult<(Input, String)> {
             .read_to_string(&mut text)
             .map_err(|e| format!("cannot read stdin: {e}"))?;
         let format = format.unwrap_or_else(|| InputFormat::sniff(&text));
-        let input = if polygons {
-            io::read_input(&text, format)
+        let read = if polygons {
+            io::read_input_exact(&text, format)
         } else {
-            io::read_points(&text, format).map(Input::Points)
+            io::read_points_exact(&text, format)
         };
-        Ok((input.map_err(|e| input_error(&source, e))?, source))
+        Ok((read.map_err(|e| input_error(&source, e))?, source))
     } else {
         let path = Path::new(&args.input);
-        let input = if polygons {
-            io::read_input_file(path, format)
-        } else {
-            io::read_points_file(path, format).map(Input::Points)
-        };
+        let read = io::read_file_exact(path, format, polygons);
         Ok((
-            input.map_err(|e| input_error(&args.input, e))?,
+            read.map_err(|e| input_error(&args.input, e))?,
             args.input.clone(),
         ))
     }

@@ -1,7 +1,7 @@
 //! `optri triangulate`: one criterion over a point file (its convex hull) or
 //! a polygon file (the polygon's interior).
 
-use super::Run;
+use super::Reading;
 use crate::args::TriangulateArgs;
 use crate::report;
 use crate::CliResult;
@@ -11,7 +11,15 @@ use optri::Criterion;
 pub(crate) fn run(args: TriangulateArgs) -> CliResult<()> {
     // Check everything the user typed before any work.
     let criterion = Criterion::from_name(&args.criterion).map_err(|e| e.to_string())?;
-    let mut run = Run::start(&args.input, &args.output, OutputFormat::from_path, true)?;
+    let mut run = Reading::start(
+        &args.input,
+        &args.output,
+        OutputFormat::from_path,
+        true,
+        args.style.quiet,
+    )?
+    .validate()?;
+    let options = optri::Options::default().with_progress(run.progress.hook());
     let solution = match &run.polygon {
         Some(polygon) => {
             if !criterion.supports_polygons() {
@@ -20,6 +28,7 @@ pub(crate) fn run(args: TriangulateArgs) -> CliResult<()> {
                     .filter(|c| c.supports_polygons())
                     .map(|c| c.name())
                     .collect();
+                run.progress.finish();
                 return Err(format!(
                     "{}: the input is a polygon, and criterion {} does not triangulate \
                      polygons; criteria that do: {}",
@@ -28,24 +37,37 @@ pub(crate) fn run(args: TriangulateArgs) -> CliResult<()> {
                     supported.join(", ")
                 ));
             }
-            optri::triangulate_polygon(polygon, criterion)
+            optri::triangulate_polygon_with(polygon, criterion, &options)
         }
-        None => optri::triangulate(&run.points, criterion),
+        None => optri::triangulate_with(&run.points, criterion, &options),
     }
-    .map_err(|e| e.to_string())?;
+    .map_err(|e| {
+        run.progress.finish();
+        e.to_string()
+    })?;
+    run.progress.phase("writing");
     run.timing.phases.extend(solution.phases.iter().cloned());
     let title = run.title(&report::label(criterion, solution.exact));
     // A JSON output holds the phases timed so far (the write and the total
     // are still running).
     let timed = run.timing.phases.clone();
-    let document = TriangulationReport::of_solution(&solution).with_timing(&timed);
+    let style = args.style.json_style();
+    let document = TriangulationReport::of_solution(&solution)
+        .with_input(&run.read)
+        .with_timing(&timed);
     let written = run.timing.write(&args.output, |path| {
-        io::write_triangulation_report(&document, path, &title)
-    })?;
+        io::write_triangulation_report_styled(&document, path, &title, style)
+    });
+    run.progress.finish();
+    let written = written?;
     run.timing.finish();
+    let document = TriangulationReport::of_solution(&solution)
+        .with_input(&run.read)
+        .with_timing(&run.timing.phases);
     if args.json {
-        let document = TriangulationReport::of_solution(&solution).with_timing(&run.timing.phases);
         return report::emit_json(&document);
     }
-    report::emit(&report::triangulation_summary(&run, &solution, &written))
+    report::emit(&report::triangulation_summary(
+        &run, &document, &solution, &written,
+    ))
 }

@@ -87,12 +87,64 @@ pub struct CriterionInfo {
     pub reference: &'static str,
 }
 
-/// Options of a criterion run. Empty today; norms for minmax length arrive
-/// here, so the type is `#[non_exhaustive]`: build it with
-/// `Options::default()`.
+/// Options of a criterion run. The type is `#[non_exhaustive]` (norms for
+/// minmax length arrive here): build it with `Options::default()` and the
+/// `with_` methods.
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
 #[non_exhaustive]
-pub struct Options {}
+pub struct Options {
+    /// Called as the run goes (see [`Progress`]); `None`: nothing is called.
+    pub progress: Option<Progress>,
+}
+
+impl Options {
+    /// These options with `progress` called as the run goes.
+    pub fn with_progress(self, progress: Progress) -> Self {
+        Self {
+            progress: Some(progress),
+        }
+    }
+
+    /// Reports `fraction` (0 to 1) of the phase `phase` to the progress
+    /// hook, if there is one.
+    pub(crate) fn report(&self, phase: &str, fraction: f64) {
+        if let Some(progress) = &self.progress {
+            (progress.0)(phase, fraction);
+        }
+    }
+}
+
+/// A progress hook: called with a phase name and the fraction of it done
+/// (`0.0` when it starts, `1.0` when it ends), from the thread that runs the
+/// criterion. It is part of the [`Options`] of one run (no global state), so
+/// a front end can draw a progress bar without the library depending on
+/// one. Two hooks are equal only if they are the same closure.
+#[derive(Clone)]
+pub struct Progress(std::sync::Arc<ProgressFn>);
+
+/// What a [`Progress`] hook calls: `(phase, fraction)`.
+type ProgressFn = dyn Fn(&str, f64) + Send + Sync;
+
+impl Progress {
+    /// A hook calling `f(phase, fraction)`.
+    pub fn new(f: impl Fn(&str, f64) + Send + Sync + 'static) -> Self {
+        Self(std::sync::Arc::new(f))
+    }
+}
+
+impl std::fmt::Debug for Progress {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str("Progress(..)")
+    }
+}
+
+impl PartialEq for Progress {
+    fn eq(&self, other: &Self) -> bool {
+        std::sync::Arc::ptr_eq(&self.0, &other.0)
+    }
+}
+
+impl Eq for Progress {}
 
 /// Named counters a run reports, e.g. how many regions each method solved.
 /// They are part of the result (never global state), so concurrent runs do

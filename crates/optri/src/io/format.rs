@@ -9,7 +9,8 @@ const SUPPORTED_INPUTS: &str =
     ".txt .xy .csv .pts (text), .node, .poly (polygon), .tsp, .geojson .json";
 
 /// The supported output extensions, for messages.
-const SUPPORTED_OUTPUTS: &str = ".json, .svg, .ele (writes the sibling .node too), .geojson";
+const SUPPORTED_OUTPUTS: &str =
+    ".json, .svg, .ele or .edge (write the sibling .node too), .geojson";
 
 /// `path`'s extension in lower case, if it has one.
 fn lowercase_extension(path: &Path) -> Option<String> {
@@ -122,10 +123,14 @@ impl InputFormat {
 
     /// Guesses the format from the content (for stdin and unknown
     /// extensions): a leading `{` means GeoJSON, a TSPLIB keyword line
-    /// (`NAME`, `TYPE`, `DIMENSION`, `NODE_COORD_SECTION`) means TSPLIB,
-    /// anything else is read as text. `.node` and `.poly` files are not guessed.
+    /// (`NAME`, `TYPE`, `DIMENSION`, `NODE_COORD_SECTION`) means TSPLIB, a
+    /// Triangle vertex section (a header `n 2 [attributes [marker]]` of
+    /// integers followed by at least `n` vertex lines numbered from 0 or 1
+    /// with the header's column count) means `.node`, or `.poly` when more
+    /// lines follow the vertices (the segments); anything else is read as
+    /// text.
     pub fn sniff(text: &str) -> Self {
-        let trimmed = text.trim_start();
+        let trimmed = text.trim_start_matches('\u{feff}').trim_start();
         if trimmed.starts_with('{') {
             return InputFormat::GeoJson;
         }
@@ -136,8 +141,37 @@ impl InputFormat {
         {
             return InputFormat::Tsplib;
         }
-        InputFormat::Text
+        sniff_triangle(text).unwrap_or(InputFormat::Text)
     }
+}
+
+/// `.node` or `.poly` if `text` starts with a Triangle vertex section (see
+/// [`InputFormat::sniff`]).
+fn sniff_triangle(text: &str) -> Option<InputFormat> {
+    let mut lines = super::node::token_lines(text).map(|(_, tokens)| tokens);
+    let header = lines.next()?;
+    let numbers: Vec<usize> = header
+        .iter()
+        .map(|t| t.parse().ok())
+        .collect::<Option<_>>()?;
+    if !(2..=4).contains(&numbers.len()) || numbers[1] != 2 {
+        return None;
+    }
+    let columns = 3 + numbers.get(2).copied().unwrap_or(0) + numbers.get(3).copied().unwrap_or(0);
+    let mut base = None;
+    for k in 0..numbers[0] {
+        let tokens = lines.next()?;
+        let id: usize = tokens.first()?.parse().ok()?;
+        let base = *base.get_or_insert(id);
+        if tokens.len() != columns || base > 1 || id != base + k {
+            return None;
+        }
+    }
+    Some(if lines.next().is_some() {
+        InputFormat::Poly
+    } else {
+        InputFormat::Node
+    })
 }
 
 /// The file formats optri writes, chosen by extension.
@@ -150,6 +184,9 @@ pub enum OutputFormat {
     Svg,
     /// `.ele` plus a sibling `.node` (Triangle's format; triangulations only).
     Triangle,
+    /// `.edge` plus a sibling `.node` (Triangle's format): the edges of a
+    /// graph or a triangulation.
+    TriangleEdges,
     /// `.geojson`: [`triangulation_to_geojson`](super::triangulation_to_geojson) /
     /// [`graph_to_geojson`](super::graph_to_geojson).
     GeoJson,
@@ -166,6 +203,7 @@ impl OutputFormat {
             Some("json") => Ok(OutputFormat::Json),
             Some("svg") => Ok(OutputFormat::Svg),
             Some("ele") => Ok(OutputFormat::Triangle),
+            Some("edge") => Ok(OutputFormat::TriangleEdges),
             Some("geojson") => Ok(OutputFormat::GeoJson),
             _ => Err(Error::Io(format!(
                 "cannot write '{}': unknown output extension; supported: {SUPPORTED_OUTPUTS}",
@@ -182,7 +220,8 @@ impl OutputFormat {
     pub fn from_path_for_graph(path: &Path) -> Result<Self> {
         match Self::from_path(path)? {
             OutputFormat::Triangle => Err(Error::Io(format!(
-                "cannot write '{}': a graph is not a triangulation; use .svg, .json or .geojson",
+                "cannot write '{}': a graph is not a triangulation; use .svg, .json, .geojson \
+                 or .edge",
                 path.display()
             ))),
             format => Ok(format),
@@ -194,7 +233,9 @@ impl OutputFormat {
     /// the sibling `.node` (so callers can refuse to overwrite their input).
     pub fn files_written(self, path: &Path) -> Vec<PathBuf> {
         match self {
-            OutputFormat::Triangle => vec![path.to_path_buf(), path.with_extension("node")],
+            OutputFormat::Triangle | OutputFormat::TriangleEdges => {
+                vec![path.to_path_buf(), path.with_extension("node")]
+            }
             _ => vec![path.to_path_buf()],
         }
     }
@@ -246,6 +287,21 @@ mod tests {
         assert!(e.contains("geojson") && e.contains("node"), "{e}");
         assert_eq!(InputFormat::sniff(" {\"type\":1}"), InputFormat::GeoJson);
         assert_eq!(InputFormat::sniff("1 2\n3 4\n"), InputFormat::Text);
+        // Triangle files by their vertex section; an `x y z` cloud whose
+        // first row looks like a header is still text.
+        assert_eq!(
+            InputFormat::sniff("# c\n3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n"),
+            InputFormat::Node
+        );
+        assert_eq!(
+            InputFormat::sniff("3 2\n0 0 0\n1 1 0\n2 0 1\n3 0\n0 0 1\n1 1 2\n2 2 0\n"),
+            InputFormat::Poly
+        );
+        assert_eq!(
+            InputFormat::sniff("3 2 0\n1 0 0\n5 1 0\n3 0 1\n"),
+            InputFormat::Text
+        );
+        assert_eq!(InputFormat::sniff("3 2\n1 0\n2 1\n"), InputFormat::Text);
         let e = read_points_file(Path::new("/nonexistent/x.txt"), None).unwrap_err();
         assert!(
             matches!(&e, Error::Io(m) if m.contains("/nonexistent/x.txt")),

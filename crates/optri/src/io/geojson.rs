@@ -5,12 +5,14 @@
 //!
 //! [`InputFormat::GeoJson`]: super::InputFormat::GeoJson
 
+use super::decimal::{json_literals_are_short, DecimalScaler};
 use super::json::document_coordinates;
-use super::{check_coordinate, parse, Input, HOLES_UNSUPPORTED};
+use super::{check_coordinate, parse, Input, ReadInput, HOLES_UNSUPPORTED};
 use crate::error::Result;
 use crate::kernel::Point;
 use crate::structures::Triangulation;
-use serde_json::{json, Value};
+use serde::ser::{Serialize, Serializer};
+use serde_json::Value;
 
 /// The JSON type name of `v`, for messages.
 fn json_type(v: &Value) -> &'static str {
@@ -24,10 +26,28 @@ fn json_type(v: &Value) -> &'static str {
     }
 }
 
-pub(super) fn read_geojson(text: &str) -> Result<Vec<Point>> {
-    match read_geojson_input(text, false)? {
-        Input::Points(points) | Input::Polygon(points) => Ok(points),
+/// Reads a GeoJSON document as [`read_geojson_input`] does, with the decimal
+/// values of its coordinates: the shortest round-trip decimal of each
+/// number, trusted when no number literal of the document has more than 15
+/// significant digits (see the `decimal` module docs).
+pub(super) fn read_geojson_exact(text: &str, polygons: bool) -> Result<ReadInput> {
+    let input = read_geojson_input(text, polygons)?;
+    let mut decimal = if json_literals_are_short(text) {
+        DecimalScaler::default()
+    } else {
+        DecimalScaler::given_up()
+    };
+    for p in input.points() {
+        decimal.push_shortest(p[0]);
+        decimal.push_shortest(p[1]);
     }
+    let (arithmetic, scaled) = decimal.finish();
+    Ok(ReadInput {
+        input,
+        arithmetic,
+        scaled,
+        warnings: Vec::new(),
+    })
 }
 
 /// Reads a GeoJSON document as points or, when it holds no `Point` or
@@ -262,36 +282,10 @@ fn position(v: &Value, at: &str) -> Result<Point> {
 /// `triangle` number and its input-index `vertices`) and, if
 /// `include_points`, one `Point` per input point (property `index`).
 pub fn triangulation_to_geojson(t: &Triangulation, include_points: bool) -> Value {
-    let pts = t.points();
-    let mut features: Vec<Value> = t
-        .triangles()
-        .iter()
-        .enumerate()
-        .map(|(k, tri)| {
-            let ring: Vec<Point> = [tri[0], tri[1], tri[2], tri[0]]
-                .iter()
-                .map(|&i| pts[i as usize])
-                .collect();
-            json!({
-                "type": "Feature",
-                "geometry": {"type": "Polygon", "coordinates": [ring]},
-                "properties": {"triangle": k, "vertices": tri},
-            })
-        })
-        .collect();
-    if include_points {
-        features.extend(points_features(pts));
-    }
-    json!({"type": "FeatureCollection", "features": features})
-}
-
-fn points_features(points: &[Point]) -> impl Iterator<Item = Value> + '_ {
-    points.iter().enumerate().map(|(i, p)| {
-        json!({
-            "type": "Feature",
-            "geometry": {"type": "Point", "coordinates": p},
-            "properties": {"index": i},
-        })
+    to_value(&TriangulationFeatures {
+        points: t.points(),
+        triangles: t.triangles(),
+        include_points,
     })
 }
 
@@ -301,18 +295,136 @@ fn points_features(points: &[Point]) -> impl Iterator<Item = Value> + '_ {
 /// # Panics
 /// If an edge refers to an index outside `points`.
 pub fn graph_to_geojson(points: &[Point], edges: &[[u32; 2]]) -> Value {
-    let mut features: Vec<Value> = edges
-        .iter()
-        .map(|&[a, b]| {
-            json!({
-                "type": "Feature",
-                "geometry": {"type": "LineString", "coordinates": [points[a as usize], points[b as usize]]},
-                "properties": {"edge": [a, b]},
-            })
-        })
-        .collect();
-    features.extend(points_features(points));
-    json!({"type": "FeatureCollection", "features": features})
+    to_value(&GraphFeatures { points, edges })
+}
+
+fn to_value(v: &impl Serialize) -> Value {
+    // Strings, numbers and arrays only.
+    serde_json::to_value(v).expect("a GeoJSON document always converts to a JSON value")
+}
+
+/// The triangulation's `FeatureCollection`, serialised feature by feature
+/// (so a writer streams it without building a value tree).
+pub(super) struct TriangulationFeatures<'a> {
+    pub(super) points: &'a [Point],
+    pub(super) triangles: &'a [[u32; 3]],
+    pub(super) include_points: bool,
+}
+
+/// A graph's `FeatureCollection`, serialised feature by feature.
+pub(super) struct GraphFeatures<'a> {
+    pub(super) points: &'a [Point],
+    pub(super) edges: &'a [[u32; 2]],
+}
+
+#[derive(serde::Serialize)]
+struct Feature<C, P> {
+    #[serde(rename = "type")]
+    kind: &'static str,
+    geometry: Geometry<C>,
+    properties: P,
+}
+
+#[derive(serde::Serialize)]
+struct Geometry<C> {
+    #[serde(rename = "type")]
+    kind: &'static str,
+    coordinates: C,
+}
+
+#[derive(serde::Serialize)]
+struct TriangleProperties {
+    triangle: usize,
+    vertices: [u32; 3],
+}
+
+#[derive(serde::Serialize)]
+struct PointProperties {
+    index: usize,
+}
+
+#[derive(serde::Serialize)]
+struct EdgeProperties {
+    edge: [u32; 2],
+}
+
+fn feature<C, P>(geometry: &'static str, coordinates: C, properties: P) -> Feature<C, P> {
+    Feature {
+        kind: "Feature",
+        geometry: Geometry {
+            kind: geometry,
+            coordinates,
+        },
+        properties,
+    }
+}
+
+/// `{"type": "FeatureCollection", "features": [...]}` with the features of
+/// `items` then of `points`, streamed.
+fn feature_collection<S: Serializer, T: Serialize>(
+    serializer: S,
+    items: impl Iterator<Item = T>,
+    points: Option<&[Point]>,
+) -> std::result::Result<S::Ok, S::Error> {
+    use serde::ser::{SerializeMap, SerializeSeq};
+    struct Features<'a, I> {
+        items: std::cell::Cell<Option<I>>,
+        points: Option<&'a [Point]>,
+    }
+    impl<I: Iterator<Item = T>, T: Serialize> Serialize for Features<'_, I> {
+        fn serialize<S: Serializer>(&self, serializer: S) -> std::result::Result<S::Ok, S::Error> {
+            let mut seq = serializer.serialize_seq(None)?;
+            for item in self.items.take().into_iter().flatten() {
+                seq.serialize_element(&item)?;
+            }
+            for (i, p) in self.points.unwrap_or(&[]).iter().enumerate() {
+                seq.serialize_element(&feature("Point", p, PointProperties { index: i }))?;
+            }
+            seq.end()
+        }
+    }
+    let mut map = serializer.serialize_map(Some(2))?;
+    map.serialize_entry("type", "FeatureCollection")?;
+    map.serialize_entry(
+        "features",
+        &Features {
+            items: std::cell::Cell::new(Some(items)),
+            points,
+        },
+    )?;
+    map.end()
+}
+
+impl Serialize for TriangulationFeatures<'_> {
+    fn serialize<S: Serializer>(&self, serializer: S) -> std::result::Result<S::Ok, S::Error> {
+        let pts = self.points;
+        let triangles = self.triangles.iter().enumerate().map(|(k, tri)| {
+            let ring = [tri[0], tri[1], tri[2], tri[0]].map(|i| pts[i as usize]);
+            feature(
+                "Polygon",
+                [ring],
+                TriangleProperties {
+                    triangle: k,
+                    vertices: *tri,
+                },
+            )
+        });
+        feature_collection(serializer, triangles, self.include_points.then_some(pts))
+    }
+}
+
+impl Serialize for GraphFeatures<'_> {
+    fn serialize<S: Serializer>(&self, serializer: S) -> std::result::Result<S::Ok, S::Error> {
+        let pts = self.points;
+        let edges = self.edges.iter().map(|&[a, b]| {
+            feature(
+                "LineString",
+                [pts[a as usize], pts[b as usize]],
+                EdgeProperties { edge: [a, b] },
+            )
+        });
+        feature_collection(serializer, edges, Some(pts))
+    }
 }
 
 #[cfg(test)]
@@ -476,8 +588,7 @@ mod tests {
             }
         }
         // The point features, read by the GeoJSON reader, give the input.
-        let points_only =
-            json!({"type": "FeatureCollection", "features": features[t.triangles().len()..]});
+        let points_only = serde_json::json!({"type": "FeatureCollection", "features": features[t.triangles().len()..]});
         assert_eq!(
             read_points(&points_only.to_string(), InputFormat::GeoJson).unwrap(),
             pts

@@ -20,6 +20,8 @@
 //! point, merged duplicates included, so the document describes the input as
 //! given.
 
+use super::decimal::unscale;
+use super::{Arithmetic, ReadInput};
 use crate::criteria::{Diagnostics, Optimality};
 use crate::error::{Error, Result};
 use crate::kernel::Point;
@@ -46,6 +48,37 @@ pub struct TriangulationReport<'a> {
     triangulation: &'a Triangulation,
     solution: Option<&'a Solution>,
     timing: Option<&'a [Phase]>,
+    input: Option<InputUnits<'a>>,
+}
+
+/// How the triangulated points relate to the user's: the arithmetic and,
+/// when the algorithms ran on scaled integers, the user's values and `k`.
+#[derive(Clone, Copy, Debug)]
+struct InputUnits<'a> {
+    arithmetic: Arithmetic,
+    user: Option<(&'a [Point], i32)>,
+}
+
+impl<'a> InputUnits<'a> {
+    fn of(read: &'a ReadInput) -> Self {
+        Self {
+            arithmetic: read.arithmetic,
+            user: read
+                .scaled
+                .as_ref()
+                .map(|s| (read.input.points(), s.exponent)),
+        }
+    }
+}
+
+/// `stats` of the scaled points in the user's units: lengths divided by
+/// `10^k`, areas by `10^2k`, angles unchanged.
+fn stats_in_user_units(mut stats: Stats, k: i32) -> Stats {
+    stats.max_edge_length = unscale(stats.max_edge_length, k);
+    stats.total_edge_length = unscale(stats.total_edge_length, k);
+    stats.min_area = unscale(unscale(stats.min_area, k), k);
+    stats.max_area = unscale(unscale(stats.max_area, k), k);
+    stats
 }
 
 impl<'a> TriangulationReport<'a> {
@@ -55,6 +88,7 @@ impl<'a> TriangulationReport<'a> {
             triangulation,
             solution: None,
             timing: None,
+            input: None,
         }
     }
 
@@ -65,6 +99,44 @@ impl<'a> TriangulationReport<'a> {
             triangulation: &solution.triangulation,
             solution: Some(solution),
             timing: Some(&solution.phases),
+            input: None,
+        }
+    }
+
+    /// Describes a triangulation of `read`'s working points
+    /// ([`ReadInput::working_points`]): the document gets
+    /// `coordinate_arithmetic`, and when those were scaled integers, its
+    /// `coordinates` are the user's values and its measures are in the
+    /// user's units (lengths divided by `10^k`, areas by `10^2k`).
+    pub fn with_input(self, read: &'a ReadInput) -> Self {
+        Self {
+            input: Some(InputUnits::of(read)),
+            ..self
+        }
+    }
+
+    /// The coordinates to show: the user's values.
+    pub fn coordinates(&self) -> &'a [Point] {
+        match self.input.and_then(|i| i.user) {
+            Some((user, _)) => user,
+            None => self.triangulation.points(),
+        }
+    }
+
+    /// The quality measures, in the user's units.
+    pub fn stats(&self) -> Stats {
+        let stats = self.triangulation.stats();
+        match self.input.and_then(|i| i.user) {
+            Some((_, k)) => stats_in_user_units(stats, k),
+            None => stats,
+        }
+    }
+
+    /// A certified bound's area, in the user's units.
+    fn bound_area(&self, area: f64) -> f64 {
+        match self.input.and_then(|i| i.user) {
+            Some((_, k)) => unscale(unscale(area, k), k),
+            None => area,
         }
     }
 
@@ -104,18 +176,21 @@ impl Serialize for TriangulationReport<'_> {
             bound: run.and_then(|s| s.bound.as_ref()).map(|b| BoundDocument {
                 kind: if b.upper { "upper" } else { "lower" },
                 triangle: b.triangle,
-                area: b.value,
+                area: self.bound_area(b.value),
             }),
             algorithm: run.map(|s| s.algorithm.as_str()),
+            algorithm_detail: run.map(|s| s.algorithm_detail.as_str()),
             points: t.points().len(),
             distinct_points: t.point_set().len(),
             duplicates: t.point_set().duplicates(),
-            stats: t.stats(),
+            coordinate_arithmetic: self.input.map(|i| i.arithmetic.name()),
+            coordinate_scale: self.input.and_then(|i| i.user).map(|(_, k)| k),
+            stats: self.stats(),
             diagnostics: run.map(|s| DiagnosticsMap(&s.diagnostics)),
             timing_ms: self.timing.map(TimingMap),
             triangles: t.triangles(),
             edges: t.edges(),
-            coordinates: t.points(),
+            coordinates: self.coordinates(),
         }
         .serialize(serializer)
     }
@@ -148,9 +223,15 @@ struct TriangulationDocument<'a> {
     bound: Option<BoundDocument>,
     #[serde(skip_serializing_if = "Option::is_none")]
     algorithm: Option<&'a str>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    algorithm_detail: Option<&'a str>,
     points: usize,
     distinct_points: usize,
     duplicates: &'a [[u32; 2]],
+    #[serde(skip_serializing_if = "Option::is_none")]
+    coordinate_arithmetic: Option<&'static str>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    coordinate_scale: Option<i32>,
     stats: Stats,
     #[serde(skip_serializing_if = "Option::is_none")]
     diagnostics: Option<DiagnosticsMap<'a>>,
@@ -172,9 +253,10 @@ struct TriangulationDocument<'a> {
 pub struct GraphReport<'a> {
     points: &'a [Point],
     edges: &'a [[u32; 2]],
-    point_set: Option<&'a PointSet>,
+    distinct: Option<(usize, &'a [[u32; 2]])>,
     kind: Option<GraphKind>,
     timing: Option<&'a [Phase]>,
+    arithmetic: Option<Arithmetic>,
 }
 
 impl<'a> GraphReport<'a> {
@@ -183,9 +265,10 @@ impl<'a> GraphReport<'a> {
         Self {
             points,
             edges,
-            point_set: None,
+            distinct: None,
             kind: None,
             timing: None,
+            arithmetic: None,
         }
     }
 
@@ -195,9 +278,38 @@ impl<'a> GraphReport<'a> {
         Self {
             points: point_set.input_points(),
             edges,
-            point_set: Some(point_set),
+            distinct: Some((point_set.len(), point_set.duplicates())),
             kind: Some(kind),
             timing: None,
+            arithmetic: None,
+        }
+    }
+
+    /// The document of the graph `kind` of `points` (input order) with
+    /// `distinct` distinct points and the merged `duplicates` (`[dropped,
+    /// kept]`), for inputs that are no [`PointSet`] (two points, or all
+    /// collinear: see [`crate::graph_of_points`]).
+    pub fn of_points(
+        points: &'a [Point],
+        kind: GraphKind,
+        edges: &'a [[u32; 2]],
+        distinct: usize,
+        duplicates: &'a [[u32; 2]],
+    ) -> Self {
+        Self {
+            kind: Some(kind),
+            distinct: Some((distinct, duplicates)),
+            ..Self::new(points, edges)
+        }
+    }
+
+    /// Describes a graph of `read`'s working points: the document gets
+    /// `coordinate_arithmetic`, and its `coordinates` are the user's values.
+    pub fn with_input(self, read: &'a ReadInput) -> Self {
+        Self {
+            points: read.input.points(),
+            arithmetic: Some(read.arithmetic),
+            ..self
         }
     }
 
@@ -232,8 +344,9 @@ impl Serialize for GraphReport<'_> {
             document: "graph",
             kind: self.kind.map(GraphKind::name),
             points: self.points.len(),
-            distinct_points: self.point_set.map(PointSet::len),
-            duplicates: self.point_set.map(PointSet::duplicates),
+            distinct_points: self.distinct.map(|d| d.0),
+            duplicates: self.distinct.map(|d| d.1),
+            coordinate_arithmetic: self.arithmetic.map(Arithmetic::name),
             timing_ms: self.timing.map(TimingMap),
             edges: self.edges,
             coordinates: self.points,
@@ -254,6 +367,8 @@ struct GraphDocument<'a> {
     distinct_points: Option<usize>,
     #[serde(skip_serializing_if = "Option::is_none")]
     duplicates: Option<&'a [[u32; 2]]>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    coordinate_arithmetic: Option<&'static str>,
     #[serde(skip_serializing_if = "Option::is_none")]
     timing_ms: Option<TimingMap<'a>>,
     edges: &'a [[u32; 2]],
@@ -519,6 +634,7 @@ mod tests {
         "exact",
         "optimality",
         "algorithm",
+        "algorithm_detail",
         "diagnostics",
         "timing_ms",
     ];
@@ -826,7 +942,13 @@ mod tests {
             STATS_FIELDS,
             GRAPH_FIELDS,
             GRAPH_RUN_FIELDS,
-            &["optimality_bound", "results", "error"],
+            &[
+                "optimality_bound",
+                "results",
+                "error",
+                "coordinate_arithmetic",
+                "coordinate_scale",
+            ],
         ]
         .concat()
         {

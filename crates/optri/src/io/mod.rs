@@ -34,6 +34,7 @@
 //! input. Coordinates are written in Rust's shortest round-trip notation, so
 //! reading an output back gives the identical `f64` values.
 
+mod decimal;
 mod format;
 mod geojson;
 mod json;
@@ -43,7 +44,9 @@ mod svg;
 mod text;
 mod tsplib;
 
+pub use decimal::{Arithmetic, Scaled};
 pub use format::{InputFormat, OutputFormat};
+
 pub use geojson::{graph_to_geojson, triangulation_to_geojson};
 pub use json::{
     comparison_to_json, graph_to_json, solution_to_json, triangulation_from_json,
@@ -92,16 +95,142 @@ impl Input {
 /// the geometry when it has holes ("polygons with holes are not supported
 /// yet") or when there is more than one polygon.
 pub fn read_input(text: &str, format: InputFormat) -> Result<Input> {
+    read_input_exact(text, format).map(|read| read.input)
+}
+
+/// What [`read_input_exact`] read: the input with the user's values (the
+/// nearest doubles of the decimals written), how the algorithms should
+/// compute with it, the scaled integers when they differ from those doubles,
+/// and warnings about what was ignored.
+#[derive(Clone, Debug, PartialEq)]
+#[non_exhaustive]
+pub struct ReadInput {
+    /// The points or the polygon, with the user's values.
+    pub input: Input,
+    /// [`Arithmetic::DecimalExact`] when every coordinate times one common
+    /// `10^k` is an integer below 2⁵³ (see the `decimal` module docs).
+    pub arithmetic: Arithmetic,
+    /// Those integers when `k ≠ 0` (with `k == 0` they are the user's
+    /// doubles), in the order of [`Input::points`].
+    pub scaled: Option<Scaled>,
+    /// What the reader ignored, for the user (e.g. the third column of a
+    /// headerless `x y z` file).
+    pub warnings: Vec<String>,
+}
+
+impl ReadInput {
+    /// The points the algorithms should run on: the scaled integers when
+    /// there are any, else the user's values.
+    pub fn working_points(&self) -> &[Point] {
+        match &self.scaled {
+            Some(scaled) => &scaled.points,
+            None => self.input.points(),
+        }
+    }
+
+    /// `k` of the scaling (0 when the algorithms run on the user's values).
+    pub fn scale_exponent(&self) -> i32 {
+        self.scaled.as_ref().map_or(0, |s| s.exponent)
+    }
+}
+
+/// Reads `text` as [`read_input`] does, keeping each coordinate's decimal
+/// value: when every coordinate scaled by one common `10^k` is an integer of
+/// magnitude below 2⁵³, [`ReadInput::scaled`] holds those integers, on which
+/// every predicate decides the decimals as written.
+///
+/// # Errors
+/// As [`read_input`].
+pub fn read_input_exact(text: &str, format: InputFormat) -> Result<ReadInput> {
+    read_any(text, format, true)
+}
+
+/// Reads `text` as points ([`read_points`]) with their decimal values, as
+/// [`read_input_exact`] does.
+///
+/// # Errors
+/// As [`read_points`].
+pub fn read_points_exact(text: &str, format: InputFormat) -> Result<ReadInput> {
+    read_any(text, format, false)
+}
+
+/// Reads a file as [`read_input_exact`] (`polygons`) or
+/// [`read_points_exact`] does; `format: None` picks the format as
+/// [`read_points_file`] does.
+///
+/// # Errors
+/// As [`read_points_file`] and [`read_input`].
+pub fn read_file_exact(
+    path: &Path,
+    format: Option<InputFormat>,
+    polygons: bool,
+) -> Result<ReadInput> {
+    let (text, format) = read_text(path, format)?;
+    read_any(&text, format, polygons)
+}
+
+/// Points as a reader collects them: the user's doubles, the decimal values
+/// so far, and warnings.
+#[derive(Default)]
+pub(super) struct Collected {
+    pub(super) points: Vec<Point>,
+    pub(super) decimal: decimal::DecimalScaler,
+    pub(super) warnings: Vec<String>,
+}
+
+impl Collected {
+    /// Parses and appends the point written as `x y` on `line`.
+    pub(super) fn push(&mut self, x: &str, y: &str, line: usize) -> Result<()> {
+        let p = [coordinate(x, line)?, coordinate(y, line)?];
+        self.decimal.push(x);
+        self.decimal.push(y);
+        self.points.push(p);
+        Ok(())
+    }
+
+    /// The collected points as input: in the order `order` (positions into
+    /// the file order) when given.
+    fn finish(self, polygon: bool, order: Option<&[usize]>) -> ReadInput {
+        let (arithmetic, scaled) = self.decimal.finish();
+        let reorder = |points: Vec<Point>| match order {
+            Some(order) => order.iter().map(|&v| points[v]).collect(),
+            None => points,
+        };
+        let points = reorder(self.points);
+        let scaled = scaled.map(|s| Scaled {
+            exponent: s.exponent,
+            points: reorder(s.points),
+        });
+        ReadInput {
+            input: if polygon {
+                Input::Polygon(points)
+            } else {
+                Input::Points(points)
+            },
+            arithmetic,
+            scaled,
+            warnings: self.warnings,
+        }
+    }
+}
+
+fn read_any(text: &str, format: InputFormat, polygons: bool) -> Result<ReadInput> {
+    // A UTF-8 byte-order mark is not part of the first token.
     let text = text.strip_prefix('\u{feff}').unwrap_or(text);
-    let input = match format {
-        InputFormat::Poly => Input::Polygon(poly::read_poly(text)?),
-        InputFormat::GeoJson => geojson::read_geojson_input(text, true)?,
-        _ => Input::Points(read_points(text, format)?),
+    let read = match format {
+        InputFormat::Text => text::read_text(text)?.finish(false, None),
+        InputFormat::Node => node::read_node(text)?.finish(false, None),
+        InputFormat::Poly => {
+            let (collected, ring) = poly::read_poly(text)?;
+            collected.finish(polygons, Some(&ring))
+        }
+        InputFormat::Tsplib => tsplib::read_tsplib(text)?.finish(false, None),
+        InputFormat::GeoJson => geojson::read_geojson_exact(text, polygons)?,
     };
-    if input.points().is_empty() {
+    if read.input.points().is_empty() {
         return Err(parse(0, "no points found in the input"));
     }
-    Ok(input)
+    Ok(read)
 }
 
 /// Reads an input file as [`read_input`] does; `format: None` picks the
@@ -155,19 +284,9 @@ fn not_a_polygon(format: InputFormat) -> Error {
 /// [`Error::Parse`] with the 1-based line of the first problem, or line 0 when
 /// the input holds no points at all.
 pub fn read_points(text: &str, format: InputFormat) -> Result<Vec<Point>> {
-    // A UTF-8 byte-order mark is not part of the first token.
-    let text = text.strip_prefix('\u{feff}').unwrap_or(text);
-    let points = match format {
-        InputFormat::Text => text::read_text(text)?,
-        InputFormat::Node => node::read_node(text)?,
-        InputFormat::Poly => poly::read_poly(text)?,
-        InputFormat::Tsplib => tsplib::read_tsplib(text)?,
-        InputFormat::GeoJson => geojson::read_geojson(text)?,
-    };
-    if points.is_empty() {
-        return Err(parse(0, "no points found in the input"));
+    match read_any(text, format, false)?.input {
+        Input::Points(points) | Input::Polygon(points) => Ok(points),
     }
-    Ok(points)
 }
 
 /// Reads a point file; `format: None` picks it by extension
@@ -194,22 +313,44 @@ fn read_text(path: &Path, format: Option<InputFormat>) -> Result<(String, InputF
 }
 
 fn write_file(path: &Path, contents: &str) -> Result<()> {
-    std::fs::write(path, contents)
-        .map_err(|e| Error::Io(format!("cannot write '{}': {e}", path.display())))
+    std::fs::write(path, contents).map_err(|e| write_error(path, &e))
 }
 
-fn pretty(document: &impl serde::Serialize) -> String {
-    // optri's documents and GeoJSON values always serialise.
-    let mut s = serde_json::to_string_pretty(document)
-        .expect("an optri document always serialises to JSON");
-    s.push('\n');
-    s
+fn write_error(path: &Path, e: &dyn std::fmt::Display) -> Error {
+    Error::Io(format!("cannot write '{}': {e}", path.display()))
+}
+
+/// How JSON and GeoJSON files are laid out.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum JsonStyle {
+    /// One line, no spaces (the default: a tenth of the size at 10⁶ points).
+    #[default]
+    Compact,
+    /// Indented, one value per line.
+    Pretty,
+}
+
+/// Serialises `document` straight into the file at `path` (no string or
+/// value tree in between, so the memory is that of the document's own
+/// data), with a final newline.
+fn write_json_file(path: &Path, document: &impl serde::Serialize, style: JsonStyle) -> Result<()> {
+    use std::io::Write;
+    let file = std::fs::File::create(path).map_err(|e| write_error(path, &e))?;
+    let mut out = std::io::BufWriter::with_capacity(1 << 16, file);
+    match style {
+        JsonStyle::Compact => serde_json::to_writer(&mut out, document),
+        JsonStyle::Pretty => serde_json::to_writer_pretty(&mut out, document),
+    }
+    .map_err(|e| write_error(path, &e))?;
+    out.write_all(b"\n")
+        .and_then(|()| out.flush())
+        .map_err(|e| write_error(path, &e))
 }
 
 /// Writes `t` in the format given by `path`'s extension (see
 /// [`OutputFormat`]); an SVG is titled with the file name, a `.json` file is
 /// the bare [`TriangulationReport`]. Returns the files written (two for
-/// `.ele`: the `.ele` and its sibling `.node`).
+/// `.ele` and `.edge`: that file and its sibling `.node`).
 ///
 /// # Errors
 /// [`Error::Io`] naming the path for an unknown extension or when writing
@@ -235,8 +376,9 @@ pub fn write_triangulation_titled(
 }
 
 /// Writes the triangulation of `report` by `path`'s extension, as
-/// [`write_triangulation_titled`] does; a `.json` file is the whole `report`
-/// (with its run fields, e.g. from [`TriangulationReport::of_solution`]).
+/// [`write_triangulation_titled`] does, compact JSON; a `.json` file is the
+/// whole `report` (with its run fields, e.g. from
+/// [`TriangulationReport::of_solution`]).
 ///
 /// # Errors
 /// As [`write_triangulation`].
@@ -245,16 +387,45 @@ pub fn write_triangulation_report(
     path: &Path,
     title: &str,
 ) -> Result<Vec<PathBuf>> {
+    write_triangulation_report_styled(report, path, title, JsonStyle::Compact)
+}
+
+/// [`write_triangulation_report`] with JSON and GeoJSON laid out in `style`.
+/// Coordinates are the report's ([`TriangulationReport::coordinates`]: the
+/// user's values).
+///
+/// # Errors
+/// As [`write_triangulation`].
+pub fn write_triangulation_report_styled(
+    report: &TriangulationReport,
+    path: &Path,
+    title: &str,
+    style: JsonStyle,
+) -> Result<Vec<PathBuf>> {
     let t = report.triangulation();
-    match OutputFormat::from_path(path)? {
-        OutputFormat::Json => write_file(path, &pretty(report))?,
-        OutputFormat::GeoJson => write_file(path, &pretty(&triangulation_to_geojson(t, true)))?,
-        OutputFormat::Svg => write_file(path, &triangulation_to_svg(t, title))?,
-        OutputFormat::Triangle => {
-            let (node, ele) = triangulation_to_triangle_files(t);
-            let files = OutputFormat::Triangle.files_written(path);
-            write_file(&files[0], &ele)?;
-            write_file(&files[1], &node)?;
+    let points = report.coordinates();
+    let format = OutputFormat::from_path(path)?;
+    match format {
+        OutputFormat::Json => write_json_file(path, report, style)?,
+        OutputFormat::GeoJson => write_json_file(
+            path,
+            &geojson::TriangulationFeatures {
+                points,
+                triangles: t.triangles(),
+                include_points: true,
+            },
+            style,
+        )?,
+        OutputFormat::Svg => write_file(path, &svg::report_to_svg(report, title))?,
+        OutputFormat::Triangle | OutputFormat::TriangleEdges => {
+            let files = format.files_written(path);
+            let first = if format == OutputFormat::Triangle {
+                node::ele_text(t.triangles())
+            } else {
+                node::edge_text(&t.edges())
+            };
+            write_file(&files[0], &first)?;
+            write_file(&files[1], &node::node_text(points))?;
             return Ok(files);
         }
     }
@@ -262,7 +433,8 @@ pub fn write_triangulation_report(
 }
 
 /// Writes a graph (edges as index pairs into `points`) as `.svg`, `.json` (the
-/// bare [`GraphReport`]) or `.geojson`, by extension.
+/// bare [`GraphReport`]), `.geojson` or `.edge` (with the `.node` beside it),
+/// by extension.
 ///
 /// # Errors
 /// [`Error::Io`] naming the path for `.ele` and unknown extensions
@@ -275,8 +447,9 @@ pub fn write_graph(points: &[Point], edges: &[[u32; 2]], title: &str, path: &Pat
 }
 
 /// Writes the graph of `report` by `path`'s extension, as [`write_graph`]
-/// does; a `.json` file is the whole `report` (e.g. with the kind and
-/// duplicates of [`GraphReport::of_graph`]). Returns the file written.
+/// does, compact JSON; a `.json` file is the whole `report` (e.g. with the
+/// kind and duplicates of [`GraphReport::of_graph`]). Returns the files
+/// written.
 ///
 /// # Errors
 /// As [`write_graph`].
@@ -284,10 +457,35 @@ pub fn write_graph(points: &[Point], edges: &[[u32; 2]], title: &str, path: &Pat
 /// # Panics
 /// If an edge refers to an index outside the points.
 pub fn write_graph_report(report: &GraphReport, path: &Path, title: &str) -> Result<Vec<PathBuf>> {
+    write_graph_report_styled(report, path, title, JsonStyle::Compact)
+}
+
+/// [`write_graph_report`] with JSON and GeoJSON laid out in `style`.
+///
+/// # Errors
+/// As [`write_graph`].
+///
+/// # Panics
+/// If an edge refers to an index outside the points.
+pub fn write_graph_report_styled(
+    report: &GraphReport,
+    path: &Path,
+    title: &str,
+    style: JsonStyle,
+) -> Result<Vec<PathBuf>> {
     let (points, edges) = (report.points(), report.edges());
-    match OutputFormat::from_path_for_graph(path)? {
-        OutputFormat::Json => write_file(path, &pretty(report))?,
-        OutputFormat::GeoJson => write_file(path, &pretty(&graph_to_geojson(points, edges)))?,
+    let format = OutputFormat::from_path_for_graph(path)?;
+    match format {
+        OutputFormat::Json => write_json_file(path, report, style)?,
+        OutputFormat::GeoJson => {
+            write_json_file(path, &geojson::GraphFeatures { points, edges }, style)?
+        }
+        OutputFormat::TriangleEdges => {
+            let files = format.files_written(path);
+            write_file(&files[0], &node::edge_text(edges))?;
+            write_file(&files[1], &node::node_text(points))?;
+            return Ok(files);
+        }
         // `.ele` (Triangle) was refused by `from_path_for_graph`.
         OutputFormat::Svg | OutputFormat::Triangle => {
             write_file(path, &graph_to_svg(points, edges, title))?

@@ -3,7 +3,7 @@
 //!
 //! [`InputFormat::Node`]: super::InputFormat::Node
 
-use super::{coordinate, parse, strip_comment};
+use super::{parse, strip_comment, Collected};
 use crate::error::Result;
 use crate::kernel::Point;
 use crate::structures::Triangulation;
@@ -23,17 +23,17 @@ pub(super) fn token_lines(text: &str) -> impl Iterator<Item = (usize, Vec<&str>)
         .filter(|(_, t)| !t.is_empty())
 }
 
-pub(super) fn read_node(text: &str) -> Result<Vec<Point>> {
+pub(super) fn read_node(text: &str) -> Result<Collected> {
     let mut lines = token_lines(text);
     let Some(section) = read_vertex_section(&mut lines)? else {
-        return Ok(Vec::new());
+        return Ok(Collected::default());
     };
     if let Some((line, _)) = lines.next() {
         return Err(parse(
             line,
             format!(
                 "more vertex lines than the {} the header announces",
-                section.points.len()
+                section.points.points.len()
             ),
         ));
     }
@@ -43,7 +43,7 @@ pub(super) fn read_node(text: &str) -> Result<Vec<Point>> {
 /// The vertex section of a `.node` or `.poly` file.
 pub(super) struct VertexSection {
     /// The vertices in file order.
-    pub points: Vec<Point>,
+    pub points: Collected,
     /// The id of the first vertex (0 or 1); the ids run on from it.
     pub first_id: usize,
     /// The line of the section header.
@@ -88,9 +88,10 @@ pub(super) fn read_vertex_section<'t>(
         ));
     }
     let columns = 3 + attributes + markers;
-    let mut points = Vec::with_capacity(count.min(1 << 20));
+    let mut points = Collected::default();
+    points.points.reserve(count.min(1 << 20));
     let mut first_id = None;
-    while points.len() < count {
+    while points.points.len() < count {
         let Some((line, tokens)) = lines.next() else {
             break;
         };
@@ -109,12 +110,16 @@ pub(super) fn read_vertex_section<'t>(
             .parse()
             .map_err(|_| parse(line, format!("vertex id '{}' is not an integer", tokens[0])))?;
         let base = *first_id.get_or_insert(id);
-        if base > 1 || id != base + points.len() {
+        if base > 1 || id != base + points.points.len() {
             return Err(parse(
                 line,
                 format!(
                     "vertex id {id} out of sequence (expected {})",
-                    if base > 1 { 0 } else { base + points.len() }
+                    if base > 1 {
+                        0
+                    } else {
+                        base + points.points.len()
+                    }
                 ),
             ));
         }
@@ -122,14 +127,14 @@ pub(super) fn read_vertex_section<'t>(
             t.parse::<f64>()
                 .map_err(|_| parse(line, format!("'{t}' is not a number")))?;
         }
-        points.push([coordinate(tokens[1], line)?, coordinate(tokens[2], line)?]);
+        points.push(tokens[1], tokens[2], line)?;
     }
-    if points.len() != count {
+    if points.points.len() != count {
         return Err(parse(
             header_line,
             format!(
                 "the header announces {count} vertices, the file has {}",
-                points.len()
+                points.points.len()
             ),
         ));
     }
@@ -154,7 +159,11 @@ fn coordinate_text(v: f64) -> String {
 /// Triangle's `.node` and `.ele` texts. Numbering is 0-based and equals the
 /// input index; every input point is listed (duplicates too).
 pub fn triangulation_to_triangle_files(t: &Triangulation) -> (String, String) {
-    let pts = t.points();
+    (node_text(t.points()), ele_text(t.triangles()))
+}
+
+/// A `.node` text of `points`, 0-based ids (= input indices).
+pub(super) fn node_text(pts: &[Point]) -> String {
     let mut node = String::with_capacity(pts.len() * 24);
     let _ = writeln!(node, "# optri: input points, 0-based (id = input index)");
     let _ = writeln!(node, "{} 2 0 0", pts.len());
@@ -166,16 +175,33 @@ pub fn triangulation_to_triangle_files(t: &Triangulation) -> (String, String) {
             coordinate_text(p[1])
         );
     }
-    let mut ele = String::with_capacity(t.triangles().len() * 20);
+    node
+}
+
+/// An `.ele` text of counter-clockwise triangles over 0-based `.node` ids.
+pub(super) fn ele_text(triangles: &[[u32; 3]]) -> String {
+    let mut ele = String::with_capacity(triangles.len() * 20);
     let _ = writeln!(
         ele,
         "# optri: counter-clockwise triangles over the 0-based .node ids"
     );
-    let _ = writeln!(ele, "{} 3 0", t.triangles().len());
-    for (k, [a, b, c]) in t.triangles().iter().enumerate() {
+    let _ = writeln!(ele, "{} 3 0", triangles.len());
+    for (k, [a, b, c]) in triangles.iter().enumerate() {
         let _ = writeln!(ele, "{k} {a} {b} {c}");
     }
-    (node, ele)
+    ele
+}
+
+/// An `.edge` text (Triangle's: `m 0`, then `id a b` per edge, no boundary
+/// markers) over 0-based `.node` ids.
+pub(super) fn edge_text(edges: &[[u32; 2]]) -> String {
+    let mut text = String::with_capacity(edges.len() * 16);
+    let _ = writeln!(text, "# optri: edges over the 0-based .node ids");
+    let _ = writeln!(text, "{} 0", edges.len());
+    for (k, [a, b]) in edges.iter().enumerate() {
+        let _ = writeln!(text, "{k} {a} {b}");
+    }
+    text
 }
 
 #[cfg(test)]

@@ -13,18 +13,18 @@
 //! [`InputFormat::Poly`]: super::InputFormat::Poly
 
 use super::node::{read_vertex_section, token_lines};
-use super::{parse, HOLES_UNSUPPORTED};
+use super::{parse, Collected, HOLES_UNSUPPORTED};
 use crate::error::Result;
-use crate::kernel::Point;
 
-/// Reads the boundary ring of a `.poly` file, in boundary order (no closing
-/// vertex). An empty file gives an empty ring.
-pub(super) fn read_poly(text: &str) -> Result<Vec<Point>> {
+/// Reads the vertices of a `.poly` file in file order and its boundary ring
+/// as positions into them, in boundary order (no closing vertex). An empty
+/// file gives an empty ring.
+pub(super) fn read_poly(text: &str) -> Result<(Collected, Vec<usize>)> {
     let mut lines = token_lines(text);
     let Some(vertices) = read_vertex_section(&mut lines)? else {
-        return Ok(Vec::new());
+        return Ok((Collected::default(), Vec::new()));
     };
-    let n = vertices.points.len();
+    let n = vertices.points.points.len();
     if n == 0 {
         return Err(parse(
             vertices.header_line,
@@ -182,7 +182,7 @@ pub(super) fn read_poly(text: &str) -> Result<Vec<Point>> {
         }
         // Regional attributes and area constraints are not used.
     }
-    Ok(ring.into_iter().map(|v| vertices.points[v]).collect())
+    Ok((vertices.points, ring))
 }
 
 #[cfg(test)]

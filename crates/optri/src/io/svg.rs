@@ -80,7 +80,10 @@ fn worst_triangle(t: &Triangulation) -> Option<[u32; 3]> {
 }
 
 fn triangulation_stats_lines(t: &Triangulation) -> Vec<String> {
-    let s = t.stats();
+    stats_lines(t, &t.stats())
+}
+
+fn stats_lines(t: &Triangulation, s: &crate::structures::Stats) -> Vec<String> {
     vec![
         format!(
             "{} points · {} triangles · {} edges · {} hull points",
@@ -289,6 +292,27 @@ fn panel_height(plot_h: f64) -> f64 {
 /// triangle highlighted, `title` and a stats line on top.
 pub fn triangulation_to_svg(t: &Triangulation, title: &str) -> String {
     panels_to_svg(&[(title, t)])
+}
+
+/// The picture of a report's triangulation: as [`triangulation_to_svg`],
+/// with the report's coordinates and measures (the user's units).
+pub(super) fn report_to_svg(report: &super::TriangulationReport, title: &str) -> String {
+    let t = report.triangulation();
+    let edges = t.edges();
+    let mut panel = triangulation_panel(t, &edges, title);
+    let user = report.coordinates();
+    if !std::ptr::eq(user, t.points()) {
+        let ps = t.point_set();
+        panel.points = (0..ps.len() as u32)
+            .map(|d| user[ps.input_index(d) as usize])
+            .collect();
+        panel.all_points = user;
+        panel.stats = stats_lines(t, &report.stats());
+    }
+    let plot_h = plot_height(&panel.points);
+    let mut body = String::new();
+    draw_panel(&mut body, 0.0, 0.0, plot_h, &panel);
+    document(PLOT_WIDTH + 2.0 * MARGIN, panel_height(plot_h), &body)
 }
 
 /// A picture of a plain edge set over `points` (edges are index pairs into

@@ -2,9 +2,8 @@
 //!
 //! [`InputFormat::Text`]: super::InputFormat::Text
 
-use super::{coordinate, parse, strip_comment};
+use super::{parse, strip_comment, Collected};
 use crate::error::Result;
-use crate::kernel::Point;
 
 /// The fields of one text line. Whitespace runs separate fields, and so does
 /// each comma or semicolon (with any whitespace around it); an empty field
@@ -33,8 +32,8 @@ fn text_fields(line_text: &str, line: usize) -> Result<Vec<&str>> {
     Ok(fields)
 }
 
-pub(super) fn read_text(text: &str) -> Result<Vec<Point>> {
-    let mut points = Vec::new();
+pub(super) fn read_text(text: &str) -> Result<Collected> {
+    let mut points = Collected::default();
     // Column count of the first data row and its line, to report ragged rows.
     let mut columns: Option<(usize, usize)> = None;
     let mut seen_content = false;
@@ -77,13 +76,18 @@ pub(super) fn read_text(text: &str) -> Result<Vec<Point>> {
                     ));
                 }
                 columns = Some((tokens.len(), line));
+                if header_columns.is_none() && tokens.len() > 2 {
+                    points.warnings.push(ignored_columns(tokens.len(), line));
+                }
             }
             Some((n, first)) if n != tokens.len() => {
                 return Err(parse(
                     line,
                     format!(
-                        "{} columns, but line {first} has {n}; every row must have the same number of columns",
-                        tokens.len()
+                        "{} column{}, but line {first} has {n}; every row must have the same number \
+                         of columns",
+                        tokens.len(),
+                        if tokens.len() == 1 { "" } else { "s" }
                     ),
                 ));
             }
@@ -96,17 +100,28 @@ pub(super) fn read_text(text: &str) -> Result<Vec<Point>> {
                     .map_err(|_| parse(line, format!("'{t}' is not a number")))?;
             }
         }
-        points.push([
-            coordinate(tokens[xy_columns[0]], line)?,
-            coordinate(tokens[xy_columns[1]], line)?,
-        ]);
+        points.push(tokens[xy_columns[0]], tokens[xy_columns[1]], line)?;
     }
     Ok(points)
 }
 
+/// The warning for rows of `columns > 2` values without a header naming
+/// `x` and `y` (e.g. an `x y z` cloud): the first two are read.
+fn ignored_columns(columns: usize, line: usize) -> String {
+    let ignored = if columns == 3 {
+        "column 3".to_string()
+    } else {
+        format!("columns 3 to {columns}")
+    };
+    format!(
+        "line {line}: rows have {columns} columns and no header names them; reading columns 1 \
+         and 2 as x y and ignoring {ignored} (a header line such as `x y z` names them)"
+    )
+}
+
 #[cfg(test)]
 mod tests {
-    use crate::io::{line_of, read_points, InputFormat};
+    use crate::io::{line_of, read_points, read_points_exact, InputFormat};
     use crate::kernel::Point;
 
     #[test]
@@ -116,11 +131,27 @@ mod tests {
             read_points(text, InputFormat::Text).unwrap(),
             vec![[1.0, 2.0], [3.0, 4.0], [5.0, 6.0], [7.0, 8.0]]
         );
-        // Consistent extra columns are allowed; x, y are the first two.
+        // Consistent extra columns are allowed; x, y are the first two, with
+        // a warning naming what is ignored unless a header names the columns.
+        let read = read_points_exact("1 2 9\n3 4 9\n", InputFormat::Text).unwrap();
+        assert_eq!(read.input.points(), [[1.0, 2.0], [3.0, 4.0]]);
         assert_eq!(
-            read_points("1 2 9\n3 4 9\n", InputFormat::Text).unwrap(),
-            vec![[1.0, 2.0], [3.0, 4.0]]
+            read.warnings,
+            [
+                "line 1: rows have 3 columns and no header names them; reading columns 1 and 2 \
+              as x y and ignoring column 3 (a header line such as `x y z` names them)"
+            ]
         );
+        let read = read_points_exact("# c\n1 2 9 8\n3 4 9 8\n", InputFormat::Text).unwrap();
+        assert!(
+            read.warnings[0].starts_with("line 2:") && read.warnings[0].contains("columns 3 to 4")
+        );
+        for named in ["x y z\n1 2 9\n3 4 9\n", "1 2\n3 4\n"] {
+            assert!(read_points_exact(named, InputFormat::Text)
+                .unwrap()
+                .warnings
+                .is_empty());
+        }
         assert_eq!(
             read_points("\u{feff}-1e3 2.5E-2\r\n", InputFormat::Text).unwrap(),
             vec![[-1000.0, 0.025]]

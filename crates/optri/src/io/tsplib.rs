@@ -2,15 +2,14 @@
 //!
 //! [`InputFormat::Tsplib`]: super::InputFormat::Tsplib
 
-use super::{coordinate, parse};
+use super::{parse, Collected};
 use crate::error::Result;
-use crate::kernel::Point;
 
-pub(super) fn read_tsplib(text: &str) -> Result<Vec<Point>> {
+pub(super) fn read_tsplib(text: &str) -> Result<Collected> {
     let mut dimension: Option<(usize, usize)> = None;
     let mut in_coordinates = false;
     let mut section_line = None;
-    let mut points = Vec::new();
+    let mut points = Collected::default();
     let mut last_id = 0usize;
     for (i, raw) in text.lines().enumerate() {
         let line = i + 1;
@@ -47,7 +46,7 @@ pub(super) fn read_tsplib(text: &str) -> Result<Vec<Point>> {
                 ));
             }
             last_id = id;
-            points.push([coordinate(tokens[1], line)?, coordinate(tokens[2], line)?]);
+            points.push(tokens[1], tokens[2], line)?;
             continue;
         }
         if in_coordinates {
@@ -111,12 +110,12 @@ pub(super) fn read_tsplib(text: &str) -> Result<Vec<Point>> {
         ));
     };
     if let Some((n, line)) = dimension {
-        if n != points.len() {
+        if n != points.points.len() {
             return Err(parse(
                 line,
                 format!(
                     "DIMENSION is {n}, but NODE_COORD_SECTION (line {section_line}) has {} nodes",
-                    points.len()
+                    points.points.len()
                 ),
             ));
         }

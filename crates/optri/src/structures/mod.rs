@@ -5,6 +5,8 @@
 //! [`SimplePolygon`] input. They import the kernel and spatial layers only.
 
 mod delaunay_graph;
+#[cfg(feature = "geo-types")]
+mod geo;
 pub(crate) mod planar_graph;
 mod point_set;
 mod polygon;
