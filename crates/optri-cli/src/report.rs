@@ -277,8 +277,10 @@ pub(crate) fn comparison_table(run: &Run, results: &[optri::Comparison]) -> Stri
         .iter()
         .filter_map(|(_, r)| r.as_ref().ok())
         .collect();
-    // Stats walk every triangle: once per solution.
-    let stats: Vec<optri::Stats> = solved.iter().map(|s| s.triangulation.stats()).collect();
+    // Stats walk every triangle: once per solution. They and the bounds are
+    // in the user's units (the run may have scaled decimal input).
+    let units = optri::io::ComparisonReport::new(results).with_input(&run.read);
+    let stats: Vec<optri::Stats> = solved.iter().map(|s| units.report(s).stats()).collect();
     // Each cell's text; the best (by the value shown) gets a `*`.
     let mut cells: Vec<Vec<String>> = solved
         .iter()
@@ -378,7 +380,7 @@ pub(crate) fn comparison_table(run: &Run, results: &[optri::Comparison]) -> Stri
             format!(
                 "; the optimum is {} {} (certified)",
                 if b.upper { "at most" } else { "at least" },
-                significant(b.value)
+                significant(units.report(s).bound_value().unwrap_or(b.value))
             )
         });
         text.push_str(&format!(

@@ -52,7 +52,9 @@ pub(crate) fn run(args: CompareArgs) -> CliResult<()> {
         ms: ms_since(t0),
     });
     let timed = run.timing.phases.clone();
-    let document = ComparisonReport::new(&results).with_timing(&timed);
+    let document = ComparisonReport::new(&results)
+        .with_input(&run.read)
+        .with_timing(&timed);
     let titles: Vec<String> = results
         .iter()
         .map(|(c, r)| run.title(&report::label(*c, r.as_ref().is_ok_and(|s| s.exact))))
@@ -62,7 +64,11 @@ pub(crate) fn run(args: CompareArgs) -> CliResult<()> {
     })?;
     run.timing.finish();
     if args.json {
-        return report::emit_json(&ComparisonReport::new(&results).with_timing(&run.timing.phases));
+        return report::emit_json(
+            &ComparisonReport::new(&results)
+                .with_input(&run.read)
+                .with_timing(&run.timing.phases),
+        );
     }
     let mut text = report::comparison_table(&run, &results);
     for path in written {

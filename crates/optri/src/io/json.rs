@@ -132,6 +132,14 @@ impl<'a> TriangulationReport<'a> {
         }
     }
 
+    /// The solution's certified bound ([`Solution::bound`]), in the user's
+    /// units.
+    pub fn bound_value(&self) -> Option<f64> {
+        self.solution
+            .and_then(|s| s.bound.as_ref())
+            .map(|b| self.bound_area(b.value))
+    }
+
     /// A certified bound's area, in the user's units.
     fn bound_area(&self, area: f64) -> f64 {
         match self.input.and_then(|i| i.user) {
@@ -385,6 +393,7 @@ struct GraphDocument<'a> {
 pub struct ComparisonReport<'a> {
     results: &'a [Comparison],
     timing: Option<&'a [Phase]>,
+    input: Option<&'a ReadInput>,
 }
 
 impl<'a> ComparisonReport<'a> {
@@ -393,6 +402,26 @@ impl<'a> ComparisonReport<'a> {
         Self {
             results,
             timing: None,
+            input: None,
+        }
+    }
+
+    /// Describes results computed on `read`'s working points, as
+    /// [`TriangulationReport::with_input`] does for each of them.
+    pub fn with_input(self, read: &'a ReadInput) -> Self {
+        Self {
+            input: Some(read),
+            ..self
+        }
+    }
+
+    /// The document of one solution of the comparison (with the input's
+    /// units when [`with_input`](Self::with_input) was given).
+    pub fn report(&self, solution: &'a Solution) -> TriangulationReport<'a> {
+        let report = TriangulationReport::of_solution(solution);
+        match self.input {
+            Some(read) => report.with_input(read),
+            None => report,
         }
     }
 
@@ -423,7 +452,11 @@ impl Serialize for ComparisonReport<'_> {
             schema_version: SCHEMA_VERSION,
             document: "comparison",
             timing_ms: self.timing.map(TimingMap),
-            results: self.results.iter().map(ComparisonEntry).collect(),
+            results: self
+                .results
+                .iter()
+                .map(|c| ComparisonEntry(c, self))
+                .collect(),
         }
         .serialize(serializer)
     }
@@ -440,12 +473,12 @@ struct ComparisonDocument<'a> {
 }
 
 /// One result of a comparison: a triangulation document, or the refusal.
-struct ComparisonEntry<'a>(&'a Comparison);
+struct ComparisonEntry<'a>(&'a Comparison, &'a ComparisonReport<'a>);
 
 impl Serialize for ComparisonEntry<'_> {
     fn serialize<S: Serializer>(&self, serializer: S) -> std::result::Result<S::Ok, S::Error> {
         match &self.0 {
-            (_, Ok(solution)) => TriangulationReport::of_solution(solution).serialize(serializer),
+            (_, Ok(solution)) => self.1.report(solution).serialize(serializer),
             (criterion, Err(e)) => ErrorDocument {
                 criterion: criterion.name(),
                 error: e.to_string(),
