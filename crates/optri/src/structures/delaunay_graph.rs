@@ -256,7 +256,11 @@ fn fan_cocircular_faces(points: &[Point], triangles: &mut [[u32; 3]], neighbours
             continue;
         };
         let (ti, ui) = (t as usize, u as usize);
-        let [a, b, c] = [triangles[ti][j], triangles[ti][(j + 1) % 3], triangles[ti][(j + 2) % 3]];
+        let [a, b, c] = [
+            triangles[ti][j],
+            triangles[ti][(j + 1) % 3],
+            triangles[ti][(j + 2) % 3],
+        ];
         let d = triangles[ui][(k + 2) % 3];
         let (n_bc, n_ca) = (neighbours[ti][(j + 1) % 3], neighbours[ti][(j + 2) % 3]);
         let (n_ad, n_db) = (neighbours[ui][(k + 1) % 3], neighbours[ui][(k + 2) % 3]);
@@ -302,7 +306,13 @@ fn canonical_order(triangles: &mut Vec<[u32; 3]>, neighbours: &mut Vec<[u32; 3]>
     for (new, &old) in order.iter().enumerate() {
         rank[old as usize] = new as u32;
     }
-    let relabel = |n: u32| if n == NO_TRIANGLE { n } else { rank[n as usize] };
+    let relabel = |n: u32| {
+        if n == NO_TRIANGLE {
+            n
+        } else {
+            rank[n as usize]
+        }
+    };
     let mut new_triangles = Vec::with_capacity(triangles.len());
     let mut new_neighbours = Vec::with_capacity(triangles.len());
     for &old in &order {
