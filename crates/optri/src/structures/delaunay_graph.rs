@@ -220,9 +220,8 @@ fn spade_triangles(points: &[Point]) -> Result<(Vec<[u32; 3]>, Vec<[u32; 3]>)> {
 fn fan_cocircular_faces(points: &[Point], triangles: &mut [[u32; 3]], neighbours: &mut [[u32; 3]]) {
     let p = |v: u32| points[v as usize];
     let mut stack: Vec<(u32, u8)> = Vec::new();
-    for t in 0..triangles.len() {
-        for j in 0..3 {
-            let u = neighbours[t][j];
+    for (t, across) in neighbours.iter().enumerate() {
+        for (j, &u) in across.iter().enumerate() {
             if u != NO_TRIANGLE && (t as u32) < u {
                 stack.push((t as u32, j as u8));
             }
