@@ -29,7 +29,7 @@ const SCALES: &[i32] = &[-130, -60, -30, -1, 1, 40, 120, 190];
 
 /// Cases per input family in the default run, and in the ignored sweep.
 const CASES: u32 = 12;
-const HEAVY_CASES: u32 = 400;
+const HEAVY_CASES: u32 = 2000;
 
 /// What a run of one criterion gives: sorted triangles (each sorted), or
 /// the error's variant.
