@@ -15,7 +15,6 @@
 
 use crate::error::{Error, Result};
 use crate::kernel::{incircle_sign, Point};
-use crate::parallel::prelude::*;
 use spade::{DelaunayTriangulation, HasPosition, Point2, Triangulation as _};
 
 struct Vertex {
@@ -294,13 +293,39 @@ fn canonical_order(triangles: &mut Vec<[u32; 3]>, neighbours: &mut Vec<[u32; 3]>
             2
         }
     };
-    let mut order: Vec<u32> = (0..triangles.len() as u32).collect();
+    // A counting sort by the smallest corner, then each (tiny) bucket by the
+    // other two: O(n), where a comparison sort of indices by their
+    // triangles missed the cache on every comparison (2-3x the bulk load).
+    let corners = triangles
+        .iter()
+        .flatten()
+        .max()
+        .map_or(0, |&m| m as usize + 1);
+    let mut start = vec![0u32; corners + 1];
+    for t in triangles.iter() {
+        start[t[rotation(t)] as usize + 1] += 1;
+    }
+    for v in 0..corners {
+        start[v + 1] += start[v];
+    }
+    let mut order = vec![0u32; triangles.len()];
+    {
+        let mut fill = start.clone();
+        for (i, t) in triangles.iter().enumerate() {
+            let m = t[rotation(t)] as usize;
+            order[fill[m] as usize] = i as u32;
+            fill[m] += 1;
+        }
+    }
     let key = |i: &u32| {
         let t = &triangles[*i as usize];
         let r = rotation(t);
-        [t[r], t[(r + 1) % 3], t[(r + 2) % 3]]
+        [t[(r + 1) % 3], t[(r + 2) % 3]]
     };
-    order.par_sort_unstable_by(|a, b| key(a).cmp(&key(b)));
+    for v in 0..corners {
+        order[start[v] as usize..start[v + 1] as usize].sort_unstable_by_key(key);
+    }
+    drop(start);
     let mut rank = vec![0u32; triangles.len()];
     for (new, &old) in order.iter().enumerate() {
         rank[old as usize] = new as u32;
