@@ -61,6 +61,10 @@ pub(crate) struct TriangulateArgs {
     /// document as `-o FILE.json`; see docs/json-schema.md).
     #[arg(long)]
     pub json: bool,
+    /// Check the result exactly (`Triangulation::validate`) before writing it, timed as
+    /// the phase `check`; a failure is an error.
+    #[arg(long)]
+    pub validate: bool,
     #[command(flatten)]
     pub style: StyleArgs,
 }

@@ -47,6 +47,17 @@ pub(crate) fn run(args: TriangulateArgs) -> CliResult<()> {
     })?;
     run.progress.phase("writing");
     run.timing.phases.extend(solution.phases.iter().cloned());
+    if args.validate {
+        let t0 = std::time::Instant::now();
+        solution
+            .triangulation
+            .validate()
+            .map_err(|e| format!("{}: the result failed validation: {e}", run.source))?;
+        run.timing.phases.push(optri::Phase {
+            name: "check",
+            ms: super::ms_since(t0),
+        });
+    }
     let title = run.title(&report::label(criterion, solution.exact));
     // A JSON output holds the phases timed so far (the write and the total
     // are still running).

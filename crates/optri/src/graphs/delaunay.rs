@@ -2,16 +2,19 @@
 //! O(n log n) bulk loading; chosen over delaunator, whose in-circle test is
 //! not exact — see BENCHMARKS.md).
 //!
-//! For cocircular points spade picks one Delaunay completion; every consumer
-//! in optri is correct for *any* completion (see the lemmas cited in
-//! the RNG and Gabriel modules).
+//! For cocircular points the completion is canonical: each cocircular face
+//! is fanned from its smallest distinct index (see `structures::delaunay_graph`), so
+//! the answer does not depend on how spade built it; every consumer in optri
+//! is correct for *any* completion (see the lemmas cited in the RNG and
+//! Gabriel modules).
 
 use crate::error::Result;
 use crate::structures::{DelaunayGraph, PointSet, Triangulation};
 
 /// The Delaunay triangulation of `points`.
 ///
-/// For cocircular points one Delaunay completion is returned (spade's).
+/// For cocircular points, each cocircular face is fanned from its smallest
+/// distinct index (first occurrence in the input).
 /// Runs in O(n log n) expected time.
 pub fn delaunay(points: &PointSet) -> Result<Triangulation> {
     let g = DelaunayGraph::new(points.points())?;

@@ -2,12 +2,19 @@
 //! undirected edges with their two apexes, CSR vertex adjacency and (on
 //! request) triangle adjacency. Built by the `spade` crate (exact predicates,
 //! O(n log n) bulk loading; chosen over delaunator, whose in-circle test is
-//! not exact — see BENCHMARKS.md). For cocircular points spade picks one
-//! Delaunay completion; every consumer in optri is correct for any completion.
+//! not exact — see BENCHMARKS.md). Every consumer in optri is correct for
+//! any Delaunay completion of cocircular points, but the answers must not
+//! depend on how spade happened to build it (its bulk load makes rounding-
+//! and scale-dependent choices), so the graph is made canonical: faces of
+//! four or more cocircular points are fanned from their smallest index (the
+//! regular triangulation of an infinitesimal lifting perturbation, see
+//! `fan_cocircular_faces`), triangles are numbered in sorted order and edges
+//! in the order the triangles meet them. The graph is then a function of the
+//! points and their numbering alone: the same under exact scaling by powers
+//! of two, exact translations and any thread count.
 
 use crate::error::{Error, Result};
-use crate::kernel::Point;
-use spade::handles::FixedVertexHandle;
+use crate::kernel::{incircle_sign, Point};
 use spade::{DelaunayTriangulation, HasPosition, Point2, Triangulation as _};
 
 struct Vertex {
@@ -71,6 +78,93 @@ impl DelaunayGraph {
 }
 
 fn build(points: &[Point], with_topology: bool) -> Result<DelaunayGraph> {
+    let (mut triangles, mut neighbours) = spade_triangles(points)?;
+    fan_cocircular_faces(points, &mut triangles, &mut neighbours);
+    canonical_order(&mut triangles, &mut neighbours);
+    // Edges in the order their first triangle meets them: side `j` of `t`
+    // is new unless the triangle across it comes earlier.
+    let mut edges = Vec::with_capacity(triangles.len() * 3 / 2 + 2);
+    let mut sides = vec![[0u32; 3]; if with_topology { triangles.len() } else { 0 }];
+    for (t, tri) in triangles.iter().enumerate() {
+        for j in 0..3 {
+            let across = neighbours[t][j];
+            if across != NO_TRIANGLE && (across as usize) < t {
+                continue;
+            }
+            let (u, v) = (tri[j], tri[(j + 1) % 3]);
+            let right = (across != NO_TRIANGLE).then(|| {
+                let k = side_towards(&neighbours, across, t as u32);
+                triangles[across as usize][(k + 2) % 3]
+            });
+            if with_topology {
+                sides[t][j] = edges.len() as u32;
+                if across != NO_TRIANGLE {
+                    let k = side_towards(&neighbours, across, t as u32);
+                    sides[across as usize][k] = edges.len() as u32;
+                }
+            }
+            edges.push(([u, v], [Some(tri[(j + 2) % 3]), right]));
+        }
+    }
+    let mut degree = vec![0u32; points.len() + 1];
+    for &([u, v], _) in &edges {
+        degree[u as usize] += 1;
+        degree[v as usize] += 1;
+    }
+    let mut offsets = vec![0u32; points.len() + 1];
+    for v in 0..points.len() {
+        offsets[v + 1] = offsets[v] + degree[v];
+    }
+    drop(degree);
+    let mut fill = offsets.clone();
+    let mut adjacency = vec![0u32; offsets[points.len()] as usize];
+    let mut topology = Topology::default();
+    if with_topology {
+        topology.slot_edges = vec![0u32; adjacency.len()];
+    }
+    for (i, &([u, v], _)) in edges.iter().enumerate() {
+        for (a, b) in [(u, v), (v, u)] {
+            let slot = fill[a as usize] as usize;
+            adjacency[slot] = b;
+            if with_topology {
+                topology.slot_edges[slot] = i as u32;
+            }
+            fill[a as usize] += 1;
+        }
+    }
+    drop(fill);
+    if with_topology {
+        topology.neighbours = neighbours;
+        topology.sides = sides;
+    }
+    Ok(DelaunayGraph {
+        triangles,
+        edges,
+        offsets,
+        adjacency,
+        topology,
+    })
+}
+
+/// The side of triangle `u` whose neighbour is `t`.
+#[inline]
+fn side_towards(neighbours: &[[u32; 3]], u: u32, t: u32) -> usize {
+    let n = neighbours[u as usize];
+    if n[0] == t {
+        0
+    } else if n[1] == t {
+        1
+    } else {
+        debug_assert_eq!(n[2], t, "triangles {u} and {t} are not adjacent");
+        2
+    }
+}
+
+/// spade's Delaunay triangles (counter-clockwise, distinct indices) and,
+/// per side `j` (corner `j` to corner `j + 1`), the triangle across it.
+/// spade's own structure is dropped before returning.
+#[allow(clippy::type_complexity)]
+fn spade_triangles(points: &[Point]) -> Result<(Vec<[u32; 3]>, Vec<[u32; 3]>)> {
     let vertices: Vec<Vertex> = points
         .iter()
         .enumerate()
@@ -88,69 +182,169 @@ fn build(points: &[Point], with_topology: bool) -> Result<DelaunayGraph> {
             points.len()
         )));
     }
-    let id = |h: FixedVertexHandle| dt.vertex(h).data().id;
-    let triangles: Vec<[u32; 3]> = dt
-        .inner_faces()
-        .map(|f| f.vertices().map(|v| v.data().id))
-        .collect();
-    let mut edges = Vec::with_capacity(dt.num_undirected_edges());
-    let mut degree = vec![0u32; points.len() + 1];
-    for e in dt.undirected_edges() {
-        let d = e.as_directed();
-        let (u, v) = (id(d.from().fix()), id(d.to().fix()));
-        let left = d.opposite_vertex().map(|w| w.data().id);
-        let right = d.rev().opposite_vertex().map(|w| w.data().id);
-        edges.push(([u, v], [left, right]));
-        degree[u as usize] += 1;
-        degree[v as usize] += 1;
-    }
-    let mut offsets = vec![0u32; points.len() + 1];
-    for v in 0..points.len() {
-        offsets[v + 1] = offsets[v] + degree[v];
-    }
-    let mut fill = offsets.clone();
-    let mut adjacency = vec![0u32; offsets[points.len()] as usize];
-    let mut topology = Topology::default();
-    if with_topology {
-        topology.slot_edges = vec![0u32; adjacency.len()];
-    }
-    for (i, &([u, v], _)) in edges.iter().enumerate() {
-        for (a, b) in [(u, v), (v, u)] {
-            let slot = fill[a as usize] as usize;
-            adjacency[slot] = b;
-            if with_topology {
-                topology.slot_edges[slot] = i as u32;
+    let mut triangles = Vec::with_capacity(dt.num_inner_faces());
+    let mut neighbours = Vec::with_capacity(dt.num_inner_faces());
+    // spade numbers the outer face 0 and lists inner faces in index order,
+    // so triangle `t` is face `t + 1`; a face's edge `j` leaves its vertex
+    // `j` (spade's `vertices()` is built from `adjacent_edges()`).
+    for (t, f) in dt.inner_faces().enumerate() {
+        debug_assert_eq!(f.fix().index(), t + 1);
+        triangles.push(f.vertices().map(|v| v.data().id));
+        neighbours.push(f.adjacent_edges().map(|d| {
+            let across = d.rev().face();
+            if across.is_outer() {
+                NO_TRIANGLE
+            } else {
+                across.fix().index() as u32 - 1
             }
-            fill[a as usize] += 1;
+        }));
+    }
+    Ok((triangles, neighbours))
+}
+
+/// Makes the triangulation independent of how spade built it: every face of
+/// four or more cocircular points is fanned from its smallest index.
+///
+/// This is the regular triangulation of the points lifted to the paraboloid
+/// and then lowered by `δ_m` with `δ_0 ≫ δ_1 ≫ …` infinitesimal (a lowered
+/// point is inside the circle of three others on a common circle). It is
+/// one particular Delaunay completion: a non-cocircular quadrilateral keeps
+/// its Delaunay diagonal, and in a cocircular quadrilateral `abcd` the lowest
+/// point lies below the plane of the other three, so the diagonal through
+/// `min(a, b, c, d)` is the locally regular one. Lawson's flips under this
+/// perturbed (never zero) in-circle test end in the unique regular
+/// triangulation (each flip lowers the lifted surface; locally convex means
+/// convex), and starting from a Delaunay triangulation only cocircular
+/// quadrilaterals — always convex — are ever flipped.
+fn fan_cocircular_faces(points: &[Point], triangles: &mut [[u32; 3]], neighbours: &mut [[u32; 3]]) {
+    let p = |v: u32| points[v as usize];
+    let mut stack: Vec<(u32, u8)> = Vec::new();
+    for (t, across) in neighbours.iter().enumerate() {
+        for (j, &u) in across.iter().enumerate() {
+            if u != NO_TRIANGLE && (t as u32) < u {
+                stack.push((t as u32, j as u8));
+            }
         }
     }
-    if with_topology {
-        // spade numbers the outer face 0 and lists inner faces in index
-        // order, so triangle `t` is face `t + 1`; a face's edge `j` leaves its
-        // vertex `j` (spade's `vertices()` is built from `adjacent_edges()`).
-        topology.neighbours.reserve(triangles.len());
-        topology.sides.reserve(triangles.len());
-        for (t, f) in dt.inner_faces().enumerate() {
-            debug_assert_eq!(f.fix().index(), t + 1);
-            let e = f.adjacent_edges();
-            topology.neighbours.push(e.map(|d| {
-                let across = d.rev().face();
-                if across.is_outer() {
-                    NO_TRIANGLE
-                } else {
-                    across.fix().index() as u32 - 1
-                }
-            }));
-            topology
-                .sides
-                .push(e.map(|d| d.as_undirected().fix().index() as u32));
+    // Only the sides whose in-circle test is zero (or, defensively,
+    // positive) stay on the stack; on points in general position it empties
+    // in one pass.
+    let mut pending: Vec<(u32, u8)> = Vec::new();
+    let illegal = |triangles: &[[u32; 3]], neighbours: &[[u32; 3]], t: u32, j: usize| {
+        let u = neighbours[t as usize][j];
+        if u == NO_TRIANGLE {
+            return None;
+        }
+        let tri = triangles[t as usize];
+        let (a, b, c) = (tri[j], tri[(j + 1) % 3], tri[(j + 2) % 3]);
+        let k = side_towards(neighbours, u, t);
+        let d = triangles[u as usize][(k + 2) % 3];
+        let s = incircle_sign(p(a), p(b), p(c), p(d));
+        (s > 0 || (s == 0 && c.min(d) < a.min(b))).then_some((u, k))
+    };
+    for &(t, j) in &stack {
+        if illegal(triangles, neighbours, t, j as usize).is_some() {
+            pending.push((t, j));
         }
     }
-    Ok(DelaunayGraph {
-        triangles,
-        edges,
-        offsets,
-        adjacency,
-        topology,
-    })
+    drop(stack);
+    while let Some((t, j)) = pending.pop() {
+        let j = j as usize;
+        let Some((u, k)) = illegal(triangles, neighbours, t, j) else {
+            continue;
+        };
+        let (ti, ui) = (t as usize, u as usize);
+        let [a, b, c] = [
+            triangles[ti][j],
+            triangles[ti][(j + 1) % 3],
+            triangles[ti][(j + 2) % 3],
+        ];
+        let d = triangles[ui][(k + 2) % 3];
+        let (n_bc, n_ca) = (neighbours[ti][(j + 1) % 3], neighbours[ti][(j + 2) % 3]);
+        let (n_ad, n_db) = (neighbours[ui][(k + 1) % 3], neighbours[ui][(k + 2) % 3]);
+        // t = (a, b, c) and u = (b, a, d) become t = (c, a, d), u = (d, b, c).
+        triangles[ti] = [c, a, d];
+        neighbours[ti] = [n_ca, n_ad, u];
+        triangles[ui] = [d, b, c];
+        neighbours[ui] = [n_db, n_bc, t];
+        if n_ad != NO_TRIANGLE {
+            let s = side_towards(neighbours, n_ad, u);
+            neighbours[n_ad as usize][s] = t;
+        }
+        if n_bc != NO_TRIANGLE {
+            let s = side_towards(neighbours, n_bc, t);
+            neighbours[n_bc as usize][s] = u;
+        }
+        pending.extend([(t, 0), (t, 1), (u, 0), (u, 1)]);
+    }
+}
+
+/// Numbers the triangles canonically: each rotated to start at its smallest
+/// corner, then sorted, so that the graph depends only on the triangles and
+/// never on spade's construction order (which depends on rounding: its bulk
+/// load compares projections with an absolute `f64::EPSILON`).
+fn canonical_order(triangles: &mut Vec<[u32; 3]>, neighbours: &mut Vec<[u32; 3]>) {
+    let rotation = |t: &[u32; 3]| {
+        if t[0] < t[1] && t[0] < t[2] {
+            0
+        } else if t[1] < t[2] {
+            1
+        } else {
+            2
+        }
+    };
+    // A counting sort by the smallest corner, then each (tiny) bucket by the
+    // other two: O(n), where a comparison sort of indices by their
+    // triangles missed the cache on every comparison (2-3x the bulk load).
+    let corners = triangles
+        .iter()
+        .flatten()
+        .max()
+        .map_or(0, |&m| m as usize + 1);
+    let mut start = vec![0u32; corners + 1];
+    for t in triangles.iter() {
+        start[t[rotation(t)] as usize + 1] += 1;
+    }
+    for v in 0..corners {
+        start[v + 1] += start[v];
+    }
+    let mut order = vec![0u32; triangles.len()];
+    {
+        let mut fill = start.clone();
+        for (i, t) in triangles.iter().enumerate() {
+            let m = t[rotation(t)] as usize;
+            order[fill[m] as usize] = i as u32;
+            fill[m] += 1;
+        }
+    }
+    let key = |i: &u32| {
+        let t = &triangles[*i as usize];
+        let r = rotation(t);
+        [t[(r + 1) % 3], t[(r + 2) % 3]]
+    };
+    for v in 0..corners {
+        order[start[v] as usize..start[v + 1] as usize].sort_unstable_by_key(key);
+    }
+    drop(start);
+    let mut rank = vec![0u32; triangles.len()];
+    for (new, &old) in order.iter().enumerate() {
+        rank[old as usize] = new as u32;
+    }
+    let relabel = |n: u32| {
+        if n == NO_TRIANGLE {
+            n
+        } else {
+            rank[n as usize]
+        }
+    };
+    let mut new_triangles = Vec::with_capacity(triangles.len());
+    let mut new_neighbours = Vec::with_capacity(triangles.len());
+    for &old in &order {
+        let (t, n) = (triangles[old as usize], neighbours[old as usize]);
+        let r = rotation(&t);
+        new_triangles.push([t[r], t[(r + 1) % 3], t[(r + 2) % 3]]);
+        new_neighbours.push([n[r], n[(r + 1) % 3], n[(r + 2) % 3]].map(relabel));
+    }
+    *triangles = new_triangles;
+    *neighbours = new_neighbours;
 }

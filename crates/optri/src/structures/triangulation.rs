@@ -8,7 +8,6 @@ use crate::spatial::convex_hull_cycle;
 use crate::structures::{PointSet, SimplePolygon};
 #[cfg(feature = "io")]
 use serde::Serialize;
-use std::collections::HashMap;
 
 /// The region a [`Triangulation`] covers.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -288,15 +287,40 @@ impl Triangulation {
             }
             tris.push(d);
         }
-        // Directed edge -> apex (the third vertex of its triangle).
-        let mut apex: HashMap<(u32, u32), u32> = HashMap::with_capacity(3 * tris.len());
-        for (ti, &[a, b, c]) in tris.iter().enumerate() {
-            for (u, v, w) in [(a, b, c), (b, c, a), (c, a, b)] {
-                if apex.insert((u, v), w).is_some() {
-                    return bad(format!(
-                        "directed edge ({u}, {v}) is used by two triangles (at triangle {ti})"
-                    ));
+        // Fans as one CSR array (no hash map: 10⁷ points must validate in a
+        // few hundred MB): at v, one entry (a, b) per triangle (v, a, b),
+        // sorted, so directed edge v → a exists iff some entry at v starts
+        // with a (binary search).
+        let mut offsets = vec![0u32; n + 1];
+        for t in &tris {
+            for &c in t {
+                offsets[c as usize + 1] += 1;
+            }
+        }
+        for v in 0..n {
+            offsets[v + 1] += offsets[v];
+        }
+        let mut fans = vec![(0u32, 0u32); 3 * tris.len()];
+        {
+            let mut fill: Vec<u32> = offsets[..n].to_vec();
+            for &[a, b, c] in &tris {
+                for (v, x, y) in [(a, b, c), (b, c, a), (c, a, b)] {
+                    fans[fill[v as usize] as usize] = (x, y);
+                    fill[v as usize] += 1;
                 }
+            }
+        }
+        for v in 0..n {
+            fans[offsets[v] as usize..offsets[v + 1] as usize].sort_unstable();
+        }
+        let fan = |v: u32| &fans[offsets[v as usize] as usize..offsets[v as usize + 1] as usize];
+        let has_edge = |u: u32, v: u32| fan(u).binary_search_by(|&(a, _)| a.cmp(&v)).is_ok();
+        for v in 0..n as u32 {
+            if let Some(w) = fan(v).windows(2).find(|w| w[0].0 == w[1].0) {
+                return bad(format!(
+                    "directed edge ({v}, {}) is used by two triangles",
+                    w[0].0
+                ));
             }
         }
         let hull = match &self.domain {
@@ -307,14 +331,12 @@ impl Triangulation {
         };
         let h = hull.len();
         let mut boundary = 0usize;
-        for &(u, v) in apex.keys() {
-            if !apex.contains_key(&(v, u)) {
-                boundary += 1;
-            }
+        for u in 0..n as u32 {
+            boundary += fan(u).iter().filter(|&&(v, _)| !has_edge(v, u)).count();
         }
         for i in 0..h {
             let (u, v) = (hull[i], hull[(i + 1) % h]);
-            if !apex.contains_key(&(u, v)) || apex.contains_key(&(v, u)) {
+            if !has_edge(u, v) || has_edge(v, u) {
                 return bad(format!(
                     "boundary edge ({}, {}) of the domain is not a boundary edge of the triangles",
                     ps.input_index(u),
@@ -328,28 +350,32 @@ impl Triangulation {
             ));
         }
         // Fans: at v, each triangle (v, a, b) turns from a to b.
-        let mut turn: Vec<Vec<(u32, u32)>> = vec![Vec::new(); n];
-        for &[a, b, c] in &tris {
-            turn[a as usize].push((b, c));
-            turn[b as usize].push((c, a));
-            turn[c as usize].push((a, b));
-        }
         let mut on_hull = vec![false; n];
         for &v in &hull {
             on_hull[v as usize] = true;
         }
         for v in 0..n {
-            let fan = &turn[v];
+            let fan = fan(v as u32);
             if fan.is_empty() {
                 return bad(format!(
                     "point {} is not a vertex of any triangle",
                     ps.input_index(v as u32)
                 ));
             }
-            let next: HashMap<u32, u32> = fan.iter().copied().collect();
-            let has_pred: std::collections::HashSet<u32> = fan.iter().map(|&(_, b)| b).collect();
+            // Entries are sorted by their first vertex and unique there.
+            let next = |a: u32| {
+                fan.binary_search_by(|&(x, _)| x.cmp(&a))
+                    .ok()
+                    .map(|k| fan[k].1)
+            };
             let start = if on_hull[v] {
-                match fan.iter().find(|&&(a, _)| !has_pred.contains(&a)) {
+                // The fan's first triangle: its `a` is no triangle's `b`.
+                let mut seconds: Vec<u32> = fan.iter().map(|&(_, b)| b).collect();
+                seconds.sort_unstable();
+                match fan
+                    .iter()
+                    .find(|&&(a, _)| seconds.binary_search(&a).is_err())
+                {
                     Some(&(a, _)) => a,
                     None => {
                         return bad(format!(
@@ -373,7 +399,7 @@ impl Triangulation {
                 }
             };
             let (mut cur, mut steps, mut wraps) = (start, 0usize, 0usize);
-            while let Some(&nx) = next.get(&cur) {
+            while let Some(nx) = next(cur) {
                 if half(cur) == 1 && half(nx) == 0 {
                     wraps += 1;
                 }

@@ -1,0 +1,188 @@
+//! The properties the fuzz targets check, shared with the normal test suite
+//! (`crates/optri/tests/fuzz_regressions.rs` replays the committed corpus
+//! and every crash found through the same functions).
+//!
+//! * [`check_readers`]: every input format (`optri::io::read_input` and,
+//!   for the polygon formats, `read_polygon`) on arbitrary bytes returns
+//!   `Ok` or an error and never panics; an `Ok` result that validates as a
+//!   point set or polygon triangulates (Delaunay, or the polygon's
+//!   constrained Delaunay) to something `validate()` accepts.
+//! * [`check_criteria`]: up to 12 points decoded from the bytes (small
+//!   integers, or arbitrary `f64` bit patterns): every criterion and graph
+//!   returns `Ok` or an error, every `Ok` triangulation validates, and for
+//!   at most 7 distinct points each exact criterion's answer is optimal
+//!   against `optri-oracle`'s exhaustive enumeration.
+
+use optri::io::{read_input, read_polygon, Input, InputFormat};
+use optri::{
+    graph, triangulate, triangulate_polygon, Criterion, GraphKind, PointSet, SimplePolygon,
+};
+use optri_oracle as oracle;
+use std::cmp::Reverse;
+
+/// Points with more than this many vertices are only read, not solved (keeps
+/// each fuzz execution short).
+const SOLVE_AT_MOST: usize = 64;
+
+/// Largest distinct-point count checked against the exhaustive oracle.
+pub const ORACLE_AT_MOST: usize = 7;
+
+pub fn check_readers(data: &[u8]) {
+    let Ok(text) = std::str::from_utf8(data) else {
+        return;
+    };
+    for &format in InputFormat::ALL {
+        match read_input(text, format) {
+            Ok(Input::Points(points)) => {
+                assert!(!points.is_empty(), "{format:?}: Ok with no points");
+                if points.len() <= SOLVE_AT_MOST {
+                    if let Ok(set) = PointSet::new(&points) {
+                        let s = triangulate(&set, Criterion::Delaunay)
+                            .unwrap_or_else(|e| panic!("{format:?}: Delaunay failed: {e}"));
+                        s.triangulation.validate().unwrap_or_else(|e| {
+                            panic!("{format:?}: invalid Delaunay of {points:?}: {e}")
+                        });
+                    }
+                }
+            }
+            Ok(Input::Polygon(ring)) => {
+                assert!(!ring.is_empty(), "{format:?}: Ok with an empty ring");
+                if ring.len() <= SOLVE_AT_MOST {
+                    if let Ok(polygon) = SimplePolygon::new(&ring) {
+                        let s = triangulate_polygon(&polygon, Criterion::Delaunay)
+                            .unwrap_or_else(|e| panic!("{format:?}: polygon failed: {e}"));
+                        s.triangulation.validate().unwrap_or_else(|e| {
+                            panic!("{format:?}: invalid triangulation of {ring:?}: {e}")
+                        });
+                    }
+                }
+            }
+            Err(e) => {
+                let _ = e.to_string();
+            }
+        }
+        if matches!(format, InputFormat::Poly | InputFormat::GeoJson) {
+            let _ = read_polygon(text, format).map(|ring| assert!(!ring.is_empty()));
+        }
+    }
+}
+
+/// Up to 12 points from the bytes: the first byte picks small integers
+/// (one byte per coordinate, in -8..8) or raw `f64` bit patterns (eight
+/// bytes per coordinate, anything including NaN and huge values).
+pub fn decode_points(data: &[u8]) -> Vec<[f64; 2]> {
+    let Some((&mode, rest)) = data.split_first() else {
+        return Vec::new();
+    };
+    if mode % 2 == 0 {
+        rest.chunks_exact(2)
+            .take(12)
+            .map(|c| [((c[0] % 16) as f64) - 8.0, ((c[1] % 16) as f64) - 8.0])
+            .collect()
+    } else {
+        rest.chunks_exact(16)
+            .take(12)
+            .map(|c| {
+                let f = |b: &[u8]| f64::from_bits(u64::from_le_bytes(b.try_into().unwrap()));
+                [f(&c[..8]), f(&c[8..])]
+            })
+            .collect()
+    }
+}
+
+pub fn check_criteria(data: &[u8]) {
+    let points = decode_points(data);
+    let Ok(set) = PointSet::new(&points) else {
+        return;
+    };
+    let distinct = set.points().to_vec();
+    let small = distinct.len() <= ORACLE_AT_MOST;
+    let all = if small {
+        oracle::all_triangulations(&distinct)
+    } else {
+        Vec::new()
+    };
+    for &criterion in Criterion::ALL {
+        let Ok(solution) = triangulate(&set, criterion) else {
+            continue;
+        };
+        solution
+            .triangulation
+            .validate()
+            .unwrap_or_else(|e| panic!("{criterion:?}: invalid on {points:?}: {e}"));
+        if !small {
+            continue;
+        }
+        let tris: Vec<[u32; 3]> = solution
+            .triangulation
+            .triangles()
+            .iter()
+            .map(|t| t.map(|i| set.distinct_index(i)))
+            .collect();
+        check_optimal(criterion, solution.exact, &distinct, &tris, &all);
+    }
+    for &kind in GraphKind::ALL {
+        let _ = graph(&set, kind);
+    }
+}
+
+fn check_optimal(
+    criterion: Criterion,
+    exact: bool,
+    points: &[[f64; 2]],
+    tris: &[[u32; 3]],
+    all: &[Vec<[u32; 3]>],
+) {
+    let fail = |what: &str| panic!("{criterion:?} on {points:?}: {what}: {tris:?}");
+    match criterion {
+        Criterion::Delaunay => {
+            if let Err(e) = oracle::delaunay_check(points, tris) {
+                fail(&e);
+            }
+        }
+        Criterion::MinmaxLength => {
+            let best = all
+                .iter()
+                .map(|t| oracle::max_edge_squared(points, t))
+                .min();
+            if Some(oracle::max_edge_squared(points, tris)) != best {
+                fail("longest edge not minimal");
+            }
+        }
+        Criterion::Greedy => {
+            let want =
+                oracle::canonical_triangulation(points, &oracle::greedy_triangulation(points));
+            if oracle::canonical_triangulation(points, tris) != want {
+                fail("not the greedy triangulation");
+            }
+        }
+        Criterion::MinWeight => {
+            // Sums of rounded lengths (the criterion says `exact: false`):
+            // optimal up to rounding.
+            let best = all
+                .iter()
+                .map(|t| oracle::total_length(points, t))
+                .fold(f64::INFINITY, f64::min);
+            let got = oracle::total_length(points, tris);
+            if got > best * (1.0 + 1e-12) {
+                fail("total length not minimal");
+            }
+        }
+        Criterion::MaxminArea if exact => {
+            let best = all
+                .iter()
+                .map(|t| Reverse(oracle::min_twice_area(points, t)))
+                .min();
+            if Some(Reverse(oracle::min_twice_area(points, tris))) != best {
+                fail("smallest area not maximal");
+            }
+        }
+        Criterion::MinmaxArea if exact => {
+            let best = all.iter().map(|t| oracle::max_twice_area(points, t)).min();
+            if Some(oracle::max_twice_area(points, tris)) != best {
+                fail("largest area not minimal");
+            }
+        }
+        _ => {}
+    }
+}
