@@ -1,0 +1,210 @@
+//! Minimum-weight triangulation of general point sets (diamond filter,
+//! LMT-skeleton, faces) against independent references:
+//!
+//! - the exhaustive oracle ([`optri_oracle::all_triangulations`]) for n ≤ 9
+//!   on random, clustered, integer-lattice, cocircular and collinear-run sets,
+//!   and for the odd wheels (regular k-gons with their centre, k = 5…11,
+//!   up to 12 points), which defeat the LMT-skeleton;
+//! - the oracle's Klincsek program on convex sets of 40–60 points run
+//!   through the *general* pipeline (not the convex program);
+//! - Delaunay and greedy of the same input: never lighter than the result.
+//!
+//! Weights from the oracle are sums of rounded lengths, so they are compared
+//! with a relative tolerance of 10⁻¹² (see tests/min_weight.rs).
+
+use optri::internals::min_weight_pipeline;
+use optri::kernel::Point;
+use optri::{triangulate, Criterion, PointSet};
+use optri_oracle::inputs::{clustered, collinear_runs, lattice_points, uniform_in_square};
+use optri_oracle::{klincsek, optimum_by, total_length, MinWeight, TotalF64};
+use rand::rngs::StdRng;
+use rand::{Rng, SeedableRng};
+
+const TOLERANCE: f64 = 1e-12;
+
+fn weight(ps: &PointSet, t: &optri::Triangulation) -> f64 {
+    let tris: Vec<[u32; 3]> = t
+        .triangles()
+        .iter()
+        .map(|tri| tri.map(|i| ps.distinct_index(i)))
+        .collect();
+    total_length(ps.points(), &tris)
+}
+
+fn close(a: f64, b: f64) -> bool {
+    (a - b).abs() <= TOLERANCE * a.abs().max(b.abs())
+}
+
+/// Runs the pipeline and the registry on `pts`, checks validity, exactness
+/// and the weight against `expected` (if given), Delaunay and greedy.
+fn check(pts: &[Point], expected: Option<f64>, what: &str) -> optri::Diagnostics {
+    let Ok(ps) = PointSet::new(pts) else {
+        return optri::Diagnostics::default();
+    };
+    let (t, exact, diagnostics, lower) = min_weight_pipeline(&ps).unwrap();
+    t.validate().unwrap();
+    assert_eq!(t.triangles().len(), t.triangles().len());
+    let w = weight(&ps, &t);
+    assert!(
+        lower <= w * (1.0 + TOLERANCE),
+        "{what}: lower bound {lower} above {w}"
+    );
+    if let Some(best) = expected {
+        assert!(exact, "{what}: not proven exact ({diagnostics:?})");
+        assert!(close(w, best), "{what}: weight {w}, optimum {best}");
+    }
+    for other in [Criterion::Delaunay, Criterion::Greedy] {
+        let o = triangulate(&ps, other).unwrap();
+        let wo = weight(&ps, &o.triangulation);
+        assert!(
+            w <= wo * (1.0 + TOLERANCE),
+            "{what}: heavier than {other:?}: {w} > {wo}"
+        );
+    }
+    let s = triangulate(&ps, Criterion::MinWeight).unwrap();
+    s.triangulation.validate().unwrap();
+    assert!(
+        close(weight(&ps, &s.triangulation), w) || !exact,
+        "{what}: registry differs"
+    );
+    if exact {
+        assert!(s.exact);
+    }
+    diagnostics
+}
+
+fn exhaustive(pts: &[Point]) -> Option<f64> {
+    let ps = PointSet::new(pts).ok()?;
+    let (best, _) = optimum_by(ps.points(), |t| TotalF64(total_length(ps.points(), t)));
+    Some(best.0)
+}
+
+#[test]
+fn equals_the_exhaustive_optimum_on_small_sets() {
+    let mut rng = StdRng::seed_from_u64(1201);
+    for case in 0..400 {
+        let n = rng.gen_range(3..=9);
+        let pts: Vec<Point> = match case % 5 {
+            0 => uniform_in_square(&mut rng, n, 100.0),
+            1 => clustered(&mut rng, n, 2),
+            2 => lattice_points(&mut rng, n, 0..4, 0..4),
+            3 => collinear_runs(&mut rng, 1..3, 2..5, 0..3),
+            _ => {
+                // Cocircular: integer points of x² + y² = 25 and 65, a few of them.
+                let mut c =
+                    optri_oracle::inputs::integer_circle_points(if case % 2 == 0 { 5 } else { 65 });
+                let keep = rng.gen_range(3..=c.len().min(9));
+                while c.len() > keep {
+                    let i = rng.gen_range(0..c.len());
+                    c.remove(i);
+                }
+                if rng.gen_bool(0.5) {
+                    c.push([0.0, 0.0]);
+                }
+                c
+            }
+        };
+        let Some(best) = exhaustive(&pts) else {
+            continue;
+        };
+        check(&pts, Some(best), &format!("case {case}: {pts:?}"));
+    }
+}
+
+/// A regular k-gon of radius r around the origin, with its centre.
+fn wheel(k: usize, r: f64, centre: bool) -> Vec<Point> {
+    let mut pts: Vec<Point> = (0..k)
+        .map(|i| {
+            let a = std::f64::consts::TAU * i as f64 / k as f64;
+            [r * a.cos(), r * a.sin()]
+        })
+        .collect();
+    if centre {
+        pts.push([0.0, 0.0]);
+    }
+    pts
+}
+
+#[test]
+fn odd_wheels_equal_the_exhaustive_optimum() {
+    for k in [5, 6, 7, 8, 9, 10, 11] {
+        for r in [1.0, 1000.0, 12345.678] {
+            let pts = wheel(k, r, true);
+            let best = exhaustive(&pts).unwrap();
+            let d = check(&pts, Some(best), &format!("wheel {k}, r = {r}"));
+            assert_eq!(d.get("exact"), Some(1));
+        }
+    }
+}
+
+#[test]
+fn convex_sets_through_the_pipeline_equal_klincsek() {
+    let mut rng = StdRng::seed_from_u64(1202);
+    for n in [40, 50, 60] {
+        for _ in 0..3 {
+            let pts = optri_oracle::inputs::convex_by_construction(
+                &mut rng,
+                n,
+                optri_oracle::inputs::ConvexShape::Lens,
+                false,
+            );
+            let ps = PointSet::new(&pts).unwrap();
+            let edges = optri_oracle::convex_hull_edges(ps.points());
+            if edges.len() != ps.len() {
+                continue;
+            }
+            let polygon = ccw_hull(ps.points(), &edges);
+            let (best, _) = klincsek(ps.points(), &polygon, MinWeight).unwrap();
+            // The oracle charges every edge, the hull included.
+            check(ps.points(), Some(best.0), &format!("convex n = {n}"));
+        }
+    }
+}
+
+fn ccw_hull(points: &[Point], edges: &[[u32; 2]]) -> Vec<u32> {
+    let mut next = vec![Vec::new(); points.len()];
+    for &[a, b] in edges {
+        next[a as usize].push(b);
+        next[b as usize].push(a);
+    }
+    let mut cycle = vec![0u32];
+    let mut prev = u32::MAX;
+    loop {
+        let cur = *cycle.last().unwrap();
+        let nb = next[cur as usize]
+            .iter()
+            .copied()
+            .find(|&v| v != prev)
+            .unwrap();
+        if nb == 0 {
+            break;
+        }
+        prev = cur;
+        cycle.push(nb);
+    }
+    let k = cycle.len();
+    let p = |i: usize| points[cycle[i % k] as usize];
+    let turn = (0..k)
+        .map(|i| optri_oracle::orient(p(i), p(i + 1), p(i + 2)))
+        .find(|&o| o != 0)
+        .unwrap();
+    if turn < 0 {
+        cycle.reverse();
+    }
+    cycle
+}
+
+#[test]
+fn larger_sets_are_valid_and_never_heavier_than_delaunay_or_greedy() {
+    let mut rng = StdRng::seed_from_u64(1203);
+    for case in 0..30 {
+        let n = rng.gen_range(20..=200);
+        let pts: Vec<Point> = match case % 4 {
+            0 => uniform_in_square(&mut rng, n, 1000.0),
+            1 => clustered(&mut rng, n, 4),
+            2 => lattice_points(&mut rng, n, 0..12, 0..12),
+            _ => collinear_runs(&mut rng, 2..6, 3..9, 5..20),
+        };
+        check(&pts, None, &format!("case {case}"));
+    }
+}
