@@ -208,3 +208,49 @@ fn larger_sets_are_valid_and_never_heavier_than_delaunay_or_greedy() {
         check(&pts, None, &format!("case {case}"));
     }
 }
+
+/// Every TSPLIB file of at most `limit` points: solved, certified exact,
+/// never heavier than Delaunay or greedy.
+fn tsplib_files_are_certified(limit: usize) {
+    let dir = optri_oracle::data_dir().join("tsplib");
+    let mut files: Vec<_> = std::fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|e| e == "tsp"))
+        .collect();
+    files.sort();
+    let mut checked = 0;
+    for path in files {
+        let pts = optri::io::read_points_file(&path, None).unwrap();
+        if pts.len() > limit {
+            continue;
+        }
+        let ps = PointSet::new(&pts).unwrap();
+        let s = triangulate(&ps, Criterion::MinWeight).unwrap();
+        s.triangulation.validate().unwrap();
+        assert!(s.exact, "{}: {:?}", path.display(), s.diagnostics);
+        let w = weight(&ps, &s.triangulation);
+        for other in [Criterion::Delaunay, Criterion::Greedy] {
+            let o = triangulate(&ps, other).unwrap();
+            let wo = weight(&ps, &o.triangulation);
+            assert!(
+                w <= wo * (1.0 + TOLERANCE),
+                "{}: heavier than {other:?}",
+                path.display()
+            );
+        }
+        checked += 1;
+    }
+    assert!(checked > 0);
+}
+
+#[test]
+fn small_tsplib_files_are_certified() {
+    tsplib_files_are_certified(600);
+}
+
+#[test]
+#[ignore = "slow: all 14 TSPLIB files (up to 4461 points), about a minute"]
+fn all_tsplib_files_are_certified() {
+    tsplib_files_are_certified(usize::MAX);
+}

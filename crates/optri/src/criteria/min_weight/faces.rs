@@ -375,6 +375,9 @@ fn lower_bound(
 /// point), over the candidate diagonals inside it.
 fn solve_polygon(pts: &[Point], sk: &Skeleton, cycle: &[u32]) -> Option<Vec<[u32; 3]>> {
     let k = cycle.len();
+    if k > super::MAX_POINTS {
+        return None; // O(k²) tables: the region keeps its fallback
+    }
     let corner = |i: usize| Corner {
         prev: cycle[(i + k - 1) % k],
         v: cycle[i],

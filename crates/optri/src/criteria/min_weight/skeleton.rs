@@ -474,6 +474,9 @@ pub(crate) fn lmt_skeleton(
     skeleton.triangles = triangles;
     skeleton.tri_offsets = tri_offsets;
     skeleton.tri_list = tri_list;
+    // The loop needs no crossings; certainty does, among the survivors only
+    // (far fewer and shorter than the filter's candidates).
+    run_lmt_loop(pts, &mut skeleton);
     // Crossings: edges in length classes of powers of two, each class in a
     // grid of its midpoints; an edge of class k (length < 2^(k+1)·base)
     // meeting segment e has its midpoint within 2^k·base of e.
@@ -481,17 +484,24 @@ pub(crate) fn lmt_skeleton(
         let (a, b) = (pts[e[0] as usize], pts[e[1] as usize]);
         (a[0] - b[0]).hypot(a[1] - b[1])
     };
-    let base = skeleton
-        .edges
+    let alive_ids: Vec<u32> = (0..m as u32)
+        .filter(|&e| skeleton.alive[e as usize])
+        .collect();
+    let base = alive_ids
         .iter()
-        .map(length)
+        .map(|&e| length(&skeleton.edges[e as usize]))
         .fold(f64::INFINITY, f64::min)
         .max(f64::MIN_POSITIVE);
     let class_of = |e: &[u32; 2]| ((length(e) / base).log2().floor().max(0.0)) as usize;
-    let classes = skeleton.edges.iter().map(class_of).max().unwrap_or(0) + 1;
+    let classes = alive_ids
+        .iter()
+        .map(|&e| class_of(&skeleton.edges[e as usize]))
+        .max()
+        .unwrap_or(0)
+        + 1;
     let mut members: Vec<Vec<u32>> = vec![Vec::new(); classes];
-    for (id, e) in skeleton.edges.iter().enumerate() {
-        members[class_of(e)].push(id as u32);
+    for &id in &alive_ids {
+        members[class_of(&skeleton.edges[id as usize])].push(id);
     }
     let mid = |id: u32| {
         let e = skeleton.edges[id as usize];
@@ -523,6 +533,9 @@ pub(crate) fn lmt_skeleton(
         .into_par_iter()
         .with_min_len(256)
         .map(|e| {
+            if !sk.alive[e as usize] {
+                return Vec::new();
+            }
             let ends = sk.edges[e as usize];
             let (a, b) = (pts[ends[0] as usize], pts[ends[1] as usize]);
             let mut out = Vec::new();
@@ -549,7 +562,10 @@ pub(crate) fn lmt_skeleton(
     }
     skeleton.cross_offsets = cross_offsets;
     skeleton.cross_list = cross_list;
-    run_lmt_loop(pts, &mut skeleton);
+    for e in 0..m {
+        skeleton.certain[e] =
+            skeleton.alive[e] && (skeleton.hull[e] || skeleton.crossing(e as u32).is_empty());
+    }
     skeleton
 }
 
@@ -584,7 +600,6 @@ fn locally_minimal(pts: &[Point], sk: &Skeleton, e: u32) -> bool {
 
 fn run_lmt_loop(pts: &[Point], sk: &mut Skeleton) {
     let m = sk.edges.len();
-    let mut crossing_alive: Vec<u32> = (0..m as u32).map(|e| sk.crossing(e).len() as u32).collect();
     let mut queued = vec![true; m];
     let mut work: Vec<u32> = (0..m as u32).rev().collect();
     while let Some(e) = work.pop() {
@@ -608,12 +623,5 @@ fn run_lmt_loop(pts: &[Point], sk: &mut Skeleton) {
                 work.push(f);
             }
         }
-        let crossers: Vec<u32> = sk.crossing(e).to_vec();
-        for f in crossers {
-            crossing_alive[f as usize] -= 1;
-        }
-    }
-    for e in 0..m {
-        sk.certain[e] = sk.alive[e] && (sk.hull[e] || crossing_alive[e] == 0);
     }
 }
