@@ -242,7 +242,7 @@ pub(crate) fn general_min_weight(points: &PointSet, phases: &mut Vec<Phase>) -> 
     let mut algorithm = "diamond filter, LMT-skeleton, Klincsek program on simple faces, exact front search on the others".to_string();
     let lower_bound;
     if exact {
-        lower_bound = LengthInterval::ZERO.lo; // filled below from the result
+        lower_bound = 0.0; // replaced below by the result's weight
     } else {
         // Keep the lightest of the result, Delaunay and greedy (exactly).
         let mut best = triangulation
@@ -285,6 +285,10 @@ pub(crate) fn general_min_weight(points: &PointSet, phases: &mut Vec<Phase>) -> 
             }
         }
         lower_bound = certain_weight.add(solved_weight).add(lower).lo;
+        algorithm = format!(
+            "{algorithm}; certified lower bound on the optimal weight: {lower_bound} \
+             (certain edges, solved faces, the shortest candidates of unsolved faces)"
+        );
     }
     watch.lap("assemble");
     diagnostics.add("exact", exact as u64);
