@@ -77,7 +77,7 @@ impl LengthInterval {
     /// The enclosure of the sum: rounding to nearest is within half an ulp,
     /// so one ulp outwards on each side is a certified bound.
     #[inline]
-    pub fn add(self, other: Self) -> Self {
+    pub fn plus(self, other: Self) -> Self {
         LengthInterval {
             lo: (self.lo + other.lo).next_down(),
             hi: (self.hi + other.hi).next_up(),
@@ -109,7 +109,7 @@ impl LengthInterval {
 pub fn compare_length_sums(a: &[[Point; 2]], b: &[[Point; 2]]) -> Ordering {
     let sum = |s: &[[Point; 2]]| {
         s.iter().fold(LengthInterval::ZERO, |acc, &[p, q]| {
-            acc.add(LengthInterval::of_segment(p, q))
+            acc.plus(LengthInterval::of_segment(p, q))
         })
     };
     if let Some(o) = sum(a).certainly_compare(sum(b)) {
@@ -187,7 +187,7 @@ pub(crate) fn compare_signed_root_sum(terms: &mut [(BigUint, i32)]) -> Ordering 
     loop {
         let (mut lo, mut hi) = (BigInt::zero(), BigInt::zero());
         for (r, c) in &classes {
-            let numerator: BigUint = c.magnitude() * c.magnitude() << (2 * p);
+            let numerator: BigUint = (c.magnitude() * c.magnitude()) << (2 * p);
             let q_floor = &numerator / r;
             let q_ceil = if (&q_floor * r) == numerator {
                 q_floor.clone()
@@ -303,7 +303,7 @@ mod tests {
         assert_eq!(both(&a, &b), Ordering::Less);
         let sum = |v: &[[Point; 2]]| {
             v.iter().fold(LengthInterval::ZERO, |x, &[p, q]| {
-                x.add(LengthInterval::of_segment(p, q))
+                x.plus(LengthInterval::of_segment(p, q))
             })
         };
         assert_eq!(sum(&a).certainly_compare(sum(&b)), None);

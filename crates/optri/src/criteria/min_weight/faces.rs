@@ -131,8 +131,10 @@ fn regions(pts: &[Point], sk: &Skeleton) -> crate::error::Result<Vec<Region>> {
                 if is_boundary(d.fix()) {
                     boundary.push(d.fix());
                 } else if let Some(h) = d.rev().face().as_inner() {
-                    if !region_of.contains_key(&h.fix()) {
-                        region_of.insert(h.fix(), r);
+                    if let std::collections::hash_map::Entry::Vacant(slot) =
+                        region_of.entry(h.fix())
+                    {
+                        slot.insert(r);
                         stack.push(h.fix());
                     }
                 }
@@ -366,7 +368,7 @@ fn lower_bound(
         .iter()
         .take(needed)
         .fold(LengthInterval::ZERO, |s, &l| {
-            s.add(LengthInterval { lo: l, hi: l })
+            s.plus(LengthInterval { lo: l, hi: l })
         })
         .lo
 }
@@ -671,7 +673,7 @@ impl SearchState<'_> {
             if let Some(sub) = sub {
                 let mut value = sub.value;
                 for &e in &new_edges {
-                    value = value.add(self.length(e));
+                    value = value.plus(self.length(e));
                 }
                 let mut edges = sub.edges;
                 edges.extend_from_slice(&new_edges);

@@ -125,7 +125,7 @@ impl<P: Fn(usize) -> Point> Objective for TotalLength<'_, P> {
         None
     }
     fn combine(&self, a: LengthInterval, b: LengthInterval) -> LengthInterval {
-        a.add(b)
+        a.plus(b)
     }
     fn better(&self, a: LengthInterval, b: LengthInterval) -> bool {
         a.certainly_compare(b) == Some(Ordering::Less)
@@ -216,7 +216,7 @@ pub(crate) fn general_min_weight(points: &PointSet, phases: &mut Vec<Phase>) -> 
             Method::Fallback => {
                 unsolved += 1;
                 exact = false;
-                lower = lower.add(LengthInterval {
+                lower = lower.plus(LengthInterval {
                     lo: r.lower,
                     hi: r.lower,
                 });
@@ -271,7 +271,7 @@ pub(crate) fn general_min_weight(points: &PointSet, phases: &mut Vec<Phase>) -> 
         let mut solved_weight = LengthInterval::ZERO;
         for r in regions.iter().filter(|r| r.method != Method::Fallback) {
             for e in region_inner_edges(&r.triangles, &sk) {
-                solved_weight = solved_weight.add(LengthInterval::of_segment(
+                solved_weight = solved_weight.plus(LengthInterval::of_segment(
                     pts[e[0] as usize],
                     pts[e[1] as usize],
                 ));
@@ -281,10 +281,10 @@ pub(crate) fn general_min_weight(points: &PointSet, phases: &mut Vec<Phase>) -> 
         for (e, &[u, v]) in sk.edges.iter().enumerate() {
             if sk.certain[e] {
                 certain_weight = certain_weight
-                    .add(LengthInterval::of_segment(pts[u as usize], pts[v as usize]));
+                    .plus(LengthInterval::of_segment(pts[u as usize], pts[v as usize]));
             }
         }
-        lower_bound = certain_weight.add(solved_weight).add(lower).lo;
+        lower_bound = certain_weight.plus(solved_weight).plus(lower).lo;
         algorithm = format!(
             "{algorithm}; certified lower bound on the optimal weight: {lower_bound} \
              (certain edges, solved faces, the shortest candidates of unsolved faces)"
@@ -301,7 +301,7 @@ pub(crate) fn general_min_weight(points: &PointSet, phases: &mut Vec<Phase>) -> 
                     points.input_points()[e[0] as usize],
                     points.input_points()[e[1] as usize],
                 );
-                s.add(LengthInterval::of_segment(a, b))
+                s.plus(LengthInterval::of_segment(a, b))
             })
             .lo
     } else {
