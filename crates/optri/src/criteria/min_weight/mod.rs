@@ -148,6 +148,7 @@ pub(crate) struct General {
     pub solved: Solved,
     /// A certified lower bound on the optimal weight (equal to the result's
     /// weight, up to rounding, when exact).
+    #[cfg_attr(not(feature = "internals"), allow(dead_code))] // read by the test hooks
     pub lower_bound: f64,
 }
 
