@@ -254,3 +254,89 @@ fn small_tsplib_files_are_certified() {
 fn all_tsplib_files_are_certified() {
     tsplib_files_are_certified(usize::MAX);
 }
+
+/// An independent reference for a convex k-gon with one point `c` inside
+/// (the wheels): the centre's neighbours `s₀ < s₁ < …` cut the polygon into
+/// triangles `c sᵢ sᵢ₊₁` (each turning by less than 180°, exact
+/// orientation) and convex chains `sᵢ … sᵢ₊₁` closed by their chord, each
+/// triangulated by a plain interval program; the spokes are chosen by a
+/// cyclic dynamic program. Total weight, hull and spokes included.
+fn wheel_reference(pts: &[Point]) -> f64 {
+    let k = pts.len() - 1;
+    let c = pts[k];
+    let v = |i: usize| pts[i % k];
+    let d = |a: Point, b: Point| (a[0] - b[0]).hypot(a[1] - b[1]);
+    // chain[i][g]: lightest diagonals of the convex chain i..i+g (mod k).
+    let mut chain = vec![vec![0.0f64; k + 1]; k];
+    for g in 2..=k {
+        for i in 0..k {
+            let mut best = f64::INFINITY;
+            for m in 1..g {
+                let mut w = chain[i][m] + chain[(i + m) % k][g - m];
+                if m > 1 {
+                    w += d(v(i), v(i + m));
+                }
+                if g - m > 1 {
+                    w += d(v(i + m), v(i + g));
+                }
+                best = best.min(w);
+            }
+            chain[i][g] = best;
+        }
+    }
+    let hull: f64 = (0..k).map(|i| d(v(i), v(i + 1))).sum();
+    let step = |i: usize, g: usize| -> Option<f64> {
+        // spokes at i and i + g: the triangle c, v(i), v(i+g) must turn left.
+        if optri_oracle::orient(c, v(i), v(i + g)) <= 0 {
+            return None;
+        }
+        let chord = if g > 1 { d(v(i), v(i + g)) } else { 0.0 };
+        Some(d(c, v(i + g)) + chord + chain[i % k][g])
+    };
+    let mut best = f64::INFINITY;
+    for s0 in 0..k {
+        // f[t]: lightest with spokes from s0 to s0 + t.
+        let mut f = vec![f64::INFINITY; k + 1];
+        f[0] = d(c, v(s0));
+        for t in 1..=k {
+            for u in 0..t {
+                if f[u].is_finite() {
+                    if let Some(w) = step(s0 + u, t - u) {
+                        f[t] = f[t].min(f[u] + w);
+                    }
+                }
+            }
+        }
+        // f[k] counted the spoke at s0 twice (as start and as end).
+        best = best.min(f[k] - d(c, v(s0)));
+    }
+    hull + best
+}
+
+#[test]
+fn odd_wheels_beyond_the_skeleton_equal_an_independent_reference() {
+    // From k = 13 on (radius 1000) the LMT-skeleton leaves the whole wheel
+    // as one face with an inner point: the exact search decides it.
+    let mut searched = 0;
+    for k in [5, 7, 9, 11, 13, 15, 17, 19, 21, 23, 25] {
+        for (r, centre) in [
+            (1000.0, [0.0, 0.0]),
+            (1000.0, [3.0, -7.0]),
+            (77.5, [0.25, 0.5]),
+        ] {
+            let mut pts = wheel(k, r, false);
+            pts.push(centre);
+            let reference = wheel_reference(&pts);
+            let d = check(
+                &pts,
+                Some(reference),
+                &format!("wheel {k}, r = {r}, centre {centre:?}"),
+            );
+            searched += d.get("faces by exact search").unwrap_or(0);
+        }
+    }
+    assert!(
+        searched >= 10,
+        "the exact search ran on {searched} faces only"
+    );
+}
