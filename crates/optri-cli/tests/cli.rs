@@ -438,25 +438,17 @@ fn demo_draws_every_criterion() {
             || t.ends_with("— polygon set")),
         "{titles:?}"
     );
-    // Min-weight needs convex position, so it is drawn on the convex set,
-    // next to greedy on the same set; its table row names that set.
+    // Min-weight takes any point set now: drawn on the demo set, exact.
     assert!(
-        titles.contains(&"min-weight (uncertified) — convex set".to_string()),
-        "{titles:?}"
-    );
-    assert!(
-        titles.contains(&"greedy (exact) — convex set".to_string()),
+        titles.contains(&"min-weight (exact) — demo set".to_string()),
         "{titles:?}"
     );
     let row = |label: &str, set: &str| {
         text.lines()
             .any(|l| l.starts_with(label) && l.split_whitespace().nth(2) == Some(set))
     };
-    assert!(row("min-weight (uncertified)", "convex"), "{text}");
-    assert!(
-        row("greedy (exact)", "convex") && row("greedy (exact)", "demo"),
-        "{text}"
-    );
+    assert!(row("min-weight (exact)", "demo"), "{text}");
+    assert!(row("greedy (exact)", "demo"), "{text}");
     assert!(row("delaunay (exact)", "demo"), "{text}");
     // The area criteria take any point set (exact in convex position, a
     // certified approximation otherwise): drawn on the demo set, labelled by
@@ -470,7 +462,7 @@ fn demo_draws_every_criterion() {
     // The polygon set: min-weight and minmax-area inside a simple polygon,
     // with its boundary drawn.
     for title in [
-        "min-weight (uncertified) — polygon set",
+        "min-weight (exact) — polygon set",
         "minmax-area (exact) — polygon set",
     ] {
         assert!(titles.contains(&title.to_string()), "{titles:?}");
@@ -482,7 +474,8 @@ fn demo_draws_every_criterion() {
     );
     assert!(!text.contains("skipped"), "{text}");
     assert!(text.contains("merged 1 duplicate point"), "{text}");
-    assert!(text.contains("convex set: 40 points"), "{text}");
+    // Every criterion takes the demo set now: no convex set is needed.
+    assert!(!text.contains("convex set:"), "{text}");
     let custom = dir.join("d2.svg");
     assert!(run(&["demo", "-o", custom.to_str().unwrap()])
         .status
@@ -767,38 +760,25 @@ fn greedy_names_its_algorithm_and_matches_the_library() {
 }
 
 #[test]
-fn min_weight_needs_convex_position_and_is_not_certified_exact() {
-    assert_fails(
-        &run_stdin(&["triangulate", "-", "--criterion", "min-weight"], SQUARE),
-        &[
-            "min-weight is only supported for points in convex position",
-            "interior",
-        ],
-    );
-    assert_fails(
-        &run_stdin(
+fn min_weight_takes_any_point_set_and_is_certified_exact() {
+    for input in [SQUARE, HEXAGON] {
+        let points = optri::io::read_points(input, optri::io::InputFormat::Text).unwrap();
+        let json = stdout_json(&run_stdin(
             &["triangulate", "-", "--criterion", "min-weight", "--json"],
-            SQUARE,
-        ),
-        &["convex position"],
-    );
-    let points = optri::io::read_points(HEXAGON, optri::io::InputFormat::Text).unwrap();
-    let json = stdout_json(&run_stdin(
-        &["triangulate", "-", "--criterion", "min-weight", "--json"],
-        HEXAGON,
-    ));
-    assert_eq!(json["criterion"], "min-weight");
-    // Optimal only up to the rounding of the summed lengths.
-    assert_eq!(json["exact"], false);
-    assert_eq!(json["stats"]["triangles"], 4);
-    let weight = json["stats"]["total_edge_length"].as_f64().unwrap();
-    assert!((weight - total_length(&json, &points)).abs() <= 1e-12 * weight);
-    // No triangulation is lighter, the greedy one included.
-    let greedy = stdout_json(&run_stdin(
-        &["triangulate", "-", "--criterion", "greedy", "--json"],
-        HEXAGON,
-    ));
-    assert!(weight <= greedy["stats"]["total_edge_length"].as_f64().unwrap() * (1.0 + 1e-12));
+            input,
+        ));
+        assert_eq!(json["criterion"], "min-weight");
+        // Sums of square roots are compared exactly.
+        assert_eq!(json["exact"], true);
+        let weight = json["stats"]["total_edge_length"].as_f64().unwrap();
+        assert!((weight - total_length(&json, &points)).abs() <= 1e-12 * weight);
+        // No triangulation is lighter, the greedy one included.
+        let greedy = stdout_json(&run_stdin(
+            &["triangulate", "-", "--criterion", "greedy", "--json"],
+            input,
+        ));
+        assert!(weight <= greedy["stats"]["total_edge_length"].as_f64().unwrap() * (1.0 + 1e-12));
+    }
 }
 
 #[test]

@@ -24,3 +24,20 @@ pub fn area_by_polygon_program(points: &crate::PointSet, maxmin: bool) -> Vec<[u
     };
     convex_polygon_program(points.points(), &hull, kind)
 }
+
+/// The general min-weight pipeline (diamond filter, LMT-skeleton, faces)
+/// on any point set, convex ones included: the triangulation, whether it is
+/// proven optimal, the diagnostics and the certified lower bound of the
+/// optimal weight.
+pub fn min_weight_pipeline(
+    points: &crate::PointSet,
+) -> crate::Result<(crate::Triangulation, bool, crate::Diagnostics, f64)> {
+    let mut phases = Vec::new();
+    let g = crate::criteria::min_weight::general_min_weight(points, &mut phases)?;
+    Ok((
+        g.solved.triangulation,
+        g.solved.optimality.is_exact(),
+        g.solved.diagnostics,
+        g.lower_bound,
+    ))
+}

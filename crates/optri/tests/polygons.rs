@@ -92,12 +92,12 @@ fn run(polygon: &SimplePolygon, criterion: Criterion, what: &str) -> Vec<[u32; 3
         }
     );
     assert_eq!(s.criterion, criterion);
-    let expected = if criterion == Criterion::MinWeight {
-        Optimality::UpToRounding
-    } else {
-        Optimality::Exact
-    };
-    assert_eq!(s.optimality, expected, "{what}: {}", criterion.name());
+    assert_eq!(
+        s.optimality,
+        Optimality::Exact,
+        "{what}: {}",
+        criterion.name()
+    );
     assert_eq!(s.triangulation.triangles().len(), polygon.len() - 2);
     s.triangulation.triangles().to_vec()
 }

@@ -21,7 +21,7 @@
 //!
 //! | criterion | on a polygon | optimality |
 //! |---|---|---|
-//! | `min-weight` | polygon program, total length of the diagonals in `f64` | up to rounding of sums |
+//! | `min-weight` | polygon program, total length of the diagonals (certified intervals, exact sums of square roots on ties) | exact |
 //! | `minmax-length` | polygon program, longest diagonal, exact length comparisons | exact |
 //! | `delaunay` | spade's constrained Delaunay triangulation with the boundary as constraints | exact |
 //! | `greedy` | shortest diagonal first (symbolic length order), crossing none taken | exact |
@@ -136,10 +136,9 @@ pub(crate) fn solve_min_weight(
     let triangulation = polygon_program(polygon, "min-weight", &TotalLength { point: &p }, phases)?;
     Ok(Solved {
         triangulation,
-        algorithm: "Klincsek dynamic program on the polygon, O(n^3); optimal up to \
-                    floating-point rounding of sums"
+        algorithm: "Klincsek dynamic program on the polygon, O(n^3), exact sums of square roots"
             .to_string(),
-        optimality: Optimality::UpToRounding,
+        optimality: Optimality::Exact,
         diagnostics: Diagnostics::default(),
         bound: None,
     })

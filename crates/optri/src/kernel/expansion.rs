@@ -101,6 +101,14 @@ impl Expansion {
         }
     }
 
+    /// Adds `factor * other` exactly (each component's product by
+    /// [`two_product`]).
+    pub fn add_scaled(&mut self, other: &Expansion, factor: f64) {
+        for &x in &other.components {
+            self.add_product(x, factor);
+        }
+    }
+
     /// The exact sign of the sum: -1, 0 or 1.
     pub fn sign(&self) -> i32 {
         match self.components.last() {

@@ -40,6 +40,7 @@
 //! orientations are never zero, for *distinct* input points.
 
 pub(crate) mod expansion;
+mod length_sums;
 mod lune;
 pub mod metrics;
 mod predicates;
@@ -53,11 +54,12 @@ pub const MAX_COORDINATE: f64 = 3.2138760885179806e60; // 2^201
 /// Smallest accepted non-zero absolute coordinate value, 2⁻¹⁴².
 pub const MIN_COORDINATE: f64 = 1.793662034335766e-43; // 2^-142
 
+pub use length_sums::{compare_length_sums, compare_length_sums_exactly, LengthInterval};
 pub use lune::{in_half_lune, in_half_lune_symbolic, in_lune, in_lune_symbolic};
 pub use predicates::{
-    angle_at_least_30_degrees, compare_angles, compare_areas, compare_corner_angles,
-    compare_doubled_area, compare_lengths, cross_sign, dot_sign, incircle_sign, on_open_segment,
-    orient_sign, properly_cross, segments_intersect,
+    angle_at_least_30_degrees, angle_below_diamond, compare_angles, compare_areas,
+    compare_corner_angles, compare_doubled_area, compare_lengths, cross_sign, dot_sign,
+    incircle_sign, on_open_segment, orient_sign, properly_cross, segments_intersect,
 };
 pub use symbolic::{compare_lengths_symbolic, height_sign, orient_symbolic, segment_order};
 

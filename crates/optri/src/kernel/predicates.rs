@@ -249,6 +249,46 @@ pub fn angle_at_least_30_degrees(o: Point, a: Point, b: Point) -> bool {
     e.sign() >= 0
 }
 
+/// `tan α'` for the diamond angle `α' = arctan(833/1024) ≈ 0.682905` rad,
+/// just below `π/4.6 ≈ 0.682955` (`tan(π/4.6) ≈ 0.813560`, and
+/// `833/1024 = 0.8134765625`).
+pub const DIAMOND_TAN_NUMERATOR: f64 = 833.0;
+/// See [`DIAMOND_TAN_NUMERATOR`].
+pub const DIAMOND_TAN_DENOMINATOR: f64 = 1024.0;
+
+/// Exact: is the angle at `o` between the rays to `a` and `b` strictly below
+/// the diamond angle `α' = arctan(833/1024)`, a dyadic angle just below the
+/// base angle `π/4.6` of Drysdale, McElfresh & Snoeyink's diamond property
+/// (*An improved diamond property for minimum weight triangulation*, 1998)?
+/// A smaller triangle is a subset of the true one, so a point found inside
+/// it is inside the true one: using `α'` keeps the filter sound.
+///
+/// With `u = a − o`, `v = b − o`: the angle is below `α'` iff `u·v > 0` and
+/// `1024|u×v| < 833(u·v)`, a degree-2 polynomial in the differences. Filter:
+/// `|c̃ − C| ≤ γ₄P_c`, `|d̃ − D| ≤ γ₄P_d` (see [`angle_at_least_30_degrees`]),
+/// the scalings by 833 and 1024 and the subtraction add `γ₂` relative, so
+/// `16u(833p̃_d + 1024p̃_c)` bounds the error; else exact expansions.
+pub fn angle_below_diamond(o: Point, a: Point, b: Point) -> bool {
+    if dot_sign(o, a, b) <= 0 {
+        return false;
+    }
+    let [c, d, pc, pd] = rounded_cross_dot(o, a, b);
+    let e = DIAMOND_TAN_NUMERATOR * d - DIAMOND_TAN_DENOMINATOR * c.abs();
+    let tolerance = 16.0 * U * (DIAMOND_TAN_NUMERATOR * pd + DIAMOND_TAN_DENOMINATOR * pc);
+    if e > tolerance {
+        return true;
+    }
+    if -e > tolerance {
+        return false;
+    }
+    let (cross, dot) = exact_cross_dot(o, a, b);
+    let s = orient_sign(o, a, b) as f64; // the sign of the cross product
+    let mut e = Expansion::new();
+    e.add_scaled(&dot, DIAMOND_TAN_NUMERATOR);
+    e.add_scaled(&cross, -DIAMOND_TAN_DENOMINATOR * s);
+    e.sign() > 0
+}
+
 /// Exact comparison of two angles in `[0°, 180°]`: the angle at `p[0]`
 /// between the rays to `p[1]` and `p[2]` versus the angle at `q[0]` between
 /// the rays to `q[1]` and `q[2]`. The rays' points must differ from their

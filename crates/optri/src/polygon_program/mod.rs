@@ -42,6 +42,19 @@ pub(crate) trait Objective {
     fn combine(&self, a: Self::Value, b: Self::Value) -> Self::Value;
     /// Is `a` strictly better than `b`?
     fn better(&self, a: Self::Value, b: Self::Value) -> bool;
+    /// Objectives whose values are certified enclosures (sums of lengths)
+    /// say here when `a` and `b` do not decide [`better`](Self::better);
+    /// the program then asks [`better_diagonals`](Self::better_diagonals).
+    fn undecided(&self, _a: Self::Value, _b: Self::Value) -> bool {
+        false
+    }
+    /// The exact decision for an [`undecided`](Self::undecided) pair: is the
+    /// candidate whose diagonals (common ones removed) are `a` strictly
+    /// better than the one whose diagonals are `b`? Only for objectives
+    /// that charge diagonals alone.
+    fn better_diagonals(&self, _a: &[[usize; 2]], _b: &[[usize; 2]]) -> bool {
+        false
+    }
 }
 
 /// A bottleneck objective over diagonals: the largest diagonal under a
@@ -108,6 +121,49 @@ pub(crate) struct Triangulated<V> {
     pub value: V,
 }
 
+/// The diagonals inside sub-polygon `(i, j)` when its triangle on `ij` is
+/// `(i, m, j)` and the sub-problems `(i, m)`, `(m, j)` are solved in `cells`.
+fn diagonals_of<V>(
+    cells: &[(V, u32)],
+    k: usize,
+    i: usize,
+    m: usize,
+    j: usize,
+    out: &mut Vec<[usize; 2]>,
+) {
+    let mut stack = vec![(i, m, j)];
+    while let Some((i, m, j)) = stack.pop() {
+        for (a, b) in [(i, m), (m, j)] {
+            if b > a + 1 {
+                out.push([a, b]);
+                stack.push((a, cells[a * k + b].1 as usize, b));
+            }
+        }
+    }
+}
+
+/// Removes the chords `a` and `b` have in common (as multisets).
+fn cancel_common(a: &mut Vec<[usize; 2]>, b: &mut Vec<[usize; 2]>) {
+    a.sort_unstable();
+    b.sort_unstable();
+    let (mut x, mut y) = (Vec::new(), Vec::new());
+    let (mut i, mut j) = (0, 0);
+    while i < a.len() || j < b.len() {
+        if j == b.len() || (i < a.len() && a[i] < b[j]) {
+            x.push(a[i]);
+            i += 1;
+        } else if i == a.len() || b[j] < a[i] {
+            y.push(b[j]);
+            j += 1;
+        } else {
+            i += 1;
+            j += 1;
+        }
+    }
+    *a = x;
+    *b = y;
+}
+
 /// The optimal triangulation of the polygon with corners `0..k` under
 /// `objective`, using only chords for which `is_diagonal(i, j)` holds
 /// (`i < j`, not a boundary edge) and triangles for which
@@ -165,7 +221,21 @@ pub(crate) fn optimal_triangulation<O: Objective>(
                     v = with(v, objective.diagonal(m, j));
                 }
                 v = with(v, objective.triangle(i, m, j));
-                if best_m == INFEASIBLE || objective.better(v, best) {
+                let better = best_m == INFEASIBLE
+                    || if objective.undecided(v, best) {
+                        // Reconstruct both candidates' diagonals from the
+                        // finished sub-problems and let the objective decide
+                        // exactly (common diagonals cancel).
+                        let mut a = Vec::new();
+                        let mut b = Vec::new();
+                        diagonals_of(&cells, k, i, m, j, &mut a);
+                        diagonals_of(&cells, k, i, best_m as usize, j, &mut b);
+                        cancel_common(&mut a, &mut b);
+                        objective.better_diagonals(&a, &b)
+                    } else {
+                        objective.better(v, best)
+                    };
+                if better {
                     best = v;
                     best_m = m as u32;
                 }

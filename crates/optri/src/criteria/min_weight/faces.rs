@@ -1,0 +1,693 @@
+//! The faces the LMT-skeleton leaves and their exact triangulation.
+//!
+//! The certain edges (with the hull) are inserted as constraints into a
+//! constrained Delaunay triangulation (spade); its triangles joined across
+//! unconstrained edges form the *regions*: the faces of the skeleton. A
+//! region is *simple* when its boundary is one closed walk (weakly simple:
+//! a dangling certain edge is walked twice) with no point inside; Klincsek's
+//! program ([`crate::polygon_program`]) then finds its minimum-weight
+//! triangulation over the candidate diagonals exactly (certified intervals,
+//! exact sums of square roots on undecided comparisons). Other regions
+//! (holes, isolated points) go to an exact search over the region's empty
+//! candidate triangles: a front of half-edges still to be covered is
+//! advanced one triangle at a time on its first half-edge, and the best
+//! completion of each front is memoised (the untriangulated part is exactly
+//! the part left of the front, so the best completion depends on the front
+//! alone) — a dynamic program over fronts, exact by the same comparisons,
+//! within a budget of fronts. The constrained Delaunay triangles of a region
+//! are its fallback when the budget runs out.
+
+use super::skeleton::Skeleton;
+use super::TotalLength;
+use crate::kernel::{compare_length_sums, dot_sign, orient_sign, LengthInterval, Point};
+use crate::parallel::prelude::*;
+use crate::polygon_program::optimal_triangulation;
+use spade::handles::{FixedDirectedEdgeHandle, FixedFaceHandle, InnerTag};
+use spade::{ConstrainedDelaunayTriangulation, HasPosition, Point2, Triangulation as _};
+use std::cmp::Ordering;
+use std::collections::{BTreeSet, HashMap, HashSet};
+
+/// Largest number of fronts the exact search memoises per region.
+pub(crate) const FRONT_BUDGET: usize = 400_000;
+
+struct Vertex {
+    position: Point2<f64>,
+    id: u32,
+}
+
+impl HasPosition for Vertex {
+    type Scalar = f64;
+    fn position(&self) -> Point2<f64> {
+        self.position
+    }
+}
+
+/// How one region was solved.
+#[derive(Clone, Copy, PartialEq, Eq, Debug)]
+pub(crate) enum Method {
+    Triangle,
+    Polygon,
+    Search,
+    /// Not solved exactly: the constrained Delaunay triangles.
+    Fallback,
+}
+
+/// One region's triangles and what it took.
+pub(crate) struct RegionResult {
+    pub triangles: Vec<[u32; 3]>,
+    pub method: Method,
+    pub corners: usize,
+    pub holes: usize,
+    pub inner_points: usize,
+    /// Fronts explored (search only).
+    pub fronts: usize,
+    /// Certified lower bound of the weight of the region's inner edges.
+    pub lower: f64,
+}
+
+/// A region: its boundary walks (vertex cycles, region on the left), its
+/// isolated points and its constrained Delaunay triangles.
+struct Region {
+    cycles: Vec<Vec<u32>>,
+    inner: Vec<u32>,
+    cdt_triangles: Vec<[u32; 3]>,
+}
+
+/// The regions of the skeleton, solved (in parallel).
+pub(crate) fn solve_regions(
+    pts: &[Point],
+    sk: &Skeleton,
+) -> crate::error::Result<Vec<RegionResult>> {
+    let regions = regions(pts, sk)?;
+    Ok(regions
+        .into_par_iter()
+        .map(|r| solve_region(pts, sk, r))
+        .collect())
+}
+
+fn regions(pts: &[Point], sk: &Skeleton) -> crate::error::Result<Vec<Region>> {
+    let vertices: Vec<Vertex> = pts
+        .iter()
+        .enumerate()
+        .map(|(i, p)| Vertex {
+            position: Point2::new(p[0], p[1]),
+            id: i as u32,
+        })
+        .collect();
+    let constraints: Vec<[usize; 2]> = sk
+        .edges
+        .iter()
+        .zip(&sk.certain)
+        .filter(|(_, &c)| c)
+        .map(|(e, _)| [e[0] as usize, e[1] as usize])
+        .collect();
+    let cdt = ConstrainedDelaunayTriangulation::<Vertex>::bulk_load_cdt(vertices, constraints)
+        .map_err(|e| crate::error::Error::Internal(format!("spade's CDT failed: {e:?}")))?;
+    let id = |d: FixedDirectedEdgeHandle| {
+        let e = cdt.directed_edge(d);
+        (e.from().data().id, e.to().data().id)
+    };
+    let is_boundary = |d: FixedDirectedEdgeHandle| {
+        let e = cdt.directed_edge(d);
+        cdt.is_constraint_edge(e.as_undirected().fix()) || e.rev().face().is_outer()
+    };
+    // Flood fill faces across unconstrained edges.
+    let faces: Vec<FixedFaceHandle<InnerTag>> = cdt.fixed_inner_faces().collect();
+    let mut region_of: HashMap<FixedFaceHandle<InnerTag>, u32> =
+        HashMap::with_capacity(faces.len());
+    let mut out: Vec<Region> = Vec::new();
+    for &f in &faces {
+        if region_of.contains_key(&f) {
+            continue;
+        }
+        let r = out.len() as u32;
+        let mut stack = vec![f];
+        region_of.insert(f, r);
+        let mut members = Vec::new();
+        let mut boundary: Vec<FixedDirectedEdgeHandle> = Vec::new();
+        while let Some(g) = stack.pop() {
+            members.push(g);
+            for d in cdt.face(g).adjacent_edges() {
+                if is_boundary(d.fix()) {
+                    boundary.push(d.fix());
+                } else if let Some(h) = d.rev().face().as_inner() {
+                    if let std::collections::hash_map::Entry::Vacant(slot) =
+                        region_of.entry(h.fix())
+                    {
+                        slot.insert(r);
+                        stack.push(h.fix());
+                    }
+                }
+            }
+        }
+        // Boundary walks: after u → v, turn around v through the region to
+        // the next boundary half-edge leaving v.
+        let mut next: HashMap<FixedDirectedEdgeHandle, FixedDirectedEdgeHandle> = HashMap::new();
+        for &d in &boundary {
+            let mut e = cdt.directed_edge(d).next();
+            while !is_boundary(e.fix()) {
+                e = e.rev().next();
+            }
+            next.insert(d, e.fix());
+        }
+        let mut used: HashSet<FixedDirectedEdgeHandle> = HashSet::new();
+        let mut cycles = Vec::new();
+        let mut sorted = boundary.clone();
+        sorted.sort_unstable_by_key(|d| id(*d));
+        for &d in &sorted {
+            if used.contains(&d) {
+                continue;
+            }
+            let mut cycle = Vec::new();
+            let mut e = d;
+            while used.insert(e) {
+                cycle.push(id(e).0);
+                e = next[&e];
+            }
+            cycles.push(cycle);
+        }
+        let on_boundary: HashSet<u32> = cycles.iter().flatten().copied().collect();
+        let mut cdt_triangles = Vec::with_capacity(members.len());
+        let mut inner = BTreeSet::new();
+        for g in members {
+            let t = cdt.face(g).vertices().map(|v| v.data().id);
+            for v in t {
+                if !on_boundary.contains(&v) {
+                    inner.insert(v);
+                }
+            }
+            cdt_triangles.push(t);
+        }
+        out.push(Region {
+            cycles,
+            inner: inner.into_iter().collect(),
+            cdt_triangles,
+        });
+    }
+    Ok(out)
+}
+
+/// Ccw position of direction `v → x` from the ray `v → r`, for exact
+/// comparisons: `Less` if `x` comes before `y` sweeping counter-clockwise
+/// from `r` (a direction on the ray itself is first).
+fn ccw_compare(v: Point, r: Point, x: Point, y: Point) -> Ordering {
+    let half = |w: Point| {
+        let o = orient_sign(v, r, w);
+        if o > 0 || (o == 0 && dot_sign(v, r, w) > 0) {
+            0
+        } else {
+            1
+        }
+    };
+    let (hx, hy) = (half(x), half(y));
+    if hx != hy {
+        return hx.cmp(&hy);
+    }
+    match orient_sign(v, x, y) {
+        1 => Ordering::Less,
+        -1 => Ordering::Greater,
+        _ => Ordering::Equal,
+    }
+}
+
+/// A corner of a region: vertex `v` with the boundary going `prev → v →
+/// next`, the region on the left, so its interior at `v` is the sweep from
+/// `next` counter-clockwise to `prev` (all around when `prev == next`).
+#[derive(Clone, Copy)]
+struct Corner {
+    prev: u32,
+    v: u32,
+    next: u32,
+}
+
+impl Corner {
+    /// Is the sweep from `b` counter-clockwise to `c` around `v` (less than
+    /// 180°) inside the corner's interior sweep?
+    fn contains_sweep(&self, pts: &[Point], b: u32, c: u32) -> bool {
+        let p = |i: u32| pts[i as usize];
+        let (v, r) = (p(self.v), p(self.next));
+        let on_ray = |w: u32| orient_sign(v, r, p(w)) == 0 && dot_sign(v, r, p(w)) > 0;
+        // b at position ≥ 0 always; c at the ray means 360°.
+        let c_top = on_ray(c);
+        let prev_top = on_ray(self.prev);
+        if c_top {
+            return prev_top;
+        }
+        if prev_top {
+            return true; // the interior is all around; b < c as a triangle
+        }
+        // b ≤ c automatically (ccw triangle, < 180°) unless the sweep passes
+        // the ray: then b is after c.
+        if ccw_compare(v, r, p(b), p(c)) != Ordering::Less {
+            return false;
+        }
+        ccw_compare(v, r, p(c), p(self.prev)) != Ordering::Greater
+    }
+
+    /// Is the direction `v → w` strictly inside the interior sweep?
+    fn contains_direction(&self, pts: &[Point], w: u32) -> bool {
+        let p = |i: u32| pts[i as usize];
+        let (v, r) = (p(self.v), p(self.next));
+        let on_ray = |w: u32| orient_sign(v, r, p(w)) == 0 && dot_sign(v, r, p(w)) > 0;
+        if on_ray(w) {
+            return false;
+        }
+        if on_ray(self.prev) {
+            return true;
+        }
+        ccw_compare(v, r, p(w), p(self.prev)) == Ordering::Less
+    }
+}
+
+fn solve_region(pts: &[Point], sk: &Skeleton, region: Region) -> RegionResult {
+    let corners: usize = region.cycles.iter().map(Vec::len).sum();
+    let mut result = RegionResult {
+        triangles: Vec::new(),
+        method: Method::Fallback,
+        corners,
+        holes: region.cycles.len().saturating_sub(1),
+        inner_points: region.inner.len(),
+        fronts: 0,
+        lower: 0.0,
+    };
+    if region.cdt_triangles.len() == 1 {
+        result.triangles = region.cdt_triangles;
+        result.method = Method::Triangle;
+        return result;
+    }
+    // Corners per vertex.
+    let mut corners_at: HashMap<u32, Vec<Corner>> = HashMap::new();
+    for cycle in &region.cycles {
+        let k = cycle.len();
+        for i in 0..k {
+            let c = Corner {
+                prev: cycle[(i + k - 1) % k],
+                v: cycle[i],
+                next: cycle[(i + 1) % k],
+            };
+            corners_at.entry(c.v).or_default().push(c);
+        }
+    }
+    let inner: HashSet<u32> = region.inner.iter().copied().collect();
+    if region.cycles.len() == 1 && region.inner.is_empty() {
+        if let Some(t) = solve_polygon(pts, sk, &region.cycles[0]) {
+            result.triangles = t;
+            result.method = Method::Polygon;
+            return result;
+        }
+    } else {
+        let (solved, fronts) = search(pts, sk, &region, &corners_at, &inner);
+        result.fronts = fronts;
+        if let Some(t) = solved {
+            result.triangles = t;
+            result.method = Method::Search;
+            return result;
+        }
+    }
+    // Fallback with a certified lower bound: the region's inner edges number
+    // 3(V − 1 + h − b) + b_h (Euler), each at least as long as the shortest
+    // candidates inside.
+    result.lower = lower_bound(pts, sk, &region, &corners_at, &inner);
+    result.triangles = region.cdt_triangles;
+    result
+}
+
+/// Is the candidate edge `u → w` inside the region at `u`?
+fn leaves_into(
+    pts: &[Point],
+    corners_at: &HashMap<u32, Vec<Corner>>,
+    inner: &HashSet<u32>,
+    u: u32,
+    w: u32,
+) -> bool {
+    inner.contains(&u)
+        || corners_at
+            .get(&u)
+            .is_some_and(|cs| cs.iter().any(|c| c.contains_direction(pts, w)))
+}
+
+fn lower_bound(
+    pts: &[Point],
+    sk: &Skeleton,
+    region: &Region,
+    corners_at: &HashMap<u32, Vec<Corner>>,
+    inner: &HashSet<u32>,
+) -> f64 {
+    let vertices: HashSet<u32> = region
+        .cycles
+        .iter()
+        .flatten()
+        .copied()
+        .chain(region.inner.iter().copied())
+        .collect();
+    let half_edges: usize = region.cycles.iter().map(Vec::len).sum();
+    let mut boundary: HashSet<[u32; 2]> = HashSet::new();
+    for c in &region.cycles {
+        for i in 0..c.len() {
+            let (a, b) = (c[i], c[(i + 1) % c.len()]);
+            boundary.insert([a.min(b), a.max(b)]);
+        }
+    }
+    let h = region.cycles.len() as i64 - 1;
+    let needed = 3 * (vertices.len() as i64 - 1 + h - boundary.len() as i64) + half_edges as i64;
+    let mut lengths: Vec<f64> = Vec::new();
+    for (e, &[u, v]) in sk.edges.iter().enumerate() {
+        if sk.alive[e]
+            && !sk.certain[e]
+            && vertices.contains(&u)
+            && vertices.contains(&v)
+            && leaves_into(pts, corners_at, inner, u, v)
+            && leaves_into(pts, corners_at, inner, v, u)
+        {
+            lengths.push(LengthInterval::of_segment(pts[u as usize], pts[v as usize]).lo);
+        }
+    }
+    lengths.sort_unstable_by(f64::total_cmp);
+    let needed = needed.max(0) as usize;
+    lengths
+        .iter()
+        .take(needed)
+        .fold(LengthInterval::ZERO, |s, &l| {
+            s.plus(LengthInterval { lo: l, hi: l })
+        })
+        .lo
+}
+
+/// Klincsek's program on a simple region (one boundary walk, no inner
+/// point), over the candidate diagonals inside it.
+fn solve_polygon(pts: &[Point], sk: &Skeleton, cycle: &[u32]) -> Option<Vec<[u32; 3]>> {
+    let k = cycle.len();
+    if k > super::MAX_POINTS {
+        return None; // O(k²) tables: the region keeps its fallback
+    }
+    let corner = |i: usize| Corner {
+        prev: cycle[(i + k - 1) % k],
+        v: cycle[i],
+        next: cycle[(i + 1) % k],
+    };
+    let p = |i: usize| pts[cycle[i] as usize];
+    let solved = optimal_triangulation(
+        k,
+        |i, j| {
+            let (u, w) = (cycle[i], cycle[j]);
+            u != w
+                && sk.edge_id(u, w).is_some_and(|e| sk.alive[e as usize])
+                && corner(i).contains_direction(pts, w)
+                && corner(j).contains_direction(pts, u)
+        },
+        |i, m, j| orient_sign(p(i), p(m), p(j)) != 0,
+        &TotalLength { point: &p },
+    )?;
+    Some(
+        solved
+            .triangles
+            .into_iter()
+            .map(|t| {
+                let t = t.map(|c| cycle[c]);
+                if orient_sign(pts[t[0] as usize], pts[t[1] as usize], pts[t[2] as usize]) > 0 {
+                    t
+                } else {
+                    [t[0], t[2], t[1]]
+                }
+            })
+            .collect(),
+    )
+}
+
+/// The exact search over fronts (module docs). `None` when the budget ran
+/// out (or no triangulation exists, which the skeleton's soundness rules
+/// out).
+fn search(
+    pts: &[Point],
+    sk: &Skeleton,
+    region: &Region,
+    corners_at: &HashMap<u32, Vec<Corner>>,
+    inner: &HashSet<u32>,
+) -> (Option<Vec<[u32; 3]>>, usize) {
+    let vertices: HashSet<u32> = region
+        .cycles
+        .iter()
+        .flatten()
+        .copied()
+        .chain(region.inner.iter().copied())
+        .collect();
+    // The region's empty candidate triangles, by their half-edges.
+    let mut by_half_edge: HashMap<(u32, u32), Vec<u32>> = HashMap::new();
+    let mut tris: Vec<[u32; 3]> = Vec::new();
+    let mut tri_edges: Vec<[u32; 3]> = Vec::new();
+    let in_region = |t: [u32; 3]| {
+        let [a, b, c] = t;
+        if inner.contains(&a) {
+            return true;
+        }
+        corners_at
+            .get(&a)
+            .is_some_and(|cs| cs.iter().any(|co| co.contains_sweep(pts, b, c)))
+    };
+    for (corners, ids) in &sk.triangles {
+        if !corners.iter().all(|v| vertices.contains(v))
+            || !ids.iter().all(|&e| sk.alive[e as usize])
+        {
+            continue;
+        }
+        if !in_region(*corners) {
+            continue;
+        }
+        let t = tris.len() as u32;
+        for s in 0..3 {
+            by_half_edge
+                .entry((corners[s], corners[(s + 1) % 3]))
+                .or_default()
+                .push(t);
+        }
+        tris.push(*corners);
+        tri_edges.push(*ids);
+    }
+    let mut state = SearchState {
+        pts,
+        sk,
+        tris: &tris,
+        tri_edges: &tri_edges,
+        by_half_edge: &by_half_edge,
+        front: BTreeSet::new(),
+        filled: HashSet::new(),
+        placed: HashMap::new(),
+        blocked: HashMap::new(),
+        memo: HashMap::new(),
+        over_budget: false,
+    };
+    let mut boundary_edges = BTreeSet::new();
+    for cycle in &region.cycles {
+        let k = cycle.len();
+        for i in 0..k {
+            let (a, b) = (cycle[i], cycle[(i + 1) % k]);
+            state.front.insert((a, b));
+            if let Some(e) = sk.edge_id(a, b) {
+                boundary_edges.insert(e);
+            }
+        }
+    }
+    // The far side of a boundary half-edge is outside, unless the edge
+    // dangles into the region (walked both ways).
+    let outside: Vec<(u32, u32)> = state
+        .front
+        .iter()
+        .map(|&(a, b)| (b, a))
+        .filter(|h| !state.front.contains(h))
+        .collect();
+    state.filled.extend(outside);
+    for e in boundary_edges {
+        state.place(e);
+    }
+    let best = state.solve();
+    let fronts = state.memo.len();
+    if state.over_budget {
+        return (None, fronts);
+    }
+    let Some(best) = best else {
+        return (None, fronts);
+    };
+    // Rebuild the triangles by replaying the memoised choices.
+    let mut triangles = Vec::new();
+    let mut front: BTreeSet<(u32, u32)> = region
+        .cycles
+        .iter()
+        .flat_map(|c| (0..c.len()).map(move |i| (c[i], c[(i + 1) % c.len()])))
+        .collect();
+    let _ = best;
+    while !front.is_empty() {
+        let key: Vec<(u32, u32)> = front.iter().copied().collect();
+        let Some(Some(entry)) = state.memo.get(&key) else {
+            return (None, fronts);
+        };
+        let t = tris[entry.triangle as usize];
+        triangles.push(t);
+        for s in 0..3 {
+            let h = (t[s], t[(s + 1) % 3]);
+            if !front.remove(&h) {
+                front.insert((h.1, h.0));
+            }
+        }
+    }
+    (Some(triangles), fronts)
+}
+
+#[derive(Clone)]
+struct Best {
+    value: LengthInterval,
+    /// The inner edges of the completion (edge ids).
+    edges: Vec<u32>,
+    triangle: u32,
+}
+
+struct SearchState<'a> {
+    pts: &'a [Point],
+    sk: &'a Skeleton,
+    tris: &'a [[u32; 3]],
+    tri_edges: &'a [[u32; 3]],
+    by_half_edge: &'a HashMap<(u32, u32), Vec<u32>>,
+    front: BTreeSet<(u32, u32)>,
+    filled: HashSet<(u32, u32)>,
+    placed: HashMap<u32, ()>,
+    blocked: HashMap<u32, u32>,
+    memo: HashMap<Vec<(u32, u32)>, Option<Best>>,
+    over_budget: bool,
+}
+
+impl SearchState<'_> {
+    fn place(&mut self, e: u32) {
+        self.placed.insert(e, ());
+        for &f in self.sk.crossing(e) {
+            *self.blocked.entry(f).or_insert(0) += 1;
+        }
+    }
+
+    fn unplace(&mut self, e: u32) {
+        self.placed.remove(&e);
+        for &f in self.sk.crossing(e) {
+            *self.blocked.get_mut(&f).unwrap() -= 1;
+        }
+    }
+
+    fn length(&self, e: u32) -> LengthInterval {
+        let [u, v] = self.sk.edges[e as usize];
+        LengthInterval::of_segment(self.pts[u as usize], self.pts[v as usize])
+    }
+
+    fn segments(&self, edges: &[u32]) -> Vec<[Point; 2]> {
+        edges
+            .iter()
+            .map(|&e| {
+                let [u, v] = self.sk.edges[e as usize];
+                [self.pts[u as usize], self.pts[v as usize]]
+            })
+            .collect()
+    }
+
+    /// Is completion `a` strictly lighter than `b`? Exact.
+    fn lighter(&self, a: &Best, b: &Best) -> bool {
+        match a.value.certainly_compare(b.value) {
+            Some(o) => o == Ordering::Less,
+            None => {
+                let (mut x, mut y) = (a.edges.clone(), b.edges.clone());
+                x.sort_unstable();
+                y.sort_unstable();
+                let common: Vec<u32> = x
+                    .iter()
+                    .filter(|e| y.binary_search(e).is_ok())
+                    .copied()
+                    .collect();
+                x.retain(|e| common.binary_search(e).is_err());
+                y.retain(|e| common.binary_search(e).is_err());
+                compare_length_sums(&self.segments(&x), &self.segments(&y)) == Ordering::Less
+            }
+        }
+    }
+
+    fn solve(&mut self) -> Option<Best> {
+        let Some(&first) = self.front.iter().next() else {
+            return Some(Best {
+                value: LengthInterval::ZERO,
+                edges: Vec::new(),
+                triangle: u32::MAX,
+            });
+        };
+        let key: Vec<(u32, u32)> = self.front.iter().copied().collect();
+        if let Some(known) = self.memo.get(&key) {
+            return known.clone();
+        }
+        if self.memo.len() >= FRONT_BUDGET {
+            self.over_budget = true;
+            return None;
+        }
+        let mut best: Option<Best> = None;
+        let options: Vec<u32> = self.by_half_edge.get(&first).cloned().unwrap_or_default();
+        'triangles: for t in options {
+            let corners = self.tris[t as usize];
+            let ids = self.tri_edges[t as usize];
+            let halves = [0, 1, 2].map(|s| (corners[s], corners[(s + 1) % 3]));
+            for (s, h) in halves.iter().enumerate() {
+                let e = ids[s];
+                if self.filled.contains(h) {
+                    continue 'triangles;
+                }
+                if !self.placed.contains_key(&e) && self.blocked.get(&e).copied().unwrap_or(0) > 0 {
+                    continue 'triangles;
+                }
+            }
+            // Apply.
+            let mut new_edges = Vec::new();
+            let mut removed = Vec::new();
+            let mut added = Vec::new();
+            for (s, &h) in halves.iter().enumerate() {
+                let e = ids[s];
+                if !self.placed.contains_key(&e) {
+                    self.place(e);
+                    new_edges.push(e);
+                }
+                self.filled.insert(h);
+                if self.front.remove(&h) {
+                    removed.push(h);
+                } else {
+                    self.front.insert((h.1, h.0));
+                    added.push((h.1, h.0));
+                }
+            }
+            let sub = self.solve();
+            // Undo.
+            for h in &added {
+                self.front.remove(h);
+            }
+            for h in &removed {
+                self.front.insert(*h);
+            }
+            for h in &halves {
+                self.filled.remove(h);
+            }
+            for &e in &new_edges {
+                self.unplace(e);
+            }
+            if self.over_budget {
+                return None;
+            }
+            if let Some(sub) = sub {
+                let mut value = sub.value;
+                for &e in &new_edges {
+                    value = value.plus(self.length(e));
+                }
+                let mut edges = sub.edges;
+                edges.extend_from_slice(&new_edges);
+                let candidate = Best {
+                    value,
+                    edges,
+                    triangle: t,
+                };
+                if best.as_ref().is_none_or(|b| self.lighter(&candidate, b)) {
+                    best = Some(candidate);
+                }
+            }
+        }
+        self.memo.insert(key, best.clone());
+        best
+    }
+}

@@ -1,0 +1,335 @@
+//! Minimum-weight triangulation (MWT): the triangulation of minimum total
+//! edge length, exact for every input.
+//!
+//! * **Convex position**: Klincsek's dynamic program (G. T. Klincsek,
+//!   *Minimal triangulations of polygonal domains*, Ann. Discrete Math. 9,
+//!   1980) — the library's [polygon program](crate::polygon_program) with
+//!   total length as an additive objective, O(n³) time, O(n²) memory.
+//! * **General point sets**: NP-hard (W. Mulzer & G. Rote, *Minimum-weight
+//!   triangulation is NP-hard*, JACM 55, 2008), solved in practice by the
+//!   pipeline of A. Haas (*Solving large-scale minimum-weight triangulation
+//!   instances to provable optimality*, SoCG 2018) and of Keldenich et al.
+//!   (*Hard in theory, easy in practice*): the exact diamond filter and the
+//!   LMT-skeleton ([`skeleton`]), then the faces the skeleton leaves
+//!   ([`faces`]): simple faces by the polygon program over candidate
+//!   diagonals, faces with holes or inner points by an exact search over
+//!   empty candidate triangles. The result is `exact` only when every face
+//!   was solved; otherwise the lightest of the assembled triangulation (its
+//!   unsolved faces completed by constrained Delaunay triangles), the
+//!   Delaunay and the greedy triangulation, compared exactly, with a
+//!   certified lower bound on the optimum.
+//!
+//! # Exactness
+//! Weights are sums of square roots. Every comparison of two weights is
+//! exact: certified intervals first, then the kernel's exact comparison
+//! ([`crate::kernel::compare_length_sums`]) when the intervals overlap.
+//! Ties: the first best split corner (polygon program) or the first best
+//! triangle in the search's order wins, so the result is deterministic.
+
+mod faces;
+mod skeleton;
+
+use super::{CriterionInfo, Diagnostics, Optimality, Options, Requirement, Solved};
+use crate::error::{Error, Result};
+use crate::kernel::{compare_length_sums, orient_sign, LengthInterval, Point};
+use crate::polygon_program::{optimal_triangulation, Objective};
+use crate::spatial::{bounding_box, convex_hull_cycle, SparseGrid};
+use crate::structures::PointSet;
+use crate::structures::Triangulation;
+use crate::timing::{Phase, Stopwatch};
+use faces::Method;
+use std::cmp::Ordering;
+
+pub(crate) const INFO: CriterionInfo = CriterionInfo {
+    name: "min-weight",
+    description: "minimises the total edge length",
+    optimality: Optimality::Exact,
+    requirement: Requirement::AnyPointSet,
+    options: &[],
+    reference: "G. T. Klincsek 1980; Dickerson, Keil & Montague 1997; Drysdale, McElfresh & Snoeyink 2001; A. Haas 2018",
+};
+
+pub(crate) fn solve(points: &PointSet, _: &Options, phases: &mut Vec<Phase>) -> Result<Solved> {
+    let pts = points.points();
+    let hull = convex_hull_cycle(pts);
+    if hull.len() == pts.len() && pts.len() <= MAX_POINTS {
+        let mut watch = Stopwatch::new(phases);
+        let triangulation = convex_min_weight(points, &hull)?;
+        watch.lap("min-weight");
+        return Ok(Solved {
+            triangulation,
+            algorithm:
+                "Klincsek dynamic program on the convex polygon, O(n^3), exact sums of square roots"
+                    .to_string(),
+            optimality: Optimality::Exact,
+            diagnostics: Diagnostics::default(),
+            bound: None,
+        });
+    }
+    let general = general_min_weight(points, phases)?;
+    Ok(general.solved)
+}
+
+/// Largest number of distinct points in convex position the polygon program
+/// takes (O(n²) memory); larger convex sets go through the general pipeline.
+pub const MAX_POINTS: usize = 4000;
+
+/// A minimum-weight triangulation of `points` (any point set with three
+/// points not on one line). For a result that is not proven optimal (a
+/// face beyond the exact search's budget) use
+/// [`triangulate`](crate::triangulate) with [`Criterion::MinWeight`](crate::Criterion::MinWeight),
+/// which says so.
+///
+/// # Errors
+/// [`Error::Unsupported`] if all points are collinear.
+pub fn min_weight(points: &PointSet) -> Result<Triangulation> {
+    let mut phases = Vec::new();
+    solve(points, &Options::default(), &mut phases).map(|s| s.triangulation)
+}
+
+fn convex_min_weight(points: &PointSet, polygon: &[u32]) -> Result<Triangulation> {
+    let pts = points.points();
+    let p = |i: usize| pts[polygon[i] as usize];
+    let solved = optimal_triangulation(
+        polygon.len(),
+        |_, _| true, // convex position: every chord is a diagonal
+        |i, m, j| orient_sign(p(i), p(m), p(j)) != 0, // a flat triangle is not allowed
+        &TotalLength { point: &p },
+    )
+    .ok_or_else(|| {
+        Error::Internal("the convex polygon has no triangulation without flat triangles".into())
+    })?;
+    let triangles = solved
+        .triangles
+        .into_iter()
+        .map(|t| t.map(|c| polygon[c]))
+        .collect();
+    Ok(Triangulation::from_distinct(points, triangles))
+}
+
+/// Total length of the diagonals as a certified interval, decided exactly
+/// when intervals overlap: an additive objective.
+pub(crate) struct TotalLength<'a, P: Fn(usize) -> Point> {
+    pub(crate) point: &'a P,
+}
+
+impl<P: Fn(usize) -> Point> Objective for TotalLength<'_, P> {
+    type Value = LengthInterval;
+    fn empty(&self) -> LengthInterval {
+        LengthInterval::ZERO
+    }
+    fn diagonal(&self, i: usize, j: usize) -> Option<LengthInterval> {
+        Some(LengthInterval::of_segment((self.point)(i), (self.point)(j)))
+    }
+    fn triangle(&self, _: usize, _: usize, _: usize) -> Option<LengthInterval> {
+        None
+    }
+    fn combine(&self, a: LengthInterval, b: LengthInterval) -> LengthInterval {
+        a.plus(b)
+    }
+    fn better(&self, a: LengthInterval, b: LengthInterval) -> bool {
+        a.certainly_compare(b) == Some(Ordering::Less)
+    }
+    fn undecided(&self, a: LengthInterval, b: LengthInterval) -> bool {
+        a.certainly_compare(b).is_none()
+    }
+    fn better_diagonals(&self, a: &[[usize; 2]], b: &[[usize; 2]]) -> bool {
+        let segments = |s: &[[usize; 2]]| -> Vec<[Point; 2]> {
+            s.iter()
+                .map(|&[i, j]| [(self.point)(i), (self.point)(j)])
+                .collect()
+        };
+        compare_length_sums(&segments(a), &segments(b)) == Ordering::Less
+    }
+}
+
+/// The general pipeline's result with its certified lower bound.
+pub(crate) struct General {
+    pub solved: Solved,
+    /// A certified lower bound on the optimal weight (equal to the result's
+    /// weight, up to rounding, when exact).
+    #[cfg_attr(not(feature = "internals"), allow(dead_code))] // read by the test hooks
+    pub lower_bound: f64,
+}
+
+/// The edges of triangles, each once, as sorted pairs.
+fn edges_of(triangles: &[[u32; 3]]) -> Vec<[u32; 2]> {
+    let mut edges: Vec<[u32; 2]> = triangles
+        .iter()
+        .flat_map(|t| [[t[0], t[1]], [t[1], t[2]], [t[2], t[0]]])
+        .map(|[a, b]| [a.min(b), a.max(b)])
+        .collect();
+    edges.sort_unstable();
+    edges.dedup();
+    edges
+}
+
+/// Exact comparison of the total edge lengths of two triangulations of the
+/// same points (common edges cancel).
+fn compare_weights(pts: &[Point], a: &[[u32; 3]], b: &[[u32; 3]]) -> Ordering {
+    let (ea, eb) = (edges_of(a), edges_of(b));
+    let seg = |e: &[u32; 2]| [pts[e[0] as usize], pts[e[1] as usize]];
+    let only_a: Vec<[Point; 2]> = ea
+        .iter()
+        .filter(|e| eb.binary_search(e).is_err())
+        .map(seg)
+        .collect();
+    let only_b: Vec<[Point; 2]> = eb
+        .iter()
+        .filter(|e| ea.binary_search(e).is_err())
+        .map(seg)
+        .collect();
+    compare_length_sums(&only_a, &only_b)
+}
+
+pub(crate) fn general_min_weight(points: &PointSet, phases: &mut Vec<Phase>) -> Result<General> {
+    let pts = points.points();
+    // PointSet guarantees three distinct points not on one line.
+    let mut watch = Stopwatch::new(phases);
+    let mut diagnostics = Diagnostics::default();
+    let candidates = skeleton::diamond_candidates(pts);
+    diagnostics.add("diamond candidates", candidates.len() as u64);
+    watch.lap("diamond filter");
+    let bbox = bounding_box(pts);
+    let (w, h) = (bbox[2] - bbox[0], bbox[3] - bbox[1]);
+    let n = pts.len();
+    let cell = ((w * h) / n as f64).sqrt().max(w.max(h) / n as f64);
+    let grid = SparseGrid::new(bbox, cell, n, |i| pts[i], |i| i as u32, |i| i as u32);
+    let sk = skeleton::lmt_skeleton(pts, &grid, candidates);
+    let alive = sk.alive.iter().filter(|&&a| a).count();
+    let certain = sk.certain.iter().filter(|&&a| a).count();
+    diagnostics.add("skeleton candidates left", alive as u64);
+    diagnostics.add("certain edges", certain as u64);
+    watch.lap("lmt skeleton");
+    let regions = faces::solve_regions(pts, &sk)?;
+    watch.lap("faces and programs");
+    let mut triangles: Vec<[u32; 3]> = Vec::with_capacity(2 * n);
+    let mut exact = true;
+    let (mut polygons, mut searched, mut unsolved, mut largest, mut holes) =
+        (0u64, 0u64, 0u64, 0u64, 0u64);
+    let mut fronts = 0u64;
+    let mut lower = LengthInterval::ZERO;
+    for r in &regions {
+        match r.method {
+            Method::Triangle => {}
+            Method::Polygon => polygons += 1,
+            Method::Search => searched += 1,
+            Method::Fallback => {
+                unsolved += 1;
+                exact = false;
+                lower = lower.plus(LengthInterval {
+                    lo: r.lower,
+                    hi: r.lower,
+                });
+            }
+        }
+        if r.method != Method::Triangle {
+            largest = largest.max(r.corners as u64 + r.inner_points as u64);
+        }
+        if r.holes > 0 || r.inner_points > 0 {
+            holes += 1;
+        }
+        fronts += r.fronts as u64;
+        triangles.extend_from_slice(&r.triangles);
+    }
+    diagnostics.add("faces", regions.len() as u64);
+    diagnostics.add("faces by polygon program", polygons);
+    diagnostics.add("faces with holes or inner points", holes);
+    diagnostics.add("faces by exact search", searched);
+    diagnostics.add("faces unsolved", unsolved);
+    diagnostics.add("largest face", largest);
+    diagnostics.add("search fronts", fronts);
+    let mut triangulation = Triangulation::from_distinct(points, triangles);
+    let mut algorithm = "diamond filter, LMT-skeleton, Klincsek program on simple faces, exact front search on the others".to_string();
+    let lower_bound;
+    if exact {
+        lower_bound = 0.0; // replaced below by the result's weight
+    } else {
+        // Keep the lightest of the result, Delaunay and greedy (exactly).
+        let mut best = triangulation
+            .triangles()
+            .iter()
+            .map(|t| t.map(|i| points.distinct_index(i)))
+            .collect::<Vec<_>>();
+        for (name, other) in [
+            ("Delaunay", crate::graphs::delaunay(points)?),
+            ("greedy", crate::criteria::greedy::greedy(points)?),
+        ] {
+            let tris: Vec<[u32; 3]> = other
+                .triangles()
+                .iter()
+                .map(|t| t.map(|i| points.distinct_index(i)))
+                .collect();
+            if compare_weights(pts, &tris, &best) == Ordering::Less {
+                best = tris;
+                algorithm =
+                    format!("{algorithm}; not proven optimal, the {name} triangulation is lighter");
+            }
+        }
+        triangulation = Triangulation::from_distinct(points, best);
+        // Lower bound: the certain edges, the solved faces' inner edges
+        // (their optimum) and the unsolved faces' bounds.
+        let mut solved_weight = LengthInterval::ZERO;
+        for r in regions.iter().filter(|r| r.method != Method::Fallback) {
+            for e in region_inner_edges(&r.triangles, &sk) {
+                solved_weight = solved_weight.plus(LengthInterval::of_segment(
+                    pts[e[0] as usize],
+                    pts[e[1] as usize],
+                ));
+            }
+        }
+        let mut certain_weight = LengthInterval::ZERO;
+        for (e, &[u, v]) in sk.edges.iter().enumerate() {
+            if sk.certain[e] {
+                certain_weight = certain_weight
+                    .plus(LengthInterval::of_segment(pts[u as usize], pts[v as usize]));
+            }
+        }
+        lower_bound = certain_weight.plus(solved_weight).plus(lower).lo;
+        algorithm = format!(
+            "{algorithm}; certified lower bound on the optimal weight: {lower_bound} \
+             (certain edges, solved faces, the shortest candidates of unsolved faces)"
+        );
+    }
+    watch.lap("assemble");
+    diagnostics.add("exact", exact as u64);
+    let lower_bound = if exact {
+        triangulation
+            .edges()
+            .iter()
+            .fold(LengthInterval::ZERO, |s, e| {
+                let (a, b) = (
+                    points.input_points()[e[0] as usize],
+                    points.input_points()[e[1] as usize],
+                );
+                s.plus(LengthInterval::of_segment(a, b))
+            })
+            .lo
+    } else {
+        lower_bound
+    };
+    Ok(General {
+        solved: Solved {
+            triangulation,
+            algorithm,
+            optimality: if exact {
+                Optimality::Exact
+            } else {
+                Optimality::Approximation {
+                    bound: "not proven optimal: a face exceeded the exact search's budget; the weight is at least the reported lower bound",
+                }
+            },
+            diagnostics,
+            bound: None,
+        },
+        lower_bound,
+    })
+}
+
+/// The inner (non-certain) edges of a region's triangles.
+fn region_inner_edges(triangles: &[[u32; 3]], sk: &skeleton::Skeleton) -> Vec<[u32; 2]> {
+    edges_of(triangles)
+        .into_iter()
+        .filter(|&[u, v]| !sk.edge_id(u, v).is_some_and(|e| sk.certain[e as usize]))
+        .collect()
+}

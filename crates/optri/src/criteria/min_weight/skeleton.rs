@@ -1,0 +1,627 @@
+//! The candidate edges of a minimum-weight triangulation of a point set and
+//! its LMT-skeleton.
+//!
+//! 1. **Diamond filter** (R. L. S. Drysdale, S. McElfresh & J. Snoeyink, *On
+//!    exclusion regions for optimal triangulations*, Discrete Appl. Math. 109,
+//!    2001): an edge `pq` of a minimum-weight triangulation has at least one
+//!    of its two isosceles triangles with base `pq` and base angle `π/4.6`
+//!    empty of points. The exact test uses the slightly smaller dyadic angle
+//!    of [`angle_below_diamond`], so it removes only edges the theorem
+//!    removes. Candidates come from each point's neighbourhood in a grid,
+//!    searched in doubling rings until every direction is *dead*: a point `r`
+//!    at distance `d` and angle `θ` from `p` lies strictly inside the left
+//!    triangle of every `pq` whose direction `φ` satisfies `0 < θ − φ < π/4.6`
+//!    once `|pq| > 2cos(π/4.6)·d ≈ 1.551d` (the base angle at `q` is then
+//!    below `π/4.6`; `cos δ + sin δ·cot α` grows on `0 < δ < α` to `2cos α`),
+//!    and symmetrically for the right triangle; directions whose ray leaves
+//!    the bounding box are dead too. The search uses `1.6d` and angular
+//!    margins of 10⁻⁹ rad, far above the rounding of `atan2` on `f64`
+//!    differences (a few 10⁻¹⁶ rad), so the stop is conservative; it only
+//!    chooses which pairs get the exact test. Parallel over points.
+//! 2. **LMT-skeleton** (M. T. Dickerson, J. M. Keil & M. H. Montague, *A large
+//!    subgraph of the minimum weight triangulation*, DCG 18, 1997; the
+//!    half-edge loop of R. Beirouti & J. Snoeyink, *Implementations of the
+//!    LMT heuristic for minimum weight triangulation*, SoCG 1998): an edge of
+//!    a minimum-weight triangulation `T` is *locally minimal* in `T` — with
+//!    its two triangles `pqr`, `pqs` either the quadrilateral is not strictly
+//!    convex or `|pq| ≤ |rs|` (exact). Triangles are empty candidate
+//!    triangles (no point in the closed triangle but its corners) whose two
+//!    other edges are still candidates; an edge without a locally minimal
+//!    pair is removed, which can only invalidate triangles of its
+//!    neighbours, so a work list reaches the fixed point. Edges that
+//!    intersect no remaining candidate are *certain*: in every triangulation
+//!    drawn from the candidates (a triangulation is a maximal non-crossing
+//!    set), hence in every minimum-weight triangulation. Convex-hull edges
+//!    between consecutive hull points are always certain.
+
+use crate::kernel::{
+    angle_below_diamond, compare_lengths, dot_sign, orient_sign, properly_cross,
+    segments_intersect, Point,
+};
+use crate::parallel::prelude::*;
+use crate::spatial::{bounding_box, convex_hull_cycle, SparseGrid};
+use std::cmp::Ordering;
+use std::f64::consts::PI;
+
+/// The base angle of the diamond property, π/4.6 (for the search's stop only).
+const DIAMOND_ANGLE: f64 = PI / 4.6;
+/// Angular safety margin of the search's stop, radians.
+const ANGLE_MARGIN: f64 = 1e-9;
+/// Distance factor of the stop: 1.6 > 2cos(π/4.6) ≈ 1.551.
+const KILL_FACTOR2: f64 = 1.6 * 1.6;
+const TAU: f64 = 2.0 * PI;
+
+/// The candidate edges (pairs `u < v`, sorted) surviving the diamond filter,
+/// with every convex-hull edge among them.
+pub(crate) fn diamond_candidates(pts: &[Point]) -> Vec<[u32; 2]> {
+    let n = pts.len();
+    let bbox = bounding_box(pts);
+    let (w, h) = (bbox[2] - bbox[0], bbox[3] - bbox[1]);
+    let cell = ((w * h) / n as f64).sqrt().max(w.max(h) / n as f64);
+    let grid = SparseGrid::new(bbox, cell, n, |i| pts[i], |i| i as u32, |i| i as u32);
+    let diagonal = w.hypot(h);
+    let mut edges: Vec<[u32; 2]> = (0..n as u32)
+        .into_par_iter()
+        .with_min_len(64)
+        .flat_map_iter(|p| search_from(pts, &grid, bbox, cell, diagonal, p))
+        .collect();
+    let hull = convex_hull_cycle(pts);
+    for i in 0..hull.len() {
+        let (a, b) = (hull[i], hull[(i + 1) % hull.len()]);
+        edges.push([a.min(b), a.max(b)]);
+    }
+    edges.par_sort_unstable();
+    edges.dedup();
+    edges
+}
+
+/// The pairs `[p, q]`, `q > p`, from `p`'s search that survive the exact test.
+fn search_from(
+    pts: &[Point],
+    grid: &SparseGrid<u32>,
+    bbox: [f64; 4],
+    cell: f64,
+    diagonal: f64,
+    p: u32,
+) -> Vec<[u32; 2]> {
+    let a = pts[p as usize];
+    let mut out = Vec::new();
+    let mut seen: Vec<(f64, f64)> = Vec::new(); // (angle, squared distance)
+    let mut pending: Vec<(u32, f64)> = Vec::new();
+    let mut killers: Vec<f64> = Vec::new();
+    let (mut inner2, mut radius) = (0.0f64, 2.0 * cell);
+    loop {
+        let outer2 = radius * radius;
+        grid.any_cell_near(a, a, radius, |items| {
+            for &q in items {
+                if q == p {
+                    continue;
+                }
+                let b = pts[q as usize];
+                let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
+                let d2 = dx * dx + dy * dy;
+                if d2 >= inner2 && d2 < outer2 {
+                    let angle = angle_of(dx, dy);
+                    seen.push((angle, d2));
+                    if q > p {
+                        pending.push((q, angle));
+                    }
+                }
+            }
+            false
+        });
+        // Candidates of this ring are at least `inner` away: killers closer
+        // than inner/1.6 apply to all of them.
+        killers.clear();
+        killers.extend(
+            seen.iter()
+                .filter(|s| s.1 * KILL_FACTOR2 < inner2)
+                .map(|s| s.0),
+        );
+        killers.sort_unstable_by(f64::total_cmp);
+        for &(q, angle) in &pending {
+            if direction_alive(angle, &killers) && diamond_survives(pts, grid, p, q) {
+                out.push([p, q]);
+            }
+        }
+        pending.clear();
+        if radius > diagonal {
+            break;
+        }
+        killers.clear();
+        killers.extend(
+            seen.iter()
+                .filter(|s| s.1 * KILL_FACTOR2 < outer2)
+                .map(|s| s.0),
+        );
+        killers.sort_unstable_by(f64::total_cmp);
+        if all_directions_dead(a, bbox, radius, &killers) {
+            break;
+        }
+        inner2 = outer2;
+        radius *= 2.0;
+    }
+    out
+}
+
+fn angle_of(dx: f64, dy: f64) -> f64 {
+    let t = dy.atan2(dx);
+    if t < 0.0 {
+        t + TAU
+    } else {
+        t
+    }
+}
+
+/// Is direction `phi` not provably dead for the killers (sorted angles)?
+fn direction_alive(phi: f64, killers: &[f64]) -> bool {
+    if killers.is_empty() {
+        return true;
+    }
+    let k = killers.len();
+    // Successor strictly beyond phi + margin, predecessor strictly before.
+    let s = killers.partition_point(|&t| t <= phi + ANGLE_MARGIN);
+    let succ = if s < k { killers[s] } else { killers[0] + TAU };
+    let pidx = killers.partition_point(|&t| t < phi - ANGLE_MARGIN);
+    let pred = if pidx > 0 {
+        killers[pidx - 1]
+    } else {
+        killers[k - 1] - TAU
+    };
+    let left = succ - phi < DIAMOND_ANGLE - ANGLE_MARGIN && succ - phi > ANGLE_MARGIN;
+    let right = phi - pred < DIAMOND_ANGLE - ANGLE_MARGIN && phi - pred > ANGLE_MARGIN;
+    !(left && right)
+}
+
+/// Are all directions dead beyond `radius`: killed on both sides by the
+/// killers, or leaving the bounding box?
+fn all_directions_dead(a: Point, bbox: [f64; 4], radius: f64, killers: &[f64]) -> bool {
+    // Arcs of directions whose point at `radius` lies outside the box.
+    let mut arcs: Vec<[f64; 2]> = Vec::new();
+    let slack = 1e-9 * radius;
+    for (distance, centre) in [
+        (bbox[2] - a[0], 0.0),
+        (bbox[3] - a[1], 0.5 * PI),
+        (a[0] - bbox[0], PI),
+        (a[1] - bbox[1], 1.5 * PI),
+    ] {
+        let c = (distance + slack) / radius;
+        if c < 1.0 {
+            let half = c.acos() - ANGLE_MARGIN;
+            if half > 0.0 {
+                for shift in [-TAU, 0.0, TAU] {
+                    arcs.push([centre - half + shift, centre + half + shift]);
+                }
+            }
+        }
+    }
+    arcs.sort_unstable_by(|x, y| x[0].total_cmp(&y[0]));
+    let mut merged: Vec<[f64; 2]> = Vec::new();
+    for arc in arcs {
+        match merged.last_mut() {
+            Some(last) if arc[0] <= last[1] => last[1] = last[1].max(arc[1]),
+            _ => merged.push(arc),
+        }
+    }
+    let covered = |lo: f64, hi: f64| merged.iter().any(|m| m[0] < lo && hi < m[1]);
+    let k = killers.len();
+    if k == 0 {
+        return covered(0.0, TAU);
+    }
+    let m = ANGLE_MARGIN;
+    for i in 0..k {
+        let lo = killers[i];
+        let hi = if i + 1 < k {
+            killers[i + 1]
+        } else {
+            killers[0] + TAU
+        };
+        if hi - lo < DIAMOND_ANGLE - 4.0 * m {
+            continue; // every direction in this gap is killed on both sides
+        }
+        // Directions in the gap not killed on the left (successor `hi` too
+        // far) or on the right (predecessor `lo` too far), widened.
+        let first = [lo - 4.0 * m, hi - DIAMOND_ANGLE + 4.0 * m];
+        let second = [lo + DIAMOND_ANGLE - 4.0 * m, hi + 4.0 * m];
+        let parts: Vec<[f64; 2]> = if first[1] >= second[0] {
+            vec![[first[0], second[1]]]
+        } else {
+            vec![first, second]
+        };
+        for [x, y] in parts {
+            if !covered(x, y) {
+                return false;
+            }
+        }
+    }
+    true
+}
+
+/// Exact: is at least one of the two diamond triangles on `pq` empty?
+fn diamond_survives(pts: &[Point], grid: &SparseGrid<u32>, p: u32, q: u32) -> bool {
+    let (a, b) = (pts[p as usize], pts[q as usize]);
+    let length = (a[0] - b[0]).hypot(a[1] - b[1]);
+    let (mut left, mut right) = (false, false);
+    grid.any_cell_near(a, b, 0.45 * length, |items| {
+        for &r in items {
+            if r == p || r == q {
+                continue;
+            }
+            let c = pts[r as usize];
+            let o = orient_sign(a, b, c);
+            let side = if o > 0 {
+                &mut left
+            } else if o < 0 {
+                &mut right
+            } else {
+                continue;
+            };
+            if !*side && angle_below_diamond(a, b, c) && angle_below_diamond(b, a, c) {
+                *side = true;
+                if left && right {
+                    return true;
+                }
+            }
+        }
+        false
+    });
+    !(left && right)
+}
+
+/// Candidate edges with their empty triangles and the LMT state.
+pub(crate) struct Skeleton {
+    pub edges: Vec<[u32; 2]>,
+    /// Edge still a candidate.
+    pub alive: Vec<bool>,
+    /// Edge in every minimum-weight triangulation.
+    pub certain: Vec<bool>,
+    /// Convex-hull edge (between consecutive hull points).
+    pub hull: Vec<bool>,
+    /// Empty candidate triangles (counter-clockwise) and their edge ids.
+    pub triangles: Vec<([u32; 3], [u32; 3])>,
+    /// CSR per edge: its triangles on the left of `u → v` (u < v), then right.
+    tri_offsets: Vec<u32>,
+    tri_list: Vec<u32>,
+    tri_left_len: Vec<u32>,
+    /// CSR per edge: the candidate edges it intersects.
+    cross_offsets: Vec<u32>,
+    cross_list: Vec<u32>,
+    /// CSR per vertex: neighbours (sorted) and edge ids.
+    adj_offsets: Vec<u32>,
+    adj: Vec<(u32, u32)>,
+}
+
+impl Skeleton {
+    /// The edge id of `{u, v}`, if a candidate.
+    pub fn edge_id(&self, u: u32, v: u32) -> Option<u32> {
+        let list = &self.adj
+            [self.adj_offsets[u as usize] as usize..self.adj_offsets[u as usize + 1] as usize];
+        list.binary_search_by(|x| x.0.cmp(&v))
+            .ok()
+            .map(|i| list[i].1)
+    }
+
+    /// The neighbours of `u` with edge ids.
+    pub fn neighbours(&self, u: u32) -> &[(u32, u32)] {
+        &self.adj[self.adj_offsets[u as usize] as usize..self.adj_offsets[u as usize + 1] as usize]
+    }
+
+    /// Triangles of edge `e` on its left (`u → v`) and right.
+    fn sides(&self, e: u32) -> (&[u32], &[u32]) {
+        let all = &self.tri_list
+            [self.tri_offsets[e as usize] as usize..self.tri_offsets[e as usize + 1] as usize];
+        all.split_at(self.tri_left_len[e as usize] as usize)
+    }
+
+    /// The candidate edges `e` intersects.
+    pub fn crossing(&self, e: u32) -> &[u32] {
+        &self.cross_list
+            [self.cross_offsets[e as usize] as usize..self.cross_offsets[e as usize + 1] as usize]
+    }
+
+    fn triangle_valid(&self, t: u32) -> bool {
+        self.triangles[t as usize]
+            .1
+            .iter()
+            .all(|&e| self.alive[e as usize])
+    }
+}
+
+/// Does the closed triangle `abc` (counter-clockwise) contain a point other
+/// than its corners?
+pub(crate) fn triangle_has_point(
+    pts: &[Point],
+    grid: &SparseGrid<u32>,
+    [i, j, k]: [u32; 3],
+) -> bool {
+    let (a, b, c) = (pts[i as usize], pts[j as usize], pts[k as usize]);
+    let lo = [a[0].min(b[0]).min(c[0]), a[1].min(b[1]).min(c[1])];
+    let hi = [a[0].max(b[0]).max(c[0]), a[1].max(b[1]).max(c[1])];
+    grid.any_cell_near(lo, hi, 0.0, |items| {
+        items.iter().any(|&r| {
+            if r == i || r == j || r == k {
+                return false;
+            }
+            let d = pts[r as usize];
+            if d[0] < lo[0] || d[0] > hi[0] || d[1] < lo[1] || d[1] > hi[1] {
+                return false; // outside the box, exactly (coordinate comparison)
+            }
+            orient_sign(a, b, d) >= 0 && orient_sign(b, c, d) >= 0 && orient_sign(c, a, d) >= 0
+        })
+    })
+}
+
+/// Do the candidate edges `e = [a, b]` and `f` intersect other than in a
+/// shared endpoint (collinear overlap at a shared endpoint counts)?
+fn edges_conflict(pts: &[Point], e: [u32; 2], f: [u32; 2]) -> bool {
+    let p = |i: u32| pts[i as usize];
+    let shared = e.iter().find(|&&x| f.contains(&x)).copied();
+    match shared {
+        None => segments_intersect(p(e[0]), p(e[1]), p(f[0]), p(f[1])),
+        Some(s) => {
+            let u = if e[0] == s { e[1] } else { e[0] };
+            let v = if f[0] == s { f[1] } else { f[0] };
+            u != v && orient_sign(p(s), p(u), p(v)) == 0 && dot_sign(p(s), p(u), p(v)) > 0
+        }
+    }
+}
+
+/// Builds the triangles and crossings of the candidate edges and runs the
+/// LMT loop; `counters` gets (name, value) pairs.
+pub(crate) fn lmt_skeleton(
+    pts: &[Point],
+    grid: &SparseGrid<u32>,
+    edges: Vec<[u32; 2]>,
+) -> Skeleton {
+    let n = pts.len();
+    let m = edges.len();
+    // Adjacency, sorted by neighbour.
+    let mut degree = vec![0u32; n + 1];
+    for &[u, v] in &edges {
+        degree[u as usize] += 1;
+        degree[v as usize] += 1;
+    }
+    let mut adj_offsets = vec![0u32; n + 1];
+    for v in 0..n {
+        adj_offsets[v + 1] = adj_offsets[v] + degree[v];
+    }
+    let mut fill = adj_offsets.clone();
+    let mut adj = vec![(0u32, 0u32); 2 * m];
+    for (id, &[u, v]) in edges.iter().enumerate() {
+        adj[fill[u as usize] as usize] = (v, id as u32);
+        fill[u as usize] += 1;
+        adj[fill[v as usize] as usize] = (u, id as u32);
+        fill[v as usize] += 1;
+    }
+    for v in 0..n {
+        adj[adj_offsets[v] as usize..adj_offsets[v + 1] as usize].sort_unstable();
+    }
+    let hull_cycle = convex_hull_cycle(pts);
+    let mut skeleton = Skeleton {
+        alive: vec![true; m],
+        certain: vec![false; m],
+        hull: vec![false; m],
+        triangles: Vec::new(),
+        tri_offsets: Vec::new(),
+        tri_list: Vec::new(),
+        tri_left_len: vec![0; m],
+        cross_offsets: Vec::new(),
+        cross_list: Vec::new(),
+        adj_offsets,
+        adj,
+        edges,
+    };
+    for i in 0..hull_cycle.len() {
+        let (a, b) = (hull_cycle[i], hull_cycle[(i + 1) % hull_cycle.len()]);
+        if let Some(e) = skeleton.edge_id(a, b) {
+            skeleton.hull[e as usize] = true;
+        }
+    }
+    // Triangles u < v < w, each found from its edge (u, v).
+    let sk = &skeleton;
+    let triangles: Vec<([u32; 3], [u32; 3])> = (0..m as u32)
+        .into_par_iter()
+        .with_min_len(256)
+        .flat_map_iter(|e| {
+            let [u, v] = sk.edges[e as usize];
+            let mut found = Vec::new();
+            for &(w, uw) in sk.neighbours(u) {
+                if w <= v {
+                    continue;
+                }
+                let Some(vw) = sk.edge_id(v, w) else { continue };
+                let o = orient_sign(pts[u as usize], pts[v as usize], pts[w as usize]);
+                if o == 0 {
+                    continue;
+                }
+                let (corners, ids) = if o > 0 {
+                    ([u, v, w], [e, vw, uw])
+                } else {
+                    ([u, w, v], [uw, vw, e])
+                };
+                if !triangle_has_point(pts, grid, corners) {
+                    found.push((corners, ids));
+                }
+            }
+            found
+        })
+        .collect();
+    // Per edge: left and right triangles.
+    let mut left: Vec<Vec<u32>> = vec![Vec::new(); m];
+    let mut right: Vec<Vec<u32>> = vec![Vec::new(); m];
+    for (t, (corners, ids)) in triangles.iter().enumerate() {
+        for s in 0..3 {
+            let (a, b) = (corners[s], corners[(s + 1) % 3]);
+            let e = ids[s] as usize;
+            // The triangle is on the left of a → b.
+            if a < b {
+                left[e].push(t as u32);
+            } else {
+                right[e].push(t as u32);
+            }
+        }
+    }
+    let mut tri_offsets = vec![0u32; m + 1];
+    let mut tri_list = Vec::new();
+    for e in 0..m {
+        skeleton.tri_left_len[e] = left[e].len() as u32;
+        tri_list.extend_from_slice(&left[e]);
+        tri_list.extend_from_slice(&right[e]);
+        tri_offsets[e + 1] = tri_list.len() as u32;
+    }
+    drop(left);
+    drop(right);
+    skeleton.triangles = triangles;
+    skeleton.tri_offsets = tri_offsets;
+    skeleton.tri_list = tri_list;
+    // The loop needs no crossings; certainty does, among the survivors only
+    // (far fewer and shorter than the filter's candidates).
+    run_lmt_loop(pts, &mut skeleton);
+    // Crossings: edges in length classes of powers of two, each class in a
+    // grid of its midpoints; an edge of class k (length < 2^(k+1)·base)
+    // meeting segment e has its midpoint within 2^k·base of e.
+    let length = |e: &[u32; 2]| {
+        let (a, b) = (pts[e[0] as usize], pts[e[1] as usize]);
+        (a[0] - b[0]).hypot(a[1] - b[1])
+    };
+    let alive_ids: Vec<u32> = (0..m as u32)
+        .filter(|&e| skeleton.alive[e as usize])
+        .collect();
+    let base = alive_ids
+        .iter()
+        .map(|&e| length(&skeleton.edges[e as usize]))
+        .fold(f64::INFINITY, f64::min)
+        .max(f64::MIN_POSITIVE);
+    let class_of = |e: &[u32; 2]| ((length(e) / base).log2().floor().max(0.0)) as usize;
+    let classes = alive_ids
+        .iter()
+        .map(|&e| class_of(&skeleton.edges[e as usize]))
+        .max()
+        .unwrap_or(0)
+        + 1;
+    let mut members: Vec<Vec<u32>> = vec![Vec::new(); classes];
+    for &id in &alive_ids {
+        members[class_of(&skeleton.edges[id as usize])].push(id);
+    }
+    let mid = |id: u32| {
+        let e = skeleton.edges[id as usize];
+        let (a, b) = (pts[e[0] as usize], pts[e[1] as usize]);
+        [0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1])]
+    };
+    let bbox = bounding_box(pts);
+    let grids: Vec<(f64, SparseGrid<u32>)> = members
+        .iter()
+        .enumerate()
+        .filter(|(_, list)| !list.is_empty())
+        .map(|(k, list)| {
+            let reach = 2f64.powi(k as i32) * base * 1.0000001;
+            (
+                reach,
+                SparseGrid::new(
+                    bbox,
+                    2.0 * reach,
+                    list.len(),
+                    |i| mid(list[i]),
+                    |i| list[i],
+                    |i| list[i],
+                ),
+            )
+        })
+        .collect();
+    let sk = &skeleton;
+    let crossings: Vec<Vec<u32>> = (0..m as u32)
+        .into_par_iter()
+        .with_min_len(256)
+        .map(|e| {
+            if !sk.alive[e as usize] {
+                return Vec::new();
+            }
+            let ends = sk.edges[e as usize];
+            let (a, b) = (pts[ends[0] as usize], pts[ends[1] as usize]);
+            let mut out = Vec::new();
+            for (reach, g) in &grids {
+                g.any_cell_near(a, b, *reach, |items| {
+                    for &f in items {
+                        if f != e && edges_conflict(pts, ends, sk.edges[f as usize]) {
+                            out.push(f);
+                        }
+                    }
+                    false
+                });
+            }
+            out.sort_unstable();
+            out.dedup();
+            out
+        })
+        .collect();
+    let mut cross_offsets = vec![0u32; m + 1];
+    let mut cross_list = Vec::new();
+    for (e, list) in crossings.into_iter().enumerate() {
+        cross_list.extend_from_slice(&list);
+        cross_offsets[e + 1] = cross_list.len() as u32;
+    }
+    skeleton.cross_offsets = cross_offsets;
+    skeleton.cross_list = cross_list;
+    for e in 0..m {
+        skeleton.certain[e] =
+            skeleton.alive[e] && (skeleton.hull[e] || skeleton.crossing(e as u32).is_empty());
+    }
+    skeleton
+}
+
+/// Is `e` locally minimal for some valid pair of triangles?
+fn locally_minimal(pts: &[Point], sk: &Skeleton, e: u32) -> bool {
+    let [u, v] = sk.edges[e as usize];
+    let (left, right) = sk.sides(e);
+    let apex = |t: u32| {
+        let (c, _) = sk.triangles[t as usize];
+        *c.iter().find(|&&x| x != u && x != v).unwrap()
+    };
+    let p = |i: u32| pts[i as usize];
+    for &tl in left {
+        if !sk.triangle_valid(tl) {
+            continue;
+        }
+        let r = apex(tl);
+        for &tr in right {
+            if !sk.triangle_valid(tr) {
+                continue;
+            }
+            let s = apex(tr);
+            if !properly_cross(p(u), p(v), p(r), p(s))
+                || compare_lengths(p(u), p(v), p(r), p(s)) != Ordering::Greater
+            {
+                return true;
+            }
+        }
+    }
+    false
+}
+
+fn run_lmt_loop(pts: &[Point], sk: &mut Skeleton) {
+    let m = sk.edges.len();
+    let mut queued = vec![true; m];
+    let mut work: Vec<u32> = (0..m as u32).rev().collect();
+    while let Some(e) = work.pop() {
+        queued[e as usize] = false;
+        if !sk.alive[e as usize] || sk.hull[e as usize] {
+            continue;
+        }
+        if locally_minimal(pts, sk, e) {
+            continue;
+        }
+        sk.alive[e as usize] = false;
+        let (left, right) = sk.sides(e);
+        let touched: Vec<u32> = left
+            .iter()
+            .chain(right)
+            .flat_map(|&t| sk.triangles[t as usize].1)
+            .collect();
+        for f in touched {
+            if f != e && sk.alive[f as usize] && !queued[f as usize] {
+                queued[f as usize] = true;
+                work.push(f);
+            }
+        }
+    }
+}
