@@ -61,7 +61,7 @@ pub use criteria::{CertifiedBound, CriterionInfo, Diagnostics, Optimality, Optio
 pub use error::{Error, PolygonProblem, Result, UnsupportedReason};
 pub use graphs::{
     convex_hull, convex_hull_edges, delaunay, delaunay_edges, gabriel_graph, minimum_spanning_tree,
-    relative_neighborhood_graph,
+    minimum_spanning_tree_under, relative_neighborhood_graph, relative_neighborhood_graph_under,
 };
 pub use registry::{
     graph, triangulate, triangulate_polygon, triangulate_polygon_with, triangulate_with, Criterion,

@@ -87,12 +87,24 @@ pub struct CriterionInfo {
     pub reference: &'static str,
 }
 
-/// Options of a criterion run. Empty today; norms for minmax length arrive
-/// here, so the type is `#[non_exhaustive]`: build it with
-/// `Options::default()`.
+/// Options of a criterion run. `#[non_exhaustive]`: build it with
+/// `Options::default()` and the `with_*` methods.
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
 #[non_exhaustive]
-pub struct Options {}
+pub struct Options {
+    /// The norm lengths are measured in (Euclidean by default). Read by
+    /// `minmax-length` and `greedy`; every other criterion refuses a
+    /// non-Euclidean metric with [`crate::UnsupportedReason::MetricNotSupported`].
+    pub metric: crate::kernel::Metric,
+}
+
+impl Options {
+    /// These options with lengths measured in `metric`.
+    pub fn with_metric(mut self, metric: crate::kernel::Metric) -> Self {
+        self.metric = metric;
+        self
+    }
+}
 
 /// Named counters a run reports, e.g. how many regions each method solved.
 /// They are part of the result (never global state), so concurrent runs do

@@ -42,6 +42,7 @@
 pub(crate) mod expansion;
 mod lune;
 pub mod metrics;
+mod norm;
 mod predicates;
 mod symbolic;
 
@@ -59,6 +60,7 @@ pub use predicates::{
     compare_doubled_area, compare_lengths, cross_sign, dot_sign, incircle_sign, on_open_segment,
     orient_sign, properly_cross, segments_intersect,
 };
+pub use norm::{side_of_direction, Metric, MetricProblem, MAX_LP_EXPONENT};
 pub use symbolic::{compare_lengths_symbolic, height_sign, orient_symbolic, segment_order};
 
 /// Why a coordinate is not accepted (see the module docs for the range).
