@@ -134,6 +134,8 @@ pub struct Solution {
     /// For a result that is not proven optimal, a certified bound on the
     /// optimum when one is cheap (e.g. MaxMin area of a general point set).
     pub bound: Option<CertifiedBound>,
+    /// The metric lengths were measured in ([`Options::metric`]).
+    pub metric: crate::kernel::Metric,
 }
 
 /// Triangulates `points` by `criterion` with default [`Options`].
@@ -151,9 +153,17 @@ pub fn triangulate_with(
     criterion: Criterion,
     options: &Options,
 ) -> Result<Solution> {
+    if !options.metric.is_euclidean() && criterion != Criterion::MinmaxLength {
+        return Err(Error::Unsupported {
+            criterion: criterion.name(),
+            reason: UnsupportedReason::MetricNotSupported {
+                metric: options.metric.name(),
+            },
+        });
+    }
     let mut phases = Vec::new();
     let solved = (criterion.entry().1)(points, options, &mut phases)?;
-    Ok(Solution::new(criterion, solved, phases))
+    Ok(Solution::new(criterion, solved, phases, options))
 }
 
 /// Triangulates the interior of `polygon` by `criterion` with default
@@ -186,17 +196,30 @@ pub fn triangulate_polygon_with(
     criterion: Criterion,
     options: &Options,
 ) -> Result<Solution> {
+    if !options.metric.is_euclidean() {
+        return Err(Error::Unsupported {
+            criterion: criterion.name(),
+            reason: UnsupportedReason::MetricNotSupported {
+                metric: options.metric.name(),
+            },
+        });
+    }
     let solve = criterion.polygon_entry().ok_or(Error::Unsupported {
         criterion: criterion.name(),
         reason: UnsupportedReason::NoPolygonInput,
     })?;
     let mut phases = Vec::new();
     let solved = solve(polygon, options, &mut phases)?;
-    Ok(Solution::new(criterion, solved, phases))
+    Ok(Solution::new(criterion, solved, phases, options))
 }
 
 impl Solution {
-    fn new(criterion: Criterion, solved: Solved, phases: Vec<crate::timing::Phase>) -> Self {
+    fn new(
+        criterion: Criterion,
+        solved: Solved,
+        phases: Vec<crate::timing::Phase>,
+        options: &Options,
+    ) -> Self {
         Solution {
             criterion,
             exact: solved.optimality.is_exact(),
@@ -206,7 +229,28 @@ impl Solution {
             phases,
             diagnostics: solved.diagnostics,
             bound: solved.bound,
+            metric: options.metric.clone(),
         }
+    }
+}
+
+impl Solution {
+    /// The longest edge under [`Solution::metric`] (exact comparisons) and its
+    /// length, rounded.
+    pub fn longest_edge_under_metric(&self) -> ([u32; 2], f64) {
+        let t = &self.triangulation;
+        let p = t.points();
+        let m = &self.metric;
+        let at = |e: [u32; 2]| [p[e[0] as usize], p[e[1] as usize]];
+        let mut best = t.edges()[0];
+        for e in t.edges() {
+            let (a, b) = (at(e), at(best));
+            if m.compare_norm(a[0], a[1], b[0], b[1]) == std::cmp::Ordering::Greater {
+                best = e;
+            }
+        }
+        let b = at(best);
+        (best, m.length(b[0], b[1]))
     }
 }
 
@@ -279,6 +323,33 @@ impl GraphKind {
 /// The edges of the graph `kind` of `points`, as input-index pairs (see
 /// [`GraphKind`] for the edge convention), with its timed phase.
 pub fn graph(points: &PointSet, kind: GraphKind) -> Result<(Vec<[u32; 2]>, Vec<Phase>)> {
+    graph_with(points, kind, &Options::default())
+}
+
+/// [`graph`] with lengths in `options.metric`: the RNG and the MST take any
+/// [`crate::kernel::Metric`] (sector candidates, exact lunes); the other
+/// graphs are Euclidean notions and refuse a non-Euclidean metric with
+/// [`UnsupportedReason::MetricNotSupported`].
+pub fn graph_with(
+    points: &PointSet,
+    kind: GraphKind,
+    options: &Options,
+) -> Result<(Vec<[u32; 2]>, Vec<Phase>)> {
+    let metric = &options.metric;
+    if !metric.is_euclidean() {
+        let mut phases = Vec::new();
+        let edges = timed(&mut phases, kind.name(), || match kind {
+            GraphKind::Rng => graphs::relative_neighborhood_graph_under(points, metric),
+            GraphKind::Mst => graphs::minimum_spanning_tree_under(points, metric),
+            _ => Err(Error::Unsupported {
+                criterion: kind.name(),
+                reason: UnsupportedReason::MetricNotSupported {
+                    metric: metric.name(),
+                },
+            }),
+        })?;
+        return Ok((edges, phases));
+    }
     let mut phases = Vec::new();
     let edges = timed(&mut phases, kind.name(), || match kind {
         GraphKind::Hull => Ok(graphs::convex_hull_edges(points)),

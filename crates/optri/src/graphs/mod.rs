@@ -14,7 +14,7 @@ mod relative_neighborhood_graph;
 pub use convex_hull::{convex_hull, convex_hull_edges};
 pub use delaunay::{delaunay, delaunay_edges};
 pub use gabriel_graph::gabriel_graph;
-pub(crate) use metric_graphs::{mst_under, rng_under};
+pub(crate) use metric_graphs::rng_under;
 pub use metric_graphs::{minimum_spanning_tree_under, relative_neighborhood_graph_under};
 pub use minimum_spanning_tree::minimum_spanning_tree;
 pub(crate) use relative_neighborhood_graph::perturbed_rng_from_delaunay;

@@ -105,6 +105,10 @@ impl Serialize for TriangulationReport<'_> {
                 area: b.value,
             }),
             algorithm: run.map(|s| s.algorithm.as_str()),
+            metric: run.filter(|s| !s.metric.is_euclidean()).map(|s| {
+                let (longest_edge, max_edge_length) = s.longest_edge_under_metric();
+                MetricDocument { name: s.metric.name(), max_edge_length, longest_edge }
+            }),
             points: t.points().len(),
             distinct_points: t.point_set().len(),
             duplicates: t.point_set().duplicates(),
@@ -128,6 +132,15 @@ struct BoundDocument {
     area: f64,
 }
 
+/// Lengths under a non-Euclidean metric (`Solution::metric`); `stats` stays
+/// Euclidean.
+#[derive(serde::Serialize)]
+struct MetricDocument {
+    name: String,
+    max_edge_length: f64,
+    longest_edge: [u32; 2],
+}
+
 /// The fields of a triangulation document, in the order written.
 #[derive(serde::Serialize)]
 struct TriangulationDocument<'a> {
@@ -146,6 +159,8 @@ struct TriangulationDocument<'a> {
     bound: Option<BoundDocument>,
     #[serde(skip_serializing_if = "Option::is_none")]
     algorithm: Option<&'a str>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    metric: Option<MetricDocument>,
     points: usize,
     distinct_points: usize,
     duplicates: &'a [[u32; 2]],
@@ -173,6 +188,7 @@ pub struct GraphReport<'a> {
     point_set: Option<&'a PointSet>,
     kind: Option<GraphKind>,
     timing: Option<&'a [Phase]>,
+    metric: Option<&'a crate::kernel::Metric>,
 }
 
 impl<'a> GraphReport<'a> {
@@ -184,6 +200,7 @@ impl<'a> GraphReport<'a> {
             point_set: None,
             kind: None,
             timing: None,
+            metric: None,
         }
     }
 
@@ -196,6 +213,16 @@ impl<'a> GraphReport<'a> {
             point_set: Some(point_set),
             kind: Some(kind),
             timing: None,
+            metric: None,
+        }
+    }
+
+    /// Reports the metric the graph was computed under (`"metric"`, written
+    /// only for a non-Euclidean one).
+    pub fn with_metric(self, metric: &'a crate::kernel::Metric) -> Self {
+        Self {
+            metric: (!metric.is_euclidean()).then_some(metric),
+            ..self
         }
     }
 
@@ -229,6 +256,7 @@ impl Serialize for GraphReport<'_> {
             schema_version: SCHEMA_VERSION,
             document: "graph",
             kind: self.kind.map(GraphKind::name),
+            metric: self.metric.map(|m| m.name()),
             points: self.points.len(),
             distinct_points: self.point_set.map(PointSet::len),
             duplicates: self.point_set.map(PointSet::duplicates),
@@ -247,6 +275,8 @@ struct GraphDocument<'a> {
     document: &'static str,
     #[serde(skip_serializing_if = "Option::is_none")]
     kind: Option<&'static str>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    metric: Option<String>,
     points: usize,
     #[serde(skip_serializing_if = "Option::is_none")]
     distinct_points: Option<usize>,
