@@ -48,6 +48,11 @@ pub(crate) struct TriangulateArgs {
     /// Optimality criterion (case-insensitive).
     #[arg(long, default_value = "delaunay", value_parser = criterion_names())]
     pub criterion: String,
+    /// Norm for lengths: euclidean | l1 | linf | lp:P (integer P ≥ 1) |
+    /// polygon:x1,y1,x2,y2,... (a centrally symmetric convex unit polygon). Taken by
+    /// minmax-length, and by the rng and mst graphs.
+    #[arg(long, default_value = "euclidean", value_name = "METRIC")]
+    pub metric: String,
     /// Write the triangulation; format by extension: .json .svg .geojson, or .ele, which
     /// also writes the points to the .node file beside it (X.ele writes X.node; refused if
     /// X.node is the input). Repeatable.
@@ -66,6 +71,11 @@ pub(crate) struct GraphArgs {
     /// Which graph (case-insensitive).
     #[arg(long, value_parser = graph_kinds())]
     pub kind: GraphKind,
+    /// Norm for lengths: euclidean | l1 | linf | lp:P (integer P ≥ 1) |
+    /// polygon:x1,y1,x2,y2,... (a centrally symmetric convex unit polygon). Taken by
+    /// minmax-length, and by the rng and mst graphs.
+    #[arg(long, default_value = "euclidean", value_name = "METRIC")]
+    pub metric: String,
     /// Write the graph; format by extension: .svg .json .geojson. Repeatable.
     #[arg(long, short, value_name = "FILE")]
     pub output: Vec<PathBuf>,

@@ -213,7 +213,7 @@ impl fmt::Display for Error {
                 UnsupportedReason::MetricNotSupported { metric } => write!(
                     f,
                     "{criterion} does not take a metric other than euclidean (got {metric}); \
-                     metrics apply to minmax-length, greedy and the rng and mst graphs"
+                     metrics apply to minmax-length and the rng and mst graphs"
                 ),
                 UnsupportedReason::NoPolygonInput => write!(
                     f,

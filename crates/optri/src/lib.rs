@@ -64,8 +64,8 @@ pub use graphs::{
     minimum_spanning_tree_under, relative_neighborhood_graph, relative_neighborhood_graph_under,
 };
 pub use registry::{
-    graph, graph_with, triangulate, triangulate_polygon, triangulate_polygon_with, triangulate_with, Criterion,
-    GraphKind, Solution,
+    graph, graph_with, triangulate, triangulate_polygon, triangulate_polygon_with,
+    triangulate_with, Criterion, GraphKind, Solution,
 };
 pub use structures::{Domain, PointSet, SimplePolygon, Stats, Triangulation};
 pub use timing::Phase;

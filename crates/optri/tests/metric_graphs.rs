@@ -41,7 +41,9 @@ fn brute_rng(pts: &[Point], m: &Metric) -> Vec<[u32; 2]> {
 
 fn brute_mst(pts: &[Point], m: &Metric) -> Vec<[u32; 2]> {
     let n = pts.len() as u32;
-    let mut all: Vec<[u32; 2]> = (0..n).flat_map(|p| (p + 1..n).map(move |q| [p, q])).collect();
+    let mut all: Vec<[u32; 2]> = (0..n)
+        .flat_map(|p| (p + 1..n).map(move |q| [p, q]))
+        .collect();
     all.sort_by(|a, b| m.compare_lengths_symbolic(pts, *a, *b));
     let mut comp: Vec<u32> = (0..n).collect();
     let mut out = Vec::new();
@@ -69,11 +71,17 @@ fn inputs(rng: &mut StdRng) -> Vec<(String, Vec<Point>)> {
     v.push(("grid 9x9 spacing 0.5".into(), grid(9, 9, 0.5)));
     v.push(("grid subset".into(), grid_subset(rng, 10, 10, 0.5)));
     v.push(("lattice".into(), lattice_points(rng, 60, 0..8, 0..8)));
-    v.push(("collinear runs".into(), collinear_runs(rng, 2..5, 3..8, 0..3)));
+    v.push((
+        "collinear runs".into(),
+        collinear_runs(rng, 2..5, 3..8, 0..3),
+    ));
     v.push(("integer circle r=5".into(), integer_circle_points(5)));
     v.push((
         "huge negative".into(),
-        uniform_unit_square(rng, 30).iter().map(|p| [p[0] * -1e40 - 3e40, p[1] * 1e40]).collect(),
+        uniform_unit_square(rng, 30)
+            .iter()
+            .map(|p| [p[0] * -1e40 - 3e40, p[1] * 1e40])
+            .collect(),
     ));
     v
 }
@@ -133,8 +141,12 @@ fn exact_norm(m: &Metric, a: Point, b: Point) -> num_rational::BigRational {
         (0..k)
             .map(|i| {
                 let (u, w) = (vs[i], vs[(i + 1) % k]);
-                let (ux, uy, wx, wy) =
-                    (to_rational(u[0]), to_rational(u[1]), to_rational(w[0]), to_rational(w[1]));
+                let (ux, uy, wx, wy) = (
+                    to_rational(u[0]),
+                    to_rational(u[1]),
+                    to_rational(w[0]),
+                    to_rational(w[1]),
+                );
                 ((&wy - &uy) * &dx - (&wx - &ux) * &dy) / (&ux * &wy - &uy * &wx)
             })
             .max()
@@ -158,9 +170,17 @@ fn norm_comparisons_are_exact() {
             };
             let (a, b, c) = (pick(&mut rng), pick(&mut rng), pick(&mut rng));
             // d close to a shifted copy of b so near-ties occur.
-            let d = if round % 3 == 0 { [c[0] + (b[0] - a[0]), c[1] + (b[1] - a[1])] } else { pick(&mut rng) };
+            let d = if round % 3 == 0 {
+                [c[0] + (b[0] - a[0]), c[1] + (b[1] - a[1])]
+            } else {
+                pick(&mut rng)
+            };
             let want = exact_norm(&m, a, b).cmp(&exact_norm(&m, c, d));
-            assert_eq!(m.compare_norm(a, b, c, d), want, "{m} {a:?}{b:?} vs {c:?}{d:?}");
+            assert_eq!(
+                m.compare_norm(a, b, c, d),
+                want,
+                "{m} {a:?}{b:?} vs {c:?}{d:?}"
+            );
             if want == Ordering::Equal {
                 ties += 1;
             }

@@ -32,8 +32,12 @@ fn metrics() -> Vec<(Metric, Norm)> {
 
 fn solve(pts: &[Point], metric: &Metric) -> optri::Triangulation {
     let ps = PointSet::new(pts).unwrap();
-    let s = triangulate_with(&ps, Criterion::MinmaxLength, &Options::default().with_metric(metric.clone()))
-        .unwrap();
+    let s = triangulate_with(
+        &ps,
+        Criterion::MinmaxLength,
+        &Options::default().with_metric(metric.clone()),
+    )
+    .unwrap();
     s.triangulation.validate().unwrap();
     s.triangulation
 }
@@ -54,13 +58,27 @@ fn small_sets(rng: &mut StdRng) -> Vec<(String, Vec<Point>)> {
     }
     v.push(("grid 3x3".into(), grid(3, 3, 1.0)));
     v.push(("grid 4x2".into(), grid(4, 2, 1.0)));
-    v.push(("circle r5".into(), circle_r5_ccw().into_iter().take(9).collect()));
+    v.push((
+        "circle r5".into(),
+        circle_r5_ccw().into_iter().take(9).collect(),
+    ));
     v.push(("collinear runs".into(), {
         let mut p = collinear_runs(rng, 2..3, 3..4, 1..2);
         p.truncate(9);
         p
     }));
-    v.push(("square with diagonal points".into(), vec![[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [0.0, 2.0], [1.0, 1.0], [1.0, 0.0], [3.0, 1.0]]));
+    v.push((
+        "square with diagonal points".into(),
+        vec![
+            [0.0, 0.0],
+            [2.0, 0.0],
+            [2.0, 2.0],
+            [0.0, 2.0],
+            [1.0, 1.0],
+            [1.0, 0.0],
+            [3.0, 1.0],
+        ],
+    ));
     v
 }
 
@@ -74,7 +92,8 @@ fn equals_exhaustive_enumeration_under_every_metric() {
             let ps = PointSet::new(pts).unwrap();
             let d = ps.points().to_vec();
             if optri::kernel::orient_sign(d[0], d[1], d[2]) == 0
-                && d.iter().all(|&p| optri::kernel::orient_sign(d[0], d[1], p) == 0)
+                && d.iter()
+                    .all(|&p| optri::kernel::orient_sign(d[0], d[1], p) == 0)
             {
                 continue;
             }
@@ -102,7 +121,10 @@ fn larger_sets(rng: &mut StdRng) -> Vec<(String, Vec<Point>)> {
     v.push(("grid 12x12".into(), grid(12, 12, 1.0)));
     v.push(("grid subset 15".into(), grid_subset(rng, 15, 15, 0.6)));
     v.push(("lattice 150".into(), lattice_points(rng, 150, 0..20, 0..20)));
-    v.push(("collinear runs".into(), collinear_runs(rng, 3..6, 5..15, 0..5)));
+    v.push((
+        "collinear runs".into(),
+        collinear_runs(rng, 3..6, 5..15, 0..5),
+    ));
     v.push(("integer circle r=25".into(), integer_circle_points(25)));
     v.push(("jittered arc".into(), jittered_arc(rng, 120)));
     v.push(("parabola".into(), parabola(60)));
@@ -121,7 +143,11 @@ fn equals_the_cubic_program_under_every_metric() {
             let (cubic, _) = minmax_length_under_with(&ps, &metric, None).unwrap();
             cubic.validate().unwrap();
             let want = value(&norm, &cubic);
-            assert_eq!(value(&norm, &solve(pts, &metric)), want, "{metric} on {name}");
+            assert_eq!(
+                value(&norm, &solve(pts, &metric)),
+                want,
+                "{metric} on {name}"
+            );
             let (quad, d) = minmax_length_under_with(&ps, &metric, Some(0)).unwrap();
             quad.validate().unwrap();
             assert_eq!(value(&norm, &quad), want, "{metric} §5.1 on {name}");
@@ -138,7 +164,11 @@ fn equals_the_cubic_program_under_every_metric() {
 fn equals_the_cubic_program_up_to_2000_points() {
     let mut rng = StdRng::seed_from_u64(SEED_CONVEX);
     for (metric, norm) in metrics() {
-        for pts in [uniform_unit_square(&mut rng, 2000), jittered_arc(&mut rng, 1000), grid(40, 40, 1.0)] {
+        for pts in [
+            uniform_unit_square(&mut rng, 2000),
+            jittered_arc(&mut rng, 1000),
+            grid(40, 40, 1.0),
+        ] {
             let ps = PointSet::new(&pts).unwrap();
             let (cubic, _) = minmax_length_under_with(&ps, &metric, None).unwrap();
             let want = value(&norm, &cubic);
@@ -163,9 +193,18 @@ fn euclidean_metric_is_the_euclidean_product() {
 fn metrics_are_refused_where_they_mean_nothing() {
     let ps = PointSet::new(&grid(3, 3, 1.0)).unwrap();
     let opts = Options::default().with_metric(Metric::l1());
-    for c in [Criterion::Delaunay, Criterion::MaxminArea, Criterion::MinmaxArea, Criterion::MinWeight, Criterion::Greedy] {
+    for c in [
+        Criterion::Delaunay,
+        Criterion::MaxminArea,
+        Criterion::MinmaxArea,
+        Criterion::MinWeight,
+        Criterion::Greedy,
+    ] {
         match triangulate_with(&ps, c, &opts) {
-            Err(Error::Unsupported { reason: UnsupportedReason::MetricNotSupported { metric }, .. }) => {
+            Err(Error::Unsupported {
+                reason: UnsupportedReason::MetricNotSupported { metric },
+                ..
+            }) => {
                 assert_eq!(metric, "l1")
             }
             other => panic!("{c:?}: {other:?}"),

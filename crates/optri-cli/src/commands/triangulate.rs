@@ -6,11 +6,14 @@ use crate::args::TriangulateArgs;
 use crate::report;
 use crate::CliResult;
 use optri::io::{self, OutputFormat, TriangulationReport};
-use optri::Criterion;
+use optri::kernel::Metric;
+use optri::{Criterion, Options};
 
 pub(crate) fn run(args: TriangulateArgs) -> CliResult<()> {
     // Check everything the user typed before any work.
     let criterion = Criterion::from_name(&args.criterion).map_err(|e| e.to_string())?;
+    let metric = Metric::parse(&args.metric).map_err(|e| format!("--metric: {e}"))?;
+    let options = Options::default().with_metric(metric);
     let mut run = Run::start(&args.input, &args.output, OutputFormat::from_path, true)?;
     let solution = match &run.polygon {
         Some(polygon) => {
@@ -28,9 +31,9 @@ pub(crate) fn run(args: TriangulateArgs) -> CliResult<()> {
                     supported.join(", ")
                 ));
             }
-            optri::triangulate_polygon(polygon, criterion)
+            optri::triangulate_polygon_with(polygon, criterion, &options)
         }
-        None => optri::triangulate(&run.points, criterion),
+        None => optri::triangulate_with(&run.points, criterion, &options),
     }
     .map_err(|e| e.to_string())?;
     run.timing.phases.extend(solution.phases.iter().cloned());
@@ -47,5 +50,13 @@ pub(crate) fn run(args: TriangulateArgs) -> CliResult<()> {
         let document = TriangulationReport::of_solution(&solution).with_timing(&run.timing.phases);
         return report::emit_json(&document);
     }
-    report::emit(&report::triangulation_summary(&run, &solution, &written))
+    let mut summary = report::triangulation_summary(&run, &solution, &written);
+    if !solution.metric.is_euclidean() {
+        let ([a, b], length) = solution.longest_edge_under_metric();
+        summary.push_str(&format!(
+            "metric {}: longest edge {a}-{b}, length {length}\n",
+            solution.metric
+        ));
+    }
+    report::emit(&summary)
 }

@@ -143,20 +143,34 @@ struct Buckets {
     height: usize,
     start: Vec<u32>,
     items: Vec<u32>,
+    /// The coordinates of `items`, in the same (cell) order: scans read
+    /// contiguous memory.
+    coords: Vec<Point>,
 }
 
 impl Buckets {
     fn new(points: &[Point]) -> Self {
         let [x0, y0, x1, y1] = bounding_box(points);
-        let area = ((x1 - x0) * (y1 - y0)).max(((x1 - x0).max(y1 - y0)).powi(2) / points.len() as f64);
+        let area =
+            ((x1 - x0) * (y1 - y0)).max(((x1 - x0).max(y1 - y0)).powi(2) / points.len() as f64);
         let mut cell = (2.0 * area / points.len() as f64).sqrt();
         if !(cell.is_finite() && cell > 0.0) {
             cell = 1.0;
         }
         let dim = |extent: f64| ((extent / cell).floor() as usize + 1).min(1 << 15);
         let (width, height) = (dim(x1 - x0), dim(y1 - y0));
-        let cell = cell.max((x1 - x0) / (width as f64 - 0.5)).max((y1 - y0) / (height as f64 - 0.5));
-        let mut b = Buckets { origin: [x0, y0], cell, width, height, start: vec![], items: vec![] };
+        let cell = cell
+            .max((x1 - x0) / (width as f64 - 0.5))
+            .max((y1 - y0) / (height as f64 - 0.5));
+        let mut b = Buckets {
+            origin: [x0, y0],
+            cell,
+            width,
+            height,
+            start: vec![],
+            items: vec![],
+            coords: vec![],
+        };
         let mut count = vec![0u32; width * height + 1];
         for p in points {
             count[b.index(b.cell_of(*p)) + 1] += 1;
@@ -172,22 +186,34 @@ impl Buckets {
             fill[k] += 1;
         }
         b.start = count;
+        b.coords = items.iter().map(|&i| points[i as usize]).collect();
         b.items = items;
         b
     }
     fn cell_of(&self, p: Point) -> [usize; 2] {
         let c = |v: f64, o: f64, n: usize| (((v - o) / self.cell) as usize).min(n - 1);
-        [c(p[0], self.origin[0], self.width), c(p[1], self.origin[1], self.height)]
+        [
+            c(p[0], self.origin[0], self.width),
+            c(p[1], self.origin[1], self.height),
+        ]
     }
     fn index(&self, [i, j]: [usize; 2]) -> usize {
         j * self.width + i
     }
-    fn items(&self, c: [usize; 2]) -> &[u32] {
+    /// The points of cell `c` with their coordinates.
+    fn entries(&self, c: [usize; 2]) -> impl Iterator<Item = (u32, Point)> + '_ {
         let k = self.index(c);
-        &self.items[self.start[k] as usize..self.start[k + 1] as usize]
+        let r = self.start[k] as usize..self.start[k + 1] as usize;
+        self.items[r.clone()]
+            .iter()
+            .copied()
+            .zip(self.coords[r].iter().copied())
     }
     fn bounds(&self, [i, j]: [usize; 2]) -> [f64; 4] {
-        let (x, y) = (self.origin[0] + i as f64 * self.cell, self.origin[1] + j as f64 * self.cell);
+        let (x, y) = (
+            self.origin[0] + i as f64 * self.cell,
+            self.origin[1] + j as f64 * self.cell,
+        );
         [x, y, x + self.cell, y + self.cell]
     }
     /// The in-grid cells at Chebyshev cell distance exactly `k` from `c`.
@@ -230,71 +256,173 @@ fn wedge_may_meet(w: [Point; 2], p: Point, b: [f64; 4]) -> bool {
     !(corners.iter().all(|&c| side(w[0], c) < 0) || corners.iter().all(|&c| side(w[1], c) > 0))
 }
 
+/// The octant of `r − p` when the rounded differences decide it (the signs
+/// of rounded differences are exact; `|dx|` against `|dy|` is clear when they
+/// differ by more than their rounding errors); `None` on a boundary ray or
+/// near one, where the exact wedge tests decide.
+#[inline]
+fn clear_octant(p: Point, r: Point) -> Option<usize> {
+    let (dx, dy) = (r[0] - p[0], r[1] - p[1]);
+    if dx == 0.0 || dy == 0.0 {
+        return None;
+    }
+    let (ax, ay) = (dx.abs(), dy.abs());
+    if (ax - ay).abs() <= 4.0 * f64::EPSILON * (ax + ay) {
+        return None;
+    }
+    let x_major = ax > ay;
+    Some(match (dx > 0.0, dy > 0.0) {
+        (true, true) => {
+            if x_major {
+                0
+            } else {
+                1
+            }
+        }
+        (false, true) => {
+            if x_major {
+                3
+            } else {
+                2
+            }
+        }
+        (false, false) => {
+            if x_major {
+                4
+            } else {
+                5
+            }
+        }
+        (true, false) => {
+            if x_major {
+                7
+            } else {
+                6
+            }
+        }
+    })
+}
+
 /// The candidate neighbours of every point (the nearest in each wedge, ties
 /// kept), as sorted, deduplicated edges.
-fn candidates(points: &[Point], metric: &Metric, wedges: &[[Point; 2]]) -> Vec<[u32; 2]> {
+fn candidates(
+    points: &[Point],
+    metric: &Metric,
+    wedges: &[[Point; 2]],
+    octants: bool,
+) -> Vec<[u32; 2]> {
     let grid = Buckets::new(points);
     let reach = metric.sup_radius();
-    let per_point: Vec<Vec<[u32; 2]>> = (0..points.len() as u32)
+    let ws = wedges.len();
+    // Points in cell order, so that consecutive searches touch nearby cells.
+    let per_point: Vec<Vec<[u32; 2]>> = (0..points.len())
         .into_par_iter()
-        .map(|pi| {
-            let p = points[pi as usize];
+        .map(|slot| {
+            let (pi, p) = (grid.items[slot], grid.coords[slot]);
             let c = grid.cell_of(p);
-            let mut best: Vec<Vec<u32>> = vec![Vec::new(); wedges.len()];
-            let mut best_len = vec![f64::INFINITY; wedges.len()];
-            let mut open = vec![true; wedges.len()];
+            let mut best: Vec<Vec<u32>> = vec![Vec::new(); ws];
+            let mut best_len = vec![f64::INFINITY; ws];
+            let mut open = vec![true; ws];
+            let mut met = vec![false; ws];
+            let mut open_count = ws;
             let mut k = 0usize;
-            while open.iter().any(|&o| o) {
-                let mut met = vec![false; wedges.len()];
+            let offer =
+                |s: usize, ri: u32, r: Point, best: &mut Vec<Vec<u32>>, best_len: &mut Vec<f64>| {
+                    match best[s].first() {
+                        None => {
+                            best[s].push(ri);
+                            best_len[s] = metric.length(p, r);
+                        }
+                        Some(&q) => {
+                            let lr = metric.length(p, r);
+                            // Clearly farther: skip the exact comparison.
+                            if lr > best_len[s] * (1.0 + 1e-9) {
+                                return;
+                            }
+                            match metric.compare_norm_then_euclidean(p, r, p, points[q as usize]) {
+                                Ordering::Less => {
+                                    best[s].clear();
+                                    best[s].push(ri);
+                                    best_len[s] = lr;
+                                }
+                                Ordering::Equal => best[s].push(ri),
+                                Ordering::Greater => {}
+                            }
+                        }
+                    }
+                };
+            while open_count > 0 {
+                met.iter_mut().for_each(|m| *m = false);
                 grid.ring(c, k, |cell| {
                     let bounds = grid.bounds(cell);
-                    let live: Vec<usize> = (0..wedges.len())
-                        .filter(|&s| open[s] && wedge_may_meet(wedges[s], p, bounds))
-                        .collect();
-                    if live.is_empty() {
+                    // Only the open wedges this cell can still improve: it may
+                    // meet the wedge and is not beyond the wedge's best (norm ≥
+                    // the cell's L∞ distance / reach).
+                    let gap = (bounds[0] - p[0])
+                        .max(p[0] - bounds[2])
+                        .max(bounds[1] - p[1])
+                        .max(p[1] - bounds[3])
+                        .max(0.0);
+                    let lb = gap / reach * (1.0 - 1e-9);
+                    let mut useful = false;
+                    for s in 0..ws {
+                        if open[s]
+                            && (best[s].is_empty() || best_len[s] * (1.0 + 1e-9) >= lb)
+                            && (k < 2 || wedge_may_meet(wedges[s], p, bounds))
+                        {
+                            useful = true;
+                            break;
+                        }
+                    }
+                    if !useful {
                         return;
                     }
-                    for &s in &live {
-                        met[s] = true;
-                    }
-                    for &ri in grid.items(cell) {
+                    for (ri, r) in grid.entries(cell) {
                         if ri == pi {
                             continue;
                         }
-                        let r = points[ri as usize];
-                        for &s in &live {
-                            let w = wedges[s];
-                            if side_of_direction(w[0], p, r) < 0 || side_of_direction(w[1], p, r) > 0 {
-                                continue;
-                            }
-                            match best[s].first() {
-                                None => {
-                                    best[s].push(ri);
-                                    best_len[s] = metric.length(p, r);
+                        match octants.then(|| clear_octant(p, r)).flatten() {
+                            Some(s) => {
+                                if open[s] {
+                                    offer(s, ri, r, &mut best, &mut best_len);
                                 }
-                                Some(&q) => match metric.compare_norm_then_euclidean(
-                                    p,
-                                    r,
-                                    p,
-                                    points[q as usize],
-                                ) {
-                                    Ordering::Less => {
-                                        best[s].clear();
-                                        best[s].push(ri);
-                                        best_len[s] = metric.length(p, r);
-                                    }
-                                    Ordering::Equal => best[s].push(ri),
-                                    Ordering::Greater => {}
-                                },
                             }
+                            None => {
+                                for s in 0..ws {
+                                    let w = wedges[s];
+                                    if open[s]
+                                        && side_of_direction(w[0], p, r) >= 0
+                                        && side_of_direction(w[1], p, r) <= 0
+                                    {
+                                        offer(s, ri, r, &mut best, &mut best_len);
+                                    }
+                                }
+                            }
+                        }
+                    }
+                    // An empty wedge is settled once a ring has no in-grid
+                    // cell meeting it (wedge ∩ bounding box is convex).
+                    for s in 0..ws {
+                        if open[s]
+                            && best[s].is_empty()
+                            && !met[s]
+                            && wedge_may_meet(wedges[s], p, bounds)
+                        {
+                            met[s] = true;
                         }
                     }
                 });
                 // Points of ring k+1 are at L∞ distance ≥ k·cell, norm ≥ that / reach.
                 let lower = k as f64 * grid.cell / reach * (1.0 - 1e-9);
-                for s in 0..wedges.len() {
-                    if open[s] && (!met[s] || best_len[s] * (1.0 + 1e-9) < lower) {
+                for s in 0..ws {
+                    let settled = if best[s].is_empty() {
+                        !met[s]
+                    } else {
+                        best_len[s] * (1.0 + 1e-9) < lower
+                    };
+                    if open[s] && settled {
                         open[s] = false;
+                        open_count -= 1;
                     }
                 }
                 k += 1;
@@ -325,11 +453,10 @@ fn lune_is_empty(points: &[Point], metric: &Metric, grid: &Buckets, [p, q]: [u32
     let slack = len * (1.0 + 1e-9);
     for j in lo[1]..=hi[1] {
         for i in lo[0]..=hi[0] {
-            for &x in grid.items([i, j]) {
+            for (x, px) in grid.entries([i, j]) {
                 if x == p || x == q {
                     continue;
                 }
-                let px = points[x as usize];
                 if metric.length(pp, px) > slack || metric.length(pq, px) > slack {
                     continue;
                 }
@@ -343,10 +470,15 @@ fn lune_is_empty(points: &[Point], metric: &Metric, grid: &Buckets, [p, q]: [u32
 }
 
 /// The RNG under `metric` on distinct points (distinct indices, sorted pairs).
-pub(crate) fn rng_under(points: &[Point], metric: &Metric) -> std::result::Result<Vec<[u32; 2]>, MetricProblem> {
+pub(crate) fn rng_under(
+    points: &[Point],
+    metric: &Metric,
+) -> std::result::Result<Vec<[u32; 2]>, MetricProblem> {
+    let octants =
+        metric.unit_polygon().is_none() || metric.name() == "l1" || metric.name() == "linf";
     let wedges = wedges(metric)?;
     let grid = Buckets::new(points);
-    let cands = candidates(points, metric, &wedges);
+    let cands = candidates(points, metric, &wedges, octants);
     Ok(cands
         .into_par_iter()
         .filter(|&e| lune_is_empty(points, metric, &grid, e))
@@ -354,7 +486,11 @@ pub(crate) fn rng_under(points: &[Point], metric: &Metric) -> std::result::Resul
 }
 
 /// Kruskal over `edges` in the metric's tie-broken order.
-pub(crate) fn mst_under(points: &[Point], metric: &Metric, mut edges: Vec<[u32; 2]>) -> Vec<[u32; 2]> {
+pub(crate) fn mst_under(
+    points: &[Point],
+    metric: &Metric,
+    mut edges: Vec<[u32; 2]>,
+) -> Vec<[u32; 2]> {
     edges.par_sort_by(|a, b| metric.compare_lengths_symbolic(points, *a, *b));
     let mut parent: Vec<u32> = (0..points.len() as u32).collect();
     fn find(parent: &mut [u32], mut x: u32) -> u32 {
@@ -379,7 +515,10 @@ pub(crate) fn mst_under(points: &[Point], metric: &Metric, mut edges: Vec<[u32; 
 /// edge iff no other point `x` has `max(|px|, |qx|) < |pq|` (lengths and
 /// ties as in [`Metric::compare_lengths_symbolic`]). Sorted input-index pairs.
 /// The Euclidean metric gives [`crate::relative_neighborhood_graph`].
-pub fn relative_neighborhood_graph_under(points: &PointSet, metric: &Metric) -> Result<Vec<[u32; 2]>> {
+pub fn relative_neighborhood_graph_under(
+    points: &PointSet,
+    metric: &Metric,
+) -> Result<Vec<[u32; 2]>> {
     if metric.is_euclidean() {
         return super::relative_neighborhood_graph(points);
     }

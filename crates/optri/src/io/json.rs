@@ -107,7 +107,11 @@ impl Serialize for TriangulationReport<'_> {
             algorithm: run.map(|s| s.algorithm.as_str()),
             metric: run.filter(|s| !s.metric.is_euclidean()).map(|s| {
                 let (longest_edge, max_edge_length) = s.longest_edge_under_metric();
-                MetricDocument { name: s.metric.name(), max_edge_length, longest_edge }
+                MetricDocument {
+                    name: s.metric.name(),
+                    max_edge_length,
+                    longest_edge,
+                }
             }),
             points: t.points().len(),
             distinct_points: t.point_set().len(),

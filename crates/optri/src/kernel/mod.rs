@@ -55,12 +55,12 @@ pub const MAX_COORDINATE: f64 = 3.2138760885179806e60; // 2^201
 pub const MIN_COORDINATE: f64 = 1.793662034335766e-43; // 2^-142
 
 pub use lune::{in_half_lune, in_half_lune_symbolic, in_lune, in_lune_symbolic};
+pub use norm::{side_of_direction, Metric, MetricProblem, MAX_LP_EXPONENT};
 pub use predicates::{
     angle_at_least_30_degrees, compare_angles, compare_areas, compare_corner_angles,
     compare_doubled_area, compare_lengths, cross_sign, dot_sign, incircle_sign, on_open_segment,
     orient_sign, properly_cross, segments_intersect,
 };
-pub use norm::{side_of_direction, Metric, MetricProblem, MAX_LP_EXPONENT};
 pub use symbolic::{compare_lengths_symbolic, height_sign, orient_symbolic, segment_order};
 
 /// Why a coordinate is not accepted (see the module docs for the range).

@@ -221,7 +221,12 @@ impl PolygonNorm {
         let mut weight: f64 = 0.0;
         for i in 0..k {
             let (a, b) = (vs[i], vs[(i + 1) % k]);
-            let (ax, ay, bx, by) = (rational(a[0]), rational(a[1]), rational(b[0]), rational(b[1]));
+            let (ax, ay, bx, by) = (
+                rational(a[0]),
+                rational(a[1]),
+                rational(b[0]),
+                rational(b[1]),
+            );
             // Outer normal (e_y, −e_x) of e = b − a; support value cross(a, b) > 0.
             let support = &ax * &by - &ay * &bx;
             let fa = (&by - &ay) / &support;
@@ -231,15 +236,27 @@ impl PolygonNorm {
             facets.push([fa, fb]);
             facets_f64.push(f);
         }
-        Ok(PolygonNorm { vertices: vs, facets, facets_f64, weight: weight * (1.0 + 8.0 * U) })
+        Ok(PolygonNorm {
+            vertices: vs,
+            facets,
+            facets_f64,
+            weight: weight * (1.0 + 8.0 * U),
+        })
     }
 
     fn value_f64(&self, dx: f64, dy: f64) -> f64 {
-        self.facets_f64.iter().map(|f| f[0] * dx + f[1] * dy).fold(f64::NEG_INFINITY, f64::max)
+        self.facets_f64
+            .iter()
+            .map(|f| f[0] * dx + f[1] * dy)
+            .fold(f64::NEG_INFINITY, f64::max)
     }
 
     fn value_exact(&self, dx: &BigRational, dy: &BigRational) -> BigRational {
-        self.facets.iter().map(|f| &f[0] * dx + &f[1] * dy).max().expect("at least 4 facets")
+        self.facets
+            .iter()
+            .map(|f| &f[0] * dx + &f[1] * dy)
+            .max()
+            .expect("at least 4 facets")
     }
 }
 
@@ -256,12 +273,16 @@ impl Metric {
     /// The L1 (Manhattan) norm, `|dx| + |dy|`.
     pub fn l1() -> Self {
         let v = [[1.0, 0.0], [0.0, 1.0], [-1.0, 0.0], [0.0, -1.0]];
-        Metric(Kind::L1(PolygonNorm::new(&v).expect("the diamond is valid")))
+        Metric(Kind::L1(
+            PolygonNorm::new(&v).expect("the diamond is valid"),
+        ))
     }
     /// The L∞ (Chebyshev) norm, `max(|dx|, |dy|)`.
     pub fn linf() -> Self {
         let v = [[1.0, 1.0], [-1.0, 1.0], [-1.0, -1.0], [1.0, -1.0]];
-        Metric(Kind::LInf(PolygonNorm::new(&v).expect("the square is valid")))
+        Metric(Kind::LInf(
+            PolygonNorm::new(&v).expect("the square is valid"),
+        ))
     }
     /// The Lp norm for an integer `1 ≤ p ≤` [`MAX_LP_EXPONENT`] (`lp(1)` is
     /// [`Metric::l1`], `lp(2)` is [`Metric::euclidean`]).
@@ -332,8 +353,12 @@ impl Metric {
             Kind::L1(_) => "l1".into(),
             Kind::LInf(_) => "linf".into(),
             Kind::Polygon(poly) => {
-                let c: Vec<String> =
-                    poly.vertices.iter().flatten().map(|v| format!("{v}")).collect();
+                let c: Vec<String> = poly
+                    .vertices
+                    .iter()
+                    .flatten()
+                    .map(|v| format!("{v}"))
+                    .collect();
                 format!("polygon:{}", c.join(","))
             }
         }
@@ -364,9 +389,11 @@ impl Metric {
     pub fn sup_radius(&self) -> f64 {
         match &self.0 {
             Kind::Euclidean | Kind::Power(_) => 1.0,
-            Kind::L1(p) | Kind::LInf(p) | Kind::Polygon(p) => {
-                p.vertices.iter().map(|v| v[0].abs().max(v[1].abs())).fold(0.0, f64::max)
-            }
+            Kind::L1(p) | Kind::LInf(p) | Kind::Polygon(p) => p
+                .vertices
+                .iter()
+                .map(|v| v[0].abs().max(v[1].abs()))
+                .fold(0.0, f64::max),
         }
     }
 
@@ -420,7 +447,8 @@ impl Metric {
                 let g = (2 * p + 8) as f64 * U;
                 decided(s1, s2, g * s1, g * s2).unwrap_or_else(|| {
                     let e = |dx: BigRational, dy: BigRational| {
-                        num_traits::pow(dx.abs(), p as usize) + num_traits::pow(dy.abs(), p as usize)
+                        num_traits::pow(dx.abs(), p as usize)
+                            + num_traits::pow(dy.abs(), p as usize)
                     };
                     e(diff(b[0], a[0]), diff(b[1], a[1]))
                         .cmp(&e(diff(d[0], c[0]), diff(d[1], c[1])))
@@ -429,15 +457,13 @@ impl Metric {
             Kind::L1(_) => {
                 let (s1, s2) = (dx1.abs() + dy1.abs(), dx2.abs() + dy2.abs());
                 // (1+u)² per sum.
-                decided(s1, s2, 3.0 * U * s1, 3.0 * U * s2).unwrap_or_else(|| {
-                    self.compare_polygon_exact(a, b, c, d)
-                })
+                decided(s1, s2, 3.0 * U * s1, 3.0 * U * s2)
+                    .unwrap_or_else(|| self.compare_polygon_exact(a, b, c, d))
             }
             Kind::LInf(_) => {
                 let (s1, s2) = (dx1.abs().max(dy1.abs()), dx2.abs().max(dy2.abs()));
-                decided(s1, s2, 2.0 * U * s1, 2.0 * U * s2).unwrap_or_else(|| {
-                    self.compare_polygon_exact(a, b, c, d)
-                })
+                decided(s1, s2, 2.0 * U * s1, 2.0 * U * s2)
+                    .unwrap_or_else(|| self.compare_polygon_exact(a, b, c, d))
             }
             Kind::Polygon(poly) => {
                 // Per facet: a rounded coefficient (u), a rounded difference
@@ -480,7 +506,12 @@ impl Metric {
     /// under this norm with the tie-break of the module docs: `Equal` only for
     /// the same pair of points. For the Euclidean norm this is
     /// [`crate::kernel::compare_lengths_symbolic`].
-    pub fn compare_lengths_symbolic(&self, points: &[Point], ab: [u32; 2], cd: [u32; 2]) -> Ordering {
+    pub fn compare_lengths_symbolic(
+        &self,
+        points: &[Point],
+        ab: [u32; 2],
+        cd: [u32; 2],
+    ) -> Ordering {
         if self.is_euclidean() {
             return compare_lengths_symbolic(points, ab, cd);
         }
@@ -526,8 +557,11 @@ impl Metric {
                 let [a, b] = ab;
                 let (pa, pb) = (points[a as usize], points[b as usize]);
                 let (dx, dy) = (diff(pb[0], pa[0]), diff(pb[1], pa[1]));
-                let values: Vec<BigRational> =
-                    poly.facets.iter().map(|f| &f[0] * &dx + &f[1] * &dy).collect();
+                let values: Vec<BigRational> = poly
+                    .facets
+                    .iter()
+                    .map(|f| &f[0] * &dx + &f[1] * &dy)
+                    .collect();
                 let max = values.iter().max().expect("facets").clone();
                 // The active facets (one, or two where v points at a vertex).
                 let mut best: Option<Series> = None;
@@ -667,7 +701,8 @@ fn power_series(points: &[Point], ab: [u32; 2], p: u32) -> Series {
         // (σ·(t_b − t_a))^k = σ^k Σ_j C(k,j) t_b^j (−t_a)^(k−j)
         let mut add_power = |k: u32, sigma: i32, scale: BigRational| {
             for j in 0..=k {
-                let sign = if (k - j) % 2 == 1 { -1 } else { 1 } * if k % 2 == 1 { sigma } else { 1 };
+                let sign =
+                    if (k - j) % 2 == 1 { -1 } else { 1 } * if k % 2 == 1 { sigma } else { 1 };
                 let coef = &scale * BigRational::from_integer(binomial(k, j) * BigInt::from(sign));
                 s.add(exponent(&[(tb, j as u64), (ta, (k - j) as u64)]), coef);
             }
@@ -680,8 +715,8 @@ fn power_series(points: &[Point], ab: [u32; 2], p: u32) -> Series {
             let sigma = if v.is_positive() { 1 } else { -1 };
             let m = v.abs();
             for k in 1..=p {
-                let scale =
-                    BigRational::from_integer(binomial(p, k)) * num_traits::pow(m.clone(), (p - k) as usize);
+                let scale = BigRational::from_integer(binomial(p, k))
+                    * num_traits::pow(m.clone(), (p - k) as usize);
                 add_power(k, sigma, scale);
             }
         }
@@ -699,12 +734,7 @@ pub fn side_of_direction(d: Point, p: Point, r: Point) -> i32 {
         return if f > 0.0 { 1 } else { -1 };
     }
     if d[0] == d[0].trunc() && d[1] == d[1].trunc() && d[0].abs() <= 1.0 && d[1].abs() <= 1.0 {
-        return sign_of_sum(&[
-            d[0] * r[1],
-            -d[0] * p[1],
-            -d[1] * r[0],
-            d[1] * p[0],
-        ]);
+        return sign_of_sum(&[d[0] * r[1], -d[0] * p[1], -d[1] * r[0], d[1] * p[0]]);
     }
     let mut e = Expansion::new();
     e.add_two_term_product((d[0], 0.0), ry, 1.0);
@@ -738,16 +768,39 @@ mod tests {
         ));
         // A "bow tie" and a collinear corner.
         assert!(matches!(
-            Metric::polygon(&[[1.0, 0.0], [1.0, 1.0], [0.0, 1.0], [-1.0, 0.0], [-1.0, -1.0], [0.0, -1.0]]
-                .map(|v| v)),
+            Metric::polygon(
+                &[
+                    [1.0, 0.0],
+                    [1.0, 1.0],
+                    [0.0, 1.0],
+                    [-1.0, 0.0],
+                    [-1.0, -1.0],
+                    [0.0, -1.0]
+                ]
+                .map(|v| v)
+            ),
             Ok(_)
         ));
         assert!(matches!(
-            Metric::polygon(&[[1.0, 0.0], [1.0, 1.0], [1.0, 2.0], [-1.0, 0.0], [-1.0, -1.0], [-1.0, -2.0]]),
+            Metric::polygon(&[
+                [1.0, 0.0],
+                [1.0, 1.0],
+                [1.0, 2.0],
+                [-1.0, 0.0],
+                [-1.0, -1.0],
+                [-1.0, -2.0]
+            ]),
             Err(MetricProblem::NotStrictlyConvex(_))
         ));
         assert!(matches!(
-            Metric::polygon(&[[1.0, 0.0], [-1.0, 0.1], [0.0, 1.0], [-1.0, 0.0], [1.0, -0.1], [0.0, -1.0]]),
+            Metric::polygon(&[
+                [1.0, 0.0],
+                [-1.0, 0.1],
+                [0.0, 1.0],
+                [-1.0, 0.0],
+                [1.0, -0.1],
+                [0.0, -1.0]
+            ]),
             Err(MetricProblem::NotStrictlyConvex(_))
         ));
         assert!(Metric::parse("lp:0").is_err());
@@ -759,8 +812,9 @@ mod tests {
 
     #[test]
     fn perturbation_never_ties_distinct_segments() {
-        let pts: Vec<Point> =
-            (0..4).flat_map(|x| (0..4).map(move |y| [x as f64, y as f64])).collect();
+        let pts: Vec<Point> = (0..4)
+            .flat_map(|x| (0..4).map(move |y| [x as f64, y as f64]))
+            .collect();
         let segs: Vec<[u32; 2]> = (0..16u32)
             .flat_map(|a| (a + 1..16).map(move |b| [a, b]))
             .collect();
@@ -768,8 +822,15 @@ mod tests {
             let mut sorted = segs.clone();
             sorted.sort_by(|s, t| m.compare_lengths_symbolic(&pts, *s, *t));
             for w in sorted.windows(2) {
-                assert_eq!(m.compare_lengths_symbolic(&pts, w[0], w[1]), Ordering::Less, "{m}");
-                assert_eq!(m.compare_lengths_symbolic(&pts, w[1], w[0]), Ordering::Greater);
+                assert_eq!(
+                    m.compare_lengths_symbolic(&pts, w[0], w[1]),
+                    Ordering::Less,
+                    "{m}"
+                );
+                assert_eq!(
+                    m.compare_lengths_symbolic(&pts, w[1], w[0]),
+                    Ordering::Greater
+                );
             }
         }
     }

@@ -179,7 +179,11 @@ pub(crate) const INFO: CriterionInfo = CriterionInfo {
                 length triangulation, FOCS 1991 / SIAM J. Comput. 1993",
 };
 
-pub(crate) fn solve(points: &PointSet, options: &Options, phases: &mut Vec<Phase>) -> Result<Solved> {
+pub(crate) fn solve(
+    points: &PointSet,
+    options: &Options,
+    phases: &mut Vec<Phase>,
+) -> Result<Solved> {
     if !options.metric.is_euclidean() {
         let method = under_metric::MetricMethod::Product {
             incomplete_from: under_metric::INCOMPLETE_FROM,

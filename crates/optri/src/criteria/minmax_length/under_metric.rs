@@ -93,7 +93,11 @@ pub(crate) fn run_under(
         faces
             .par_iter()
             .flat_map_iter(|face| {
-                let region = Region { points: pts, vertices: face, symbolic: true };
+                let region = Region {
+                    points: pts,
+                    vertices: face,
+                    symbolic: true,
+                };
                 let k = face.len();
                 if let MetricMethod::Product { incomplete_from } = method {
                     if k >= incomplete_from.max(4) && region.is_strictly_convex() {
@@ -116,7 +120,9 @@ pub(crate) fn run_under(
             })
             .collect()
     });
-    let triangles = timed(phases, "repair", || repair_flat_triangles(pts, triangles, &counters));
+    let triangles = timed(phases, "repair", || {
+        repair_flat_triangles(pts, triangles, &counters)
+    });
     let mut diagnostics = counters.into_diagnostics_for_metric();
     diagnostics.add("regions", faces.len() as u64);
     diagnostics.add("regions_by_5_1", by_5_1.into_inner());
@@ -178,8 +184,9 @@ fn incomplete_convex(
             } else {
                 [x, p]
             };
-            if best.is_none_or(|(_, b)| metric.compare_lengths_symbolic(points, far, b) == Ordering::Less)
-            {
+            if best.is_none_or(|(_, b)| {
+                metric.compare_lengths_symbolic(points, far, b) == Ordering::Less
+            }) {
                 best = Some((m, far));
             }
         }
