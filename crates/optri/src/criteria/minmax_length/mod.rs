@@ -217,10 +217,10 @@ pub(crate) fn solve(
 const ALGORITHM: &str = "Edelsbrunner–Tan O(n²): Length-Lemma lower bound (longest hull/RNG edge) certifies Delaunay regions; hull ∪ RNG(S′) regions; §5.1 incomplete and §5.3/§6 complete rng-polygons on the symbolic perturbation (exact cubic DP, pruned by the regions' Delaunay diagonals, for regions under 32 corners; §6 Case 2 pockets by u_L search, clipped §5.1 and §5.2 fan-out); §5.4 flat-triangle repair";
 
 /// The method's name under a non-Euclidean metric.
-const ALGORITHM_UNDER_METRIC: &str = "Edelsbrunner–Tan §7: hull ∪ RNG regions under the simulated strictly convex norm (RNG by nearest neighbours in sectors, exact lunes); §5.1 on large strictly convex incomplete regions, the exact cubic program on the others; §5.4 flat-triangle repair";
+const ALGORITHM_UNDER_METRIC: &str = "Edelsbrunner–Tan §7: hull ∪ RNG regions under the simulated strictly convex norm (RNG by nearest neighbours in sectors, exact lunes); §5.1 (visible lune vertex minimising the longer side) on large incomplete regions, the exact cubic program on the others; §5.4 flat-triangle repair";
 
 /// Minmax-length under `metric` with the cubic program on every region, or
-/// with §5.1 on every strictly convex incomplete region of at least
+/// with §5.1 on every incomplete region of at least
 /// `incomplete_from` corners (0: all of them), and the diagnostics. For tests
 /// and benchmarks.
 #[cfg(any(test, feature = "internals"))]

@@ -12,13 +12,13 @@
 //!    RNG of a strictly convex norm is plane, and a point on the open segment
 //!    `pq` lies in `pq`'s lune. So the regions of `ch(S) ∪ rng_N(S′)` are
 //!    found by the planar-graph face walk without perturbation.
-//! 2. Each region: §5.1 with the remark's vertex choice for large strictly
-//!    convex *incomplete* regions (the one non-RNG edge `pq` is a hull edge,
-//!    a 1-edge with the region beyond it; take the lune vertex minimising
-//!    `max(|xp|, |xq|)`, visible because the region is convex, recurse on
-//!    both sides) — this avoids §7's point-to-segment distance, and is
-//!    O(k²); every other region goes to §3's exact cubic program with the
-//!    metric's chord order. **Not proven here:** §7 asserts that §5–§6 carry
+//! 2. Each region: §5.1 with the remark's vertex choice for large
+//!    *incomplete* regions (the one non-RNG edge `pq` is a hull edge, a 1-edge
+//!    with the region beyond it; take the lune vertex visible from `p` and `q`
+//!    minimising `max(|xp|, |xq|)`, recurse on both sides) — this avoids §7's
+//!    point-to-segment distance; O(k²) on convex regions (all visible), plus
+//!    the O(k) visibility tests otherwise; every other region goes to §3's
+//!    exact cubic program with the metric's chord order. **Not proven here:** §7 asserts that §5–§6 carry
 //!    over to strictly convex norms "after careful re-examination" without
 //!    giving it; the §5.1 step is therefore tested against the cubic program
 //!    and exhaustive enumeration (tests/minmax_length_metric.rs), and the
@@ -39,7 +39,7 @@ use super::repair::repair_flat_triangles;
 use crate::criteria::Diagnostics;
 use crate::error::{Error, Result};
 use crate::graphs::rng_under;
-use crate::kernel::{Metric, Point};
+use crate::kernel::Metric;
 use crate::parallel::prelude::*;
 use crate::polygon_program::{optimal_triangulation, LargestDiagonal};
 use crate::spatial::convex_hull_cycle;
@@ -51,15 +51,15 @@ use std::collections::HashSet;
 /// Which polygon method the regions use.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub(crate) enum MetricMethod {
-    /// §5.1 on strictly convex incomplete regions of at least this many
-    /// corners, the cubic program on the rest.
+    /// §5.1 on incomplete regions of at least this many corners, the cubic
+    /// program on the rest.
     Product { incomplete_from: usize },
     /// The cubic program on every region (test reference).
     #[cfg_attr(not(any(test, feature = "internals")), allow(dead_code))]
     Cubic,
 }
 
-/// Strictly convex incomplete regions of at least this many corners use §5.1.
+/// Incomplete regions of at least this many corners use §5.1.
 pub(crate) const INCOMPLETE_FROM: usize = 16;
 
 pub(crate) fn run_under(
@@ -100,7 +100,7 @@ pub(crate) fn run_under(
                 };
                 let k = face.len();
                 if let MetricMethod::Product { incomplete_from } = method {
-                    if k >= incomplete_from.max(4) && region.is_strictly_convex() {
+                    if k >= incomplete_from.max(4) {
                         let missing: Vec<usize> = (0..k)
                             .filter(|&i| {
                                 let (a, b) = (face[i], face[(i + 1) % k]);
@@ -108,7 +108,8 @@ pub(crate) fn run_under(
                             })
                             .collect();
                         if let [i] = missing[..] {
-                            if let Some(t) = incomplete_convex(pts, metric, face, (i + 1) % k) {
+                            let convex = region.is_strictly_convex();
+                            if let Some(t) = incomplete(&region, metric, convex, (i + 1) % k) {
                                 by_5_1.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
                                 return t;
                             }
@@ -152,28 +153,40 @@ fn cubic(region: &Region, metric: &Metric) -> Vec<[u32; 3]> {
     .collect()
 }
 
-/// §5.1 on a strictly convex region whose only non-RNG edge ends at position
-/// `start` (the edge from `start − 1` to `start`): the chain
-/// `c₀ = v[start], …, c_{k−1} = v[start − 1]` with the 1-edge `c₀ c_{k−1}`.
-/// `None` if a lune turns out empty (an inconsistency: the caller falls back).
-fn incomplete_convex(
-    points: &[Point],
+/// §5.1 on a region whose only non-RNG edge ends at position `start` (the
+/// edge from `start − 1` to `start`): the chain `c₀ = v[start], …,
+/// c_{k−1} = v[start − 1]` with the 1-edge `c₀ c_{k−1}`. Step 1 takes, among
+/// the vertices in the lune of `pq` that are visible from `p` and `q`, the
+/// one minimising `max(|xp|, |xq|)` (the remark after §5.1: any visible lune
+/// vertex keeps the recursion's invariant; in a convex region every vertex
+/// is visible). `None` if no such vertex exists (an inconsistency: the
+/// caller falls back to the cubic program).
+fn incomplete(
+    region: &Region,
     metric: &Metric,
-    face: &[u32],
+    convex: bool,
     start: usize,
 ) -> Option<Vec<[u32; 3]>> {
+    let points = region.points;
+    let face = region.vertices;
     let k = face.len();
-    let c: Vec<u32> = (0..k).map(|i| face[(start + i) % k]).collect();
+    let pos = |m: usize| (start + m) % k;
+    let c: Vec<u32> = (0..k).map(|i| face[pos(i)]).collect();
+    // Visible along the chain: a boundary edge, or a diagonal of the region
+    // (which, sharing an endpoint with the sub-polygon's chord, stays inside
+    // the sub-polygon).
+    let sees = |a: usize, b: usize| {
+        convex || b == a + 1 || a == b + 1 || region.is_diagonal(pos(a), pos(b))
+    };
     let mut out = Vec::with_capacity(k - 2);
     let mut stack = vec![(0usize, k - 1)];
+    let mut lune: Vec<(usize, [u32; 2])> = Vec::new();
     while let Some((i, j)) = stack.pop() {
         if j - i < 2 {
             continue;
         }
         let (p, q) = (c[i], c[j]);
-        // The remark after §5.1: among the vertices in the lune of pq, the one
-        // minimising max(|xp|, |xq|) (visible: the region is convex).
-        let mut best: Option<(usize, [u32; 2])> = None;
+        lune.clear();
         for m in i + 1..j {
             let x = c[m];
             if !metric.in_lune_symbolic(points, p, q, x) {
@@ -184,13 +197,10 @@ fn incomplete_convex(
             } else {
                 [x, p]
             };
-            if best.is_none_or(|(_, b)| {
-                metric.compare_lengths_symbolic(points, far, b) == Ordering::Less
-            }) {
-                best = Some((m, far));
-            }
+            lune.push((m, far));
         }
-        let (m, _) = best?;
+        lune.sort_by(|a, b| metric.compare_lengths_symbolic(points, a.1, b.1));
+        let &(m, _) = lune.iter().find(|&&(m, _)| sees(i, m) && sees(m, j))?;
         out.push([p, c[m], q]);
         stack.push((i, m));
         stack.push((m, j));
