@@ -187,8 +187,7 @@ fn incomplete(
         }
         let (p, q) = (c[i], c[j]);
         lune.clear();
-        for m in i + 1..j {
-            let x = c[m];
+        for (m, &x) in c.iter().enumerate().take(j).skip(i + 1) {
             if !metric.in_lune_symbolic(points, p, q, x) {
                 continue;
             }
