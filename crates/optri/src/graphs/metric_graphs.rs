@@ -491,7 +491,7 @@ pub(crate) fn mst_under(
     metric: &Metric,
     mut edges: Vec<[u32; 2]>,
 ) -> Vec<[u32; 2]> {
-    edges.par_sort_by(|a, b| metric.compare_lengths_symbolic(points, *a, *b));
+    edges.par_sort_unstable_by(|a, b| metric.compare_lengths_symbolic(points, *a, *b));
     let mut parent: Vec<u32> = (0..points.len() as u32).collect();
     fn find(parent: &mut [u32], mut x: u32) -> u32 {
         while parent[x as usize] != x {
