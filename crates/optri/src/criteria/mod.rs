@@ -93,8 +93,8 @@ pub struct CriterionInfo {
 #[non_exhaustive]
 pub struct Options {
     /// The norm lengths are measured in (Euclidean by default). Read by
-    /// `minmax-length` and `greedy`; every other criterion refuses a
-    /// non-Euclidean metric with [`crate::UnsupportedReason::MetricNotSupported`].
+    /// `minmax-length` (and by [`crate::graph_with`] for the RNG and MST);
+    /// every other criterion refuses a non-Euclidean metric with [`crate::UnsupportedReason::MetricNotSupported`].
     pub metric: crate::kernel::Metric,
 }
 
