@@ -52,6 +52,11 @@ pub(crate) struct TriangulateArgs {
     /// Optimality criterion (case-insensitive).
     #[arg(long, default_value = "delaunay", value_parser = criterion_names())]
     pub criterion: String,
+    /// Norm for lengths: euclidean | l1 | linf | lp:P (integer P ≥ 1) |
+    /// polygon:x1,y1,x2,y2,... (a centrally symmetric convex unit polygon). Taken by
+    /// minmax-length, and by the rng and mst graphs.
+    #[arg(long, default_value = "euclidean", value_name = "METRIC")]
+    pub metric: String,
     /// Write the triangulation; format by extension: .json .svg .geojson, or .ele / .edge
     /// (Triangle's triangles / edges), which also write the points to the .node file beside
     /// them (X.ele writes X.node; refused if X.node is the input). Repeatable.
@@ -98,6 +103,11 @@ pub(crate) struct GraphArgs {
     /// Which graph (case-insensitive).
     #[arg(long, value_parser = graph_kinds())]
     pub kind: GraphKind,
+    /// Norm for lengths: euclidean | l1 | linf | lp:P (integer P ≥ 1) |
+    /// polygon:x1,y1,x2,y2,... (a centrally symmetric convex unit polygon). Taken by
+    /// minmax-length, and by the rng and mst graphs.
+    #[arg(long, default_value = "euclidean", value_name = "METRIC")]
+    pub metric: String,
     /// Write the graph; format by extension: .svg .json .geojson, or .edge (Triangle's
     /// format), which also writes the points to the .node file beside it. Repeatable.
     #[arg(long, short, value_name = "FILE")]

@@ -32,6 +32,7 @@ pub mod graphs;
 pub mod greedy;
 pub mod inputs;
 pub mod klincsek;
+pub mod norm;
 pub mod polygon;
 pub mod symbolic;
 

@@ -44,6 +44,9 @@ pub enum Error {
     },
     /// A polygon given as input is not a simple polygon.
     InvalidPolygon(PolygonProblem),
+    /// A metric description or polygon norm that is not valid (not convex,
+    /// not centrally symmetric, a bad exponent...).
+    InvalidMetric(crate::kernel::MetricProblem),
     /// A line of an input file could not be read.
     Parse {
         /// 1-based line number (0 when the problem concerns the whole input).
@@ -111,6 +114,12 @@ pub enum UnsupportedReason {
     },
     /// The criterion does not accept a polygon as input (yet).
     NoPolygonInput,
+    /// The criterion has no meaning under a non-Euclidean metric (angles,
+    /// areas) or does not implement it yet; names the metric.
+    MetricNotSupported {
+        /// The metric's name, e.g. `"l1"`.
+        metric: String,
+    },
 }
 
 /// What makes a vertex cycle not a simple polygon ([`Error::InvalidPolygon`]).
@@ -176,6 +185,7 @@ impl fmt::Display for Error {
                 u32::MAX
             ),
             Error::InvalidPolygon(problem) => write!(f, "not a simple polygon: {problem}"),
+            Error::InvalidMetric(problem) => write!(f, "invalid metric: {problem}"),
             Error::Parse { line, message } if *line > 0 => write!(f, "line {line}: {message}"),
             Error::Parse { message, .. } => write!(f, "{message}"),
             Error::Io(message) => write!(f, "{message}"),
@@ -213,6 +223,11 @@ impl fmt::Display for Error {
                     "{criterion} is not supported for general point sets yet: it needs points in \
                      convex position or a simple polygon ({interior} of {distinct} distinct points \
                      are interior to the convex hull)"
+                ),
+                UnsupportedReason::MetricNotSupported { metric } => write!(
+                    f,
+                    "{criterion} does not take a metric other than euclidean (got {metric}); \
+                     metrics apply to minmax-length and the rng and mst graphs"
                 ),
                 UnsupportedReason::NoPolygonInput => write!(
                     f,

@@ -8,7 +8,9 @@ pub use crate::criteria::greedy::{
     GreedyAlgorithm,
 };
 pub use crate::criteria::min_weight::MAX_POINTS as MIN_WEIGHT_MAX_POINTS;
-pub use crate::criteria::minmax_length::{minmax_length_cubic, minmax_length_with, SMALL_REGION};
+pub use crate::criteria::minmax_length::{
+    minmax_length_cubic, minmax_length_under_with, minmax_length_with, SMALL_REGION,
+};
 pub use crate::structures::planar_graph::{Face, PlanarGraph};
 
 /// The area criteria on points in convex position by Klincsek's cubic

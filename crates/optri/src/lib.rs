@@ -63,12 +63,12 @@ pub use criteria::{
 pub use error::{Error, PolygonProblem, Result, UnsupportedReason};
 pub use graphs::{
     convex_hull, convex_hull_edges, delaunay, delaunay_edges, gabriel_graph, minimum_spanning_tree,
-    relative_neighborhood_graph,
+    minimum_spanning_tree_under, relative_neighborhood_graph, relative_neighborhood_graph_under,
 };
 pub use registry::{
-    compare, compare_polygon, graph, graph_of_points, triangulate, triangulate_polygon,
-    triangulate_polygon_with, triangulate_with, Comparison, Criterion, GraphKind, PointGraph,
-    Solution,
+    compare, compare_polygon, graph, graph_of_points, graph_of_points_with, graph_with,
+    triangulate, triangulate_polygon, triangulate_polygon_with, triangulate_with, Comparison,
+    Criterion, GraphKind, PointGraph, Solution,
 };
 pub use structures::{Domain, PointSet, SimplePolygon, Stats, Triangulation};
 pub use timing::Phase;

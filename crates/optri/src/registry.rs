@@ -138,6 +138,8 @@ pub struct Solution {
     /// For a result that is not proven optimal, a certified bound on the
     /// optimum when one is cheap (e.g. MaxMin area of a general point set).
     pub bound: Option<CertifiedBound>,
+    /// The metric lengths were measured in ([`Options::metric`]).
+    pub metric: crate::kernel::Metric,
 }
 
 /// Triangulates `points` by `criterion` with default [`Options`].
@@ -155,11 +157,19 @@ pub fn triangulate_with(
     criterion: Criterion,
     options: &Options,
 ) -> Result<Solution> {
+    if !options.metric.is_euclidean() && criterion != Criterion::MinmaxLength {
+        return Err(Error::Unsupported {
+            criterion: criterion.name(),
+            reason: UnsupportedReason::MetricNotSupported {
+                metric: options.metric.name(),
+            },
+        });
+    }
     let mut phases = Vec::new();
     options.report(criterion.name(), 0.0);
     let solved = (criterion.entry().1)(points, options, &mut phases)?;
     options.report(criterion.name(), 1.0);
-    Ok(Solution::new(criterion, solved, phases))
+    Ok(Solution::new(criterion, solved, phases, options))
 }
 
 /// Triangulates the interior of `polygon` by `criterion` with default
@@ -192,6 +202,14 @@ pub fn triangulate_polygon_with(
     criterion: Criterion,
     options: &Options,
 ) -> Result<Solution> {
+    if !options.metric.is_euclidean() {
+        return Err(Error::Unsupported {
+            criterion: criterion.name(),
+            reason: UnsupportedReason::MetricNotSupported {
+                metric: options.metric.name(),
+            },
+        });
+    }
     let solve = criterion.polygon_entry().ok_or(Error::Unsupported {
         criterion: criterion.name(),
         reason: UnsupportedReason::NoPolygonInput,
@@ -200,7 +218,7 @@ pub fn triangulate_polygon_with(
     options.report(criterion.name(), 0.0);
     let solved = solve(polygon, options, &mut phases)?;
     options.report(criterion.name(), 1.0);
-    Ok(Solution::new(criterion, solved, phases))
+    Ok(Solution::new(criterion, solved, phases, options))
 }
 
 /// The result of one criterion in [`compare`]: its solution, or the error
@@ -255,7 +273,12 @@ fn chosen(criteria: &[Criterion]) -> &[Criterion] {
 }
 
 impl Solution {
-    fn new(criterion: Criterion, solved: Solved, phases: Vec<crate::timing::Phase>) -> Self {
+    fn new(
+        criterion: Criterion,
+        solved: Solved,
+        phases: Vec<crate::timing::Phase>,
+        options: &Options,
+    ) -> Self {
         Solution {
             criterion,
             exact: solved.optimality.is_exact(),
@@ -266,6 +289,7 @@ impl Solution {
             phases,
             diagnostics: solved.diagnostics,
             bound: solved.bound,
+            metric: options.metric.clone(),
         }
     }
 }
@@ -281,6 +305,26 @@ fn short_algorithm(detail: &str) -> &str {
         .min()
         .unwrap_or(detail.len());
     &detail[..end]
+}
+
+impl Solution {
+    /// The longest edge under [`Solution::metric`] (exact comparisons) and its
+    /// length, rounded.
+    pub fn longest_edge_under_metric(&self) -> ([u32; 2], f64) {
+        let t = &self.triangulation;
+        let p = t.points();
+        let m = &self.metric;
+        let at = |e: [u32; 2]| [p[e[0] as usize], p[e[1] as usize]];
+        let mut best = t.edges()[0];
+        for e in t.edges() {
+            let (a, b) = (at(e), at(best));
+            if m.compare_norm(a[0], a[1], b[0], b[1]) == std::cmp::Ordering::Greater {
+                best = e;
+            }
+        }
+        let b = at(best);
+        (best, m.length(b[0], b[1]))
+    }
 }
 
 /// A proximity graph optri computes.
@@ -380,9 +424,34 @@ pub struct PointGraph {
 /// The coordinate errors of [`PointSet::new`]; [`Error::TooFewPointsForGraph`]
 /// for fewer than two distinct points.
 pub fn graph_of_points(points: &[crate::kernel::Point], kind: GraphKind) -> Result<PointGraph> {
+    graph_of_points_with(points, kind, &Options::default())
+}
+
+/// [`graph_of_points`] under `options` (e.g. a metric, as [`graph_with`]).
+/// On two points or a line the path is the RNG and the MST under every
+/// norm too (for `a, b, c` in order on a line, `‖c − a‖ = ‖b − a‖ + ‖c − b‖`
+/// puts `b` strictly inside the lune of `ac`); the kinds a metric does not
+/// apply to are refused as by [`graph_with`].
+///
+/// # Errors
+/// As [`graph_of_points`] and [`graph_with`].
+pub fn graph_of_points_with(
+    points: &[crate::kernel::Point],
+    kind: GraphKind,
+    options: &Options,
+) -> Result<PointGraph> {
+    let metric = &options.metric;
+    if !metric.is_euclidean() && !matches!(kind, GraphKind::Rng | GraphKind::Mst) {
+        return Err(Error::Unsupported {
+            criterion: kind.name(),
+            reason: UnsupportedReason::MetricNotSupported {
+                metric: metric.name(),
+            },
+        });
+    }
     match PointSet::new(points) {
         Ok(point_set) => {
-            let (edges, phases) = graph(&point_set, kind)?;
+            let (edges, phases) = graph_with(&point_set, kind, options)?;
             Ok(PointGraph {
                 edges,
                 phases,
@@ -443,6 +512,33 @@ fn collinear_path(points: &[crate::kernel::Point]) -> (Vec<u32>, Vec<[u32; 2]>) 
 /// The edges of the graph `kind` of `points`, as input-index pairs (see
 /// [`GraphKind`] for the edge convention), with its timed phase.
 pub fn graph(points: &PointSet, kind: GraphKind) -> Result<(Vec<[u32; 2]>, Vec<Phase>)> {
+    graph_with(points, kind, &Options::default())
+}
+
+/// [`graph`] with lengths in `options.metric`: the RNG and the MST take any
+/// [`crate::kernel::Metric`] (sector candidates, exact lunes); the other
+/// graphs are Euclidean notions and refuse a non-Euclidean metric with
+/// [`UnsupportedReason::MetricNotSupported`].
+pub fn graph_with(
+    points: &PointSet,
+    kind: GraphKind,
+    options: &Options,
+) -> Result<(Vec<[u32; 2]>, Vec<Phase>)> {
+    let metric = &options.metric;
+    if !metric.is_euclidean() {
+        let mut phases = Vec::new();
+        let edges = timed(&mut phases, kind.name(), || match kind {
+            GraphKind::Rng => graphs::relative_neighborhood_graph_under(points, metric),
+            GraphKind::Mst => graphs::minimum_spanning_tree_under(points, metric),
+            _ => Err(Error::Unsupported {
+                criterion: kind.name(),
+                reason: UnsupportedReason::MetricNotSupported {
+                    metric: metric.name(),
+                },
+            }),
+        })?;
+        return Ok((edges, phases));
+    }
     let mut phases = Vec::new();
     let edges = timed(&mut phases, kind.name(), || match kind {
         GraphKind::Hull => Ok(graphs::convex_hull_edges(points)),

@@ -6,11 +6,13 @@ use crate::args::TriangulateArgs;
 use crate::report;
 use crate::CliResult;
 use optri::io::{self, OutputFormat, TriangulationReport};
-use optri::Criterion;
+use optri::kernel::Metric;
+use optri::{Criterion, Options};
 
 pub(crate) fn run(args: TriangulateArgs) -> CliResult<()> {
     // Check everything the user typed before any work.
     let criterion = Criterion::from_name(&args.criterion).map_err(|e| e.to_string())?;
+    let metric = Metric::parse(&args.metric).map_err(|e| format!("--metric: {e}"))?;
     let mut run = Reading::start(
         &args.input,
         &args.output,
@@ -19,7 +21,9 @@ pub(crate) fn run(args: TriangulateArgs) -> CliResult<()> {
         args.style.quiet,
     )?
     .validate()?;
-    let options = optri::Options::default().with_progress(run.progress.hook());
+    let options = Options::default()
+        .with_progress(run.progress.hook())
+        .with_metric(metric);
     let solution = match &run.polygon {
         Some(polygon) => {
             if !criterion.supports_polygons() {
@@ -78,7 +82,12 @@ pub(crate) fn run(args: TriangulateArgs) -> CliResult<()> {
     if args.json {
         return report::emit_json(&document);
     }
-    report::emit(&report::triangulation_summary(
-        &run, &document, &solution, &written,
-    ))
+    let mut summary = report::triangulation_summary(&run, &document, &solution, &written);
+    if let Some(([a, b], length)) = document.metric_longest_edge() {
+        summary.push_str(&format!(
+            "metric {}: longest edge {a}-{b}, length {length}\n",
+            solution.metric
+        ));
+    }
+    report::emit(&summary)
 }

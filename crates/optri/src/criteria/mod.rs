@@ -87,22 +87,30 @@ pub struct CriterionInfo {
     pub reference: &'static str,
 }
 
-/// Options of a criterion run. The type is `#[non_exhaustive]` (norms for
-/// minmax length arrive here): build it with `Options::default()` and the
-/// `with_` methods.
+/// Options of a criterion run. `#[non_exhaustive]`: build it with
+/// `Options::default()` and the `with_*` methods.
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
 #[non_exhaustive]
 pub struct Options {
     /// Called as the run goes (see [`Progress`]); `None`: nothing is called.
     pub progress: Option<Progress>,
+    /// The norm lengths are measured in (Euclidean by default). Read by
+    /// `minmax-length` (and by [`crate::graph_with`] for the RNG and MST);
+    /// every other criterion refuses a non-Euclidean metric with [`crate::UnsupportedReason::MetricNotSupported`].
+    pub metric: crate::kernel::Metric,
 }
 
 impl Options {
     /// These options with `progress` called as the run goes.
-    pub fn with_progress(self, progress: Progress) -> Self {
-        Self {
-            progress: Some(progress),
-        }
+    pub fn with_progress(mut self, progress: Progress) -> Self {
+        self.progress = Some(progress);
+        self
+    }
+
+    /// These options with lengths measured in `metric`.
+    pub fn with_metric(mut self, metric: crate::kernel::Metric) -> Self {
+        self.metric = metric;
+        self
     }
 
     /// Reports `fraction` (0 to 1) of the phase `phase` to the progress

@@ -140,6 +140,18 @@ impl<'a> TriangulationReport<'a> {
             .map(|b| self.bound_area(b.value))
     }
 
+    /// Under a non-Euclidean metric ([`Solution::metric`]): the longest edge
+    /// under it (chosen exactly) and its length in the user's units (a norm
+    /// is homogeneous, so scaled input divides it by `10^k`).
+    pub fn metric_longest_edge(&self) -> Option<([u32; 2], f64)> {
+        let s = self.solution.filter(|s| !s.metric.is_euclidean())?;
+        let (edge, length) = s.longest_edge_under_metric();
+        Some(match self.input.and_then(|i| i.user) {
+            Some((_, k)) => (edge, unscale(length, k)),
+            None => (edge, length),
+        })
+    }
+
     /// A certified bound's area, in the user's units.
     fn bound_area(&self, area: f64) -> f64 {
         match self.input.and_then(|i| i.user) {
@@ -188,6 +200,14 @@ impl Serialize for TriangulationReport<'_> {
             }),
             algorithm: run.map(|s| s.algorithm.as_str()),
             algorithm_detail: run.map(|s| s.algorithm_detail.as_str()),
+            metric: run.and_then(|s| {
+                let (longest_edge, max_edge_length) = self.metric_longest_edge()?;
+                Some(MetricDocument {
+                    name: s.metric.name(),
+                    max_edge_length,
+                    longest_edge,
+                })
+            }),
             points: t.points().len(),
             distinct_points: t.point_set().len(),
             duplicates: t.point_set().duplicates(),
@@ -213,6 +233,15 @@ struct BoundDocument {
     area: f64,
 }
 
+/// Lengths under a non-Euclidean metric (`Solution::metric`); `stats` stays
+/// Euclidean.
+#[derive(serde::Serialize)]
+struct MetricDocument {
+    name: String,
+    max_edge_length: f64,
+    longest_edge: [u32; 2],
+}
+
 /// The fields of a triangulation document, in the order written.
 #[derive(serde::Serialize)]
 struct TriangulationDocument<'a> {
@@ -233,6 +262,7 @@ struct TriangulationDocument<'a> {
     algorithm: Option<&'a str>,
     #[serde(skip_serializing_if = "Option::is_none")]
     algorithm_detail: Option<&'a str>,
+    metric: Option<MetricDocument>,
     points: usize,
     distinct_points: usize,
     duplicates: &'a [[u32; 2]],
@@ -265,6 +295,7 @@ pub struct GraphReport<'a> {
     kind: Option<GraphKind>,
     timing: Option<&'a [Phase]>,
     arithmetic: Option<Arithmetic>,
+    metric: Option<&'a crate::kernel::Metric>,
 }
 
 impl<'a> GraphReport<'a> {
@@ -277,6 +308,7 @@ impl<'a> GraphReport<'a> {
             kind: None,
             timing: None,
             arithmetic: None,
+            metric: None,
         }
     }
 
@@ -290,6 +322,7 @@ impl<'a> GraphReport<'a> {
             kind: Some(kind),
             timing: None,
             arithmetic: None,
+            metric: None,
         }
     }
 
@@ -317,6 +350,15 @@ impl<'a> GraphReport<'a> {
         Self {
             points: read.input.points(),
             arithmetic: Some(read.arithmetic),
+            ..self
+        }
+    }
+
+    /// Reports the metric the graph was computed under (`"metric"`, written
+    /// only for a non-Euclidean one).
+    pub fn with_metric(self, metric: &'a crate::kernel::Metric) -> Self {
+        Self {
+            metric: (!metric.is_euclidean()).then_some(metric),
             ..self
         }
     }
@@ -351,6 +393,7 @@ impl Serialize for GraphReport<'_> {
             schema_version: SCHEMA_VERSION,
             document: "graph",
             kind: self.kind.map(GraphKind::name),
+            metric: self.metric.map(|m| m.name()),
             points: self.points.len(),
             distinct_points: self.distinct.map(|d| d.0),
             duplicates: self.distinct.map(|d| d.1),
@@ -370,6 +413,8 @@ struct GraphDocument<'a> {
     document: &'static str,
     #[serde(skip_serializing_if = "Option::is_none")]
     kind: Option<&'static str>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    metric: Option<String>,
     points: usize,
     #[serde(skip_serializing_if = "Option::is_none")]
     distinct_points: Option<usize>,
@@ -914,10 +959,11 @@ mod tests {
     fn a_comparison_holds_each_run_document_unchanged_and_the_refusals() {
         use crate::{compare, Options};
         let ps = PointSet::new(&awkward_points()).unwrap();
+        // Under L1, minmax-length runs and greedy refuses (no metric).
         let results = compare(
             &ps,
-            &[Criterion::Greedy, Criterion::MinWeight],
-            &Options::default(),
+            &[Criterion::MinmaxLength, Criterion::Greedy],
+            &Options::default().with_metric(crate::kernel::Metric::l1()),
         );
         let v = comparison_to_json(&results);
         assert_eq!(
@@ -927,13 +973,13 @@ mod tests {
         assert_eq!(v["document"], "comparison");
         let entries = v["results"].as_array().unwrap();
         assert_eq!(entries.len(), 2);
-        let greedy = results[0].1.as_ref().unwrap();
-        assert_eq!(entries[0], solution_to_json(greedy));
-        // The awkward points have interior points: min-weight refuses them.
+        let minmax = results[0].1.as_ref().unwrap();
+        assert_eq!(entries[0], solution_to_json(minmax));
+        assert_eq!(entries[0]["metric"]["name"], "l1");
         let refusal = results[1].1.as_ref().unwrap_err();
         assert_eq!(
             entries[1],
-            json!({"criterion": "min-weight", "error": refusal.to_string()})
+            json!({"criterion": "greedy", "error": refusal.to_string()})
         );
         let phases = [Phase {
             name: "total",

@@ -43,6 +43,7 @@ pub(crate) mod expansion;
 mod length_sums;
 mod lune;
 pub mod metrics;
+mod norm;
 mod predicates;
 mod symbolic;
 
@@ -56,6 +57,7 @@ pub const MIN_COORDINATE: f64 = 1.793662034335766e-43; // 2^-142
 
 pub use length_sums::{compare_length_sums, compare_length_sums_exactly, LengthInterval};
 pub use lune::{in_half_lune, in_half_lune_symbolic, in_lune, in_lune_symbolic};
+pub use norm::{side_of_direction, Metric, MetricProblem, MAX_LP_EXPONENT};
 pub use predicates::{
     angle_at_least_30_degrees, angle_below_diamond, compare_angles, compare_areas,
     compare_corner_angles, compare_doubled_area, compare_lengths, cross_sign, dot_sign,

@@ -83,4 +83,12 @@ impl Counters {
         }
         d
     }
+
+    /// The counters the metric path reports (the others stay zero there).
+    pub fn into_diagnostics_for_metric(self) -> Diagnostics {
+        let mut d = Diagnostics::default();
+        d.add("flat_triangles", self.flat_triangles.get());
+        d.add("fallbacks", self.fallbacks.get());
+        d
+    }
 }

@@ -150,6 +150,7 @@ pub(crate) mod polygon;
 pub(crate) mod regions;
 mod repair;
 mod rng_polygon;
+mod under_metric;
 
 use super::{CriterionInfo, Diagnostics, Optimality, Options, Requirement, Solved};
 use crate::error::Result;
@@ -173,12 +174,30 @@ pub(crate) const INFO: CriterionInfo = CriterionInfo {
     description: "minimises the longest edge",
     optimality: Optimality::Exact,
     requirement: Requirement::AnyPointSet,
-    options: &[],
+    options: &["metric"],
     reference: "H. Edelsbrunner & T. S. Tan, A quadratic time algorithm for the minmax \
                 length triangulation, FOCS 1991 / SIAM J. Comput. 1993",
 };
 
-pub(crate) fn solve(points: &PointSet, _: &Options, phases: &mut Vec<Phase>) -> Result<Solved> {
+pub(crate) fn solve(
+    points: &PointSet,
+    options: &Options,
+    phases: &mut Vec<Phase>,
+) -> Result<Solved> {
+    if !options.metric.is_euclidean() {
+        let method = under_metric::MetricMethod::Product {
+            incomplete_from: under_metric::INCOMPLETE_FROM,
+        };
+        let (triangulation, diagnostics) =
+            under_metric::run_under(points, &options.metric, method, phases)?;
+        return Ok(Solved {
+            triangulation,
+            algorithm: format!("{ALGORITHM_UNDER_METRIC} (metric {})", options.metric),
+            optimality: Optimality::Exact,
+            diagnostics,
+            bound: None,
+        });
+    }
     let (triangulation, diagnostics) = run(points, PRODUCT, phases)?;
     let algorithm = if phases.iter().any(|p| p.name == "regions") {
         ALGORITHM.to_string()
@@ -196,6 +215,26 @@ pub(crate) fn solve(points: &PointSet, _: &Options, phases: &mut Vec<Phase>) -> 
 
 /// The method's name, as reported by [`crate::triangulate`].
 const ALGORITHM: &str = "Edelsbrunner–Tan O(n²): Length-Lemma lower bound (longest hull/RNG edge) certifies Delaunay regions; hull ∪ RNG(S′) regions; §5.1 incomplete and §5.3/§6 complete rng-polygons on the symbolic perturbation (exact cubic DP, pruned by the regions' Delaunay diagonals, for regions under 32 corners; §6 Case 2 pockets by u_L search, clipped §5.1 and §5.2 fan-out); §5.4 flat-triangle repair";
+
+/// The method's name under a non-Euclidean metric.
+const ALGORITHM_UNDER_METRIC: &str = "Edelsbrunner–Tan §7: hull ∪ RNG regions under the simulated strictly convex norm (RNG by nearest neighbours in sectors, exact lunes); §5.1 (visible lune vertex minimising the longer side) on large incomplete regions, the exact cubic program on the others; §5.4 flat-triangle repair";
+
+/// Minmax-length under `metric` with the cubic program on every region, or
+/// with §5.1 on every incomplete region of at least
+/// `incomplete_from` corners (0: all of them), and the diagnostics. For tests
+/// and benchmarks.
+#[cfg(any(test, feature = "internals"))]
+pub fn minmax_length_under_with(
+    points: &PointSet,
+    metric: &crate::kernel::Metric,
+    incomplete_from: Option<usize>,
+) -> Result<(Triangulation, Diagnostics)> {
+    let method = match incomplete_from {
+        None => under_metric::MetricMethod::Cubic,
+        Some(k) => under_metric::MetricMethod::Product { incomplete_from: k },
+    };
+    under_metric::run_under(points, metric, method, &mut Vec::new())
+}
 
 /// `rng(S′)` for the kernel's symbolic perturbation `S′`, as a flag per
 /// Delaunay edge (indexed like `g.edges`; `g` must come from

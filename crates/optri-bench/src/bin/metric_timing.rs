@@ -1,0 +1,96 @@
+//! Times minmax-length under normed metrics against the Euclidean Delaunay
+//! triangulation of the same input, for the figures in BENCHMARKS.md.
+//!
+//! ```text
+//! cargo run --release -p optri-bench --bin metric_timing -- uniform N [METRIC...]
+//! cargo run --release -p optri-bench --bin metric_timing -- arc METRIC N...
+//! ```
+//! * `uniform N` (default 1 000 000; metrics default `l1 linf`): Delaunay
+//!   alone, then minmax-length under each metric with its phases, and the
+//!   ratio to the Delaunay time.
+//! * `arc METRIC N…`: N points in convex position on a 120° circular arc
+//!   (radius jittered by 1e-9 relative): one incomplete region, solved by
+//!   §5.1; time per N and time / N².
+
+use optri::kernel::Metric;
+use optri::{triangulate_with, Criterion, Options, PointSet};
+use optri_oracle::inputs::uniform_unit_square;
+use rand::{rngs::StdRng, Rng, SeedableRng};
+use std::time::Instant;
+
+const SEED_UNIFORM: u64 = 1;
+const SEED_ARC: u64 = 2;
+
+fn secs<T>(f: impl FnOnce() -> T) -> (T, f64) {
+    let t = Instant::now();
+    let out = f();
+    (out, t.elapsed().as_secs_f64())
+}
+
+fn arc(n: usize) -> Vec<[f64; 2]> {
+    let mut rng = StdRng::seed_from_u64(SEED_ARC);
+    (0..n)
+        .map(|_| {
+            let a: f64 = rng.gen_range(0.0..2.0 * std::f64::consts::PI / 3.0);
+            let r = 1e3 * (1.0 + rng.gen_range(-1e-9..1e-9));
+            [r * a.cos(), r * a.sin()]
+        })
+        .collect()
+}
+
+fn minmax(points: &PointSet, metric: &Metric) -> optri::Solution {
+    let options = Options::default().with_metric(metric.clone());
+    triangulate_with(points, Criterion::MinmaxLength, &options).expect("minmax-length")
+}
+
+fn main() {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    match args.first().map(String::as_str) {
+        Some("arc") => {
+            let metric = Metric::parse(&args[1]).expect("metric");
+            for n in args[2..].iter().map(|s| s.parse::<usize>().expect("N")) {
+                let ps = PointSet::new(&arc(n)).unwrap();
+                let (s, t) = secs(|| minmax(&ps, &metric));
+                let d: Vec<String> = s
+                    .diagnostics
+                    .iter()
+                    .map(|(k, v)| format!("{k}={v}"))
+                    .collect();
+                println!(
+                    "arc {metric} n={n}: {t:.3} s, {:.3e} s/n², {}",
+                    t / (n as f64 * n as f64),
+                    d.join(" ")
+                );
+            }
+        }
+        _ => {
+            let n = args.get(1).map_or(1_000_000, |s| s.parse().expect("N"));
+            let metrics: Vec<Metric> = if args.len() > 2 {
+                args[2..]
+                    .iter()
+                    .map(|m| Metric::parse(m).expect("metric"))
+                    .collect()
+            } else {
+                vec![Metric::l1(), Metric::linf()]
+            };
+            let pts = uniform_unit_square(&mut StdRng::seed_from_u64(SEED_UNIFORM), n);
+            let ps = PointSet::new(&pts).unwrap();
+            let (_, delaunay) = secs(|| optri::delaunay(&ps).expect("delaunay"));
+            println!("uniform n={n}: Delaunay {delaunay:.3} s");
+            for metric in &metrics {
+                let (s, t) = secs(|| minmax(&ps, metric));
+                let phases: Vec<String> = s
+                    .phases
+                    .iter()
+                    .map(|p| format!("{} {:.3}", p.name, p.ms / 1e3))
+                    .collect();
+                let (_, longest) = s.longest_edge_under_metric();
+                println!(
+                    "  minmax-length {metric}: {t:.3} s = {:.2}× Delaunay; longest edge {longest:.6e}; phases (s): {}",
+                    t / delaunay,
+                    phases.join(", ")
+                );
+            }
+        }
+    }
+}

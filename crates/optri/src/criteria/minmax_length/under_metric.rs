@@ -1,0 +1,208 @@
+//! Minmax-length triangulation under a normed metric: Edelsbrunner & Tan,
+//! *A quadratic time algorithm for the minmax length triangulation* (1991),
+//! §7 (General Subgraph Theorem, General MinMax Length Theorem).
+//!
+//! Lengths are compared by [`Metric::compare_lengths_symbolic`]: the metric
+//! simulated by a strictly convex norm on the kernel's perturbed points `S′`
+//! (kernel norm docs), so §7's theorems apply to `(S′, N)` and every decision
+//! comes from that one configuration.
+//!
+//! 1. `rng_N(S′)` by the sector approach ([`crate::graphs::rng_under`]). It is
+//!    plane *exactly*: a proper crossing in `S` persists in `S′`, where the
+//!    RNG of a strictly convex norm is plane, and a point on the open segment
+//!    `pq` lies in `pq`'s lune. So the regions of `ch(S) ∪ rng_N(S′)` are
+//!    found by the planar-graph face walk without perturbation.
+//! 2. Each region: §5.1 with the remark's vertex choice for large
+//!    *incomplete* regions (the one non-RNG edge `pq` is a hull edge, a 1-edge
+//!    with the region beyond it; take the lune vertex visible from `p` and `q`
+//!    minimising `max(|xp|, |xq|)`, recurse on both sides) — this avoids §7's
+//!    point-to-segment distance; O(k²) on convex regions (all visible), plus
+//!    the O(k) visibility tests otherwise; every other region goes to §3's
+//!    exact cubic program with the metric's chord order. **Not proven here:** §7 asserts that §5–§6 carry
+//!    over to strictly convex norms "after careful re-examination" without
+//!    giving it; the §5.1 step is therefore tested against the cubic program
+//!    and exhaustive enumeration (tests/minmax_length_metric.rs), and the
+//!    §5.3/§6 complete-polygon algorithm is not used under non-Euclidean
+//!    metrics (complete regions cost O(k³)).
+//! 3. §5.4's repair of flat triangles: a point on segment `uw` is no farther
+//!    from `y` than `max(|uy|, |wy|)` in every norm (convexity), so the
+//!    longest edge does not grow.
+//!
+//! The Length-Lemma certificate of the Euclidean path (a Delaunay triangle
+//! set no longer than the longest hull/RNG edge) is not used: its Delaunay
+//! triangulation is the Euclidean one, and nothing bounds its edges in
+//! another norm.
+
+use super::counters::Counters;
+use super::polygon::Region;
+use super::repair::repair_flat_triangles;
+use crate::criteria::Diagnostics;
+use crate::error::{Error, Result};
+use crate::graphs::rng_under;
+use crate::kernel::Metric;
+use crate::parallel::prelude::*;
+use crate::polygon_program::{optimal_triangulation, LargestDiagonal};
+use crate::spatial::convex_hull_cycle;
+use crate::structures::{PlanarGraph, PointSet, Triangulation};
+use crate::timing::{timed, Phase};
+use std::cmp::Ordering;
+use std::collections::HashSet;
+
+/// Which polygon method the regions use.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum MetricMethod {
+    /// §5.1 on incomplete regions of at least this many corners, the cubic
+    /// program on the rest.
+    Product { incomplete_from: usize },
+    /// The cubic program on every region (test reference).
+    #[cfg_attr(not(any(test, feature = "internals")), allow(dead_code))]
+    Cubic,
+}
+
+/// Incomplete regions of at least this many corners use §5.1.
+pub(crate) const INCOMPLETE_FROM: usize = 16;
+
+pub(crate) fn run_under(
+    points: &PointSet,
+    metric: &Metric,
+    method: MetricMethod,
+    phases: &mut Vec<Phase>,
+) -> Result<(Triangulation, Diagnostics)> {
+    let pts = points.points();
+    let rng = timed(phases, "rng", || rng_under(pts, metric)).map_err(Error::InvalidMetric)?;
+    let hull = timed(phases, "hull", || convex_hull_cycle(pts));
+    let (faces, rng_set) = timed(phases, "regions", || {
+        let key = |a: u32, b: u32| [a.min(b), a.max(b)];
+        let rng_set: HashSet<[u32; 2]> = rng.iter().map(|e| key(e[0], e[1])).collect();
+        let mut edges = rng.clone();
+        for i in 0..hull.len() {
+            edges.push(key(hull[i], hull[(i + 1) % hull.len()]));
+        }
+        edges.sort_unstable();
+        edges.dedup();
+        let faces: Vec<Vec<u32>> = PlanarGraph::new(pts, &edges)
+            .bounded_faces(pts)
+            .into_iter()
+            .map(|f| f.vertices)
+            .collect();
+        (faces, rng_set)
+    });
+    let counters = Counters::default();
+    let by_5_1 = std::sync::atomic::AtomicU64::new(0);
+    let triangles: Vec<[u32; 3]> = timed(phases, "polygons", || {
+        faces
+            .par_iter()
+            .flat_map_iter(|face| {
+                let region = Region {
+                    points: pts,
+                    vertices: face,
+                    symbolic: true,
+                };
+                let k = face.len();
+                if let MetricMethod::Product { incomplete_from } = method {
+                    if k >= incomplete_from.max(4) {
+                        let missing: Vec<usize> = (0..k)
+                            .filter(|&i| {
+                                let (a, b) = (face[i], face[(i + 1) % k]);
+                                !rng_set.contains(&[a.min(b), a.max(b)])
+                            })
+                            .collect();
+                        if let [i] = missing[..] {
+                            let convex = region.is_strictly_convex();
+                            if let Some(t) = incomplete(&region, metric, convex, (i + 1) % k) {
+                                by_5_1.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+                                return t;
+                            }
+                            counters.fallbacks.add(1);
+                        }
+                    }
+                }
+                cubic(&region, metric)
+            })
+            .collect()
+    });
+    let triangles = timed(phases, "repair", || {
+        repair_flat_triangles(pts, triangles, &counters)
+    });
+    let mut diagnostics = counters.into_diagnostics_for_metric();
+    diagnostics.add("regions", faces.len() as u64);
+    diagnostics.add("regions_by_5_1", by_5_1.into_inner());
+    Ok((Triangulation::from_distinct(points, triangles), diagnostics))
+}
+
+/// §3's cubic program on one region with the metric's chord order.
+fn cubic(region: &Region, metric: &Metric) -> Vec<[u32; 3]> {
+    let v = region.vertices;
+    let k = v.len();
+    if k == 3 {
+        return vec![[v[0], v[1], v[2]]];
+    }
+    let convex = region.is_strictly_convex();
+    optimal_triangulation(
+        k,
+        |i, j| convex || region.is_diagonal(i, j),
+        |i, m, j| region.orient(v[i], v[m], v[j]) > 0,
+        &LargestDiagonal::new(k, |s: [usize; 2], t: [usize; 2]| {
+            metric.compare_lengths_symbolic(region.points, [v[s[0]], v[s[1]]], [v[t[0]], v[t[1]]])
+        }),
+    )
+    .expect("a polygonal region always has a triangulation")
+    .triangles
+    .into_iter()
+    .map(|t| t.map(|c| v[c]))
+    .collect()
+}
+
+/// §5.1 on a region whose only non-RNG edge ends at position `start` (the
+/// edge from `start − 1` to `start`): the chain `c₀ = v[start], …,
+/// c_{k−1} = v[start − 1]` with the 1-edge `c₀ c_{k−1}`. Step 1 takes, among
+/// the vertices in the lune of `pq` that are visible from `p` and `q`, the
+/// one minimising `max(|xp|, |xq|)` (the remark after §5.1: any visible lune
+/// vertex keeps the recursion's invariant; in a convex region every vertex
+/// is visible). `None` if no such vertex exists (an inconsistency: the
+/// caller falls back to the cubic program).
+fn incomplete(
+    region: &Region,
+    metric: &Metric,
+    convex: bool,
+    start: usize,
+) -> Option<Vec<[u32; 3]>> {
+    let points = region.points;
+    let face = region.vertices;
+    let k = face.len();
+    let pos = |m: usize| (start + m) % k;
+    let c: Vec<u32> = (0..k).map(|i| face[pos(i)]).collect();
+    // Visible along the chain: a boundary edge, or a diagonal of the region
+    // (which, sharing an endpoint with the sub-polygon's chord, stays inside
+    // the sub-polygon).
+    let sees = |a: usize, b: usize| {
+        convex || b == a + 1 || a == b + 1 || region.is_diagonal(pos(a), pos(b))
+    };
+    let mut out = Vec::with_capacity(k - 2);
+    let mut stack = vec![(0usize, k - 1)];
+    let mut lune: Vec<(usize, [u32; 2])> = Vec::new();
+    while let Some((i, j)) = stack.pop() {
+        if j - i < 2 {
+            continue;
+        }
+        let (p, q) = (c[i], c[j]);
+        lune.clear();
+        for (m, &x) in c.iter().enumerate().take(j).skip(i + 1) {
+            if !metric.in_lune_symbolic(points, p, q, x) {
+                continue;
+            }
+            let far = if metric.compare_lengths_symbolic(points, [x, p], [x, q]) == Ordering::Less {
+                [x, q]
+            } else {
+                [x, p]
+            };
+            lune.push((m, far));
+        }
+        lune.sort_by(|a, b| metric.compare_lengths_symbolic(points, a.1, b.1));
+        let &(m, _) = lune.iter().find(|&&(m, _)| sees(i, m) && sees(m, j))?;
+        out.push([p, c[m], q]);
+        stack.push((i, m));
+        stack.push((m, j));
+    }
+    Some(out)
+}

@@ -1,0 +1,540 @@
+//! The relative neighbourhood graph and the minimum spanning tree under a
+//! normed metric ([`Metric`]), with the metric's exact tie-break (the
+//! simulated strictly convex norm of the kernel's norm module, so the graphs
+//! are those of one perturbed point set under one strictly convex norm:
+//! plane, connected, MST ⊆ RNG).
+//!
+//! Under L1 or L∞ the RNG is not a subgraph of the Euclidean Delaunay
+//! triangulation, so the candidates come from the *sector* (region) approach
+//! of J. Katajainen, *The region approach for computing relative
+//! neighbourhood graphs in the Lp metric*, Computing 40 (1988), for which
+//! we prove the step we rely on:
+//!
+//! **Sector Lemma.** Let `W` be a closed wedge at `p` such that for all
+//! `q, r ∈ W` with `(‖·‖, |·|₂)(pr) < (‖·‖, |·|₂)(pq)` (lexicographically)
+//! also `(‖·‖, |·|₂)(qr) < (‖·‖, |·|₂)(pq)`. If `pq` is an RNG edge and
+//! `q ∈ W`, then `q` is among the points of `W` nearest to `p` in that
+//! lexicographic order (ties kept). *Proof:* a nearer `r` lies in the lune
+//! of `pq` already at the unperturbed level, hence under the tie-break. ∎
+//!
+//! The wedges used satisfy the hypothesis:
+//! * **L∞, L1, Lp (p ≥ 3):** the 8 closed 45° octants bounded by the axes and
+//!   the diagonals (all three norms have the square's symmetries, so one
+//!   octant `0 ≤ y ≤ x` suffices). `r ↦ ‖q − r‖` is convex, so on
+//!   `K = W ∩ {‖r‖ ≤ ‖q‖}` it is largest at an extreme point of `K`. L∞:
+//!   `|xq − xr| ≤ xq` and `|yq − yr| ≤ max(yq, yr) ≤ xq`, equality only for
+//!   `q = (a, a), r = (b, 0)`, where `|qr|₂ < |pq|₂`; or `r = (a, a),
+//!   q = (a, 0)`, excluded because then `|pr|₂ > |pq|₂`. L1: if `r ≤ q`
+//!   coordinatewise `‖q−r‖ = ‖q‖ − ‖r‖`; if `xr > xq` then
+//!   `‖q − r‖ ≤ ‖q‖ ⇔ xr − yr ≤ 2xq`, true, with equality only when
+//!   `‖r‖ = ‖q‖` and `|pr|₂ > |pq|₂`; if `yr > yq` then `yr − xr ≤ 0 ≤ 2yq`,
+//!   equality only for `q = (a, 0), r = (b, b)`, where `|qr|₂ < |pq|₂`. Lp,
+//!   p > 1 (strictly convex): the extreme points of `K` other than `p` are on
+//!   the arc, whose two ends are at distance `((1−2^(−1/p))ᵖ + 1/2)^(1/p) < 1`,
+//!   so `‖q − r‖ < ‖q‖` for `r ≠ p`.
+//! * **Polygonal norms:** wedges bisected (integer directions, so exact) from
+//!   the octants until, for each, the pairwise distances between the
+//!   extreme points of its arc (the two ray ends and the polygon vertices
+//!   strictly inside) are all `< 1`, checked exactly. By the same convexity
+//!   argument (on each edge of the arc `q ↦ ‖q − e‖` is convex), every
+//!   `r ∈ K \ {p}` is then strictly nearer to `q` than `p` is.
+//!
+//! Candidates are found with a bucket grid, scanning rings of cells around
+//! `p` until every wedge is settled; then every candidate's lune is tested
+//! exactly. The MST is Kruskal over the RNG in the tie-broken order (every
+//! MST edge is an RNG edge: a point in the lune of `pq` makes `pq` the longest
+//! edge of a triangle). Brute force (all lune tests) is a test reference only.
+//! Ties use the distinct-point numbering.
+
+use crate::error::Result;
+use crate::kernel::{side_of_direction, Metric, MetricProblem, Point};
+use crate::parallel::prelude::*;
+use crate::spatial::bounding_box;
+use crate::structures::PointSet;
+use std::cmp::Ordering;
+
+/// The closed wedges (pairs of consecutive directions, counter-clockwise,
+/// each angle < 90°) whose nearest points contain every RNG neighbour.
+fn wedges(metric: &Metric) -> std::result::Result<Vec<[Point; 2]>, MetricProblem> {
+    let octants: Vec<Point> = vec![
+        [1.0, 0.0],
+        [1.0, 1.0],
+        [0.0, 1.0],
+        [-1.0, 1.0],
+        [-1.0, 0.0],
+        [-1.0, -1.0],
+        [0.0, -1.0],
+        [1.0, -1.0],
+    ];
+    let pairs: Vec<[Point; 2]> = (0..8).map(|i| [octants[i], octants[(i + 1) % 8]]).collect();
+    let Some(polygon) = metric.unit_polygon() else {
+        return Ok(pairs);
+    };
+    if metric.name() == "l1" || metric.name() == "linf" {
+        return Ok(pairs);
+    }
+    let polygon = polygon.to_vec();
+    let mut out = Vec::new();
+    let mut stack: Vec<([Point; 2], u32)> = pairs.into_iter().rev().map(|w| (w, 0)).collect();
+    while let Some((w, depth)) = stack.pop() {
+        if arc_is_short(metric, &polygon, w) {
+            out.push(w);
+        } else if depth >= 24 {
+            return Err(MetricProblem::NotStrictlyConvex(0));
+        } else {
+            let mid = [w[0][0] + w[1][0], w[0][1] + w[1][1]];
+            stack.push(([mid, w[1]], depth + 1));
+            stack.push(([w[0], mid], depth + 1));
+        }
+    }
+    Ok(out)
+}
+
+/// Are all pairwise norm distances between the extreme points of the unit
+/// arc inside wedge `w` below 1 (exactly)?
+fn arc_is_short(metric: &Metric, polygon: &[Point], w: [Point; 2]) -> bool {
+    use num_rational::BigRational;
+    let o = [0.0, 0.0];
+    let rat = |v: f64| BigRational::from_float(v).expect("finite");
+    // Extreme points as exact rationals: ray ends d / ‖d‖ and vertices inside.
+    let norm_exact = |x: &BigRational, y: &BigRational| -> BigRational {
+        // ‖(x, y)‖ for the polygon: max over edges of the facet functional.
+        let k = polygon.len();
+        (0..k)
+            .map(|i| {
+                let (a, b) = (polygon[i], polygon[(i + 1) % k]);
+                let (ax, ay, bx, by) = (rat(a[0]), rat(a[1]), rat(b[0]), rat(b[1]));
+                let support = &ax * &by - &ay * &bx;
+                ((&by - &ay) * x + (&ax - &bx) * y) / support
+            })
+            .max()
+            .expect("facets")
+    };
+    let mut extreme: Vec<[BigRational; 2]> = Vec::new();
+    for d in w {
+        let (x, y) = (rat(d[0]), rat(d[1]));
+        let n = norm_exact(&x, &y);
+        extreme.push([x / &n, y / &n]);
+    }
+    for &v in polygon {
+        if side_of_direction(w[0], o, v) > 0 && side_of_direction(w[1], o, v) < 0 {
+            extreme.push([rat(v[0]), rat(v[1])]);
+        }
+    }
+    let one = BigRational::from_integer(1.into());
+    let _ = metric;
+    for i in 0..extreme.len() {
+        for j in i + 1..extreme.len() {
+            let dx = &extreme[i][0] - &extreme[j][0];
+            let dy = &extreme[i][1] - &extreme[j][1];
+            if norm_exact(&dx, &dy) >= one {
+                return false;
+            }
+        }
+    }
+    true
+}
+
+/// A uniform bucket grid over the points (about two points per cell).
+struct Buckets {
+    origin: Point,
+    cell: f64,
+    width: usize,
+    height: usize,
+    start: Vec<u32>,
+    items: Vec<u32>,
+    /// The coordinates of `items`, in the same (cell) order: scans read
+    /// contiguous memory.
+    coords: Vec<Point>,
+}
+
+impl Buckets {
+    fn new(points: &[Point]) -> Self {
+        let [x0, y0, x1, y1] = bounding_box(points);
+        let area =
+            ((x1 - x0) * (y1 - y0)).max(((x1 - x0).max(y1 - y0)).powi(2) / points.len() as f64);
+        let mut cell = (2.0 * area / points.len() as f64).sqrt();
+        if !(cell.is_finite() && cell > 0.0) {
+            cell = 1.0;
+        }
+        let dim = |extent: f64| ((extent / cell).floor() as usize + 1).min(1 << 15);
+        let (width, height) = (dim(x1 - x0), dim(y1 - y0));
+        let cell = cell
+            .max((x1 - x0) / (width as f64 - 0.5))
+            .max((y1 - y0) / (height as f64 - 0.5));
+        let mut b = Buckets {
+            origin: [x0, y0],
+            cell,
+            width,
+            height,
+            start: vec![],
+            items: vec![],
+            coords: vec![],
+        };
+        let mut count = vec![0u32; width * height + 1];
+        for p in points {
+            count[b.index(b.cell_of(*p)) + 1] += 1;
+        }
+        for i in 1..count.len() {
+            count[i] += count[i - 1];
+        }
+        let mut fill = count.clone();
+        let mut items = vec![0u32; points.len()];
+        for (i, p) in points.iter().enumerate() {
+            let k = b.index(b.cell_of(*p));
+            items[fill[k] as usize] = i as u32;
+            fill[k] += 1;
+        }
+        b.start = count;
+        b.coords = items.iter().map(|&i| points[i as usize]).collect();
+        b.items = items;
+        b
+    }
+    fn cell_of(&self, p: Point) -> [usize; 2] {
+        let c = |v: f64, o: f64, n: usize| (((v - o) / self.cell) as usize).min(n - 1);
+        [
+            c(p[0], self.origin[0], self.width),
+            c(p[1], self.origin[1], self.height),
+        ]
+    }
+    fn index(&self, [i, j]: [usize; 2]) -> usize {
+        j * self.width + i
+    }
+    /// The points of cell `c` with their coordinates.
+    fn entries(&self, c: [usize; 2]) -> impl Iterator<Item = (u32, Point)> + '_ {
+        let k = self.index(c);
+        let r = self.start[k] as usize..self.start[k + 1] as usize;
+        self.items[r.clone()]
+            .iter()
+            .copied()
+            .zip(self.coords[r].iter().copied())
+    }
+    fn bounds(&self, [i, j]: [usize; 2]) -> [f64; 4] {
+        let (x, y) = (
+            self.origin[0] + i as f64 * self.cell,
+            self.origin[1] + j as f64 * self.cell,
+        );
+        [x, y, x + self.cell, y + self.cell]
+    }
+    /// The in-grid cells at Chebyshev cell distance exactly `k` from `c`.
+    fn ring(&self, c: [usize; 2], k: usize, mut f: impl FnMut([usize; 2])) {
+        let (ci, cj) = (c[0] as isize, c[1] as isize);
+        let k = k as isize;
+        let (w, h) = (self.width as isize, self.height as isize);
+        for j in (cj - k).max(0)..=(cj + k).min(h - 1) {
+            if j == cj - k || j == cj + k {
+                for i in (ci - k).max(0)..=(ci + k).min(w - 1) {
+                    f([i as usize, j as usize]);
+                }
+            } else {
+                for i in [ci - k, ci + k] {
+                    if (0..w).contains(&i) {
+                        f([i as usize, j as usize]);
+                    }
+                }
+            }
+        }
+    }
+}
+
+/// Can the closed wedge `w` at `p` meet the box (conservative: `false` only
+/// when the box is clearly on the outer side of one bounding ray)?
+fn wedge_may_meet(w: [Point; 2], p: Point, b: [f64; 4]) -> bool {
+    let corners = [[b[0], b[1]], [b[2], b[1]], [b[0], b[3]], [b[2], b[3]]];
+    let side = |d: Point, c: Point| {
+        let (x, y) = (c[0] - p[0], c[1] - p[1]);
+        let v = d[0] * y - d[1] * x;
+        let tol = 1e-9 * (d[0].abs() * y.abs() + d[1].abs() * x.abs()) + 1e-300;
+        if v > tol {
+            1
+        } else if v < -tol {
+            -1
+        } else {
+            0
+        }
+    };
+    !(corners.iter().all(|&c| side(w[0], c) < 0) || corners.iter().all(|&c| side(w[1], c) > 0))
+}
+
+/// The octant of `r − p` when the rounded differences decide it (the signs
+/// of rounded differences are exact; `|dx|` against `|dy|` is clear when they
+/// differ by more than their rounding errors); `None` on a boundary ray or
+/// near one, where the exact wedge tests decide.
+#[inline]
+fn clear_octant(p: Point, r: Point) -> Option<usize> {
+    let (dx, dy) = (r[0] - p[0], r[1] - p[1]);
+    if dx == 0.0 || dy == 0.0 {
+        return None;
+    }
+    let (ax, ay) = (dx.abs(), dy.abs());
+    if (ax - ay).abs() <= 4.0 * f64::EPSILON * (ax + ay) {
+        return None;
+    }
+    let x_major = ax > ay;
+    Some(match (dx > 0.0, dy > 0.0) {
+        (true, true) => {
+            if x_major {
+                0
+            } else {
+                1
+            }
+        }
+        (false, true) => {
+            if x_major {
+                3
+            } else {
+                2
+            }
+        }
+        (false, false) => {
+            if x_major {
+                4
+            } else {
+                5
+            }
+        }
+        (true, false) => {
+            if x_major {
+                7
+            } else {
+                6
+            }
+        }
+    })
+}
+
+/// The candidate neighbours of every point (the nearest in each wedge, ties
+/// kept), as sorted, deduplicated edges.
+fn candidates(
+    points: &[Point],
+    metric: &Metric,
+    wedges: &[[Point; 2]],
+    octants: bool,
+) -> Vec<[u32; 2]> {
+    let grid = Buckets::new(points);
+    let reach = metric.sup_radius();
+    let ws = wedges.len();
+    // Points in cell order, so that consecutive searches touch nearby cells.
+    let per_point: Vec<Vec<[u32; 2]>> = (0..points.len())
+        .into_par_iter()
+        .map(|slot| {
+            let (pi, p) = (grid.items[slot], grid.coords[slot]);
+            let c = grid.cell_of(p);
+            let mut best: Vec<Vec<u32>> = vec![Vec::new(); ws];
+            let mut best_len = vec![f64::INFINITY; ws];
+            let mut open = vec![true; ws];
+            let mut met = vec![false; ws];
+            let mut open_count = ws;
+            let mut k = 0usize;
+            let offer =
+                |s: usize, ri: u32, r: Point, best: &mut Vec<Vec<u32>>, best_len: &mut Vec<f64>| {
+                    match best[s].first() {
+                        None => {
+                            best[s].push(ri);
+                            best_len[s] = metric.length(p, r);
+                        }
+                        Some(&q) => {
+                            let lr = metric.length(p, r);
+                            // Clearly farther: skip the exact comparison.
+                            if lr > best_len[s] * (1.0 + 1e-9) {
+                                return;
+                            }
+                            match metric.compare_norm_then_euclidean(p, r, p, points[q as usize]) {
+                                Ordering::Less => {
+                                    best[s].clear();
+                                    best[s].push(ri);
+                                    best_len[s] = lr;
+                                }
+                                Ordering::Equal => best[s].push(ri),
+                                Ordering::Greater => {}
+                            }
+                        }
+                    }
+                };
+            while open_count > 0 {
+                met.iter_mut().for_each(|m| *m = false);
+                grid.ring(c, k, |cell| {
+                    let bounds = grid.bounds(cell);
+                    // Only the open wedges this cell can still improve: it may
+                    // meet the wedge and is not beyond the wedge's best (norm ≥
+                    // the cell's L∞ distance / reach).
+                    let gap = (bounds[0] - p[0])
+                        .max(p[0] - bounds[2])
+                        .max(bounds[1] - p[1])
+                        .max(p[1] - bounds[3])
+                        .max(0.0);
+                    let lb = gap / reach * (1.0 - 1e-9);
+                    let mut useful = false;
+                    for s in 0..ws {
+                        if open[s]
+                            && (best[s].is_empty() || best_len[s] * (1.0 + 1e-9) >= lb)
+                            && (k < 2 || wedge_may_meet(wedges[s], p, bounds))
+                        {
+                            useful = true;
+                            break;
+                        }
+                    }
+                    if !useful {
+                        return;
+                    }
+                    for (ri, r) in grid.entries(cell) {
+                        if ri == pi {
+                            continue;
+                        }
+                        match octants.then(|| clear_octant(p, r)).flatten() {
+                            Some(s) => {
+                                if open[s] {
+                                    offer(s, ri, r, &mut best, &mut best_len);
+                                }
+                            }
+                            None => {
+                                for s in 0..ws {
+                                    let w = wedges[s];
+                                    if open[s]
+                                        && side_of_direction(w[0], p, r) >= 0
+                                        && side_of_direction(w[1], p, r) <= 0
+                                    {
+                                        offer(s, ri, r, &mut best, &mut best_len);
+                                    }
+                                }
+                            }
+                        }
+                    }
+                    // An empty wedge is settled once a ring has no in-grid
+                    // cell meeting it (wedge ∩ bounding box is convex).
+                    for s in 0..ws {
+                        if open[s]
+                            && best[s].is_empty()
+                            && !met[s]
+                            && wedge_may_meet(wedges[s], p, bounds)
+                        {
+                            met[s] = true;
+                        }
+                    }
+                });
+                // Points of ring k+1 are at L∞ distance ≥ k·cell, norm ≥ that / reach.
+                let lower = k as f64 * grid.cell / reach * (1.0 - 1e-9);
+                for s in 0..ws {
+                    let settled = if best[s].is_empty() {
+                        !met[s]
+                    } else {
+                        best_len[s] * (1.0 + 1e-9) < lower
+                    };
+                    if open[s] && settled {
+                        open[s] = false;
+                        open_count -= 1;
+                    }
+                }
+                k += 1;
+            }
+            let mut edges: Vec<[u32; 2]> = best
+                .into_iter()
+                .flatten()
+                .map(|q| [pi.min(q), pi.max(q)])
+                .collect();
+            edges.sort_unstable();
+            edges.dedup();
+            edges
+        })
+        .collect();
+    let mut all: Vec<[u32; 2]> = per_point.into_iter().flatten().collect();
+    all.sort_unstable();
+    all.dedup();
+    all
+}
+
+/// Is the lune of `pq` free of points (under the metric's tie-break)?
+fn lune_is_empty(points: &[Point], metric: &Metric, grid: &Buckets, [p, q]: [u32; 2]) -> bool {
+    let (pp, pq) = (points[p as usize], points[q as usize]);
+    let len = metric.length(pp, pq);
+    let r = metric.sup_radius() * len * (1.0 + 1e-9) + grid.cell * 1e-9;
+    let lo = grid.cell_of([pp[0] - r, pp[1] - r]);
+    let hi = grid.cell_of([pp[0] + r, pp[1] + r]);
+    let slack = len * (1.0 + 1e-9);
+    for j in lo[1]..=hi[1] {
+        for i in lo[0]..=hi[0] {
+            for (x, px) in grid.entries([i, j]) {
+                if x == p || x == q {
+                    continue;
+                }
+                if metric.length(pp, px) > slack || metric.length(pq, px) > slack {
+                    continue;
+                }
+                if metric.in_lune_symbolic(points, p, q, x) {
+                    return false;
+                }
+            }
+        }
+    }
+    true
+}
+
+/// The RNG under `metric` on distinct points (distinct indices, sorted pairs).
+pub(crate) fn rng_under(
+    points: &[Point],
+    metric: &Metric,
+) -> std::result::Result<Vec<[u32; 2]>, MetricProblem> {
+    let octants =
+        metric.unit_polygon().is_none() || metric.name() == "l1" || metric.name() == "linf";
+    let wedges = wedges(metric)?;
+    let grid = Buckets::new(points);
+    let cands = candidates(points, metric, &wedges, octants);
+    Ok(cands
+        .into_par_iter()
+        .filter(|&e| lune_is_empty(points, metric, &grid, e))
+        .collect())
+}
+
+/// Kruskal over `edges` in the metric's tie-broken order.
+pub(crate) fn mst_under(
+    points: &[Point],
+    metric: &Metric,
+    mut edges: Vec<[u32; 2]>,
+) -> Vec<[u32; 2]> {
+    edges.par_sort_unstable_by(|a, b| metric.compare_lengths_symbolic(points, *a, *b));
+    let mut parent: Vec<u32> = (0..points.len() as u32).collect();
+    fn find(parent: &mut [u32], mut x: u32) -> u32 {
+        while parent[x as usize] != x {
+            parent[x as usize] = parent[parent[x as usize] as usize];
+            x = parent[x as usize];
+        }
+        x
+    }
+    let mut tree = Vec::with_capacity(points.len().saturating_sub(1));
+    for [u, v] in edges {
+        let (a, b) = (find(&mut parent, u), find(&mut parent, v));
+        if a != b {
+            parent[a as usize] = b;
+            tree.push([u, v]);
+        }
+    }
+    tree
+}
+
+/// The relative neighbourhood graph of `points` under `metric`: `pq` is an
+/// edge iff no other point `x` has `max(|px|, |qx|) < |pq|` (lengths and
+/// ties as in [`Metric::compare_lengths_symbolic`]). Sorted input-index pairs.
+/// The Euclidean metric gives [`crate::relative_neighborhood_graph`].
+pub fn relative_neighborhood_graph_under(
+    points: &PointSet,
+    metric: &Metric,
+) -> Result<Vec<[u32; 2]>> {
+    if metric.is_euclidean() {
+        return super::relative_neighborhood_graph(points);
+    }
+    let edges = rng_under(points.points(), metric).map_err(crate::Error::InvalidMetric)?;
+    Ok(points.to_input_edges(edges.into_iter()))
+}
+
+/// The minimum spanning tree of `points` under `metric` (unique under the
+/// tie-break). Sorted input-index pairs. The Euclidean metric gives
+/// [`crate::minimum_spanning_tree`].
+pub fn minimum_spanning_tree_under(points: &PointSet, metric: &Metric) -> Result<Vec<[u32; 2]>> {
+    if metric.is_euclidean() {
+        return super::minimum_spanning_tree(points);
+    }
+    let pts = points.points();
+    let rng = rng_under(pts, metric).map_err(crate::Error::InvalidMetric)?;
+    let tree = mst_under(pts, metric, rng);
+    Ok(points.to_input_edges(tree.into_iter()))
+}

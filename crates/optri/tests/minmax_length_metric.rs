@@ -1,0 +1,217 @@
+//! Minmax-length under normed metrics (Edelsbrunner & Tan 1991, §7) against
+//! independent references: exhaustive enumeration of all triangulations with
+//! the oracle's own exact norm lengths (n ≤ 9), and §3's cubic program on
+//! every region (larger n), on random and degenerate sets. Also the Euclidean
+//! path is unchanged, and the registry refuses metrics where they mean nothing.
+
+use optri::internals::minmax_length_under_with;
+use optri::kernel::{Metric, Point};
+use optri::{triangulate_with, Criterion, Error, Options, PointSet, UnsupportedReason};
+use optri_oracle::inputs::{
+    circle_r5_ccw, collinear_runs, convex_lens, grid, grid_subset, integer_circle_points,
+    jittered_arc, lattice_points, parabola, uniform_unit_square,
+};
+use optri_oracle::norm::Norm;
+use rand::{rngs::StdRng, Rng, SeedableRng};
+
+const SEED_EXHAUSTIVE: u64 = 1111;
+const SEED_CUBIC: u64 = 1112;
+const SEED_CONVEX: u64 = 1113;
+
+fn metrics() -> Vec<(Metric, Norm)> {
+    let hexagon = Metric::parse("polygon:2,0,1,2,-1,2,-2,0,-1,-2,1,-2").unwrap();
+    let hex_norm = Norm::Polygon(hexagon.unit_polygon().unwrap().to_vec());
+    vec![
+        (Metric::l1(), Norm::L1),
+        (Metric::linf(), Norm::LInf),
+        (Metric::lp(3).unwrap(), Norm::Lp(3)),
+        (Metric::euclidean(), Norm::Lp(2)),
+        (hexagon, hex_norm),
+    ]
+}
+
+fn solve(pts: &[Point], metric: &Metric) -> optri::Triangulation {
+    let ps = PointSet::new(pts).unwrap();
+    let s = triangulate_with(
+        &ps,
+        Criterion::MinmaxLength,
+        &Options::default().with_metric(metric.clone()),
+    )
+    .unwrap();
+    s.triangulation.validate().unwrap();
+    s.triangulation
+}
+
+fn value(norm: &Norm, t: &optri::Triangulation) -> num_rational::BigRational {
+    norm.max_edge_key(t.points(), t.triangles())
+}
+
+fn small_sets(rng: &mut StdRng) -> Vec<(String, Vec<Point>)> {
+    let mut v = Vec::new();
+    for i in 0..14 {
+        let n = rng.gen_range(4..=9);
+        v.push((format!("uniform {i}"), uniform_unit_square(rng, n)));
+    }
+    for i in 0..14 {
+        let n = rng.gen_range(5..=9);
+        v.push((format!("lattice {i}"), lattice_points(rng, n, 0..4, 0..4)));
+    }
+    v.push(("grid 3x3".into(), grid(3, 3, 1.0)));
+    v.push(("grid 4x2".into(), grid(4, 2, 1.0)));
+    v.push((
+        "circle r5".into(),
+        circle_r5_ccw().into_iter().take(9).collect(),
+    ));
+    v.push(("collinear runs".into(), {
+        let mut p = collinear_runs(rng, 2..3, 3..4, 1..2);
+        p.truncate(9);
+        p
+    }));
+    v.push((
+        "square with diagonal points".into(),
+        vec![
+            [0.0, 0.0],
+            [2.0, 0.0],
+            [2.0, 2.0],
+            [0.0, 2.0],
+            [1.0, 1.0],
+            [1.0, 0.0],
+            [3.0, 1.0],
+        ],
+    ));
+    v
+}
+
+#[test]
+fn equals_exhaustive_enumeration_under_every_metric() {
+    let mut rng = StdRng::seed_from_u64(SEED_EXHAUSTIVE);
+    let sets = small_sets(&mut rng);
+    let mut cases = 0;
+    for (metric, norm) in metrics() {
+        for (name, pts) in &sets {
+            let ps = PointSet::new(pts).unwrap();
+            let d = ps.points().to_vec();
+            if optri::kernel::orient_sign(d[0], d[1], d[2]) == 0
+                && d.iter()
+                    .all(|&p| optri::kernel::orient_sign(d[0], d[1], p) == 0)
+            {
+                continue;
+            }
+            let want = norm.exhaustive_minmax(&d);
+            let got = value(&norm, &solve(pts, &metric));
+            assert_eq!(got, want, "{metric} on {name}: {pts:?}");
+            // The cubic program on every region, and §5.1 on every convex
+            // incomplete region, reach it too.
+            for from in [None, Some(0)] {
+                let (t, _) = minmax_length_under_with(&ps, &metric, from).unwrap();
+                t.validate().unwrap();
+                assert_eq!(value(&norm, &t), want, "{metric} {from:?} on {name}");
+            }
+            cases += 1;
+        }
+    }
+    assert!(cases >= 5 * 30, "{cases}");
+}
+
+fn larger_sets(rng: &mut StdRng) -> Vec<(String, Vec<Point>)> {
+    let mut v = Vec::new();
+    for n in [30, 100, 300] {
+        v.push((format!("uniform {n}"), uniform_unit_square(rng, n)));
+    }
+    v.push(("grid 12x12".into(), grid(12, 12, 1.0)));
+    v.push(("grid subset 15".into(), grid_subset(rng, 15, 15, 0.6)));
+    v.push(("lattice 150".into(), lattice_points(rng, 150, 0..20, 0..20)));
+    v.push((
+        "collinear runs".into(),
+        collinear_runs(rng, 3..6, 5..15, 0..5),
+    ));
+    v.push(("integer circle r=25".into(), integer_circle_points(25)));
+    v.push(("jittered arc".into(), jittered_arc(rng, 120)));
+    v.push(("parabola".into(), parabola(60)));
+    v.push(("convex lens".into(), convex_lens(rng, 80)));
+    v
+}
+
+#[test]
+fn equals_the_cubic_program_under_every_metric() {
+    let mut rng = StdRng::seed_from_u64(SEED_CUBIC);
+    let sets = larger_sets(&mut rng);
+    let mut by_5_1 = 0;
+    for (metric, norm) in metrics() {
+        for (name, pts) in &sets {
+            let ps = PointSet::new(pts).unwrap();
+            let (cubic, _) = minmax_length_under_with(&ps, &metric, None).unwrap();
+            cubic.validate().unwrap();
+            let want = value(&norm, &cubic);
+            assert_eq!(
+                value(&norm, &solve(pts, &metric)),
+                want,
+                "{metric} on {name}"
+            );
+            let (quad, d) = minmax_length_under_with(&ps, &metric, Some(0)).unwrap();
+            quad.validate().unwrap();
+            assert_eq!(value(&norm, &quad), want, "{metric} §5.1 on {name}");
+            assert_eq!(d.get("fallbacks"), Some(0), "{metric} on {name}");
+            by_5_1 += d.get("regions_by_5_1").unwrap();
+        }
+    }
+    assert!(by_5_1 >= 15, "§5.1 ran on {by_5_1} regions");
+}
+
+/// The large tier (n up to 2000): run with `--ignored --release`.
+#[test]
+#[ignore]
+fn equals_the_cubic_program_up_to_2000_points() {
+    let mut rng = StdRng::seed_from_u64(SEED_CONVEX);
+    for (metric, norm) in metrics() {
+        for pts in [
+            uniform_unit_square(&mut rng, 2000),
+            jittered_arc(&mut rng, 1000),
+            grid(40, 40, 1.0),
+        ] {
+            let ps = PointSet::new(&pts).unwrap();
+            let (cubic, _) = minmax_length_under_with(&ps, &metric, None).unwrap();
+            let want = value(&norm, &cubic);
+            assert_eq!(value(&norm, &solve(&pts, &metric)), want, "{metric}");
+        }
+    }
+}
+
+#[test]
+fn euclidean_metric_is_the_euclidean_product() {
+    let mut rng = StdRng::seed_from_u64(SEED_CONVEX);
+    for _ in 0..5 {
+        let pts = uniform_unit_square(&mut rng, 200);
+        let ps = PointSet::new(&pts).unwrap();
+        let a = optri::minmax_length(&ps).unwrap();
+        let b = solve(&pts, &Metric::euclidean());
+        assert_eq!(a.triangles(), b.triangles());
+    }
+}
+
+#[test]
+fn metrics_are_refused_where_they_mean_nothing() {
+    let ps = PointSet::new(&grid(3, 3, 1.0)).unwrap();
+    let opts = Options::default().with_metric(Metric::l1());
+    for c in [
+        Criterion::Delaunay,
+        Criterion::MaxminArea,
+        Criterion::MinmaxArea,
+        Criterion::MinWeight,
+        Criterion::Greedy,
+    ] {
+        match triangulate_with(&ps, c, &opts) {
+            Err(Error::Unsupported {
+                reason: UnsupportedReason::MetricNotSupported { metric },
+                ..
+            }) => {
+                assert_eq!(metric, "l1")
+            }
+            other => panic!("{c:?}: {other:?}"),
+        }
+    }
+    let e = Metric::parse("polygon:1,0,0,1,-1,0,0,-2").unwrap_err();
+    assert!(e.to_string().contains("centrally symmetric"), "{e}");
+    let e = Metric::parse("polygon:1,0,1,1,1,2,-1,0,-1,-1,-1,-2").unwrap_err();
+    assert!(e.to_string().contains("convex"), "{e}");
+}
