@@ -120,8 +120,9 @@ def compare(
 ) -> Dict[str, Triangulation]:
     """Every criterion (or those named) on one input, by criterion name."""
 
-def graph(points: _ArrayLike, kind: str) -> _IndexArray:
-    """The (k, 2) int64 edges of a proximity graph: hull, delaunay, rng, gabriel, mst."""
+def graph(points: _ArrayLike, kind: str, metric: Optional[str] = None) -> _IndexArray:
+    """The (k, 2) int64 edges of a proximity graph: hull, delaunay, rng, gabriel, mst
+    (rng and mst also under ``metric``: "l1", "linf", "lp:P", "polygon:x1,y1,...")."""
 
 def graph_document(points: _ArrayLike, kind: str) -> Dict[str, Any]:
     """The JSON document ``optri graph --json`` prints, as a dict."""

@@ -63,10 +63,10 @@ fn the_json_holds_the_triangulate_json_of_every_criterion() {
         assert_eq!(r, single, "{}", c.name());
         optri::io::triangulation_from_json(&r).unwrap();
     }
-    // berlin52 has interior points: min-weight refuses them.
+    // berlin52 has interior points: min-weight solves them exactly too.
     assert!(results
         .iter()
-        .any(|r| r["criterion"] == "min-weight" && r["error"].is_string()));
+        .any(|r| r["criterion"] == "min-weight" && r["exact"] == true));
 }
 
 #[test]
@@ -95,22 +95,27 @@ fn the_table_marks_the_best_values_and_flags_approximations() {
             .unwrap_or_else(|| panic!("no row {name}: {text}"))
             .to_string()
     };
-    // Greedy is the lightest of these (min-weight is refused), and every
-    // criterion's longest edge is the same hull edge here: all marked.
+    // Min-weight is the lightest (exact on general sets), greedy is not
+    // marked, and every criterion's longest edge is the same hull edge here:
+    // all marked.
     let greedy_row = row("greedy");
     let cells: Vec<&str> = greedy_row.split_whitespace().collect();
     assert_eq!(cells[1], "exact");
     assert_eq!(&cells[2..5], ["1515.73", "*", "31133.3"], "{greedy_row}");
+    let weight_row = row("min-weight");
+    let cells: Vec<&str> = weight_row.split_whitespace().collect();
+    assert_eq!(cells[1], "exact");
     assert_eq!(
-        cells[5], "*",
-        "greedy has the smallest total length: {text}"
+        &cells[2..6],
+        ["1515.73", "*", "31042.7", "*"],
+        "min-weight has the smallest total length: {text}"
     );
     assert!(row("maxmin-area").contains("approximation (!)"), "{text}");
     assert!(
         text.contains("(!) maxmin-area is not proven optimal"),
         "{text}"
     );
-    assert!(text.contains("refused: min-weight:"), "{text}");
+    assert!(!text.contains("refused:"), "{text}");
 }
 
 #[test]

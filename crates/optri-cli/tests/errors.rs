@@ -253,9 +253,32 @@ fn every_unsupported_combination_says_what_would_work() {
     std::fs::write(dir.join("one.txt"), "3 3\n3 3\n").unwrap();
     let cases: &[(&[&str], &str)] = &[
         (
-            &["triangulate", "square.txt", "--criterion", "min-weight"],
-            "min-weight is only supported for points in convex position yet (1 of 5 distinct \
-             points are interior to the convex hull)",
+            &[
+                "triangulate",
+                "square.txt",
+                "--criterion",
+                "delaunay",
+                "--metric",
+                "l1",
+            ],
+            "delaunay does not take a metric other than euclidean (got l1); metrics apply to \
+             minmax-length and the rng and mst graphs",
+        ),
+        (
+            &[
+                "triangulate",
+                "square.txt",
+                "--criterion",
+                "minmax-length",
+                "--metric",
+                "lp:0",
+            ],
+            "--metric: lp:0: the exponent must be an integer 1 ≤ P ≤ 64",
+        ),
+        (
+            &["graph", "square.txt", "--kind", "gabriel", "--metric", "l1"],
+            "square.txt: gabriel does not take a metric other than euclidean (got l1); metrics \
+             apply to minmax-length and the rng and mst graphs",
         ),
         (
             &["triangulate", "square.txt", "--criterion", "prettiest"],

@@ -163,6 +163,13 @@ fn triangulate_answers_the_document_of_triangulate_json() {
             .unwrap();
         assert!(out.status.success());
         let mut cli: Value = serde_json::from_slice(&out.stdout).unwrap();
+        // The file's decimals are read exactly; the request's JSON numbers
+        // are doubles (the page sends what it draws), so only the CLI says
+        // `coordinate_arithmetic`.
+        assert_eq!(
+            cli.as_object_mut().unwrap().remove("coordinate_arithmetic"),
+            Some(json!("decimal-exact"))
+        );
         let mut web = doc.clone();
         cli.as_object_mut().unwrap().remove("timing_ms");
         web.as_object_mut().unwrap().remove("timing_ms");
@@ -204,8 +211,8 @@ fn compare_answers_every_result_or_its_refusal() {
     assert!(
         results
             .iter()
-            .any(|r| r["criterion"] == "min-weight" && r["error"].is_string()),
-        "min-weight refuses interior points"
+            .any(|r| r["criterion"] == "min-weight" && r["exact"] == true),
+        "min-weight solves general point sets exactly"
     );
     let (status, doc) = server.post(
         "/api/compare",
@@ -276,10 +283,10 @@ fn bad_requests_get_a_4xx_with_the_message_and_the_server_survives() {
         "invalid request: point 0 has 3 numbers; each point is [x, y]"
     );
     let e = refused(
-        raw(r#"{"points": [[0, 0], [1, 0], [0, 1]], "metric": "l1"}"#),
+        raw(r#"{"points": [[0, 0], [1, 0], [0, 1]], "colour": "red"}"#),
         400,
     );
-    assert!(e.contains("unknown field `metric`"), "{e}");
+    assert!(e.contains("unknown field `colour`"), "{e}");
     // Unknown criterion: the valid ones are listed.
     let e = refused(
         server.post(
@@ -310,11 +317,19 @@ fn bad_requests_get_a_4xx_with_the_message_and_the_server_survives() {
     let e = refused(
         server.post(
             "/api/triangulate",
-            &json!({"points": square_and_centre(), "criterion": "min-weight"}),
+            &json!({"points": square_and_centre(), "criterion": "delaunay", "metric": "l1"}),
         ),
         422,
     );
-    assert!(e.contains("convex position"), "{e}");
+    assert!(e.contains("l1"), "{e}");
+    let e = refused(
+        server.post(
+            "/api/triangulate",
+            &json!({"points": square_and_centre(), "criterion": "minmax-length", "metric": "lp:0"}),
+        ),
+        400,
+    );
+    assert!(e.starts_with("metric: lp:0"), "{e}");
     let e = refused(
         server.post(
             "/api/triangulate",

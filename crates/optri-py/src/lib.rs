@@ -37,9 +37,9 @@ fn ms_since(start: Instant) -> f64 {
 /// checked against the option names the registry lists for them
 /// ([`optri::CriterionInfo::options`]).
 ///
-/// `optri::Options` has no field yet (every criterion lists none), so every
-/// keyword is refused naming what is available; an option that the registry
-/// lists gets one arm below when the library adds its field.
+/// Keywords are the options the registry lists for the criteria
+/// (`CriterionInfo::options`, e.g. minmax-length's `metric`); anything else
+/// is refused naming what is available.
 fn options_from(criteria: &[Criterion], kwargs: Option<&Bound<'_, PyDict>>) -> PyResult<Options> {
     let options = Options::default();
     let Some(kwargs) = kwargs else {
@@ -55,23 +55,50 @@ fn options_from(criteria: &[Criterion], kwargs: Option<&Bound<'_, PyDict>>) -> P
         [one] => format!("criterion {}", one.name()),
         _ => "these criteria".to_string(),
     };
-    if let Some((key, _value)) = kwargs.iter().next() {
+    let mut options = options;
+    for (key, value) in kwargs.iter() {
         let key: String = key.extract()?;
-        let message = if available.contains(&key.as_str()) {
-            format!("option '{key}' of {whose} is not passed through by these Python bindings yet")
-        } else {
-            format!(
+        if !available.contains(&key.as_str()) {
+            return Err(PyValueError::new_err(format!(
                 "unknown option '{key}' for {whose}; available: {}",
                 if available.is_empty() {
                     "none".to_string()
                 } else {
                     available.join(", ")
                 }
-            )
-        };
-        return Err(PyValueError::new_err(message));
+            )));
+        }
+        match key.as_str() {
+            "metric" => {
+                let text: String = value.extract().map_err(|_| {
+                    PyValueError::new_err(
+                        "metric must be a string: euclidean, l1, linf, lp:P or polygon:x1,y1,...",
+                    )
+                })?;
+                let metric = optri::kernel::Metric::parse(&text)
+                    .map_err(|e| PyValueError::new_err(format!("metric: {e}")))?;
+                options = options.with_metric(metric);
+            }
+            _ => {
+                return Err(PyValueError::new_err(format!(
+                    "option '{key}' of {whose} is not passed through by these Python bindings yet"
+                )))
+            }
+        }
     }
     Ok(options)
+}
+
+/// The options of a graph: its metric (`None`: Euclidean), read by the RNG
+/// and the MST.
+fn graph_options(metric: Option<&str>) -> PyResult<Options> {
+    Ok(match metric {
+        None => Options::default(),
+        Some(m) => Options::default().with_metric(
+            optri::kernel::Metric::parse(m)
+                .map_err(|e| PyValueError::new_err(format!("metric: {e}")))?,
+        ),
+    })
 }
 
 /// A validated point set and its `validate` phase.
@@ -245,15 +272,18 @@ fn compare(
 /// ("hull", "delaunay", "rng", "gabriel", "mst"). Raises ValueError for an
 /// unknown kind or bad points.
 #[pyfunction]
+#[pyo3(signature = (points, kind, metric=None))]
 fn graph<'py>(
     py: Python<'py>,
     points: &Bound<'py, PyAny>,
     kind: &str,
+    metric: Option<&str>,
 ) -> PyResult<Bound<'py, PyArray2<i64>>> {
     let kind = GraphKind::from_name(kind).map_err(to_py_err)?;
+    let options = graph_options(metric)?;
     let points = points_arg(py, points, "points")?;
     let (edges, _phases) = py
-        .detach(|| optri::graph(&PointSet::new(&points)?, kind))
+        .detach(|| optri::graph_with(&PointSet::new(&points)?, kind, &options))
         .map_err(to_py_err)?;
     Ok(index_array(py, &edges)?.into_bound(py))
 }

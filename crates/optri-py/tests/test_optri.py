@@ -24,6 +24,8 @@ REPO = HERE.parents[2]
 STATS_KEYS = {
     "max_edge_length",
     "longest_edge",
+    "smallest_triangle",
+    "largest_triangle",
     "total_edge_length",
     "min_area",
     "max_area",
@@ -117,7 +119,7 @@ def test_square_with_centre_has_one_triangulation_and_its_values():
     # triangulation; every criterion that takes interior points returns it.
     assert optima(SQUARE_AND_CENTRE)["count"] == 1
     results = optri.compare(SQUARE_AND_CENTRE)
-    assert list(results) == [n for n in names() if n != "min-weight"]
+    assert list(results) == names()
     for name, t in results.items():
         tris = check_triangulation(t, SQUARE_AND_CENTRE)
         assert sorted(tuple(sorted(x)) for x in tris) == [(0, 1, 4), (0, 3, 4), (1, 2, 4), (2, 3, 4)], name
@@ -145,7 +147,8 @@ def test_pentagon_min_weight_is_a_fan_of_the_two_short_diagonals():
     side = 2 * math.sin(math.pi / 5)
     diagonal = 2 * math.sin(2 * math.pi / 5)
     assert t.stats["total_edge_length"] == pytest.approx(5 * side + 2 * diagonal, rel=1e-12)
-    assert t.optimality == "up-to-rounding" and t.exact is False
+    # Exact: sums of lengths are compared exactly (the kernel's sum comparison).
+    assert t.optimality == "exact" and t.exact is True
 
 
 # --- against the brute-force oracle --------------------------------------
@@ -157,10 +160,12 @@ def test_general_sets_match_the_brute_force_optima(seed):
     pts = random_points(rnd, 5 + seed % 3)
     best = optima(pts)
     results = optri.compare(pts)
-    assert "min-weight" not in results or len(oracle.hull(pts)) == len(pts)
+    assert list(results) == names()
     for name, t in results.items():
         m = measures(pts, check_triangulation(t, pts))
-        if name == "minmax-length":
+        if name == "min-weight":
+            assert t.exact and m["weight"] == pytest.approx(best["weight"], rel=1e-12)
+        elif name == "minmax-length":
             assert t.exact and m["max_len2"] == best["max_len2"]
             assert t.stats["max_edge_length"] == pytest.approx(math.sqrt(best["max_len2"]), rel=1e-15)
         elif name == "greedy":
@@ -337,6 +342,9 @@ def test_document_equals_the_clis_json(tmp_path, criterion):
         text=True,
     ).stdout
     theirs = json.loads(out)
+    # Decimals with 17 significant digits do not scale to integers below 2^53:
+    # the CLI ran on the doubles, as the bindings (which take numbers) always do.
+    assert theirs.pop("coordinate_arithmetic") == "binary64"
     ours = optri.triangulate(optri.read_points(path), criterion).document
     assert list(ours) == list(theirs)
     assert list(ours["stats"]) == list(theirs["stats"])
@@ -398,8 +406,8 @@ def test_criteria_and_kinds_come_from_the_registry():
 def test_compare_named_criteria_runs_exactly_those():
     r = optri.compare(SQUARE_AND_CENTRE, criteria=["greedy", "delaunay"])
     assert list(r) == ["greedy", "delaunay"]
-    with pytest.raises(ValueError, match="min-weight is only supported for points in convex position"):
-        optri.compare(SQUARE_AND_CENTRE, criteria=["min-weight"])
+    with pytest.raises(ValueError, match="unknown option 'metric' for criterion delaunay"):
+        optri.compare(SQUARE_AND_CENTRE, criteria=["delaunay"], metric="l1")
 
 
 # --- bad input -----------------------------------------------------------------
@@ -433,17 +441,21 @@ def test_unknown_names_list_what_is_available():
     assert "unknown criterion 'fastest'; available: " + ", ".join(names()) in str(e.value)
     with pytest.raises(ValueError, match="unknown graph kind 'voronoi'; available: hull, delaunay, rng, gabriel, mst"):
         optri.graph(SQUARE_AND_CENTRE, kind="voronoi")
-    with pytest.raises(ValueError, match="unknown option 'metric' for criterion minmax-length; available: none"):
-        optri.triangulate(SQUARE_AND_CENTRE, criterion="minmax-length", metric="l1")
-    with pytest.raises(ValueError, match="unknown option 'metric'"):
-        optri.compare(SQUARE_AND_CENTRE, metric="l1")
+    with pytest.raises(ValueError, match="unknown option 'metric' for criterion delaunay; available: none"):
+        optri.triangulate(SQUARE_AND_CENTRE, criterion="delaunay", metric="l1")
+    with pytest.raises(ValueError, match="unknown option 'colour' for criterion minmax-length; available: metric"):
+        optri.triangulate(SQUARE_AND_CENTRE, criterion="minmax-length", colour="red")
+    with pytest.raises(ValueError, match="metric: "):
+        optri.triangulate(SQUARE_AND_CENTRE, criterion="minmax-length", metric="lp:0")
+    with pytest.raises(ValueError, match="metric must be a string"):
+        optri.triangulate(SQUARE_AND_CENTRE, criterion="minmax-length", metric=1)
     with pytest.raises(ValueError, match="unknown input format 'xls'"):
         optri.read_points("points.xls", format="xls")
 
 
 def test_unsupported_input_names_the_criterion():
-    with pytest.raises(ValueError, match=r"min-weight .*\(1 of 5 distinct points are interior"):
-        optri.triangulate(SQUARE_AND_CENTRE, criterion="min-weight")
+    with pytest.raises(ValueError, match="gabriel does not take a metric other than euclidean"):
+        optri.graph(SQUARE_AND_CENTRE, "gabriel", metric="l1")
 
 
 def test_read_points_formats_and_errors(tmp_path):
@@ -509,3 +521,24 @@ def test_concurrent_calls_give_the_sequential_results():
     for th in threads:
         th.join()
     assert got == expected
+
+
+def test_minmax_length_and_rng_under_l1_and_linf_match_brute_force():
+    """The metric keyword reaches the library: the optimum's longest edge
+    under the norm equals the exhaustive minimum over all triangulations."""
+    norms = {
+        "l1": lambda a, b: abs(a[0] - b[0]) + abs(a[1] - b[1]),
+        "linf": lambda a, b: max(abs(a[0] - b[0]), abs(a[1] - b[1])),
+    }
+    rnd = random.Random(11)
+    for trial in range(12):
+        pts = [[rnd.randint(-20, 20), rnd.randint(-20, 20)] for _ in range(7)]
+        if len({tuple(p) for p in pts}) < 7:
+            continue
+        tris = oracle.triangulations(pts)
+        for name, norm in norms.items():
+            t = optri.triangulate(pts, criterion="minmax-length", metric=name)
+            best = min(max(norm(pts[a], pts[b]) for a, b in edges) for edges in tris)
+            assert t.document["metric"]["name"] == name
+            assert t.document["metric"]["max_edge_length"] == best
+            assert optri.graph(pts, "mst", metric=name).shape == (6, 2)

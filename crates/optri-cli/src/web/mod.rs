@@ -105,6 +105,19 @@ struct TriangulateRequest {
     criterion: String,
     #[serde(default)]
     polygon: bool,
+    /// The registry's `metric` option (`Metric::parse` syntax).
+    #[serde(default)]
+    metric: Option<String>,
+}
+
+/// The run options a request names (today the metric).
+fn options(metric: Option<&str>) -> Result<Options, Refusal> {
+    match metric {
+        None => Ok(Options::default()),
+        Some(m) => optri::kernel::Metric::parse(m)
+            .map(|m| Options::default().with_metric(m))
+            .map_err(|e| (400, format!("metric: {e}"))),
+    }
 }
 
 fn default_criterion() -> String {
@@ -119,6 +132,8 @@ struct CompareRequest {
     criteria: Vec<String>,
     #[serde(default)]
     polygon: bool,
+    #[serde(default)]
+    metric: Option<String>,
 }
 
 #[derive(Deserialize)]
@@ -320,13 +335,12 @@ impl Api {
         let start = Instant::now();
         let request: TriangulateRequest = parse(body)?;
         let criterion = Criterion::from_name(&request.criterion).map_err(bad_request)?;
+        let options = options(request.metric.as_deref())?;
         let (points, validate) = self.points(&request.points, request.polygon)?;
         let solution: Solution = self
             .compute(move || match &points {
-                Points::Set(p) => optri::triangulate_with(p, criterion, &Options::default()),
-                Points::Polygon(p) => {
-                    optri::triangulate_polygon_with(p, criterion, &Options::default())
-                }
+                Points::Set(p) => optri::triangulate_with(p, criterion, &options),
+                Points::Polygon(p) => optri::triangulate_polygon_with(p, criterion, &options),
             })?
             .map_err(|e| library_error(&e))?;
         let mut phases = vec![validate];
@@ -351,11 +365,12 @@ impl Api {
             .map(|n| Criterion::from_name(n))
             .collect::<optri::Result<Vec<_>>>()
             .map_err(bad_request)?;
+        let options = options(request.metric.as_deref())?;
         let (points, validate) = self.points(&request.points, request.polygon)?;
         let t0 = Instant::now();
         let results = self.compute(move || match &points {
-            Points::Set(p) => optri::compare(p, &criteria, &Options::default()),
-            Points::Polygon(p) => optri::compare_polygon(p, &criteria, &Options::default()),
+            Points::Set(p) => optri::compare(p, &criteria, &options),
+            Points::Polygon(p) => optri::compare_polygon(p, &criteria, &options),
         })?;
         let phases = [
             validate,

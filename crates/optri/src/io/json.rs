@@ -262,6 +262,7 @@ struct TriangulationDocument<'a> {
     algorithm: Option<&'a str>,
     #[serde(skip_serializing_if = "Option::is_none")]
     algorithm_detail: Option<&'a str>,
+    #[serde(skip_serializing_if = "Option::is_none")]
     metric: Option<MetricDocument>,
     points: usize,
     distinct_points: usize,
