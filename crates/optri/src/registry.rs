@@ -223,7 +223,7 @@ pub fn triangulate_polygon_with(
 
 /// The result of one criterion in [`compare`]: its solution, or the error
 /// with which it refused the input (e.g. [`Error::Unsupported`] for a
-/// criterion that needs convex position).
+/// criterion that takes no metric).
 pub type Comparison = (Criterion, Result<Solution>);
 
 /// Triangulates `points` by each of `criteria`, in the order given, or by
@@ -237,9 +237,11 @@ pub type Comparison = (Criterion, Result<Solution>);
 /// let points = PointSet::new(&[[0.0, 0.0], [4.0, 0.0], [0.0, 3.0], [4.0, 3.0], [2.0, 1.0]])?;
 /// let results = compare(&points, &[], &Options::default());
 /// assert_eq!(results.len(), Criterion::ALL.len());
-/// // The point (2, 1) is interior: min-weight needs convex position for now.
-/// let (_, min_weight) = results.iter().find(|(c, _)| *c == Criterion::MinWeight).unwrap();
-/// assert!(min_weight.is_err());
+/// assert!(results.iter().all(|(_, r)| r.is_ok()));
+/// // Under L1 only minmax-length applies; the others refuse the metric.
+/// let l1 = Options::default().with_metric(optri::kernel::Metric::l1());
+/// let results = compare(&points, &[Criterion::MinmaxLength, Criterion::Delaunay], &l1);
+/// assert!(results[0].1.is_ok() && results[1].1.is_err());
 /// # Ok::<(), optri::Error>(())
 /// ```
 pub fn compare(points: &PointSet, criteria: &[Criterion], options: &Options) -> Vec<Comparison> {
