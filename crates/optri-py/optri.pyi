@@ -108,7 +108,11 @@ class Triangulation:
         """Writes .json, .svg, .geojson or .ele (+ .node); returns the paths."""
 
 def triangulate(points: _ArrayLike, criterion: str = "delaunay", **options: Any) -> Triangulation:
-    """Triangulates the convex hull of an (n, 2) point array by ``criterion``."""
+    """Triangulates the convex hull of an (n, 2) point array by ``criterion``.
+
+    Floats are taken at the decimals their reprs show when every coordinate's
+    repr has at most 15 significant digits (``coordinate_arithmetic`` is then
+    "decimal-exact"), else at their binary values ("binary64")."""
 
 def triangulate_polygon(
     vertices: _ArrayLike, criterion: str = "delaunay", **options: Any

@@ -163,13 +163,9 @@ fn triangulate_answers_the_document_of_triangulate_json() {
             .unwrap();
         assert!(out.status.success());
         let mut cli: Value = serde_json::from_slice(&out.stdout).unwrap();
-        // The file's decimals are read exactly; the request's JSON numbers
-        // are doubles (the page sends what it draws), so only the CLI says
-        // `coordinate_arithmetic`.
-        assert_eq!(
-            cli.as_object_mut().unwrap().remove("coordinate_arithmetic"),
-            Some(json!("decimal-exact"))
-        );
+        // The file's decimals and the request's short JSON numbers are both
+        // taken at their decimal values.
+        assert_eq!(cli["coordinate_arithmetic"], json!("decimal-exact"));
         let mut web = doc.clone();
         cli.as_object_mut().unwrap().remove("timing_ms");
         web.as_object_mut().unwrap().remove("timing_ms");
@@ -226,6 +222,44 @@ fn compare_answers_every_result_or_its_refusal() {
         .map(|r| &r["criterion"])
         .collect();
     assert_eq!(names, [&json!("greedy"), &json!("delaunay")]);
+}
+
+#[test]
+fn request_numbers_are_taken_at_their_decimal_values() {
+    let server = Server::start(&[]);
+    // (0.1, 0.3), (0.2, 0.6), (0.3, 0.9) are collinear as written, not as
+    // doubles: as decimals (0.2, 0.6) is a hull vertex and no triangle is flat.
+    let tenths =
+        r#"{"points": [[0.1, 0.3], [0.2, 0.6], [0.3, 0.9], [0.3, 0.1]], "criterion": "greedy"}"#;
+    let (status, text) = server.request("POST", "/api/triangulate", tenths.as_bytes());
+    assert_eq!(status, 200, "{text}");
+    let doc: Value = serde_json::from_str(&text).unwrap();
+    assert_eq!(doc["coordinate_arithmetic"], "decimal-exact");
+    assert_eq!(doc["triangles"].as_array().unwrap().len(), 2, "{doc}");
+    assert_eq!(doc["stats"]["hull_points"], 4);
+    // The user's values and units, not the scaled integers.
+    assert_eq!(doc["coordinates"][1], json!([0.2, 0.6]));
+    let longest = doc["stats"]["max_edge_length"].as_f64().unwrap();
+    assert!((longest - 0.8).abs() < 1e-12, "{longest}");
+    // A literal with 17 significant digits is not its double's shortest
+    // decimal: the request runs on the doubles.
+    let long = tenths.replace("[0.1, 0.3]", "[0.10000000000000001, 0.3]");
+    let (status, text) = server.request("POST", "/api/triangulate", long.as_bytes());
+    assert_eq!(status, 200, "{text}");
+    let doc: Value = serde_json::from_str(&text).unwrap();
+    assert_eq!(doc["coordinate_arithmetic"], "binary64");
+    // Compare reports it once for every result.
+    let (status, doc) = server.post(
+        "/api/compare",
+        &json!({"points": [[0.1, 0.3], [0.2, 0.6], [0.3, 0.9], [0.3, 0.1]], "criteria": ["delaunay", "minmax-length"]}),
+    );
+    assert_eq!(status, 200, "{doc}");
+    let results = doc["results"].as_array().unwrap();
+    assert_eq!(results.len(), 2, "{doc}");
+    for r in results {
+        assert_eq!(r["coordinate_arithmetic"], "decimal-exact", "{r}");
+        assert_eq!(r["triangles"].as_array().unwrap().len(), 2, "{r}");
+    }
 }
 
 #[test]

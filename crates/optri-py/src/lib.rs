@@ -20,12 +20,13 @@ mod triangulation;
 
 use convert::{file_err, index_array, json_text_to_py, point_array, points_arg, to_py_err};
 use numpy::PyArray2;
-use optri::io::{self, GraphReport, InputFormat};
+use optri::io::{self, GraphReport, Input, InputFormat, ReadInput};
 use optri::{Criterion, Error, GraphKind, Options, Phase, PointSet, SimplePolygon};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
 use std::path::PathBuf;
+use std::sync::Arc;
 use std::time::Instant;
 use triangulation::Triangulation;
 
@@ -101,11 +102,16 @@ fn graph_options(metric: Option<&str>) -> PyResult<Options> {
     })
 }
 
-/// A validated point set and its `validate` phase.
-fn point_set(points: &[[f64; 2]]) -> optri::Result<(PointSet, Phase)> {
+/// Python floats read at their decimal values ([`io::doubles_as_decimals`]:
+/// each coordinate's shortest repr when every one has at most 15
+/// significant digits), the validated working points, and the `validate`
+/// phase.
+fn point_set(points: Vec<[f64; 2]>) -> optri::Result<(Arc<ReadInput>, PointSet, Phase)> {
     let start = Instant::now();
-    let set = PointSet::new(points)?;
+    let read = io::doubles_as_decimals(Input::Points(points));
+    let set = PointSet::new(read.working_points())?;
     Ok((
+        Arc::new(read),
         set,
         Phase {
             name: "validate",
@@ -117,6 +123,7 @@ fn point_set(points: &[[f64; 2]]) -> optri::Result<(PointSet, Phase)> {
 /// One criterion on a validated point set, timed as the CLI times it
 /// (`validate`, the library's phases, `total` since `start`).
 fn solve(
+    read: &Arc<ReadInput>,
     set: &PointSet,
     validate: &Phase,
     criterion: Criterion,
@@ -124,37 +131,52 @@ fn solve(
 ) -> optri::Result<Timed> {
     let start = Instant::now();
     let solution = optri::triangulate_with(set, criterion, options)?;
-    Ok(timed(solution, validate, start))
+    Ok(timed(solution, read, validate, start))
 }
 
 /// `solution` with its phases between `validate` and `total` (since `start`,
 /// plus the validation).
-fn timed(solution: optri::Solution, validate: &Phase, start: Instant) -> Timed {
+fn timed(
+    solution: optri::Solution,
+    read: &Arc<ReadInput>,
+    validate: &Phase,
+    start: Instant,
+) -> Timed {
     let mut phases = vec![validate.clone()];
     phases.extend(solution.phases.iter().cloned());
     phases.push(Phase {
         name: "total",
         ms: validate.ms + ms_since(start),
     });
-    Timed { solution, phases }
+    Timed {
+        solution,
+        read: Arc::clone(read),
+        phases,
+    }
 }
 
-/// A library result and the phases its document reports.
+/// A library result, the input it was computed from (the user's values and
+/// the arithmetic) and the phases its document reports.
 struct Timed {
     solution: optri::Solution,
+    read: Arc<ReadInput>,
     phases: Vec<Phase>,
 }
 
 impl Timed {
     fn into_py(self, py: Python<'_>) -> PyResult<Triangulation> {
-        Triangulation::new(py, self.solution, self.phases)
+        Triangulation::new(py, self.solution, self.read, self.phases)
     }
 }
 
 /// Triangulates the convex hull of ``points`` by ``criterion``.
 ///
 /// ``points``: an (n, 2) array-like of floats (duplicates are merged and
-/// reported in ``duplicates``). ``criterion``: a name from ``criteria()``,
+/// reported in ``duplicates``). Each float is taken at the decimal its repr
+/// shows when every coordinate's repr has at most 15 significant digits
+/// (``coordinate_arithmetic`` is then "decimal-exact": 0.1, 0.2, 0.3 are
+/// collinear as written); otherwise at its binary value ("binary64").
+/// ``criterion``: a name from ``criteria()``,
 /// case-insensitive. Keyword arguments are the criterion's options from the
 /// registry (``criteria()[i]["options"]``). Returns a ``Triangulation``.
 ///
@@ -175,8 +197,8 @@ fn triangulate(
     let points = points_arg(py, points, "points")?;
     let result = py
         .detach(|| {
-            let (set, validate) = point_set(&points)?;
-            solve(&set, &validate, criterion, &options)
+            let (read, set, validate) = point_set(points)?;
+            solve(&read, &set, &validate, criterion, &options)
         })
         .map_err(to_py_err)?;
     result.into_py(py)
@@ -204,14 +226,15 @@ fn triangulate_polygon(
     let result = py
         .detach(|| {
             let start = Instant::now();
-            let polygon = SimplePolygon::new(&ring)?;
+            let read = Arc::new(io::doubles_as_decimals(Input::Polygon(ring)));
+            let polygon = SimplePolygon::new(read.working_points())?;
             let validate = Phase {
                 name: "validate",
                 ms: ms_since(start),
             };
             let start = Instant::now();
             let solution = optri::triangulate_polygon_with(&polygon, criterion, &options)?;
-            Ok::<_, Error>(timed(solution, &validate, start))
+            Ok::<_, Error>(timed(solution, &read, &validate, start))
         })
         .map_err(to_py_err)?;
     result.into_py(py)
@@ -246,10 +269,10 @@ fn compare(
     let points = points_arg(py, points, "points")?;
     let results = py
         .detach(|| {
-            let (set, validate) = point_set(&points)?;
+            let (read, set, validate) = point_set(points)?;
             let mut results = Vec::with_capacity(chosen.len());
             for &criterion in &chosen {
-                match solve(&set, &validate, criterion, &options) {
+                match solve(&read, &set, &validate, criterion, &options) {
                     Ok(result) => results.push((criterion, result)),
                     // "Every criterion that accepts the input."
                     Err(Error::Unsupported { .. }) if every => {}
@@ -283,7 +306,10 @@ fn graph<'py>(
     let options = graph_options(metric)?;
     let points = points_arg(py, points, "points")?;
     let (edges, _phases) = py
-        .detach(|| optri::graph_with(&PointSet::new(&points)?, kind, &options))
+        .detach(|| {
+            let (_, set, _) = point_set(points)?;
+            optri::graph_with(&set, kind, &options)
+        })
         .map_err(to_py_err)?;
     Ok(index_array(py, &edges)?.into_bound(py))
 }
@@ -302,7 +328,7 @@ fn graph_document<'py>(
     let text = py
         .detach(|| {
             let start = Instant::now();
-            let (set, validate) = point_set(&points)?;
+            let (read, set, validate) = point_set(points)?;
             let (edges, phases) = optri::graph(&set, kind)?;
             let mut timing = vec![validate];
             timing.extend(phases);
@@ -310,7 +336,9 @@ fn graph_document<'py>(
                 name: "total",
                 ms: ms_since(start),
             });
-            let report = GraphReport::of_graph(&set, kind, &edges).with_timing(&timing);
+            let report = GraphReport::of_graph(&set, kind, &edges)
+                .with_input(&read)
+                .with_timing(&timing);
             serde_json::to_string(&report)
                 .map_err(|e| Error::Internal(format!("cannot write the JSON document: {e}")))
         })

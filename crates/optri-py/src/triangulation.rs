@@ -7,7 +7,7 @@
 
 use crate::convert::{index_array, json_text_to_py, point_array, to_py_err};
 use numpy::PyArray2;
-use optri::io::{self, TriangulationReport};
+use optri::io::{self, ReadInput, TriangulationReport};
 use optri::{Phase, Solution};
 use pyo3::exceptions::PyRuntimeError;
 use pyo3::prelude::*;
@@ -15,7 +15,7 @@ use serde::de::{Deserialize, Deserializer, IgnoredAny, MapAccess, Visitor};
 use serde_json::value::RawValue;
 use std::fmt;
 use std::path::PathBuf;
-use std::sync::OnceLock;
+use std::sync::{Arc, OnceLock};
 
 /// The fields left out of [`Fields`]: the long arrays, which are numpy
 /// attributes instead.
@@ -75,6 +75,10 @@ impl Fields {
 #[pyclass(frozen, module = "optri")]
 pub struct Triangulation {
     solution: Solution,
+    /// The input with the user's values and the arithmetic: the solution
+    /// ran on its working points (the decimals scaled to integers when
+    /// they are exact).
+    read: Arc<ReadInput>,
     /// `validate`, the library's phases, `total`.
     phases: Vec<Phase>,
     /// The document's fields, written on first use: the document's `stats`
@@ -90,21 +94,29 @@ pub struct Triangulation {
 
 impl Triangulation {
     /// The result object of `solution`, timed by `phases`.
-    pub(crate) fn new(py: Python<'_>, solution: Solution, phases: Vec<Phase>) -> PyResult<Self> {
+    pub(crate) fn new(
+        py: Python<'_>,
+        solution: Solution,
+        read: Arc<ReadInput>,
+        phases: Vec<Phase>,
+    ) -> PyResult<Self> {
         let t = &solution.triangulation;
         Ok(Triangulation {
-            points: point_array(py, t.points())?,
+            points: point_array(py, read.input.points())?,
             simplices: index_array(py, t.triangles())?,
             duplicates: index_array(py, t.point_set().duplicates())?,
             edges: OnceLock::new(),
             fields: OnceLock::new(),
             solution,
+            read,
             phases,
         })
     }
 
     fn report(&self) -> TriangulationReport<'_> {
-        TriangulationReport::of_solution(&self.solution).with_timing(&self.phases)
+        TriangulationReport::of_solution(&self.solution)
+            .with_input(&self.read)
+            .with_timing(&self.phases)
     }
 
     /// The document's fields, written (without the GIL) on first use. Two

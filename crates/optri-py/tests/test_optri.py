@@ -343,8 +343,9 @@ def test_document_equals_the_clis_json(tmp_path, criterion):
     ).stdout
     theirs = json.loads(out)
     # Decimals with 17 significant digits do not scale to integers below 2^53:
-    # the CLI ran on the doubles, as the bindings (which take numbers) always do.
-    assert theirs.pop("coordinate_arithmetic") == "binary64"
+    # the CLI ran on the doubles, and so do the bindings (the floats' reprs
+    # have more than 15 significant digits).
+    assert theirs["coordinate_arithmetic"] == "binary64"
     ours = optri.triangulate(optri.read_points(path), criterion).document
     assert list(ours) == list(theirs)
     assert list(ours["stats"]) == list(theirs["stats"])
@@ -542,3 +543,48 @@ def test_minmax_length_and_rng_under_l1_and_linf_match_brute_force():
             assert t.document["metric"]["name"] == name
             assert t.document["metric"]["max_edge_length"] == best
             assert optri.graph(pts, "mst", metric=name).shape == (6, 2)
+
+
+TENTHS = [(0.1, 0.3), (0.2, 0.6), (0.3, 0.9), (0.3, 0.1)]
+
+
+@pytest.mark.parametrize("criterion", ["delaunay", "minmax-length", "greedy"])
+def test_floats_are_taken_at_the_decimals_they_show(criterion):
+    # Collinear as written (y = 3x), not as doubles: as decimals (0.2, 0.6)
+    # is a hull vertex and the triangle that would be flat is absent.
+    t = optri.triangulate(TENTHS, criterion)
+    doc = t.document
+    assert doc["coordinate_arithmetic"] == "decimal-exact"
+    assert len(t.simplices) == 2
+    assert t.stats["hull_points"] == 4
+    # The user's values and units, not the scaled integers.
+    assert t.points.tolist() == [list(p) for p in TENTHS]
+    assert doc["coordinates"][2] == [0.3, 0.9]
+    assert abs(t.stats["max_edge_length"] - 0.8) < 1e-12
+    # A computed float (0.1 + 0.2 has 17 significant digits) keeps the
+    # whole input binary64.
+    odd = TENTHS + [(0.1 + 0.2, 0.5)]
+    assert optri.triangulate(odd, criterion).document["coordinate_arithmetic"] == "binary64"
+
+
+def test_decimal_files_through_read_points_match_the_cli(tmp_path):
+    path = tmp_path / "tenths.txt"
+    path.write_text("".join(f"{x} {y}\n" for x, y in TENTHS + [(0.15, 0.55), (0.25, 0.35)]))
+    theirs = json.loads(
+        subprocess.run(
+            [cli(), "triangulate", str(path), "--criterion", "minmax-length", "--json"],
+            check=True,
+            capture_output=True,
+            text=True,
+        ).stdout
+    )
+    ours = optri.triangulate(optri.read_points(path), "minmax-length").document
+    assert theirs["coordinate_arithmetic"] == ours["coordinate_arithmetic"] == "decimal-exact"
+    for doc in (ours, theirs):
+        del doc["timing_ms"]
+    assert ours == theirs
+    # Graphs and comparisons decide on the decimals too.
+    assert optri.graph_document(TENTHS, "hull")["coordinate_arithmetic"] == "decimal-exact"
+    assert len(optri.graph(TENTHS, "hull")) == 4
+    for name, result in optri.compare(TENTHS).items():
+        assert len(result.simplices) == 2, name

@@ -13,6 +13,11 @@
 //! | `POST /api/compare` `{"points", "criteria"?: [names], "polygon"?}` | the comparison document of `optri compare --json` |
 //! | `POST /api/read` `{"text", "filename"?, "format"?}` | `{"points": [[x, y], …], "polygon": bool, "format"}`: a file parsed by the library's readers |
 //!
+//! The numbers of `points` are taken at their decimal values when the body
+//! writes none with more than 15 significant digits
+//! ([`io::json_numbers_as_decimals`]; the page's `JSON.stringify` writes
+//! shortest decimals), and the documents say `coordinate_arithmetic`.
+//!
 //! Errors are `{"error": message}` with the library's message: 400 for a
 //! request that is not the documented JSON (syntax, types, unknown fields,
 //! unknown criterion or format), 404/405 for other paths and methods, 413 for
@@ -23,7 +28,7 @@
 //! exceeds [`Limits::time_limit`] (its thread then finishes in the background
 //! and still counts as running, so a flood of slow requests cannot pile up).
 
-use optri::io::{self, ComparisonReport, InputFormat, TriangulationReport};
+use optri::io::{self, ComparisonReport, InputFormat, ReadInput, TriangulationReport};
 use optri::{Criterion, Error, Options, Phase, PointSet, Requirement, SimplePolygon, Solution};
 use serde::Deserialize;
 use serde_json::{json, Value};
@@ -247,8 +252,16 @@ impl Api {
     }
 
     /// Validates the points of a request (timed as `validate`): each an
-    /// `[x, y]` pair (400 otherwise), then as the library does (422).
-    fn points(&self, points: &[Vec<f64>], polygon: bool) -> Result<(Points, Phase), Refusal> {
+    /// `[x, y]` pair (400 otherwise), then as the library does (422). The
+    /// numbers are taken at their decimal values when the request `body`
+    /// writes none with more than 15 significant digits
+    /// ([`io::json_numbers_as_decimals`]), as the GeoJSON reader does.
+    fn points(
+        &self,
+        points: &[Vec<f64>],
+        polygon: bool,
+        body: &[u8],
+    ) -> Result<(Points, ReadInput, Phase), Refusal> {
         if points.len() > self.limits.max_points {
             return Err((
                 422,
@@ -272,13 +285,23 @@ impl Api {
                 ))),
             })
             .collect::<Result<Vec<[f64; 2]>, Refusal>>()?;
-        let points = if polygon {
-            Points::Polygon(SimplePolygon::new(&points).map_err(|e| library_error(&e))?)
+        let input = if polygon {
+            io::Input::Polygon(points)
         } else {
-            Points::Set(PointSet::new(&points).map_err(|e| library_error(&e))?)
+            io::Input::Points(points)
+        };
+        // `parse` accepted the body, so it is UTF-8 and the lossy view is
+        // the text itself.
+        let read = io::json_numbers_as_decimals(input, &String::from_utf8_lossy(body));
+        let working = read.working_points();
+        let points = if polygon {
+            Points::Polygon(SimplePolygon::new(working).map_err(|e| library_error(&e))?)
+        } else {
+            Points::Set(PointSet::new(working).map_err(|e| library_error(&e))?)
         };
         Ok((
             points,
+            read,
             Phase {
                 name: "validate",
                 ms: ms_since(t0),
@@ -336,7 +359,7 @@ impl Api {
         let request: TriangulateRequest = parse(body)?;
         let criterion = Criterion::from_name(&request.criterion).map_err(bad_request)?;
         let options = options(request.metric.as_deref())?;
-        let (points, validate) = self.points(&request.points, request.polygon)?;
+        let (points, read, validate) = self.points(&request.points, request.polygon, body)?;
         let solution: Solution = self
             .compute(move || match &points {
                 Points::Set(p) => optri::triangulate_with(p, criterion, &options),
@@ -352,7 +375,9 @@ impl Api {
         // Serialised directly, so the fields keep the documented order.
         Ok(Reply::json(
             200,
-            &TriangulationReport::of_solution(&solution).with_timing(&phases),
+            &TriangulationReport::of_solution(&solution)
+                .with_input(&read)
+                .with_timing(&phases),
         ))
     }
 
@@ -366,7 +391,7 @@ impl Api {
             .collect::<optri::Result<Vec<_>>>()
             .map_err(bad_request)?;
         let options = options(request.metric.as_deref())?;
-        let (points, validate) = self.points(&request.points, request.polygon)?;
+        let (points, read, validate) = self.points(&request.points, request.polygon, body)?;
         let t0 = Instant::now();
         let results = self.compute(move || match &points {
             Points::Set(p) => optri::compare(p, &criteria, &options),
@@ -385,7 +410,9 @@ impl Api {
         ];
         Ok(Reply::json(
             200,
-            &ComparisonReport::new(&results).with_timing(&phases),
+            &ComparisonReport::new(&results)
+                .with_input(&read)
+                .with_timing(&phases),
         ))
     }
 }

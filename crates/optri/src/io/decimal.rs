@@ -19,6 +19,12 @@
 //! doubles, exactly as before, and the JSON says so
 //! (`"coordinate_arithmetic": "binary64"`).
 //!
+//! Front ends whose numbers arrive as doubles (Python floats, the numbers of
+//! a web request) use the same rule: [`super::doubles_as_decimals`] reads each
+//! double as its shortest round-trip decimal when every one has at most 15
+//! significant digits (`0.1` typed in Python is the decimal 0.1; a computed
+//! `0.1 + 0.2 = 0.30000000000000004` has 17 and keeps the input binary64).
+//!
 //! GeoJSON numbers are parsed by serde_json, which keeps no text; a double
 //! whose shortest round-trip decimal has at most 15 significant digits *is*
 //! that decimal's reading (every decimal of at most 15 digits survives the
@@ -31,6 +37,11 @@ use crate::kernel::Point;
 
 /// 2⁵³: integers of smaller magnitude are exact doubles.
 const EXACT_INTEGER_LIMIT: u64 = 1 << 53;
+
+/// Every decimal of at most this many significant digits is the shortest
+/// round-trip decimal of its nearest double (binary64 carries 15.95 decimal
+/// digits), so reading such a double back as that decimal is unambiguous.
+const SHORTEST_DIGITS: usize = 15;
 
 /// How the algorithms computed with the coordinates, as the JSON's
 /// `"coordinate_arithmetic"` says.
@@ -210,13 +221,24 @@ impl DecimalScaler {
     }
 
     /// Records the next coordinate from its double, trusting its shortest
-    /// round-trip decimal (see the module docs for when that is sound).
+    /// round-trip decimal when that has at most 15 significant digits (see
+    /// the module docs for when that is sound); gives up otherwise.
     pub(super) fn push_shortest(&mut self, value: f64) {
         if self.scaled.is_none() {
             return;
         }
-        // `{:e}` is Rust's shortest round-trip decimal, in scientific form.
-        self.push(&format!("{value:e}"));
+        // `{:e}` is Rust's shortest round-trip decimal, in scientific form:
+        // `d.ddde±x`, so the mantissa's digits are the significant ones.
+        let shortest = format!("{value:e}");
+        let digits = shortest
+            .split('e')
+            .next()
+            .map_or(0, |m| m.bytes().filter(u8::is_ascii_digit).count());
+        if digits > SHORTEST_DIGITS {
+            self.scaled = None;
+            return;
+        }
+        self.push(&shortest);
     }
 
     fn push_decimal(&mut self, d: Decimal) {
@@ -400,6 +422,31 @@ mod tests {
         assert_eq!(scaled(&["1e-400", "1"]).0, Arithmetic::Binary64);
         assert_eq!(unscale(30.0, 1), 3.0);
         assert_eq!(unscale(3.0, -3), 3000.0);
+    }
+
+    #[test]
+    fn doubles_are_read_as_their_shortest_decimals_of_at_most_15_digits() {
+        let shortest = |values: &[f64]| {
+            let mut s = DecimalScaler::default();
+            for &v in values {
+                s.push_shortest(v);
+            }
+            s.finish()
+        };
+        let (a, s) = shortest(&[0.1, 0.2, -0.3, 12.5]);
+        assert_eq!(a, Arithmetic::DecimalExact);
+        assert_eq!(s.unwrap().points, vec![[1.0, 2.0], [-3.0, 125.0]]);
+        // 17 and 16 significant digits: not a reading of a typed decimal.
+        assert_eq!(shortest(&[0.1 + 0.2, 1.0]).0, Arithmetic::Binary64);
+        assert_eq!(
+            shortest(&[0.123_456_789_012_345_6, 1.0]).0,
+            Arithmetic::Binary64
+        );
+        assert_eq!(
+            shortest(&[0.123_456_789_012_345, 1.0]).0,
+            Arithmetic::DecimalExact
+        );
+        assert_eq!(shortest(&[f64::NAN, 1.0]).0, Arithmetic::Binary64);
     }
 
     #[test]

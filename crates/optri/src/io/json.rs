@@ -21,7 +21,7 @@
 //! given.
 
 use super::decimal::unscale;
-use super::{Arithmetic, ReadInput};
+use super::{Arithmetic, Input, ReadInput};
 use crate::criteria::{Diagnostics, Optimality};
 use crate::error::{Error, Result};
 use crate::kernel::Point;
@@ -674,17 +674,34 @@ pub fn triangulation_from_json(value: &Value) -> Result<Triangulation> {
     {
         return Err(bad(&format!("triangle index {i} out of range")));
     }
-    match value.get("domain").and_then(Value::as_str) {
-        Some("polygon") => {
-            Triangulation::from_polygon_triangles(&SimplePolygon::new(&points)?, triangles)
+    // The document shows the user's values; when they are short decimals
+    // (as every decimal-exact document's are), validate on those decimals,
+    // where the writer decided, not on their doubles: points collinear as
+    // written need not be collinear as doubles.
+    let polygon = match value.get("domain").and_then(Value::as_str) {
+        Some("polygon") => true,
+        None | Some("convex-hull") => false,
+        Some(other) => {
+            return Err(bad(&format!(
+                "\"domain\" is \"{other}\", not \"convex-hull\" or \"polygon\""
+            )))
         }
-        None | Some("convex-hull") => {
-            Triangulation::from_triangles(&PointSet::new(&points)?, triangles)
-        }
-        Some(other) => Err(bad(&format!(
-            "\"domain\" is \"{other}\", not \"convex-hull\" or \"polygon\""
-        ))),
-    }
+    };
+    let read = super::doubles_as_decimals(if polygon {
+        Input::Polygon(points)
+    } else {
+        Input::Points(points)
+    });
+    let working = read.working_points();
+    let triangulation = if polygon {
+        Triangulation::from_polygon_triangles(&SimplePolygon::new(working)?, triangles)?
+    } else {
+        Triangulation::from_triangles(&PointSet::new(working)?, triangles)?
+    };
+    Ok(match &read.scaled {
+        Some(_) => triangulation.with_point_set(PointSet::new(read.input.points())?),
+        None => triangulation,
+    })
 }
 
 #[cfg(test)]
@@ -825,6 +842,35 @@ mod tests {
         let back = triangulation_from_json(&v).unwrap();
         assert_eq!(back.triangles(), t.triangles());
         assert_eq!(read_points(&text, InputFormat::GeoJson).unwrap(), pts);
+    }
+
+    #[test]
+    fn decimal_documents_read_back_validated_on_their_decimals() {
+        // Collinear as written; as doubles (0.2, 0.6) lies off the hull edge,
+        // and on one side the two triangles would not cover the doubles' hull.
+        // The reading validates where the writer decided, for both sides.
+        for text in [
+            "0.1 0.3\n0.2 0.6\n0.3 0.9\n0.3 0.1\n",
+            "0.3 0.9\n0.2 0.6\n0.1 0.3\n-0.1 0.9\n",
+            "0.1 0.7\n0.2 1.4\n0.3 2.1\n0 2\n",
+            "0.1 0.7\n0.2 1.4\n0.3 2.1\n1 0\n",
+        ] {
+            let read = crate::io::read_points_exact(text, InputFormat::Text).unwrap();
+            assert_eq!(read.arithmetic, Arithmetic::DecimalExact);
+            let solution = triangulate(
+                &PointSet::new(read.working_points()).unwrap(),
+                Criterion::Greedy,
+            )
+            .unwrap();
+            assert_eq!(solution.triangulation.triangles().len(), 2, "{text}");
+            let v = TriangulationReport::of_solution(&solution)
+                .with_input(&read)
+                .to_json();
+            assert_eq!(v["coordinate_arithmetic"], "decimal-exact");
+            let back = triangulation_from_json(&v).unwrap();
+            assert_eq!(back.triangles(), solution.triangulation.triangles());
+            assert_eq!(back.points(), read.input.points(), "the user's values");
+        }
     }
 
     #[test]

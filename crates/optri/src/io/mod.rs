@@ -145,6 +145,46 @@ pub fn read_input_exact(text: &str, format: InputFormat) -> Result<ReadInput> {
     read_any(text, format, true)
 }
 
+/// `input` given as doubles by a front end (Python floats, the numbers of a
+/// web request) read at the decimals they were written as: each coordinate's
+/// shortest round-trip decimal, when every one has at most 15 significant
+/// digits (each such decimal is the only one of at most 15 digits with that
+/// nearest double, so the reading is unambiguous). Otherwise, or when the
+/// decimals do not scale to integers below 2⁵³, the input stays binary64.
+/// `0.1`, `0.2`, `0.3` typed in Python are then collinear with `0`, as
+/// written.
+pub fn doubles_as_decimals(input: Input) -> ReadInput {
+    let mut decimal = decimal::DecimalScaler::default();
+    for p in input.points() {
+        decimal.push_shortest(p[0]);
+        decimal.push_shortest(p[1]);
+    }
+    let (arithmetic, scaled) = decimal.finish();
+    ReadInput {
+        input,
+        arithmetic,
+        scaled,
+        warnings: Vec::new(),
+    }
+}
+
+/// [`doubles_as_decimals`] for numbers parsed from the JSON `text`: only
+/// when no number literal of `text` has more than 15 significant digits (a
+/// longer literal is not its double's shortest decimal, so its value is
+/// lost; the input then stays binary64).
+pub fn json_numbers_as_decimals(input: Input, text: &str) -> ReadInput {
+    if decimal::json_literals_are_short(text) {
+        doubles_as_decimals(input)
+    } else {
+        ReadInput {
+            input,
+            arithmetic: Arithmetic::Binary64,
+            scaled: None,
+            warnings: Vec::new(),
+        }
+    }
+}
+
 /// Reads `text` as points ([`read_points`]) with their decimal values, as
 /// [`read_input_exact`] does.
 ///

@@ -106,6 +106,18 @@ impl Triangulation {
         t
     }
 
+    /// The same triangles and domain over `point_set`, which holds the same
+    /// points in the same order at other values: the user's doubles of a
+    /// triangulation validated on their decimals scaled to integers (the
+    /// decisions were made there; see `io::doubles_as_decimals`).
+    pub(crate) fn with_point_set(self, point_set: PointSet) -> Self {
+        debug_assert_eq!(
+            point_set.input_points().len(),
+            self.point_set.input_points().len()
+        );
+        Self { point_set, ..self }
+    }
+
     /// Builds a triangulation from triangles given as input indices and
     /// checks it with [`validate`](Self::validate).
     pub fn from_triangles(point_set: &PointSet, triangles: Vec<[u32; 3]>) -> Result<Self> {
