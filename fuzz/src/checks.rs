@@ -2,18 +2,23 @@
 //! (`crates/optri/tests/fuzz_regressions.rs` replays the committed corpus
 //! and every crash found through the same functions).
 //!
-//! * [`check_readers`]: every input format (`optri::io::read_input` and,
-//!   for the polygon formats, `read_polygon`) on arbitrary bytes returns
-//!   `Ok` or an error and never panics; an `Ok` result that validates as a
-//!   point set or polygon triangulates (Delaunay, or the polygon's
-//!   constrained Delaunay) to something `validate()` accepts.
+//! * [`check_readers`]: every input format (`optri::io::read_input_exact`
+//!   and, for the polygon formats, `read_polygon`) on arbitrary bytes
+//!   returns `Ok` or an error and never panics; an `Ok` result whose working
+//!   points (the decimals scaled to integers when exact) validate as a point
+//!   set or polygon triangulates (Delaunay, or the polygon's constrained
+//!   Delaunay) to something `validate()` accepts, and its JSON document (in
+//!   the user's values) reads back to the same triangles.
 //! * [`check_criteria`]: up to 12 points decoded from the bytes (small
 //!   integers, or arbitrary `f64` bit patterns): every criterion and graph
 //!   returns `Ok` or an error, every `Ok` triangulation validates, and for
 //!   at most 7 distinct points each exact criterion's answer is optimal
 //!   against `optri-oracle`'s exhaustive enumeration.
 
-use optri::io::{read_input, read_polygon, Input, InputFormat};
+use optri::io::{
+    read_input_exact, read_polygon, triangulation_from_json, Input, InputFormat, ReadInput,
+    TriangulationReport,
+};
 use optri::{
     graph, triangulate, triangulate_polygon, Criterion, GraphKind, PointSet, SimplePolygon,
 };
@@ -32,29 +37,27 @@ pub fn check_readers(data: &[u8]) {
         return;
     };
     for &format in InputFormat::ALL {
-        match read_input(text, format) {
-            Ok(Input::Points(points)) => {
+        match read_input_exact(text, format) {
+            Ok(read) => {
+                let points = read.working_points();
                 assert!(!points.is_empty(), "{format:?}: Ok with no points");
-                if points.len() <= SOLVE_AT_MOST {
-                    if let Ok(set) = PointSet::new(&points) {
-                        let s = triangulate(&set, Criterion::Delaunay)
-                            .unwrap_or_else(|e| panic!("{format:?}: Delaunay failed: {e}"));
-                        s.triangulation.validate().unwrap_or_else(|e| {
-                            panic!("{format:?}: invalid Delaunay of {points:?}: {e}")
-                        });
-                    }
+                if points.len() > SOLVE_AT_MOST {
+                    continue;
                 }
-            }
-            Ok(Input::Polygon(ring)) => {
-                assert!(!ring.is_empty(), "{format:?}: Ok with an empty ring");
-                if ring.len() <= SOLVE_AT_MOST {
-                    if let Ok(polygon) = SimplePolygon::new(&ring) {
-                        let s = triangulate_polygon(&polygon, Criterion::Delaunay)
-                            .unwrap_or_else(|e| panic!("{format:?}: polygon failed: {e}"));
-                        s.triangulation.validate().unwrap_or_else(|e| {
-                            panic!("{format:?}: invalid triangulation of {ring:?}: {e}")
-                        });
-                    }
+                let solved = match &read.input {
+                    Input::Points(_) => PointSet::new(points)
+                        .ok()
+                        .map(|set| triangulate(&set, Criterion::Delaunay)),
+                    Input::Polygon(_) => SimplePolygon::new(points)
+                        .ok()
+                        .map(|polygon| triangulate_polygon(&polygon, Criterion::Delaunay)),
+                };
+                if let Some(solved) = solved {
+                    let s = solved.unwrap_or_else(|e| panic!("{format:?}: Delaunay failed: {e}"));
+                    s.triangulation.validate().unwrap_or_else(|e| {
+                        panic!("{format:?}: invalid Delaunay of {points:?}: {e}")
+                    });
+                    check_document_reads_back(&read, &s, format);
                 }
             }
             Err(e) => {
@@ -64,6 +67,31 @@ pub fn check_readers(data: &[u8]) {
         if matches!(format, InputFormat::Poly | InputFormat::GeoJson) {
             let _ = read_polygon(text, format).map(|ring| assert!(!ring.is_empty()));
         }
+    }
+}
+
+/// The document of `s` in the user's values reads back (validated where
+/// the reader decided: on the decimals when they were exact) to the same
+/// triangles.
+fn check_document_reads_back(read: &ReadInput, s: &optri::Solution, format: InputFormat) {
+    let document = TriangulationReport::of_solution(s)
+        .with_input(read)
+        .to_json();
+    // Documents of user values that do not survive JSON (e.g. beyond f64's
+    // range after unscaling) are not what this checks.
+    if !read.input.points().iter().flatten().all(|v| v.is_finite()) {
+        return;
+    }
+    match triangulation_from_json(&document) {
+        Ok(back) => assert_eq!(
+            back.triangles(),
+            s.triangulation.triangles(),
+            "{format:?}: the document reads back to other triangles"
+        ),
+        Err(e) => panic!(
+            "{format:?}: the document of {:?} does not read back: {e}",
+            read.input.points()
+        ),
     }
 }
 

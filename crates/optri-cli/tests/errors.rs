@@ -93,6 +93,11 @@ const READER_ERRORS: &[(&str, &str, &str)] = &[
     ("seq.node", "3 2 0 0\n0 0 0\n5 1 0\n2 0 1\n", "seq.node:3: vertex id 5 out of sequence (expected 1)"),
     ("count.node", "3 2 0 0\n0 0 0\n1 1 0\n", "count.node:1: the header announces 3 vertices, the file has 2"),
     (
+        "attrs.node",
+        "3 2 18446744073709551615 0\n0 0 0\n",
+        "attrs.node:1: attribute count 18446744073709551615 is too large",
+    ),
+    (
         "more.node",
         "2 2 0 0\n0 0 0\n1 1 0\n2 0 1\n",
         "more.node:4: more vertex lines than the 2 the header announces",

@@ -87,7 +87,14 @@ pub(super) fn read_vertex_section<'t>(
             format!("boundary-marker flag must be 0 or 1, found {markers}"),
         ));
     }
-    let columns = 3 + attributes + markers;
+    // A count near usize::MAX would overflow the column count (no line can
+    // hold that many fields anyway: the line check below refuses the rest).
+    let columns = attributes.checked_add(3 + markers).ok_or_else(|| {
+        parse(
+            header_line,
+            format!("attribute count {attributes} is too large"),
+        )
+    })?;
     let mut points = Collected::default();
     points.points.reserve(count.min(1 << 20));
     let mut first_id = None;
