@@ -519,14 +519,17 @@ fn min_weight_ilp_equals_exhaustive_optimum() {
             continue;
         }
         let ilp = ilp.unwrap();
-        let (best, _) = optimum_by(&pts, |t| TotalF64(total_length(&pts, t)));
+        let all = all_triangulations(&pts);
+        let best = all
+            .iter()
+            .map(|t| total_length(&pts, t))
+            .fold(f64::INFINITY, f64::min);
         assert!(
-            (ilp.weight - best.0).abs() <= 1e-12 * best.0,
-            "{pts:?}: ILP {} vs exhaustive {}",
-            ilp.weight,
-            best.0
+            (ilp.weight - best).abs() <= 1e-12 * best,
+            "{pts:?}: ILP {} vs exhaustive {best}",
+            ilp.weight
         );
-        assert!(all_triangulations(&pts).contains(&ilp.triangles));
+        assert!(all.contains(&ilp.triangles));
         checked += 1;
         branched += usize::from(ilp.nodes > 0);
     }
@@ -534,11 +537,13 @@ fn min_weight_ilp_equals_exhaustive_optimum() {
     eprintln!("min-weight ILP = exhaustive on {checked} sets ({branched} branched)");
 }
 
-/// The odd wheels (regular (2k+1)-gons with their centre), whose relaxation
-/// is fractional for the LMT-skeleton's reason: the ILP must still be exact.
+/// Regular k-gons with their centre (the odd ones defeat the LMT-skeleton).
+/// Larger wheels, where the relaxation is fractional and the program
+/// branches, are checked against optri in crates/optri/tests/min_weight_ilp.rs,
+/// and optri against an independent wheel program in min_weight_general.rs.
 #[test]
 fn min_weight_ilp_on_wheels_equals_exhaustive_optimum() {
-    for k in [5usize, 6, 7, 8, 9, 10, 11] {
+    for k in [5usize, 6, 7, 8, 9] {
         let mut pts: Vec<Point> = (0..k)
             .map(|i| {
                 let a = std::f64::consts::TAU * i as f64 / k as f64;
