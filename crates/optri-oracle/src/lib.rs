@@ -9,7 +9,9 @@
 //! definition ([`greedy_triangulation`], O(n⁴), and the same scan made
 //! scalable with exact float-filtered predicates and grids,
 //! [`greedy_edges`]),
-//! Klincsek's polygon DP ([`klincsek()`]), simple polygons by definition
+//! Klincsek's polygon DP ([`klincsek()`]), the minimum-weight
+//! triangulation of a general set by integer programming over its empty
+//! triangles ([`min_weight_ilp()`], tens of points), simple polygons by definition
 //! (diagonals, every triangulation, the greedy triangulation, generators:
 //! [`polygon`]), brute-force definitions of the
 //! proximity graphs ([`graphs`]), and a polynomial expansion of the
@@ -32,6 +34,7 @@ pub mod graphs;
 pub mod greedy;
 pub mod inputs;
 pub mod klincsek;
+pub mod min_weight_ilp;
 pub mod norm;
 pub mod polygon;
 pub mod symbolic;
@@ -56,6 +59,7 @@ pub use inputs::integer_circle_points;
 pub use klincsek::{
     klincsek, klincsek_unique, Criterion, MaxMinArea, MinMaxArea, MinMaxLength, MinWeight,
 };
+pub use min_weight_ilp::{min_weight_ilp, IlpTriangulation};
 pub use num_bigint::BigInt;
 pub use num_rational::BigRational;
 pub use symbolic::{compare_lengths_perturbed, orient_perturbed};

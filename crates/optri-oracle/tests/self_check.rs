@@ -481,3 +481,83 @@ fn klincsek_uniqueness_certificate_agrees_with_exhaustive_search() {
     }
     assert!(unique > 40 && tied > 10, "{unique} {tied}");
 }
+
+const SEED_MWT_ILP: u64 = 23;
+
+/// Removes repeated points (the oracle takes distinct points).
+fn distinct(mut pts: Vec<Point>) -> Vec<Point> {
+    let mut seen = std::collections::HashSet::new();
+    pts.retain(|p| seen.insert([p[0].to_bits(), p[1].to_bits()]));
+    pts
+}
+
+#[test]
+fn min_weight_ilp_equals_exhaustive_optimum() {
+    use optri_oracle::inputs::{
+        clustered, collinear_runs, integer_circle_points, uniform_in_square,
+    };
+    let mut rng = StdRng::seed_from_u64(SEED_MWT_ILP);
+    let mut checked = 0;
+    let mut branched = 0;
+    for case in 0..240 {
+        let n = 3 + case % 7;
+        let pts = distinct(match case % 5 {
+            0 => uniform_in_square(&mut rng, n, 100.0),
+            1 => clustered(&mut rng, n, 2),
+            2 => points(&mut rng, n.min(9), 4),
+            3 => collinear_runs(&mut rng, 1..3, 2..5, 0..3),
+            _ => {
+                let mut c = integer_circle_points(if case % 2 == 0 { 5 } else { 65 });
+                c.truncate(n.min(c.len()));
+                c.push([0.0, 0.0]);
+                c
+            }
+        });
+        let ilp = min_weight_ilp(&pts);
+        if pts.len() > 9 || pts.len() < 3 || pts.iter().all(|p| orient(pts[0], pts[1], *p) == 0) {
+            assert!(ilp.is_none() || pts.len() > 9);
+            continue;
+        }
+        let ilp = ilp.unwrap();
+        let all = all_triangulations(&pts);
+        let best = all
+            .iter()
+            .map(|t| total_length(&pts, t))
+            .fold(f64::INFINITY, f64::min);
+        assert!(
+            (ilp.weight - best).abs() <= 1e-12 * best,
+            "{pts:?}: ILP {} vs exhaustive {best}",
+            ilp.weight
+        );
+        assert!(all.contains(&ilp.triangles));
+        checked += 1;
+        branched += usize::from(ilp.nodes > 0);
+    }
+    assert!(checked >= 180, "{checked} cases");
+    eprintln!("min-weight ILP = exhaustive on {checked} sets ({branched} branched)");
+}
+
+/// Regular k-gons with their centre (the odd ones defeat the LMT-skeleton).
+/// Larger wheels, where the relaxation is fractional and the program
+/// branches, are checked against optri in crates/optri/tests/min_weight_ilp.rs,
+/// and optri against an independent wheel program in min_weight_general.rs.
+#[test]
+fn min_weight_ilp_on_wheels_equals_exhaustive_optimum() {
+    for k in [5usize, 6, 7, 8, 9] {
+        let mut pts: Vec<Point> = (0..k)
+            .map(|i| {
+                let a = std::f64::consts::TAU * i as f64 / k as f64;
+                [1000.0 * a.cos(), 1000.0 * a.sin()]
+            })
+            .collect();
+        pts.push([0.0, 0.0]);
+        let ilp = min_weight_ilp(&pts).unwrap();
+        let (best, _) = optimum_by(&pts, |t| TotalF64(total_length(&pts, t)));
+        assert!(
+            (ilp.weight - best.0).abs() <= 1e-12 * best.0,
+            "wheel {k}: ILP {} vs exhaustive {}",
+            ilp.weight,
+            best.0
+        );
+    }
+}

@@ -1,0 +1,339 @@
+//! Minimum-weight triangulation of general sets of 40–60 points against the
+//! oracle's integer program over empty triangles
+//! ([`optri_oracle::min_weight_ilp`]: Kyoda et al. 1997's triangle
+//! formulation, solved by branch and bound and re-checked exactly), on
+//! random uniform (also huge and negative coordinates), clustered, integer
+//! lattice (ties), cocircular (with and without the centre), collinear-run
+//! and duplicated sets, and on the odd wheels (regular (2k+1)-gons with
+//! their centre, k = 3…10) and nested wheels, which defeat the LMT-skeleton.
+//!
+//! The program is solved in floating point, so weights are compared with a
+//! relative tolerance of 10⁻⁹; both are sums of `f64` edge lengths of a
+//! triangulation ([`optri_oracle::total_length`]). When the edge sets differ
+//! the weights must still agree: a tie, counted and printed.
+//!
+//! The default tier runs one or two sets per family; the `#[ignore]`d sweep
+//! runs many (`cargo test --release -p optri --test min_weight_ilp --
+//! --ignored --nocapture`).
+
+use optri::internals::min_weight_pipeline;
+use optri::kernel::Point;
+use optri::{triangulate, Criterion, PointSet};
+use optri_oracle::inputs::{
+    clustered, collinear_runs, grid, grid_subset, integer_circle_points, lattice_points,
+    uniform_in_box, uniform_in_square,
+};
+use optri_oracle::{canonical_triangulation, min_weight_ilp, total_length};
+use rand::rngs::StdRng;
+use rand::seq::SliceRandom;
+use rand::{Rng, SeedableRng};
+use std::time::{Duration, Instant};
+
+const TOLERANCE: f64 = 1e-9;
+const SEED_DEFAULT: u64 = 1204;
+const SEED_SWEEP: u64 = 1205;
+const SEED_COCIRCULAR: u64 = 1206;
+
+/// The families of the issue; each draws a set of about 40–60 points.
+#[derive(Clone, Copy, Debug)]
+enum Family {
+    Uniform,
+    /// Uniform in a small box far from the origin, at negative coordinates.
+    FarNegative,
+    Clustered,
+    /// Integer points of a small square, drawn with repeats (ties, collinear
+    /// triples and duplicates).
+    Lattice,
+    /// A full or thinned integer grid.
+    Grid,
+    /// A random subset of the integer points of a circle.
+    Cocircular,
+    /// The same with the centre: beyond optri's face-search budget (see
+    /// `cocircular_sets_with_their_centre_equal_the_integer_program`).
+    CocircularCentre,
+    CollinearRuns,
+    /// A uniform set with some points repeated, shuffled.
+    Duplicates,
+}
+
+const FAMILIES: [Family; 8] = [
+    Family::Uniform,
+    Family::FarNegative,
+    Family::Clustered,
+    Family::Lattice,
+    Family::Grid,
+    Family::Cocircular,
+    Family::CollinearRuns,
+    Family::Duplicates,
+];
+
+fn draw(family: Family, rng: &mut StdRng) -> Vec<Point> {
+    let n = rng.gen_range(40..=60);
+    match family {
+        Family::Uniform => uniform_in_square(rng, n, 1000.0),
+        Family::FarNegative => {
+            uniform_in_box(rng, n, [-3.0e9, -7.5e8], [-3.0e9 + 1e4, -7.5e8 + 1e4])
+        }
+        Family::Clustered => {
+            let clusters = rng.gen_range(2..=5);
+            clustered(rng, n, clusters)
+        }
+        Family::Lattice => lattice_points(rng, n + n / 4, 0..9, 0..9),
+        Family::Grid => {
+            if rng.gen_bool(0.3) {
+                let w = rng.gen_range(6..=8);
+                grid(w, 7, 1.0)
+            } else {
+                let p = rng.gen_range(0.5..0.75);
+                grid_subset(rng, 9, 9, p)
+            }
+        }
+        Family::Cocircular | Family::CocircularCentre => {
+            // x² + y² = 325²: 60 integer points in strictly convex position.
+            let mut c = integer_circle_points(325);
+            c.shuffle(rng);
+            c.truncate(n.min(c.len()));
+            if matches!(family, Family::CocircularCentre) {
+                c.push([0.0, 0.0]);
+            }
+            c
+        }
+        Family::CollinearRuns => collinear_runs(rng, 4..7, 6..10, 10..25),
+        Family::Duplicates => {
+            let mut p = uniform_in_square(rng, n - n / 5, 100.0);
+            for _ in 0..n / 5 {
+                let q = p[rng.gen_range(0..p.len())];
+                p.push(q);
+            }
+            p.shuffle(rng);
+            p
+        }
+    }
+}
+
+/// A regular k-gon of radius `r` rotated by `phase` (radians) around the origin.
+fn ring(k: usize, r: f64, phase: f64) -> Vec<Point> {
+    (0..k)
+        .map(|i| {
+            let a = phase + std::f64::consts::TAU * i as f64 / k as f64;
+            [r * a.cos(), r * a.sin()]
+        })
+        .collect()
+}
+
+/// What a run of comparisons saw.
+#[derive(Default)]
+struct Tally {
+    sets: usize,
+    /// Sets whose optimal edge sets differ (equal weights: ties).
+    ties: usize,
+    /// Sets on which the program's relaxation was fractional.
+    branched: usize,
+    empty_triangles: usize,
+    /// Sets on which optri (registry and pipeline) proved the optimum.
+    equal: usize,
+    /// Results optri did not prove optimal (`exact: false`), described.
+    unproven: Vec<String>,
+    ilp_time: Duration,
+    optri_time: Duration,
+}
+
+/// Solves `pts` by optri (registry and the general pipeline) and by the
+/// oracle's program; both must be valid, exact and of the same weight.
+fn check(pts: &[Point], what: &str, tally: &mut Tally) {
+    let ps = PointSet::new(pts).unwrap_or_else(|e| panic!("{what}: {e}"));
+    let clock = Instant::now();
+    let ilp = min_weight_ilp(ps.points()).expect("spans the plane");
+    tally.ilp_time += clock.elapsed();
+    tally.sets += 1;
+    tally.branched += usize::from(ilp.nodes > 0);
+    tally.empty_triangles += ilp.empty_triangles;
+    let clock = Instant::now();
+    let distinct = |t: &optri::Triangulation| -> Vec<[u32; 3]> {
+        let tris: Vec<[u32; 3]> = t
+            .triangles()
+            .iter()
+            .map(|tri| tri.map(|i| ps.distinct_index(i)))
+            .collect();
+        canonical_triangulation(ps.points(), &tris)
+    };
+    let close = |w: f64| (w - ilp.weight).abs() <= TOLERANCE * ilp.weight;
+
+    let s = triangulate(&ps, Criterion::MinWeight).unwrap();
+    s.triangulation.validate().unwrap();
+    let tris = distinct(&s.triangulation);
+    let w = total_length(ps.points(), &tris);
+    let (t, exact, diagnostics, lower) = min_weight_pipeline(&ps).unwrap();
+    t.validate().unwrap();
+    let wp = total_length(ps.points(), &distinct(&t));
+    tally.optri_time += clock.elapsed();
+    // Never lighter than the optimum, whatever optri proved.
+    for (who, weight) in [("optri", w), ("pipeline", wp)] {
+        assert!(
+            weight >= ilp.weight * (1.0 - TOLERANCE),
+            "{what}: {who} {weight} lighter than the integer program's {} (points {:?})",
+            ilp.weight,
+            ps.points()
+        );
+    }
+    assert!(
+        lower <= ilp.weight * (1.0 + TOLERANCE),
+        "{what}: lower bound {lower} above the optimum {}",
+        ilp.weight
+    );
+    for (who, proven, weight) in [("optri", s.exact, w), ("pipeline", exact, wp)] {
+        if proven {
+            assert!(
+                close(weight),
+                "{what}: {who} {weight}, integer program {} (points {:?})",
+                ilp.weight,
+                ps.points()
+            );
+        } else {
+            // The face search ran out of budget: optri says so (`exact: false`).
+            tally.unproven.push(format!(
+                "{what}: {who} {weight} (lower bound {lower}), optimum {} ({diagnostics:?})",
+                ilp.weight
+            ));
+        }
+    }
+    if !(s.exact && exact) {
+        return;
+    }
+    tally.equal += 1;
+    tally.ties += usize::from(tris != ilp.triangles);
+}
+
+fn families(seed: u64, families: &[Family], per_family: usize) -> Tally {
+    let mut rng = StdRng::seed_from_u64(seed);
+    let mut tally = Tally::default();
+    for &family in families {
+        for i in 0..per_family {
+            let pts = draw(family, &mut rng);
+            check(
+                &pts,
+                &format!("{family:?} #{i} ({} points)", pts.len()),
+                &mut tally,
+            );
+        }
+    }
+    tally
+}
+
+/// The odd wheels k = 3…10 (radius 1000, centre at the origin or off it),
+/// and nested odd wheels of two and three rings around a centre.
+fn wheels() -> Tally {
+    let mut tally = Tally::default();
+    for k in 3..=10 {
+        for centre in [[0.0, 0.0], [3.0, -7.0]] {
+            let mut pts = ring(2 * k + 1, 1000.0, 0.0);
+            pts.push(centre);
+            check(
+                &pts,
+                &format!("wheel {}, centre {centre:?}", 2 * k + 1),
+                &mut tally,
+            );
+        }
+    }
+    for rings in [
+        &[(21, 1000.0), (19, 700.0)][..],
+        &[(21, 1000.0), (15, 500.0)],
+        &[(19, 1000.0), (13, 600.0), (7, 250.0)],
+        &[(21, 1000.0), (17, 800.0), (11, 450.0), (5, 150.0)],
+    ] {
+        let mut pts: Vec<Point> = Vec::new();
+        for (i, &(k, r)) in rings.iter().enumerate() {
+            pts.extend(ring(k, r, 0.3 * i as f64));
+        }
+        pts.push([0.0, 0.0]);
+        check(&pts, &format!("nested wheels {rings:?}"), &mut tally);
+    }
+    tally
+}
+
+impl Tally {
+    fn report(&self, what: &str) {
+        eprintln!(
+            "{what}: {} sets, {} equal the integer program ({} ties in edges), {} results not \
+             proven exact by optri; {} branched, {} empty triangles; integer programs {:.2?}, optri \
+             {:.2?}",
+            self.sets,
+            self.equal,
+            self.ties,
+            self.unproven.len(),
+            self.branched,
+            self.empty_triangles,
+            self.ilp_time,
+            self.optri_time
+        );
+        for u in &self.unproven {
+            eprintln!("  unproven: {u}");
+        }
+    }
+}
+
+#[test]
+fn equals_the_integer_program_on_every_family() {
+    let tally = families(SEED_DEFAULT, &FAMILIES, 1);
+    tally.report("families");
+    assert_eq!(tally.sets, FAMILIES.len());
+    assert!(tally.unproven.is_empty());
+}
+
+#[test]
+fn odd_and_nested_wheels_equal_the_integer_program() {
+    let tally = wheels();
+    tally.report("wheels");
+    assert_eq!(tally.sets, 20);
+    assert!(tally.unproven.is_empty());
+    // The odd wheels' relaxation is fractional: the program's branch and
+    // bound (not its root LP) decides some of them.
+    assert!(tally.branched > 0, "no wheel needed branching");
+}
+
+#[test]
+#[ignore = "slow: 25 sets per family of 40–60 points (200 integer programs), about a minute in release"]
+fn equals_the_integer_program_on_many_sets() {
+    let tally = families(SEED_SWEEP, &FAMILIES, 25);
+    tally.report("sweep");
+    assert_eq!(tally.sets, 25 * FAMILIES.len());
+    assert!(tally.unproven.is_empty());
+}
+
+/// 23 integer points of x² + y² = 65² and the origin (see below).
+#[rustfmt::skip]
+const SMALLEST_COCIRCULAR_WITH_CENTRE: [[i32; 2]; 24] = [
+    [-63, 16], [-52, -39], [-33, 56], [-56, 33], [60, 25], [0, -65], [-39, 52], [39, -52],
+    [60, -25], [52, 39], [16, -63], [-39, -52], [25, 60], [-25, 60], [39, 52], [-63, -16],
+    [-16, 63], [-33, -56], [56, -33], [-52, 39], [-56, -33], [56, 33], [-65, 0], [0, 0],
+];
+
+/// Known gap (issue 12): with the centre added, a cocircular set of 24 or
+/// more points stays one face with an inner point after the LMT-skeleton,
+/// and the exact front search runs out of its budget (400 000 fronts;
+/// `faces unsolved`, `exact: false`) and returns a heavier triangulation.
+/// Smallest seen: the 23 integer points of x² + y² = 65² below and the
+/// origin, optri 1473.1138808050746 against the optimum 1464.705033468207
+/// (the search needs 12 850 fronts at 20 points, 397 284 at 23). The drawn
+/// sets have 40–60 points of x² + y² = 325² and the origin; the first of
+/// `SEED_DEFAULT` gave optri 9683.02, lower bound 5767.32, optimum 9605.77.
+/// Fails until the search decides such faces.
+#[test]
+#[ignore = "known gap: fails while optri's face search gives up on cocircular sets with their centre"]
+fn cocircular_sets_with_their_centre_equal_the_integer_program() {
+    let smallest: Vec<Point> = SMALLEST_COCIRCULAR_WITH_CENTRE
+        .iter()
+        .map(|&[x, y]| [f64::from(x), f64::from(y)])
+        .collect();
+    let mut tally = Tally::default();
+    check(
+        &smallest,
+        "23 points of x² + y² = 65² and the origin",
+        &mut tally,
+    );
+    tally.report("smallest cocircular set with centre");
+    let tally = families(SEED_COCIRCULAR, &[Family::CocircularCentre], 5);
+    tally.report("cocircular with centre");
+    assert_eq!(tally.sets, 5);
+    assert!(tally.unproven.is_empty());
+}
