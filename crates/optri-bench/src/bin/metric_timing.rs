@@ -3,11 +3,15 @@
 //!
 //! ```text
 //! cargo run --release -p optri-bench --bin metric_timing -- uniform N [METRIC...]
+//! cargo run --release -p optri-bench --bin metric_timing -- framed N [METRIC...]
 //! cargo run --release -p optri-bench --bin metric_timing -- arc METRIC N...
 //! ```
 //! * `uniform N` (default 1 000 000; metrics default `l1 linf`): Delaunay
 //!   alone, then minmax-length under each metric with its phases, and the
 //!   ratio to the Delaunay time.
+//! * `framed N`: the same N uniform points plus 4·⌈√N⌉ evenly spaced points on
+//!   the square's sides (the boundary sampled as finely as the interior): the hull
+//!   segments are short, so the hull certificate fails and every phase runs.
 //! * `arc METRIC N…`: N points in convex position on a 120° circular arc
 //!   (radius jittered by 1e-9 relative): one incomplete region, solved by
 //!   §5.1; time per N and time / N².
@@ -73,10 +77,20 @@ fn main() {
             } else {
                 vec![Metric::l1(), Metric::linf()]
             };
-            let pts = uniform_unit_square(&mut StdRng::seed_from_u64(SEED_UNIFORM), n);
+            let mut rng = StdRng::seed_from_u64(SEED_UNIFORM);
+            let mut pts = uniform_unit_square(&mut rng, n);
+            let framed = args.first().map(String::as_str) == Some("framed");
+            if framed {
+                let side = (n as f64).sqrt().ceil() as usize;
+                for i in 0..side {
+                    let t = i as f64 / side as f64;
+                    pts.extend([[t, 0.0], [1.0, t], [1.0 - t, 1.0], [0.0, 1.0 - t]]);
+                }
+            }
             let ps = PointSet::new(&pts).unwrap();
             let (_, delaunay) = secs(|| optri::delaunay(&ps).expect("delaunay"));
-            println!("uniform n={n}: Delaunay {delaunay:.3} s");
+            let kind = if framed { "framed" } else { "uniform" };
+            println!("{kind} n={}: Delaunay {delaunay:.3} s", pts.len());
             for metric in &metrics {
                 let (s, t) = secs(|| minmax(&ps, metric));
                 let phases: Vec<String> = s
@@ -86,9 +100,14 @@ fn main() {
                     .collect();
                 let (_, longest) = s.longest_edge_under_metric();
                 println!(
-                    "  minmax-length {metric}: {t:.3} s = {:.2}× Delaunay; longest edge {longest:.6e}; phases (s): {}",
+                    "  minmax-length {metric}: {t:.3} s = {:.2}× Delaunay; longest edge {longest:.6e}; phases (s): {}; {}",
                     t / delaunay,
-                    phases.join(", ")
+                    phases.join(", "),
+                    s.diagnostics
+                        .iter()
+                        .map(|(k, v)| format!("{k}={v}"))
+                        .collect::<Vec<_>>()
+                        .join(" ")
                 );
             }
         }
