@@ -5,6 +5,7 @@
 //! cargo run --release -p optri-bench --bin metric_timing -- uniform N [METRIC...]
 //! cargo run --release -p optri-bench --bin metric_timing -- framed N [METRIC...]
 //! cargo run --release -p optri-bench --bin metric_timing -- arc METRIC N...
+//! cargo run --release -p optri-bench --bin metric_timing -- circle METRIC N...
 //! ```
 //! * `uniform N` (default 1 000 000; metrics default `l1 linf`): Delaunay
 //!   alone, then minmax-length under each metric with its phases, and the
@@ -15,6 +16,8 @@
 //! * `arc METRIC N…`: N points in convex position on a 120° circular arc
 //!   (radius jittered by 1e-9 relative): one incomplete region, solved by
 //!   §5.1; time per N and time / N².
+//! * `circle METRIC N…`: the same on the whole circle: one *complete*
+//!   region (every hull segment is an RNG edge), solved by the cubic program.
 
 use optri::kernel::Metric;
 use optri::{triangulate_with, Criterion, Options, PointSet};
@@ -31,11 +34,11 @@ fn secs<T>(f: impl FnOnce() -> T) -> (T, f64) {
     (out, t.elapsed().as_secs_f64())
 }
 
-fn arc(n: usize) -> Vec<[f64; 2]> {
+fn arc(n: usize, turn: f64) -> Vec<[f64; 2]> {
     let mut rng = StdRng::seed_from_u64(SEED_ARC);
     (0..n)
         .map(|_| {
-            let a: f64 = rng.gen_range(0.0..2.0 * std::f64::consts::PI / 3.0);
+            let a: f64 = rng.gen_range(0.0..2.0 * std::f64::consts::PI * turn);
             let r = 1e3 * (1.0 + rng.gen_range(-1e-9..1e-9));
             [r * a.cos(), r * a.sin()]
         })
@@ -50,10 +53,11 @@ fn minmax(points: &PointSet, metric: &Metric) -> optri::Solution {
 fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();
     match args.first().map(String::as_str) {
-        Some("arc") => {
+        Some(kind @ ("arc" | "circle")) => {
+            let turn = if kind == "arc" { 1.0 / 3.0 } else { 1.0 };
             let metric = Metric::parse(&args[1]).expect("metric");
             for n in args[2..].iter().map(|s| s.parse::<usize>().expect("N")) {
-                let ps = PointSet::new(&arc(n)).unwrap();
+                let ps = PointSet::new(&arc(n, turn)).unwrap();
                 let (s, t) = secs(|| minmax(&ps, &metric));
                 let d: Vec<String> = s
                     .diagnostics
@@ -61,8 +65,9 @@ fn main() {
                     .map(|(k, v)| format!("{k}={v}"))
                     .collect();
                 println!(
-                    "arc {metric} n={n}: {t:.3} s, {:.3e} s/n², {}",
+                    "{kind} {metric} n={n}: {t:.3} s, {:.3e} s/n², {:.3e} s/n³, {}",
                     t / (n as f64 * n as f64),
+                    t / (n as f64).powi(3),
                     d.join(" ")
                 );
             }

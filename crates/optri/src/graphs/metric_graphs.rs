@@ -418,16 +418,11 @@ fn search_one(
                 .max(p[1] - bounds[3])
                 .max(0.0);
             let lb = gap / reach * (1.0 - 1e-9);
-            let mut useful = false;
-            for s in 0..ws {
-                if st.open[s]
+            let useful = wedges.iter().enumerate().any(|(s, &w)| {
+                st.open[s]
                     && (st.first[s] == NONE || st.first_len[s] * (1.0 + 1e-9) >= lb)
-                    && (k < 2 || wedge_may_meet(wedges[s], p, bounds))
-                {
-                    useful = true;
-                    break;
-                }
-            }
+                    && (k < 2 || wedge_may_meet(w, p, bounds))
+            });
             if !useful {
                 return;
             }
@@ -442,8 +437,7 @@ fn search_one(
                         }
                     }
                     None => {
-                        for s in 0..ws {
-                            let w = wedges[s];
+                        for (s, &w) in wedges.iter().enumerate() {
                             if st.open[s]
                                 && side_of_direction(w[0], p, r) >= 0
                                 && side_of_direction(w[1], p, r) <= 0
@@ -456,12 +450,8 @@ fn search_one(
             }
             // An empty wedge is settled once a ring has no in-grid
             // cell meeting it (wedge ∩ bounding box is convex).
-            for s in 0..ws {
-                if st.open[s]
-                    && st.first[s] == NONE
-                    && !st.met[s]
-                    && wedge_may_meet(wedges[s], p, bounds)
-                {
+            for (s, &w) in wedges.iter().enumerate() {
+                if st.open[s] && st.first[s] == NONE && !st.met[s] && wedge_may_meet(w, p, bounds) {
                     st.met[s] = true;
                 }
             }

@@ -28,19 +28,19 @@
 //!    from `y` than `max(|uy|, |wy|)` in every norm (convexity), so the
 //!    longest edge does not grow.
 //!
-//! 0. **Hull certificate** (before step 1, in the product only): every
-//!    triangulation of `S` contains the hull's boundary segments (between
-//!    consecutive hull points, collinear ones included), so the longest of
-//!    them *in the metric* is a lower bound on the optimum, in every norm.
-//!    The Euclidean Delaunay triangulation is a triangulation of `S`; if
-//!    none of its edges is longer in the metric than that bound (compared
-//!    exactly by [`Metric::compare_norm`], no tie-break needed: both are real
-//!    lengths of `S`), it is optimal and is returned. This is the hull half
-//!    of the Euclidean path's Length-Lemma certificate; the RNG half (§4's
-//!    Length Lemma) is not used, since nothing here proves it for other
-//!    norms. On uniform points in a square the hull has long edges and the
-//!    certificate holds (BENCHMARKS.md); otherwise its cost is one Delaunay
-//!    triangulation and one pass over its edges.
+//! **Hull certificate** (before step 1, in the product only): every
+//! triangulation of `S` contains the hull's boundary segments (between
+//! consecutive hull points, collinear ones included), so the longest of
+//! them *in the metric* is a lower bound on the optimum, in every norm.
+//! The Euclidean Delaunay triangulation is a triangulation of `S`; if
+//! none of its edges is longer in the metric than that bound (compared
+//! exactly by [`Metric::compare_norm`], no tie-break needed: both are real
+//! lengths of `S`), it is optimal and is returned. This is the hull half
+//! of the Euclidean path's Length-Lemma certificate; the RNG half (§4's
+//! Length Lemma) is not used, since nothing here proves it for other
+//! norms. On uniform points in a square the hull has long edges and the
+//! certificate holds (BENCHMARKS.md); otherwise its cost is one Delaunay
+//! triangulation and one pass over its edges.
 
 use super::counters::Counters;
 use super::polygon::Region;
@@ -62,7 +62,7 @@ use std::collections::HashSet;
 pub(crate) enum MetricMethod {
     /// §5.1 on incomplete regions of at least this many corners, the cubic
     /// program on the rest; with `certify`, the hull certificate first
-    /// (module docs, step 0).
+    /// (module docs, hull certificate).
     Product {
         incomplete_from: usize,
         certify: bool,
@@ -153,7 +153,7 @@ pub(crate) fn run_under(
     Ok((Triangulation::from_distinct(points, triangles), diagnostics))
 }
 
-/// Step 0 of the module docs: the Euclidean Delaunay triangulation if none
+/// The hull certificate of the module docs: the Euclidean Delaunay triangulation if none
 /// of its edges is longer in `metric` than the longest hull segment (a lower
 /// bound on every triangulation's longest edge). `None` when the bound is
 /// not met, or the points have no Delaunay triangulation (all collinear).
