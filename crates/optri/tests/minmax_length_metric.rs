@@ -17,6 +17,7 @@ use rand::{rngs::StdRng, Rng, SeedableRng};
 const SEED_EXHAUSTIVE: u64 = 1111;
 const SEED_CUBIC: u64 = 1112;
 const SEED_CONVEX: u64 = 1113;
+const SEED_CERTIFICATE: u64 = 1114;
 
 fn metrics() -> Vec<(Metric, Norm)> {
     let hexagon = Metric::parse("polygon:2,0,1,2,-1,2,-2,0,-1,-2,1,-2").unwrap();
@@ -156,6 +157,98 @@ fn equals_the_cubic_program_under_every_metric() {
         }
     }
     assert!(by_5_1 >= 15, "§5.1 ran on {by_5_1} regions");
+}
+
+/// The hull certificate (the Euclidean Delaunay triangulation when no edge of
+/// it is longer in the metric than the longest hull segment) against the
+/// exhaustive oracle (n ≤ 9) and the cubic program on every region (larger
+/// sets), on random, lattice, grid and huge/negative-coordinate sets; both
+/// outcomes of the certificate must occur under every metric.
+#[test]
+fn hull_certificate_is_exact_and_both_ways_occur() {
+    let mut rng = StdRng::seed_from_u64(SEED_CERTIFICATE);
+    let mut small = small_sets(&mut rng);
+    for i in 0..12 {
+        let n = rng.gen_range(5..=9);
+        small.push((
+            format!("lattice 0..6 {i}"),
+            lattice_points(&mut rng, n, 0..6, 0..3),
+        ));
+    }
+    // In a disk the hull segments are short, so the certificate mostly fails.
+    let disk = |rng: &mut StdRng, n: usize| -> Vec<Point> {
+        let mut v = Vec::new();
+        while v.len() < n {
+            let [x, y] = uniform_unit_square(rng, 1)[0];
+            if (x - 0.5).powi(2) + (y - 0.5).powi(2) < 0.25 {
+                v.push([x, y]);
+            }
+        }
+        v
+    };
+    for i in 0..10 {
+        let n = rng.gen_range(6..=9);
+        small.push((format!("disk {i}"), disk(&mut rng, n)));
+    }
+    let mut large = Vec::new();
+    for n in [60, 250] {
+        large.push((format!("disk {n}"), disk(&mut rng, n)));
+    }
+    for n in [40, 120, 400] {
+        large.push((format!("uniform {n}"), uniform_unit_square(&mut rng, n)));
+    }
+    large.push(("grid 9x6".to_string(), grid(9, 6, 1.0)));
+    large.push((
+        "huge negative uniform".to_string(),
+        uniform_unit_square(&mut rng, 150)
+            .into_iter()
+            .map(|[x, y]| [x * 1e12 - 3e12, -y * 7e11])
+            .collect(),
+    ));
+    large.push((
+        "lattice 200".to_string(),
+        lattice_points(&mut rng, 200, 0..30, 0..9),
+    ));
+    for (metric, norm) in metrics().into_iter().filter(|(m, _)| !m.is_euclidean()) {
+        let (mut certified, mut solved) = (0, 0);
+        for (exhaustive, (name, pts)) in small
+            .iter()
+            .map(|s| (true, s))
+            .chain(large.iter().map(|s| (false, s)))
+        {
+            let ps = PointSet::new(pts).unwrap();
+            let d = ps.points().to_vec();
+            if d.iter()
+                .all(|&p| optri::kernel::orient_sign(d[0], d[1], p) == 0)
+            {
+                continue;
+            }
+            let want = if exhaustive {
+                norm.exhaustive_minmax(&d)
+            } else {
+                let (cubic, _) = minmax_length_under_with(&ps, &metric, None).unwrap();
+                value(&norm, &cubic)
+            };
+            let s = triangulate_with(
+                &ps,
+                Criterion::MinmaxLength,
+                &Options::default().with_metric(metric.clone()),
+            )
+            .unwrap();
+            s.triangulation.validate().unwrap();
+            assert_eq!(value(&norm, &s.triangulation), want, "{metric} on {name}");
+            if s.diagnostics.get("regions_certified_by_bound") == Some(1) {
+                certified += 1;
+                assert!(s.algorithm_detail.contains("hull lower bound"), "{metric}");
+            } else {
+                solved += 1;
+            }
+        }
+        assert!(
+            certified >= 3 && solved >= 3,
+            "{metric}: certified {certified}, solved {solved}"
+        );
+    }
 }
 
 /// The large tier (n up to 2000): run with `--ignored --release`.

@@ -3,14 +3,21 @@
 //!
 //! ```text
 //! cargo run --release -p optri-bench --bin metric_timing -- uniform N [METRIC...]
+//! cargo run --release -p optri-bench --bin metric_timing -- framed N [METRIC...]
 //! cargo run --release -p optri-bench --bin metric_timing -- arc METRIC N...
+//! cargo run --release -p optri-bench --bin metric_timing -- circle METRIC N...
 //! ```
 //! * `uniform N` (default 1 000 000; metrics default `l1 linf`): Delaunay
 //!   alone, then minmax-length under each metric with its phases, and the
 //!   ratio to the Delaunay time.
+//! * `framed N`: the same N uniform points plus 4·⌈√N⌉ evenly spaced points on
+//!   the square's sides (the boundary sampled as finely as the interior): the hull
+//!   segments are short, so the hull certificate fails and every phase runs.
 //! * `arc METRIC N…`: N points in convex position on a 120° circular arc
 //!   (radius jittered by 1e-9 relative): one incomplete region, solved by
 //!   §5.1; time per N and time / N².
+//! * `circle METRIC N…`: the same on the whole circle: one *complete*
+//!   region (every hull segment is an RNG edge), solved by the cubic program.
 
 use optri::kernel::Metric;
 use optri::{triangulate_with, Criterion, Options, PointSet};
@@ -27,11 +34,11 @@ fn secs<T>(f: impl FnOnce() -> T) -> (T, f64) {
     (out, t.elapsed().as_secs_f64())
 }
 
-fn arc(n: usize) -> Vec<[f64; 2]> {
+fn arc(n: usize, turn: f64) -> Vec<[f64; 2]> {
     let mut rng = StdRng::seed_from_u64(SEED_ARC);
     (0..n)
         .map(|_| {
-            let a: f64 = rng.gen_range(0.0..2.0 * std::f64::consts::PI / 3.0);
+            let a: f64 = rng.gen_range(0.0..2.0 * std::f64::consts::PI * turn);
             let r = 1e3 * (1.0 + rng.gen_range(-1e-9..1e-9));
             [r * a.cos(), r * a.sin()]
         })
@@ -46,10 +53,11 @@ fn minmax(points: &PointSet, metric: &Metric) -> optri::Solution {
 fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();
     match args.first().map(String::as_str) {
-        Some("arc") => {
+        Some(kind @ ("arc" | "circle")) => {
+            let turn = if kind == "arc" { 1.0 / 3.0 } else { 1.0 };
             let metric = Metric::parse(&args[1]).expect("metric");
             for n in args[2..].iter().map(|s| s.parse::<usize>().expect("N")) {
-                let ps = PointSet::new(&arc(n)).unwrap();
+                let ps = PointSet::new(&arc(n, turn)).unwrap();
                 let (s, t) = secs(|| minmax(&ps, &metric));
                 let d: Vec<String> = s
                     .diagnostics
@@ -57,8 +65,9 @@ fn main() {
                     .map(|(k, v)| format!("{k}={v}"))
                     .collect();
                 println!(
-                    "arc {metric} n={n}: {t:.3} s, {:.3e} s/n², {}",
+                    "{kind} {metric} n={n}: {t:.3} s, {:.3e} s/n², {:.3e} s/n³, {}",
                     t / (n as f64 * n as f64),
+                    t / (n as f64).powi(3),
                     d.join(" ")
                 );
             }
@@ -73,10 +82,20 @@ fn main() {
             } else {
                 vec![Metric::l1(), Metric::linf()]
             };
-            let pts = uniform_unit_square(&mut StdRng::seed_from_u64(SEED_UNIFORM), n);
+            let mut rng = StdRng::seed_from_u64(SEED_UNIFORM);
+            let mut pts = uniform_unit_square(&mut rng, n);
+            let framed = args.first().map(String::as_str) == Some("framed");
+            if framed {
+                let side = (n as f64).sqrt().ceil() as usize;
+                for i in 0..side {
+                    let t = i as f64 / side as f64;
+                    pts.extend([[t, 0.0], [1.0, t], [1.0 - t, 1.0], [0.0, 1.0 - t]]);
+                }
+            }
             let ps = PointSet::new(&pts).unwrap();
             let (_, delaunay) = secs(|| optri::delaunay(&ps).expect("delaunay"));
-            println!("uniform n={n}: Delaunay {delaunay:.3} s");
+            let kind = if framed { "framed" } else { "uniform" };
+            println!("{kind} n={}: Delaunay {delaunay:.3} s", pts.len());
             for metric in &metrics {
                 let (s, t) = secs(|| minmax(&ps, metric));
                 let phases: Vec<String> = s
@@ -86,9 +105,14 @@ fn main() {
                     .collect();
                 let (_, longest) = s.longest_edge_under_metric();
                 println!(
-                    "  minmax-length {metric}: {t:.3} s = {:.2}× Delaunay; longest edge {longest:.6e}; phases (s): {}",
+                    "  minmax-length {metric}: {t:.3} s = {:.2}× Delaunay; longest edge {longest:.6e}; phases (s): {}; {}",
                     t / delaunay,
-                    phases.join(", ")
+                    phases.join(", "),
+                    s.diagnostics
+                        .iter()
+                        .map(|(k, v)| format!("{k}={v}"))
+                        .collect::<Vec<_>>()
+                        .join(" ")
                 );
             }
         }

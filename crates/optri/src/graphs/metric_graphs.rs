@@ -303,144 +303,174 @@ fn clear_octant(p: Point, r: Point) -> Option<usize> {
     })
 }
 
+/// Per-thread scratch of the candidate search (reused across points: the
+/// search is allocation-free after the first point of a chunk).
+struct Search {
+    /// The first nearest point found in each wedge (`NONE`: none yet).
+    first: Vec<u32>,
+    /// Its rounded length (a filter; decisions are exact).
+    first_len: Vec<f64>,
+    /// Further points tied with `first` in the wedge: (wedge, point).
+    ties: Vec<(usize, u32)>,
+    open: Vec<bool>,
+    met: Vec<bool>,
+}
+
+const NONE: u32 = u32::MAX;
+
+/// Points per parallel task of the candidate search.
+const SEARCH_CHUNK: usize = 2048;
+
 /// The candidate neighbours of every point (the nearest in each wedge, ties
 /// kept), as sorted, deduplicated edges.
 fn candidates(
     points: &[Point],
+    grid: &Buckets,
     metric: &Metric,
     wedges: &[[Point; 2]],
     octants: bool,
 ) -> Vec<[u32; 2]> {
-    let grid = Buckets::new(points);
     let reach = metric.sup_radius();
     let ws = wedges.len();
+    let n = points.len();
     // Points in cell order, so that consecutive searches touch nearby cells.
-    let per_point: Vec<Vec<[u32; 2]>> = (0..points.len())
+    let per_chunk: Vec<Vec<[u32; 2]>> = (0..n.div_ceil(SEARCH_CHUNK))
         .into_par_iter()
-        .map(|slot| {
-            let (pi, p) = (grid.items[slot], grid.coords[slot]);
-            let c = grid.cell_of(p);
-            let mut best: Vec<Vec<u32>> = vec![Vec::new(); ws];
-            let mut best_len = vec![f64::INFINITY; ws];
-            let mut open = vec![true; ws];
-            let mut met = vec![false; ws];
-            let mut open_count = ws;
-            let mut k = 0usize;
-            let offer =
-                |s: usize, ri: u32, r: Point, best: &mut Vec<Vec<u32>>, best_len: &mut Vec<f64>| {
-                    match best[s].first() {
-                        None => {
-                            best[s].push(ri);
-                            best_len[s] = metric.length(p, r);
-                        }
-                        Some(&q) => {
-                            let lr = metric.length(p, r);
-                            // Clearly farther: skip the exact comparison.
-                            if lr > best_len[s] * (1.0 + 1e-9) {
-                                return;
-                            }
-                            match metric.compare_norm_then_euclidean(p, r, p, points[q as usize]) {
-                                Ordering::Less => {
-                                    best[s].clear();
-                                    best[s].push(ri);
-                                    best_len[s] = lr;
-                                }
-                                Ordering::Equal => best[s].push(ri),
-                                Ordering::Greater => {}
-                            }
-                        }
-                    }
-                };
-            while open_count > 0 {
-                met.iter_mut().for_each(|m| *m = false);
-                grid.ring(c, k, |cell| {
-                    let bounds = grid.bounds(cell);
-                    // Only the open wedges this cell can still improve: it may
-                    // meet the wedge and is not beyond the wedge's best (norm ≥
-                    // the cell's L∞ distance / reach).
-                    let gap = (bounds[0] - p[0])
-                        .max(p[0] - bounds[2])
-                        .max(bounds[1] - p[1])
-                        .max(p[1] - bounds[3])
-                        .max(0.0);
-                    let lb = gap / reach * (1.0 - 1e-9);
-                    let mut useful = false;
-                    for s in 0..ws {
-                        if open[s]
-                            && (best[s].is_empty() || best_len[s] * (1.0 + 1e-9) >= lb)
-                            && (k < 2 || wedge_may_meet(wedges[s], p, bounds))
-                        {
-                            useful = true;
-                            break;
-                        }
-                    }
-                    if !useful {
-                        return;
-                    }
-                    for (ri, r) in grid.entries(cell) {
-                        if ri == pi {
-                            continue;
-                        }
-                        match octants.then(|| clear_octant(p, r)).flatten() {
-                            Some(s) => {
-                                if open[s] {
-                                    offer(s, ri, r, &mut best, &mut best_len);
-                                }
-                            }
-                            None => {
-                                for s in 0..ws {
-                                    let w = wedges[s];
-                                    if open[s]
-                                        && side_of_direction(w[0], p, r) >= 0
-                                        && side_of_direction(w[1], p, r) <= 0
-                                    {
-                                        offer(s, ri, r, &mut best, &mut best_len);
-                                    }
-                                }
-                            }
-                        }
-                    }
-                    // An empty wedge is settled once a ring has no in-grid
-                    // cell meeting it (wedge ∩ bounding box is convex).
-                    for s in 0..ws {
-                        if open[s]
-                            && best[s].is_empty()
-                            && !met[s]
-                            && wedge_may_meet(wedges[s], p, bounds)
-                        {
-                            met[s] = true;
-                        }
-                    }
-                });
-                // Points of ring k+1 are at L∞ distance ≥ k·cell, norm ≥ that / reach.
-                let lower = k as f64 * grid.cell / reach * (1.0 - 1e-9);
-                for s in 0..ws {
-                    let settled = if best[s].is_empty() {
-                        !met[s]
-                    } else {
-                        best_len[s] * (1.0 + 1e-9) < lower
-                    };
-                    if open[s] && settled {
-                        open[s] = false;
-                        open_count -= 1;
-                    }
-                }
-                k += 1;
+        .map(|chunk| {
+            let mut out = Vec::with_capacity(SEARCH_CHUNK * 6);
+            let mut st = Search {
+                first: vec![NONE; ws],
+                first_len: vec![f64::INFINITY; ws],
+                ties: Vec::new(),
+                open: vec![true; ws],
+                met: vec![false; ws],
+            };
+            for slot in chunk * SEARCH_CHUNK..((chunk + 1) * SEARCH_CHUNK).min(n) {
+                search_one(points, grid, metric, wedges, octants, reach, slot, &mut st);
+                let pi = grid.items[slot];
+                let edge = |q: u32| [pi.min(q), pi.max(q)];
+                out.extend(st.first.iter().filter(|&&q| q != NONE).map(|&q| edge(q)));
+                out.extend(st.ties.iter().map(|&(_, q)| edge(q)));
             }
-            let mut edges: Vec<[u32; 2]> = best
-                .into_iter()
-                .flatten()
-                .map(|q| [pi.min(q), pi.max(q)])
-                .collect();
-            edges.sort_unstable();
-            edges.dedup();
-            edges
+            out
         })
         .collect();
-    let mut all: Vec<[u32; 2]> = per_point.into_iter().flatten().collect();
-    all.sort_unstable();
+    let mut all: Vec<[u32; 2]> = per_chunk.into_iter().flatten().collect();
+    all.par_sort_unstable();
     all.dedup();
     all
+}
+
+/// The nearest points of every wedge at the point of grid slot `slot`, into
+/// `st.first` and `st.ties` (see the Sector Lemma in the module docs).
+#[allow(clippy::too_many_arguments)]
+fn search_one(
+    points: &[Point],
+    grid: &Buckets,
+    metric: &Metric,
+    wedges: &[[Point; 2]],
+    octants: bool,
+    reach: f64,
+    slot: usize,
+    st: &mut Search,
+) {
+    let ws = wedges.len();
+    let (pi, p) = (grid.items[slot], grid.coords[slot]);
+    let c = grid.cell_of(p);
+    st.first.iter_mut().for_each(|f| *f = NONE);
+    st.first_len.iter_mut().for_each(|l| *l = f64::INFINITY);
+    st.ties.clear();
+    st.open.iter_mut().for_each(|o| *o = true);
+    let mut open_count = ws;
+    let mut k = 0usize;
+    let offer = |s: usize, ri: u32, r: Point, st: &mut Search| {
+        let q = st.first[s];
+        let lr = metric.length(p, r);
+        if q == NONE {
+            st.first[s] = ri;
+            st.first_len[s] = lr;
+            return;
+        }
+        // Clearly farther: skip the exact comparison.
+        if lr > st.first_len[s] * (1.0 + 1e-9) {
+            return;
+        }
+        match metric.compare_norm_then_euclidean(p, r, p, points[q as usize]) {
+            Ordering::Less => {
+                st.first[s] = ri;
+                st.first_len[s] = lr;
+                st.ties.retain(|&(w, _)| w != s);
+            }
+            Ordering::Equal => st.ties.push((s, ri)),
+            Ordering::Greater => {}
+        }
+    };
+    while open_count > 0 {
+        st.met.iter_mut().for_each(|m| *m = false);
+        grid.ring(c, k, |cell| {
+            let bounds = grid.bounds(cell);
+            // Only the open wedges this cell can still improve: it may
+            // meet the wedge and is not beyond the wedge's best (norm ≥
+            // the cell's L∞ distance / reach).
+            let gap = (bounds[0] - p[0])
+                .max(p[0] - bounds[2])
+                .max(bounds[1] - p[1])
+                .max(p[1] - bounds[3])
+                .max(0.0);
+            let lb = gap / reach * (1.0 - 1e-9);
+            let useful = wedges.iter().enumerate().any(|(s, &w)| {
+                st.open[s]
+                    && (st.first[s] == NONE || st.first_len[s] * (1.0 + 1e-9) >= lb)
+                    && (k < 2 || wedge_may_meet(w, p, bounds))
+            });
+            if !useful {
+                return;
+            }
+            for (ri, r) in grid.entries(cell) {
+                if ri == pi {
+                    continue;
+                }
+                match octants.then(|| clear_octant(p, r)).flatten() {
+                    Some(s) => {
+                        if st.open[s] {
+                            offer(s, ri, r, st);
+                        }
+                    }
+                    None => {
+                        for (s, &w) in wedges.iter().enumerate() {
+                            if st.open[s]
+                                && side_of_direction(w[0], p, r) >= 0
+                                && side_of_direction(w[1], p, r) <= 0
+                            {
+                                offer(s, ri, r, st);
+                            }
+                        }
+                    }
+                }
+            }
+            // An empty wedge is settled once a ring has no in-grid
+            // cell meeting it (wedge ∩ bounding box is convex).
+            for (s, &w) in wedges.iter().enumerate() {
+                if st.open[s] && st.first[s] == NONE && !st.met[s] && wedge_may_meet(w, p, bounds) {
+                    st.met[s] = true;
+                }
+            }
+        });
+        // Points of ring k+1 are at L∞ distance ≥ k·cell, norm ≥ that / reach.
+        let lower = k as f64 * grid.cell / reach * (1.0 - 1e-9);
+        for s in 0..ws {
+            let settled = if st.first[s] == NONE {
+                !st.met[s]
+            } else {
+                st.first_len[s] * (1.0 + 1e-9) < lower
+            };
+            if st.open[s] && settled {
+                st.open[s] = false;
+                open_count -= 1;
+            }
+        }
+        k += 1;
+    }
 }
 
 /// Is the lune of `pq` free of points (under the metric's tie-break)?
@@ -448,8 +478,10 @@ fn lune_is_empty(points: &[Point], metric: &Metric, grid: &Buckets, [p, q]: [u32
     let (pp, pq) = (points[p as usize], points[q as usize]);
     let len = metric.length(pp, pq);
     let r = metric.sup_radius() * len * (1.0 + 1e-9) + grid.cell * 1e-9;
-    let lo = grid.cell_of([pp[0] - r, pp[1] - r]);
-    let hi = grid.cell_of([pp[0] + r, pp[1] + r]);
+    // The lune lies in both balls of radius |pq| about p and q, so in the
+    // intersection of their bounding squares (half-side `r` ≥ R·|pq|).
+    let lo = grid.cell_of([pp[0].max(pq[0]) - r, pp[1].max(pq[1]) - r]);
+    let hi = grid.cell_of([pp[0].min(pq[0]) + r, pp[1].min(pq[1]) + r]);
     let slack = len * (1.0 + 1e-9);
     for j in lo[1]..=hi[1] {
         for i in lo[0]..=hi[0] {
@@ -478,7 +510,7 @@ pub(crate) fn rng_under(
         metric.unit_polygon().is_none() || metric.name() == "l1" || metric.name() == "linf";
     let wedges = wedges(metric)?;
     let grid = Buckets::new(points);
-    let cands = candidates(points, metric, &wedges, octants);
+    let cands = candidates(points, &grid, metric, &wedges, octants);
     Ok(cands
         .into_par_iter()
         .filter(|&e| lune_is_empty(points, metric, &grid, e))

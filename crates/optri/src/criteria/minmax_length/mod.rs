@@ -187,12 +187,21 @@ pub(crate) fn solve(
     if !options.metric.is_euclidean() {
         let method = under_metric::MetricMethod::Product {
             incomplete_from: under_metric::INCOMPLETE_FROM,
+            certify: true,
         };
         let (triangulation, diagnostics) =
             under_metric::run_under(points, &options.metric, method, phases)?;
+        let algorithm = if phases.iter().any(|p| p.name == "regions") {
+            format!("{ALGORITHM_UNDER_METRIC} (metric {})", options.metric)
+        } else {
+            format!(
+                "{ALGORITHM_UNDER_METRIC} (metric {}); here the Delaunay triangulation met the hull lower bound in the metric, so it is optimal",
+                options.metric
+            )
+        };
         return Ok(Solved {
             triangulation,
-            algorithm: format!("{ALGORITHM_UNDER_METRIC} (metric {})", options.metric),
+            algorithm,
             optimality: Optimality::Exact,
             diagnostics,
             bound: None,
@@ -217,7 +226,7 @@ pub(crate) fn solve(
 const ALGORITHM: &str = "Edelsbrunner–Tan O(n²): Length-Lemma lower bound (longest hull/RNG edge) certifies Delaunay regions; hull ∪ RNG(S′) regions; §5.1 incomplete and §5.3/§6 complete rng-polygons on the symbolic perturbation (exact cubic DP, pruned by the regions' Delaunay diagonals, for regions under 32 corners; §6 Case 2 pockets by u_L search, clipped §5.1 and §5.2 fan-out); §5.4 flat-triangle repair";
 
 /// The method's name under a non-Euclidean metric.
-const ALGORITHM_UNDER_METRIC: &str = "Edelsbrunner–Tan §7: hull ∪ RNG regions under the simulated strictly convex norm (RNG by nearest neighbours in sectors, exact lunes); §5.1 (visible lune vertex minimising the longer side) on large incomplete regions, the exact cubic program on the others; §5.4 flat-triangle repair";
+const ALGORITHM_UNDER_METRIC: &str = "Edelsbrunner–Tan §7: the longest hull segment in the metric (a lower bound) certifies the Delaunay triangulation when no edge of it is longer; otherwise hull ∪ RNG regions under the simulated strictly convex norm (RNG by nearest neighbours in sectors, exact lunes); §5.1 (visible lune vertex minimising the longer side) on large incomplete regions, the exact cubic program on the others; §5.4 flat-triangle repair";
 
 /// Minmax-length under `metric` with the cubic program on every region, or
 /// with §5.1 on every incomplete region of at least
@@ -231,7 +240,10 @@ pub fn minmax_length_under_with(
 ) -> Result<(Triangulation, Diagnostics)> {
     let method = match incomplete_from {
         None => under_metric::MetricMethod::Cubic,
-        Some(k) => under_metric::MetricMethod::Product { incomplete_from: k },
+        Some(k) => under_metric::MetricMethod::Product {
+            incomplete_from: k,
+            certify: false,
+        },
     };
     under_metric::run_under(points, metric, method, &mut Vec::new())
 }

@@ -28,10 +28,19 @@
 //!    from `y` than `max(|uy|, |wy|)` in every norm (convexity), so the
 //!    longest edge does not grow.
 //!
-//! The Length-Lemma certificate of the Euclidean path (a Delaunay triangle
-//! set no longer than the longest hull/RNG edge) is not used: its Delaunay
-//! triangulation is the Euclidean one, and nothing bounds its edges in
-//! another norm.
+//! **Hull certificate** (before step 1, in the product only): every
+//! triangulation of `S` contains the hull's boundary segments (between
+//! consecutive hull points, collinear ones included), so the longest of
+//! them *in the metric* is a lower bound on the optimum, in every norm.
+//! The Euclidean Delaunay triangulation is a triangulation of `S`; if
+//! none of its edges is longer in the metric than that bound (compared
+//! exactly by [`Metric::compare_norm`], no tie-break needed: both are real
+//! lengths of `S`), it is optimal and is returned. This is the hull half
+//! of the Euclidean path's Length-Lemma certificate; the RNG half (§4's
+//! Length Lemma) is not used, since nothing here proves it for other
+//! norms. On uniform points in a square the hull has long edges and the
+//! certificate holds (BENCHMARKS.md); otherwise its cost is one Delaunay
+//! triangulation and one pass over its edges.
 
 use super::counters::Counters;
 use super::polygon::Region;
@@ -43,7 +52,7 @@ use crate::kernel::Metric;
 use crate::parallel::prelude::*;
 use crate::polygon_program::{optimal_triangulation, LargestDiagonal};
 use crate::spatial::convex_hull_cycle;
-use crate::structures::{PlanarGraph, PointSet, Triangulation};
+use crate::structures::{DelaunayGraph, PlanarGraph, PointSet, Triangulation};
 use crate::timing::{timed, Phase};
 use std::cmp::Ordering;
 use std::collections::HashSet;
@@ -52,8 +61,12 @@ use std::collections::HashSet;
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub(crate) enum MetricMethod {
     /// §5.1 on incomplete regions of at least this many corners, the cubic
-    /// program on the rest.
-    Product { incomplete_from: usize },
+    /// program on the rest; with `certify`, the hull certificate first
+    /// (module docs, hull certificate).
+    Product {
+        incomplete_from: usize,
+        certify: bool,
+    },
     /// The cubic program on every region (test reference).
     #[cfg_attr(not(any(test, feature = "internals")), allow(dead_code))]
     Cubic,
@@ -69,6 +82,13 @@ pub(crate) fn run_under(
     phases: &mut Vec<Phase>,
 ) -> Result<(Triangulation, Diagnostics)> {
     let pts = points.points();
+    if matches!(method, MetricMethod::Product { certify: true, .. }) {
+        if let Some(t) = hull_certificate(points, metric, phases) {
+            let mut diagnostics = Counters::default().into_diagnostics_for_metric();
+            diagnostics.add("regions_certified_by_bound", 1);
+            return Ok((t, diagnostics));
+        }
+    }
     let rng = timed(phases, "rng", || rng_under(pts, metric)).map_err(Error::InvalidMetric)?;
     let hull = timed(phases, "hull", || convex_hull_cycle(pts));
     let (faces, rng_set) = timed(phases, "regions", || {
@@ -99,7 +119,10 @@ pub(crate) fn run_under(
                     symbolic: true,
                 };
                 let k = face.len();
-                if let MetricMethod::Product { incomplete_from } = method {
+                if let MetricMethod::Product {
+                    incomplete_from, ..
+                } = method
+                {
                     if k >= incomplete_from.max(4) {
                         let missing: Vec<usize> = (0..k)
                             .filter(|&i| {
@@ -128,6 +151,42 @@ pub(crate) fn run_under(
     diagnostics.add("regions", faces.len() as u64);
     diagnostics.add("regions_by_5_1", by_5_1.into_inner());
     Ok((Triangulation::from_distinct(points, triangles), diagnostics))
+}
+
+/// The hull certificate of the module docs: the Euclidean Delaunay triangulation if none
+/// of its edges is longer in `metric` than the longest hull segment (a lower
+/// bound on every triangulation's longest edge). `None` when the bound is
+/// not met, or the points have no Delaunay triangulation (all collinear).
+fn hull_certificate(
+    points: &PointSet,
+    metric: &Metric,
+    phases: &mut Vec<Phase>,
+) -> Option<Triangulation> {
+    let pts = points.points();
+    let g = timed(phases, "delaunay", || DelaunayGraph::new(pts)).ok()?;
+    let certified = timed(phases, "lower bound", || {
+        let p = |v: u32| pts[v as usize];
+        // Delaunay edges with a missing apex are exactly the hull segments.
+        let longest_hull = g
+            .edges
+            .par_iter()
+            .filter(|(_, apex)| apex.contains(&None))
+            .map(|&(e, _)| e)
+            .reduce_with(|a, b| {
+                if metric.compare_norm(p(a[0]), p(a[1]), p(b[0]), p(b[1])) == Ordering::Less {
+                    b
+                } else {
+                    a
+                }
+            })?;
+        let (h0, h1) = (p(longest_hull[0]), p(longest_hull[1]));
+        g.edges
+            .par_iter()
+            .all(|&([u, v], _)| metric.compare_norm(p(u), p(v), h0, h1) != Ordering::Greater)
+            .then_some(())
+    });
+    certified?;
+    Some(Triangulation::from_distinct(points, g.triangles))
 }
 
 /// §3's cubic program on one region with the metric's chord order.
