@@ -81,7 +81,7 @@ mod segment_index;
 
 use super::{keyed_by_length, rounded_squared_length, sort_keyed_runs};
 use crate::error::{Error, Result};
-use crate::kernel::{compare_lengths, Point};
+use crate::kernel::{compare_lengths, orient_sign, Point};
 use crate::parallel::prelude::*;
 use crate::spatial::{bounding_box, convex_hull_cycle, fmax, fmin, morton_order};
 use crate::timing::{Phase, Stopwatch};
@@ -158,6 +158,9 @@ fn shorter_than(p: Point, q: Point, t: f64) -> bool {
 /// symbolic perturbation depends on them: the renumbered copy is only used
 /// where an index never decides a tie.
 pub(super) fn greedy_general(original: &[Point], phases: &mut Vec<Phase>) -> Result<Vec<[u32; 3]>> {
+    if let Some(fan) = single_fan(original) {
+        return Ok(fan);
+    }
     let to_original = morton_order(original);
     let local: Vec<Point> = to_original.iter().map(|&v| original[v as usize]).collect();
     let renumbering = Renumbering {
@@ -168,6 +171,43 @@ pub(super) fn greedy_general(original: &[Point], phases: &mut Vec<Phase>) -> Res
         .into_iter()
         .map(|t| t.map(|v| to_original[v as usize]))
         .collect())
+}
+
+/// The triangles of a *fan* — all points but one on a line — whose only
+/// triangulation (hence GT) joins the apex to every point of the line and
+/// consecutive line points to each other; `None` for any other input.
+///
+/// Why a shortcut: the line points stay open until the apex reaches them,
+/// and every pair of them lies in the density guard's cells, so the length
+/// rounds would crawl (issue 15: 157 s at 10⁴ points). The test is exact
+/// (orientations and coordinate comparisons) and costs O(1) on most inputs:
+/// it stops at the second point off a line.
+fn single_fan(points: &[Point]) -> Option<Vec<[u32; 3]>> {
+    let n = points.len();
+    if n < 4 {
+        return None;
+    }
+    // The line holds n - 1 points, so two of the first three lie on it.
+    let apex = [(0, 1), (0, 2), (1, 2)].into_iter().find_map(|(i, j)| {
+        let (pi, pj) = (points[i], points[j]);
+        let mut off = (0..n).filter(|&z| orient_sign(pi, pj, points[z]) != 0);
+        let first = off.next()?;
+        off.next().is_none().then_some(first)
+    })?;
+    let mut line: Vec<u32> = (0..n as u32).filter(|&v| v as usize != apex).collect();
+    // On a line, lexicographic order is the order along it.
+    line.sort_unstable_by(|&a, &b| {
+        let (p, q) = (points[a as usize], points[b as usize]);
+        p[0].total_cmp(&q[0]).then(p[1].total_cmp(&q[1]))
+    });
+    let pa = points[apex];
+    let ccw = orient_sign(pa, points[line[0] as usize], points[line[1] as usize]) > 0;
+    let apex = apex as u32;
+    Some(
+        line.windows(2)
+            .map(|w| if ccw { [apex, w[0], w[1]] } else { [apex, w[1], w[0]] })
+            .collect(),
+    )
 }
 
 /// Local (memory-friendly) numbering versus the caller's, which decides ties.
