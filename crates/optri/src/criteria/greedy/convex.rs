@@ -205,7 +205,11 @@ impl<'a> Splitting<'a> {
         let Some(i) = list[..slot].iter().rposition(|n| n.constraint) else {
             return;
         };
-        let Some(j) = list[slot..].iter().position(|n| n.constraint).map(|j| j + slot) else {
+        let Some(j) = list[slot..]
+            .iter()
+            .position(|n| n.constraint)
+            .map(|j| j + slot)
+        else {
             return;
         };
         if j - i >= 2 {

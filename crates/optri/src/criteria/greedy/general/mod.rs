@@ -205,7 +205,13 @@ fn single_fan(points: &[Point]) -> Option<Vec<[u32; 3]>> {
     let apex = apex as u32;
     Some(
         line.windows(2)
-            .map(|w| if ccw { [apex, w[0], w[1]] } else { [apex, w[1], w[0]] })
+            .map(|w| {
+                if ccw {
+                    [apex, w[0], w[1]]
+                } else {
+                    [apex, w[1], w[0]]
+                }
+            })
             .collect(),
     )
 }
