@@ -56,9 +56,18 @@
 //! vertices sum to O(n²). Space is O(n) plus the heap.
 
 use super::convex_delaunay::ConvexDelaunay;
-use super::{rounded_squared_length, KEY_RUN_GAP};
+use super::rounded_squared_length;
 use crate::kernel::{compare_lengths_symbolic, Point};
 use std::cmp::Ordering;
+
+/// Two rounded squared lengths closer than this relative gap are compared
+/// exactly. Derived need, chosen value: as for [`super::KEY_RUN_GAP`], a
+/// rounded key is within 4·2⁻⁵³ of the exact squared length, so keys in the
+/// wrong order differ by less than 8·2⁻⁵³ ≈ 8.9·10⁻¹⁶ relative; 10⁻¹⁴ is
+/// eleven times that. Tighter than `KEY_RUN_GAP` because a regular polygon
+/// sampled with cos/sin has ear lengths equal to about 10⁻¹³, and every heap
+/// comparison among them would otherwise be exact (issue 15).
+const HEAP_KEY_GAP: f64 = 1e-14;
 
 /// The apex of a heap entry that is a `D`-edge, not an ear diagonal.
 const NO_APEX: u32 = u32::MAX;
@@ -218,11 +227,11 @@ impl<'a> Splitting<'a> {
         }
     }
 
-    /// Is `x` before `y` in the exact segment order? (Rounded keys decide
-    /// when they differ by more than [`KEY_RUN_GAP`]: see `sort_segments`.)
+    /// Is `x` before `y` in the exact segment order? Rounded keys decide
+    /// when they differ by more than [`HEAP_KEY_GAP`] relative.
     #[inline]
     fn before(&self, x: &Candidate, y: &Candidate) -> bool {
-        if (x.key - y.key).abs() > KEY_RUN_GAP * x.key.max(y.key) {
+        if (x.key - y.key).abs() > HEAP_KEY_GAP * x.key.max(y.key) {
             return x.key < y.key;
         }
         let p = self.polygon;

@@ -85,7 +85,7 @@ use crate::kernel::{compare_lengths, orient_sign, Point};
 use crate::parallel::prelude::*;
 use crate::spatial::{bounding_box, convex_hull_cycle, fmax, fmin, morton_order};
 use crate::timing::{Phase, Stopwatch};
-use guard::round_grid;
+use guard::{round_grid, NO_LINE};
 use partial::Partial;
 use segment_index::{PointsNear, Query, SegmentIndex};
 use std::cmp::Ordering;
@@ -266,7 +266,13 @@ fn greedy_rounds(
         } else {
             THRESHOLD_GROWTH * lower
         };
-        let (threshold, grid) = round_grid(points, bbox, &open, lower, proposed);
+        let gaps: Vec<Option<Vec<[u32; 2]>>> = if round == 0 {
+            vec![None; n]
+        } else {
+            open.par_iter().map(|&v| g.open_gaps(v)).collect()
+        };
+        let class = line_classes(points, &open, &gaps);
+        let (threshold, grid) = round_grid(points, bbox, &open, &class, lower, proposed);
         // Once every pair is shorter than the threshold, take all the rest.
         let last = threshold > LAST_ROUND_MARGIN * diagonal;
         // The point grid answers "a point on this segment?"; a query costs
@@ -283,11 +289,6 @@ fn greedy_rounds(
             near = Some(PointsNear::new(points, bbox, cell));
         }
         let near = near.as_ref().expect("just built");
-        let gaps: Vec<Option<Vec<[u32; 2]>>> = if round == 0 {
-            vec![None; n]
-        } else {
-            open.par_iter().map(|&v| g.open_gaps(v)).collect()
-        };
         // Pairs `open[i], open[j]` in the length range that may leave both
         // endpoints.
         let keep = |i: usize, j: usize| {
@@ -308,8 +309,18 @@ fn greedy_rounds(
                     // Cells a little wider than the threshold: close pairs
                     // sit in neighbouring cells (all cells, in the last round).
                     let reach = if last { diagonal } else { threshold };
+                    let c = class[i];
                     grid.any_cell_near(pv, pv, reach, |cell| {
-                        for &j in cell {
+                        // Cells are sorted by class; skip `v`'s own line.
+                        let (lo, hi) = if c == NO_LINE {
+                            (cell.len(), cell.len())
+                        } else {
+                            (
+                                cell.partition_point(|&j| class[j as usize] < c),
+                                cell.partition_point(|&j| class[j as usize] <= c),
+                            )
+                        };
+                        for &j in cell[..lo].iter().chain(&cell[hi..]) {
                             if open[j as usize] > v && keep(i, j as usize) {
                                 out.push([v, open[j as usize]]);
                             }
@@ -357,6 +368,84 @@ fn greedy_rounds(
     let triangles = g.triangles();
     stopwatch.lap("triangles");
     Ok(triangles)
+}
+
+/// Line classes of the open vertices (indices into `open`), for the guard
+/// and the candidate listing: a vertex `v` whose open gaps are all straight
+/// angles (each bounded by two neighbours collinear with `v`, so all of them
+/// lie on one line `L` through `v`) can only be left strictly off `L`, so no
+/// candidate joins it to another point of `L`. Chains of such vertices along
+/// one line (each the other's gap neighbour) share a class, the smallest
+/// open index in the chain; any other vertex gets [`NO_LINE`]. Pairs within
+/// a class are skipped unlisted: a run of collinear points waiting for a
+/// far apex would otherwise fill the guard's cells with hopeless pairs and
+/// hold the threshold down for thousands of rounds (issue 15: a run of 1000
+/// points with two apexes took 8.8 s). Only the running time depends on the
+/// classes: the skipped pairs fail `leaves_through` anyway.
+fn line_classes(points: &[Point], open: &[u32], gaps: &[Option<Vec<[u32; 2]>>]) -> Vec<u32> {
+    let p = |v: u32| points[v as usize];
+    // A gap neighbour of each straight-angle vertex (`NO_LINE` if none).
+    let line_neighbour: Vec<u32> = open
+        .par_iter()
+        .zip(gaps)
+        .map(|(&v, gaps)| match gaps {
+            Some(list)
+                if !list.is_empty()
+                    && list
+                        .iter()
+                        .all(|&[u, w]| orient_sign(p(v), p(u), p(w)) == 0) =>
+            {
+                list[0][0]
+            }
+            _ => NO_LINE,
+        })
+        .collect();
+    if line_neighbour.iter().all(|&u| u == NO_LINE) {
+        return line_neighbour;
+    }
+    let mut index = vec![NO_LINE; points.len()];
+    for (i, &v) in open.iter().enumerate() {
+        index[v as usize] = i as u32;
+    }
+    // Union-find over open indices: `v` joins the gap neighbours of its own
+    // gaps that are straight-angle vertices of the same line.
+    let mut parent: Vec<u32> = (0..open.len() as u32).collect();
+    fn root(parent: &mut [u32], mut x: u32) -> u32 {
+        while parent[x as usize] != x {
+            let up = parent[parent[x as usize] as usize];
+            parent[x as usize] = up;
+            x = up;
+        }
+        x
+    }
+    for (i, &v) in open.iter().enumerate() {
+        if line_neighbour[i] == NO_LINE {
+            continue;
+        }
+        for &[u, w] in gaps[i].as_deref().unwrap_or_default() {
+            for x in [u, w] {
+                let j = index[x as usize];
+                // `x` is on `v`'s line; it shares the line if its own line
+                // passes through `v`.
+                if j != NO_LINE
+                    && line_neighbour[j as usize] != NO_LINE
+                    && orient_sign(p(x), p(line_neighbour[j as usize]), p(v)) == 0
+                {
+                    let (a, b) = (root(&mut parent, i as u32), root(&mut parent, j));
+                    parent[a.max(b) as usize] = a.min(b);
+                }
+            }
+        }
+    }
+    (0..open.len())
+        .map(|i| {
+            if line_neighbour[i] == NO_LINE {
+                NO_LINE
+            } else {
+                root(&mut parent, i as u32)
+            }
+        })
+        .collect()
 }
 
 /// Pass 1 of [`decide_round`] on a chunk of candidates: the blocked ranks
