@@ -610,6 +610,9 @@ fn a_cluster_below_the_grid_resolution() {
     assert_eq!(tally.sets, 1);
 }
 
+/// A map of the plane (for moving a test input around).
+type PointMap = fn(Point) -> Point;
+
 /// Issue 15's cliff families, small, edge for edge against the oracle:
 /// fans (every orientation, apex anywhere, duplicates), collinear runs with
 /// several apexes, circles sampled with cos/sin (regular polygons, with and
@@ -623,7 +626,7 @@ fn cliff_families_match_the_oracle() {
     // below, over an end point or beyond the run; then with duplicates.
     for n in [3, 4, 5, 6, 7, 10, 17, 40, 200] {
         let base = fan(n);
-        let maps: [(&str, fn(Point) -> Point); 4] = [
+        let maps: [(&str, PointMap); 4] = [
             ("x", |p| p),
             ("y", |p| [-p[1], p[0]]),
             ("diagonal", |p| [p[0] + 3.0 * p[1], 2.0 * p[0] - p[1]]),
@@ -651,7 +654,7 @@ fn cliff_families_match_the_oracle() {
         let step = [1.0, 0.5, 3.0][case % 3];
         let mut pts: Vec<Point> = (0..k).map(|i| [i as f64 * step, 0.0]).collect();
         for _ in 0..rng.gen_range(2..6) {
-            let x = rng.gen_range(-3..k as i32 + 3) as f64 * step;
+            let x = rng.gen_range(-3..k + 3) as f64 * step;
             let y = [1.0, -1.0, 2.0, -0.5, 10.0][rng.gen_range(0..5)];
             pts.push([x, y]);
         }
