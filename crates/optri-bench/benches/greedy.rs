@@ -1,7 +1,8 @@
 //! Criterion benchmarks of the greedy triangulation: uniform and clustered
 //! points (general algorithm, beside the Delaunay triangulation of the same
 //! set), a convex lens (convex algorithm) and a parabola (semicircular
-//! algorithm).
+//! algorithm); issue 15's cliff families: a fan, a circle sampled with
+//! cos/sin and points at random angles on a circle.
 //!
 //! `cargo bench -p optri --bench greedy`; the 10⁶-point figures come from
 //! `cargo run --release -p optri --example greedy_bench -- <mode> <n>`.
@@ -9,11 +10,15 @@
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
 use optri::internals::greedy_triangulation;
 use optri::PointSet;
-use optri_oracle::inputs::{clustered, convex_lens_evenly_spaced, parabola, uniform_unit_square};
+use optri_oracle::inputs::{
+    circle_at_random_angles, clustered, convex_lens_evenly_spaced, fan, parabola, sampled_circle,
+    uniform_unit_square,
+};
 use rand::{rngs::StdRng, SeedableRng};
 
 const SEED_UNIFORM: u64 = 1;
 const SEED_CLUSTERED: u64 = 2;
+const SEED_RANDOM_CIRCLE: u64 = 3;
 
 fn point_set(points: Vec<[f64; 2]>) -> PointSet {
     PointSet::new(&points).unwrap()
@@ -62,6 +67,23 @@ fn greedy(c: &mut Criterion) {
         &ps,
         |b, ps| b.iter(|| greedy_triangulation(ps).unwrap()),
     );
+    // Issue 15's cliffs (minutes each before the fix).
+    let ps = point_set(fan(100_000));
+    group.bench_with_input(BenchmarkId::new("fan", 100_000), &ps, |b, ps| {
+        b.iter(|| greedy_triangulation(ps).unwrap())
+    });
+    let ps = point_set(sampled_circle(10_000, 1000.0));
+    group.bench_with_input(BenchmarkId::new("sampled_circle", 10_000), &ps, |b, ps| {
+        b.iter(|| greedy_triangulation(ps).unwrap())
+    });
+    let ps = point_set(circle_at_random_angles(
+        &mut StdRng::seed_from_u64(SEED_RANDOM_CIRCLE),
+        10_000,
+        1000.0,
+    ));
+    group.bench_with_input(BenchmarkId::new("random_circle", 10_000), &ps, |b, ps| {
+        b.iter(|| greedy_triangulation(ps).unwrap())
+    });
     group.finish();
 }
 

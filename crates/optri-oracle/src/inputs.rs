@@ -227,6 +227,28 @@ pub fn perturbed_circle(rng: &mut StdRng, n: usize, jitter: f64) -> Vec<Point> {
         .collect()
 }
 
+/// The regular `n`-gon of radius `r` as a user would sample it: `(r cos
+/// 2πi/n, r sin 2πi/n)` in `f64`. Nearly cocircular (exactly so only where
+/// rounding allows), equal side lengths up to rounding; convex position or
+/// not, strictly or not, as rounding decides. Issue 15's circle cliff.
+pub fn sampled_circle(n: usize, r: f64) -> Vec<Point> {
+    (0..n)
+        .map(|i| {
+            let a = TAU * i as f64 / n as f64;
+            [r * a.cos(), r * a.sin()]
+        })
+        .collect()
+}
+
+/// A fan: `(i, 0)` for `0 ≤ i < n`, then the apex `(⌊n/2⌋, 1)`. All points
+/// but one are collinear, so it has exactly one triangulation. Issue 15's
+/// fan cliff.
+pub fn fan(n: usize) -> Vec<Point> {
+    let mut pts: Vec<Point> = (0..n).map(|i| [i as f64, 0.0]).collect();
+    pts.push([(n / 2) as f64, 1.0]);
+    pts
+}
+
 /// `n` points on the circle of radius `r` at angles uniform in `[0, 2π)`
 /// (`rng.gen_range`), rounded to integers: nearly cocircular, repeated
 /// points on a small circle, convex position or not (rounding decides).

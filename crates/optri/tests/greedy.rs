@@ -17,9 +17,9 @@ use optri::internals::{
 use optri::kernel::Point;
 use optri::{triangulate, Criterion, PointSet};
 use optri_oracle::inputs::{
-    clustered, collinear_runs, convex_lens, grid, grid_subset, integer_circle_points as circle,
-    jittered_arc, lattice_points, random_parabola, rounded_circle, run_with_apex,
-    uniform_in_square,
+    circle_at_random_angles, clustered, collinear_runs, convex_lens, fan, grid, grid_subset,
+    integer_circle_points as circle, jittered_arc, lattice_points, perturbed_circle,
+    random_parabola, rounded_circle, run_with_apex, sampled_circle, uniform_in_square,
 };
 use rand::rngs::StdRng;
 use rand::{Rng, SeedableRng};
@@ -35,6 +35,7 @@ const SEED_RANDOM_5000: u64 = 15;
 const SEED_NAIVE_REFERENCE: u64 = 16;
 const SEED_REGISTRY: u64 = 9;
 const SEED_CONVEX_10000: u64 = 12;
+const SEED_CLIFF_FAMILIES: u64 = 17;
 
 /// Distinct-index `[min, max]` edges of a triangulation, sorted.
 fn distinct_edges(ps: &PointSet, t: &optri::Triangulation) -> Vec<[u32; 2]> {
@@ -607,4 +608,105 @@ fn a_cluster_below_the_grid_resolution() {
         Some(GreedyAlgorithm::General)
     );
     assert_eq!(tally.sets, 1);
+}
+
+/// A map of the plane (for moving a test input around).
+type PointMap = fn(Point) -> Point;
+
+/// Issue 15's cliff families, small, edge for edge against the oracle:
+/// fans (every orientation, apex anywhere, duplicates), collinear runs with
+/// several apexes, circles sampled with cos/sin (regular polygons, with and
+/// without the centre, at several radii and offsets), perturbed circles and
+/// random angles on a circle.
+#[test]
+fn cliff_families_match_the_oracle() {
+    let mut rng = StdRng::seed_from_u64(SEED_CLIFF_FAMILIES);
+    let mut tally = Tally::default();
+    // Fans: the line along x, along y, diagonal, reversed; apex above,
+    // below, over an end point or beyond the run; then with duplicates.
+    for n in [3, 4, 5, 6, 7, 10, 17, 40, 200] {
+        let base = fan(n);
+        let maps: [(&str, PointMap); 4] = [
+            ("x", |p| p),
+            ("y", |p| [-p[1], p[0]]),
+            ("diagonal", |p| [p[0] + 3.0 * p[1], 2.0 * p[0] - p[1]]),
+            ("reversed", |p| [-p[0], -p[1]]),
+        ];
+        for (what, map) in maps {
+            let pts: Vec<Point> = base.iter().map(|&p| map(p)).collect();
+            check(&pts, &format!("fan {n} {what}"), &mut tally);
+        }
+        for apex in [[0.0, 1.0], [0.0, -2.5], [-1.0, 0.5], [n as f64 + 3.0, 7.0]] {
+            let mut pts: Vec<Point> = (0..n).map(|i| [i as f64, 0.0]).collect();
+            pts.push(apex);
+            check(&pts, &format!("fan {n} apex {apex:?}"), &mut tally);
+        }
+        let mut pts = fan(n);
+        for _ in 0..3 {
+            pts.push(pts[rng.gen_range(0..pts.len())]);
+        }
+        check(&pts, &format!("fan {n} with duplicates"), &mut tally);
+    }
+    // Collinear runs with several apexes on both sides (the general
+    // algorithm, not the fan shortcut).
+    for case in 0..200 {
+        let k = rng.gen_range(3..40);
+        let step = [1.0, 0.5, 3.0][case % 3];
+        let mut pts: Vec<Point> = (0..k).map(|i| [i as f64 * step, 0.0]).collect();
+        for _ in 0..rng.gen_range(2..6) {
+            let x = rng.gen_range(-3..k + 3) as f64 * step;
+            let y = [1.0, -1.0, 2.0, -0.5, 10.0][rng.gen_range(0..5)];
+            pts.push([x, y]);
+        }
+        check(
+            &pts,
+            &format!("run of {k} with apexes, case {case}"),
+            &mut tally,
+        );
+    }
+    for k in [100, 300] {
+        let mut pts: Vec<Point> = (0..k).map(|i| [i as f64, 0.0]).collect();
+        pts.extend([[k as f64 / 3.0, 1.0], [2.0 * k as f64 / 3.0, -1.0]]);
+        check(&pts, &format!("run of {k} with two apexes"), &mut tally);
+    }
+    // Sampled circles: regular polygons, with and without the centre.
+    for n in (3..40).chain([50, 64, 100, 128, 300]) {
+        for (r, shift) in [(1.0, 0.0), (1000.0, 0.0), (1e-3, 5.0), (7.0, -1e6)] {
+            let mut pts: Vec<Point> = sampled_circle(n, r)
+                .into_iter()
+                .map(|p| [p[0] + shift, p[1]])
+                .collect();
+            check(
+                &pts,
+                &format!("sampled circle n={n} r={r} shift {shift}"),
+                &mut tally,
+            );
+            if n <= 64 {
+                pts.push([shift, 0.0]);
+                check(
+                    &pts,
+                    &format!("sampled circle n={n} r={r} with centre"),
+                    &mut tally,
+                );
+            }
+        }
+    }
+    // Nearly cocircular, convex or not as rounding decides.
+    for case in 0..200 {
+        let n = rng.gen_range(4..60);
+        let pts = match case % 3 {
+            0 => perturbed_circle(&mut rng, n, 1e-9),
+            1 => perturbed_circle(&mut rng, n, 1e-3),
+            _ => circle_at_random_angles(&mut rng, n, 1e3),
+        };
+        check(&pts, &format!("near circle case {case}"), &mut tally);
+    }
+    for pts in [
+        sampled_circle(1000, 1000.0),
+        perturbed_circle(&mut rng, 1000, 1e-6),
+    ] {
+        check(&pts, "near circle n=1000", &mut tally);
+    }
+    assert!(tally.sets >= 800, "{tally:?}");
+    assert!(tally.dispatched[1] >= 100, "{tally:?}");
 }

@@ -8,12 +8,21 @@
 //! ```
 //! `clustered N`: N points in N/1000 square clusters (at least 20) with
 //! random centres and sizes over two orders of magnitude.
+//! `fan N`: `(i, 0)` for `i < N` plus the apex `(N/2, 1)` (issue 15).
+//! `circle N`: the regular N-gon of radius 1000 sampled with cos/sin.
+//! `random-circle N`: N points at random angles on that circle (rounded to
+//! `f64`, convex position as rounding decides).
+//! `cocircular N`: in one process, GT of `circle N`, `random-circle N` and
+//! `2N`, `convex N` and `2N`, with the issue-15 ratios.
 //! `uniform` reports GT time as a ratio to the Delaunay time of the same
 //! run; every mode reports the peak resident set size (`VmHWM`) before and
 //! after GT.
 
 use optri::{delaunay, triangulate, Criterion, PointSet};
-use optri_oracle::inputs::{clustered, convex_lens, random_parabola, uniform_in_box};
+use optri_oracle::inputs::{
+    circle_at_random_angles, clustered, convex_lens, fan, random_parabola, sampled_circle,
+    uniform_in_box,
+};
 use rand::rngs::StdRng;
 use rand::SeedableRng;
 use std::time::Instant;
@@ -30,10 +39,52 @@ fn peak_rss_mib() -> f64 {
         .map_or(f64::NAN, |kb| kb / 1024.0)
 }
 
+/// Seconds for one GT of `pts`, and the algorithm that ran.
+fn time_gt(pts: &[[f64; 2]]) -> (f64, String) {
+    let ps = PointSet::new(pts).expect("valid points");
+    let start = Instant::now();
+    let solution = triangulate(&ps, Criterion::Greedy).expect("greedy");
+    let s = start.elapsed().as_secs_f64();
+    let algorithm = solution.algorithm.split(' ').next().unwrap_or_default();
+    (s, algorithm.to_string())
+}
+
+/// Issue 15's cocircular figures, all from one process.
+fn cocircular(n: usize) {
+    let mut rng = StdRng::seed_from_u64(SEED);
+    let random_n = circle_at_random_angles(&mut rng, n, 1000.0);
+    let random_2n = circle_at_random_angles(&mut rng, 2 * n, 1000.0);
+    let lens_n = convex_lens(&mut rng, n);
+    let lens_2n = convex_lens(&mut rng, 2 * n);
+    let sets = [
+        ("circle", sampled_circle(n, 1000.0)),
+        ("random-circle", random_n),
+        ("random-circle-2n", random_2n),
+        ("convex", lens_n),
+        ("convex-2n", lens_2n),
+    ];
+    let mut t = Vec::new();
+    for (what, pts) in &sets {
+        let (s, algorithm) = time_gt(pts);
+        println!("{what} n={} algorithm={algorithm} gt={s:.3}s", pts.len());
+        t.push(s);
+    }
+    println!(
+        "circle/random-circle={:.2} circle/convex={:.2} random-circle 2n/n={:.2} convex 2n/n={:.2}",
+        t[0] / t[1],
+        t[0] / t[3],
+        t[2] / t[1],
+        t[4] / t[3]
+    );
+}
+
 fn main() {
     let args: Vec<String> = std::env::args().collect();
     let mode = args.get(1).map_or("uniform", String::as_str);
     let n: usize = args.get(2).and_then(|s| s.parse().ok()).unwrap_or(100_000);
+    if mode == "cocircular" {
+        return cocircular(n);
+    }
     let mut rng = StdRng::seed_from_u64(SEED);
     let pts = match mode {
         "uniform" => uniform_in_box(&mut rng, n, [0.0, 0.0], [1.0, 1.0]),
@@ -42,7 +93,13 @@ fn main() {
         // Integer points on `y = x²`: semicircular.
         "semicircular" => random_parabola(&mut rng, n, 4 * n),
         "clustered" => clustered(&mut rng, n, (n / 1000).max(20)),
-        other => panic!("unknown mode {other} (uniform | clustered | convex | semicircular)"),
+        "fan" => fan(n),
+        "circle" => sampled_circle(n, 1000.0),
+        "random-circle" => circle_at_random_angles(&mut rng, n, 1000.0),
+        other => panic!(
+            "unknown mode {other} (uniform | clustered | convex | semicircular | fan | circle \
+             | random-circle | cocircular)"
+        ),
     };
     let ps = PointSet::new(&pts).expect("valid points");
     let rss_before = peak_rss_mib();
@@ -58,7 +115,7 @@ fn main() {
          peak_rss_before={rss_before:.1}MiB peak_rss_after={rss_gt:.1}MiB",
         ps.len(),
     );
-    if mode == "uniform" || mode == "clustered" {
+    if matches!(mode, "uniform" | "clustered" | "fan") {
         // This machine's timings vary by ±20% from run to run: alternate
         // Delaunay and GT runs and compare medians.
         let runs: usize = std::env::var("RUNS")

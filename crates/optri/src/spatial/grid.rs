@@ -259,6 +259,20 @@ impl<T: Copy + Send + Sync> SparseGrid<T> {
         (r0..=r1).any(|r| self.any_cell_in_row(r, c0, c1, |k| f(self.cell(k))))
     }
 
+    /// Calls `f` on the items of the occupied cell `k` and of each of its
+    /// occupied neighbours.
+    pub(crate) fn for_block(&self, k: usize, mut f: impl FnMut(&[T])) {
+        let key = self.keys[k];
+        let (row, column) = (key / self.columns, key % self.columns);
+        let (c0, c1) = (column.saturating_sub(1), (column + 1).min(self.columns - 1));
+        for r in row.saturating_sub(1)..=(row + 1).min(self.rows - 1) {
+            self.any_cell_in_row(r, c0, c1, |m| {
+                f(self.cell(m));
+                false
+            });
+        }
+    }
+
     /// The number of items in the occupied cell `k` and its eight
     /// neighbours.
     pub(crate) fn block_len(&self, k: usize) -> usize {

@@ -1,16 +1,15 @@
-//! GT of a strictly convex polygon by recursive splitting: Thm 4.2 (and
-//! Corollary 4.1 for convex point sets) of C. Levcopoulos & A. Lingas, *On
-//! approximation behavior of the greedy triangulation for convex polygons*,
-//! Algorithmica 2 (1987).
+//! GT of a strictly convex polygon by shortest-diagonal splitting: Thm 4.2
+//! (and Corollary 4.1 for convex point sets) of C. Levcopoulos & A. Lingas,
+//! *On approximation behavior of the greedy triangulation for convex
+//! polygons*, Algorithmica 2 (1987).
 //!
 //! `Greedy(P)`: find a shortest diagonal of `P`, split along it, recurse.
-//! The subpolygons partition `P`, so an explicit stack of them takes O(n)
-//! space.
+//! The subpolygons are independent, so the recursion can take them in any
+//! order; here a global heap pops the shortest candidate of *all* current
+//! subpolygons, which is the shortest diagonal of its own subpolygon.
 //!
-//! The shortest diagonal of a convex polygon `Q` is found among O(|Q|)
-//! candidates instead of Thm 4.1's all-shortest-diagonals algorithm (whose
-//! all-nearest-neighbour subroutine is reported flawed, literature.md §e):
-//! let `e = uv` be the shortest diagonal.
+//! # Candidates
+//! Let `e = uv` be the shortest diagonal of a convex polygon `Q`.
 //! * If one side of `e` holds a single vertex, `e` cuts off an ear: it is one
 //!   of the `|Q|` ear diagonals `v_{i-1} v_{i+1}`.
 //! * Otherwise no vertex `z` lies in the closed disc with diameter `uv`: such
@@ -21,72 +20,339 @@
 //!   diagonal of the Delaunay triangulation of `Q`, whatever completion it
 //!   picks for cocircular points.
 //!
-//! The Delaunay triangulation of `Q` is built per subpolygon by Chew's
-//! randomised algorithm for convex polygons
-//! ([`convex_delaunay`](super::convex_delaunay), literature.md §e) in expected
-//! O(|Q|) time; with the O(|Q|) ear scan, a subpolygon costs expected O(|Q|).
-//! There are `n - 3` splits (one per diagonal), each of a subpolygon of at
-//! most `n` vertices, so this implementation takes expected O(n²) time in the
-//! worst case, as in Thm 4.2. The randomness only affects the time: the
-//! shortest diagonal is in every Delaunay completion, so the result is GT
-//! whatever triangulation is built. Space is O(n): the stack of subpolygons
-//! partitions `P`, and the Delaunay buffers are O(|Q|) and reused across
-//! subpolygons.
+//! So the heap holds every ear diagonal and every Delaunay diagonal of every
+//! current subpolygon (stale entries are skipped when popped).
+//!
+//! # One Delaunay triangulation, maintained
+//! The previous version rebuilt the Delaunay triangulation of every
+//! subpolygon (Chew's algorithm, expected O(|Q|)): Θ(n²) exact in-circle
+//! tests in all, and on (nearly) cocircular points each of them needs the
+//! full expansion arithmetic (about 3 µs), which made 10⁴ points on a circle
+//! take minutes. Here one triangulation `D` of `P` is kept whose restriction
+//! to every current subpolygon is a Delaunay triangulation of that
+//! subpolygon's vertices:
+//! * at the start `D` is a Delaunay triangulation of `P`
+//!   ([`convex_delaunay`](super::convex_delaunay), Chew's algorithm);
+//! * splitting along a diagonal of `D` keeps `D`: each triangle's open
+//!   circumcircle holds no vertex of `Q`, hence none of a part;
+//! * cutting off an ear `v` along `ab` (not a diagonal of `D` when `v` has
+//!   `D`-edges between `a` and `b`) deletes those edges and re-triangulates the
+//!   hole, the convex polygon `a, w_1, …, w_m, b` of `v`'s neighbours, by its
+//!   own Delaunay triangulation. The new edges are locally Delaunay inside the
+//!   hole; a hole side `w_i w_{i+1}` keeps its outer triangle, whose open
+//!   circumcircle held no vertex of `Q` (in particular not the new opposite
+//!   vertex), and local Delaunayhood is symmetric; an everywhere locally
+//!   Delaunay triangulation is Delaunay (also for cocircular points, in the
+//!   closed-disc sense used above).
+//!
+//! # Cost
+//! In-circle tests: expected O(n) for the initial triangulation plus
+//! expected O(m) per ear whose vertex has `m` inner `D`-edges, at most the
+//! `D`-degree of the cut vertex; length comparisons: O(log n) per heap entry,
+//! and entries are created O(1) per split plus one per new `D`-edge. The
+//! adjacency lists are sorted vectors (insertion O(degree)). On every input
+//! measured (BENCHMARKS.md, issue 15) this is near-linear; the worst case
+//! stays within the expected O(n²) of Thm 4.2, since the `D`-degrees of the cut
+//! vertices sum to O(n²). Space is O(n) plus the heap.
 
 use super::convex_delaunay::ConvexDelaunay;
+use super::rounded_squared_length;
 use crate::kernel::{compare_lengths_symbolic, Point};
 use std::cmp::Ordering;
+
+/// Two rounded squared lengths closer than this relative gap are compared
+/// exactly. Derived need, chosen value: as for [`super::KEY_RUN_GAP`], a
+/// rounded key is within 4·2⁻⁵³ of the exact squared length, so keys in the
+/// wrong order differ by less than 8·2⁻⁵³ ≈ 8.9·10⁻¹⁶ relative; 10⁻¹⁴ is
+/// eleven times that. Tighter than `KEY_RUN_GAP` because a regular polygon
+/// sampled with cos/sin has ear lengths equal to about 10⁻¹³, and every heap
+/// comparison among them would otherwise be exact (issue 15).
+const HEAP_KEY_GAP: f64 = 1e-14;
+
+/// The apex of a heap entry that is a `D`-edge, not an ear diagonal.
+const NO_APEX: u32 = u32::MAX;
 
 /// GT edges (hull edges and diagonals) of the strictly convex polygon
 /// `polygon` (ccw indices into `points`).
 pub(super) fn greedy_convex(points: &[Point], polygon: &[u32]) -> Vec<[u32; 2]> {
     let k = polygon.len();
     let mut edges: Vec<[u32; 2]> = (0..k).map(|i| [polygon[i], polygon[(i + 1) % k]]).collect();
-    let mut stack: Vec<Vec<u32>> = vec![polygon.to_vec()];
-    let mut scratch = ConvexDelaunay::new();
-    while let Some(q) = stack.pop() {
-        if q.len() <= 3 {
-            continue;
-        }
-        let (i, j) = shortest_diagonal(points, &q, &mut scratch);
-        edges.push([q[i], q[j]]);
-        let first: Vec<u32> = q[i..=j].to_vec();
-        let mut second: Vec<u32> = q[j..].to_vec();
-        second.extend_from_slice(&q[..=i]);
-        stack.push(first);
-        stack.push(second);
+    if k <= 3 {
+        return edges;
     }
+    let mut state = Splitting::new(points, polygon);
+    while edges.len() < 2 * k - 3 {
+        let Some(c) = state.pop() else {
+            break;
+        };
+        if let Some([a, b]) = state.take(c) {
+            edges.push([polygon[a as usize], polygon[b as usize]]);
+        }
+    }
+    debug_assert_eq!(edges.len(), 2 * k - 3, "a convex GT has 2k - 3 edges");
     edges
 }
 
-/// Positions `i < j` in `q` of the endpoints of its shortest diagonal.
-fn shortest_diagonal(points: &[Point], q: &[u32], scratch: &mut ConvexDelaunay) -> (usize, usize) {
-    let k = q.len();
-    let better = |a: (usize, usize), b: (usize, usize)| {
-        compare_lengths_symbolic(points, [q[a.0], q[a.1]], [q[b.0], q[b.1]]) == Ordering::Less
-    };
-    // Ear diagonals v_{i-1} v_{i+1}.
-    let mut best = (0, 2);
-    for i in 0..k {
-        let (a, b) = ((i + k - 1) % k, (i + 1) % k);
-        let cand = if a < b { (a, b) } else { (b, a) };
-        if better(cand, best) {
-            best = cand;
+/// A neighbour in an adjacency list: its polygon position and whether the
+/// edge is a polygon side or a GT diagonal already chosen (a *constraint*)
+/// rather than an edge of `D` only.
+#[derive(Clone, Copy, Debug)]
+struct Neighbour {
+    at: u32,
+    constraint: bool,
+}
+
+/// A heap entry: the segment `ab` (polygon positions) with its rounded
+/// squared length; `apex` is the ear vertex for an ear diagonal, else
+/// [`NO_APEX`].
+#[derive(Clone, Copy, Debug)]
+struct Candidate {
+    key: f64,
+    a: u32,
+    b: u32,
+    apex: u32,
+}
+
+/// The state of the splitting: the triangulation `D` (with its constraints)
+/// as adjacency lists, and the candidate heap.
+struct Splitting<'a> {
+    points: &'a [Point],
+    polygon: &'a [u32],
+    /// Per position `v`: neighbours sorted counter-clockwise, i.e. by
+    /// `(w - v) mod k` (the polygon is convex and ccw). The polygon sides
+    /// `v + 1` and `v - 1` are constraints, first and last.
+    adjacency: Vec<Vec<Neighbour>>,
+    /// Binary min-heap in the exact segment order.
+    heap: Vec<Candidate>,
+    scratch: ConvexDelaunay,
+    hole: Vec<u32>,
+}
+
+impl<'a> Splitting<'a> {
+    fn new(points: &'a [Point], polygon: &'a [u32]) -> Self {
+        let k = polygon.len();
+        let mut scratch = ConvexDelaunay::new();
+        scratch.triangulate(points, polygon);
+        let mut adjacency: Vec<Vec<Neighbour>> = (0..k)
+            .map(|v| {
+                vec![
+                    Neighbour {
+                        at: ((v + 1) % k) as u32,
+                        constraint: true,
+                    },
+                    Neighbour {
+                        at: ((v + k - 1) % k) as u32,
+                        constraint: true,
+                    },
+                ]
+            })
+            .collect();
+        let diagonals: Vec<[u32; 2]> = scratch.diagonals().collect();
+        for &[a, b] in &diagonals {
+            for (x, y) in [(a, b), (b, a)] {
+                adjacency[x as usize].push(Neighbour {
+                    at: y,
+                    constraint: false,
+                });
+            }
+        }
+        let mut state = Self {
+            points,
+            polygon,
+            adjacency,
+            heap: Vec::new(),
+            scratch,
+            hole: Vec::new(),
+        };
+        for v in 0..k as u32 {
+            let mut list = std::mem::take(&mut state.adjacency[v as usize]);
+            list.sort_unstable_by_key(|n| state.rel(v, n.at));
+            state.adjacency[v as usize] = list;
+        }
+        for [a, b] in diagonals {
+            state.push(a, b, NO_APEX);
+        }
+        for v in 0..k as u32 {
+            state.push_sector(v, 1);
+        }
+        state
+    }
+
+    /// `(w - v) mod k`: the sort key of `w` in `v`'s list.
+    #[inline]
+    fn rel(&self, v: u32, w: u32) -> u32 {
+        let k = self.polygon.len() as u32;
+        if w >= v {
+            w - v
+        } else {
+            w + k - v
         }
     }
-    if k >= 6 {
-        // Non-ear diagonals need two vertices on each side, hence k ≥ 6.
-        scratch.triangulate(points, q);
-        for [a, b] in scratch.diagonals() {
-            let (a, b) = (a.min(b) as usize, a.max(b) as usize);
-            let gap = b - a;
-            if gap < 3 || gap > k - 3 {
-                continue; // polygon edge or ear diagonal
-            }
-            if better((a, b), best) {
-                best = (a, b);
-            }
+
+    /// Where `w` is (or would be inserted) in `v`'s list.
+    fn find(&self, v: u32, w: u32) -> Result<usize, usize> {
+        let r = self.rel(v, w);
+        self.adjacency[v as usize].binary_search_by_key(&r, |n| self.rel(v, n.at))
+    }
+
+    fn insert(&mut self, v: u32, w: u32, constraint: bool) {
+        let i = self.find(v, w).expect_err("a new edge");
+        self.adjacency[v as usize].insert(i, Neighbour { at: w, constraint });
+    }
+
+    fn remove(&mut self, v: u32, w: u32) {
+        let i = self.find(v, w).expect("an existing edge");
+        self.adjacency[v as usize].remove(i);
+    }
+
+    /// Pushes the ear diagonal of the sector of `v` holding list slot `slot`
+    /// (an index in `1..len`): the constraints `c_i`, `c_j` around it bound the
+    /// subpolygon's sides at `v`; with `D`-edges between them, `c_i c_j` is an
+    /// ear diagonal that is not a `D`-edge (otherwise it is one, or a side).
+    fn push_sector(&mut self, v: u32, slot: usize) {
+        let list = &self.adjacency[v as usize];
+        let Some(i) = list[..slot].iter().rposition(|n| n.constraint) else {
+            return;
+        };
+        let Some(j) = list[slot..]
+            .iter()
+            .position(|n| n.constraint)
+            .map(|j| j + slot)
+        else {
+            return;
+        };
+        if j - i >= 2 {
+            let (a, b) = (list[i].at, list[j].at);
+            self.push(a, b, v);
         }
     }
-    best
+
+    /// Is `x` before `y` in the exact segment order? Rounded keys decide
+    /// when they differ by more than [`HEAP_KEY_GAP`] relative.
+    #[inline]
+    fn before(&self, x: &Candidate, y: &Candidate) -> bool {
+        if (x.key - y.key).abs() > HEAP_KEY_GAP * x.key.max(y.key) {
+            return x.key < y.key;
+        }
+        let p = self.polygon;
+        compare_lengths_symbolic(
+            self.points,
+            [p[x.a as usize], p[x.b as usize]],
+            [p[y.a as usize], p[y.b as usize]],
+        ) == Ordering::Less
+    }
+
+    fn push(&mut self, a: u32, b: u32, apex: u32) {
+        let (pa, pb) = (
+            self.points[self.polygon[a as usize] as usize],
+            self.points[self.polygon[b as usize] as usize],
+        );
+        let key = rounded_squared_length(pa, pb);
+        self.heap.push(Candidate { key, a, b, apex });
+        let mut i = self.heap.len() - 1;
+        while i > 0 {
+            let parent = (i - 1) / 2;
+            if !self.before(&self.heap[i], &self.heap[parent]) {
+                break;
+            }
+            self.heap.swap(i, parent);
+            i = parent;
+        }
+    }
+
+    fn pop(&mut self) -> Option<Candidate> {
+        let last = self.heap.pop()?;
+        if self.heap.is_empty() {
+            return Some(last);
+        }
+        let top = std::mem::replace(&mut self.heap[0], last);
+        let mut i = 0;
+        loop {
+            let (l, r) = (2 * i + 1, 2 * i + 2);
+            let mut m = i;
+            if l < self.heap.len() && self.before(&self.heap[l], &self.heap[m]) {
+                m = l;
+            }
+            if r < self.heap.len() && self.before(&self.heap[r], &self.heap[m]) {
+                m = r;
+            }
+            if m == i {
+                break;
+            }
+            self.heap.swap(i, m);
+            i = m;
+        }
+        Some(top)
+    }
+
+    /// Takes the popped candidate if it is still a diagonal of a current
+    /// subpolygon (then it is that subpolygon's shortest diagonal: every
+    /// candidate of it is in the heap) and returns it as a GT edge.
+    fn take(&mut self, c: Candidate) -> Option<[u32; 2]> {
+        let (a, b) = (c.a, c.b);
+        if c.apex == NO_APEX {
+            let i = self.find(a, b).ok()?;
+            if self.adjacency[a as usize][i].constraint {
+                return None;
+            }
+            self.adjacency[a as usize][i].constraint = true;
+            let j = self.find(b, a).expect("symmetric lists");
+            self.adjacency[b as usize][j].constraint = true;
+            // The split creates new sectors on both sides at `a` and `b`.
+            for (x, s) in [(a, i), (b, j)] {
+                self.push_sector(x, s);
+                self.push_sector(x, s + 1);
+            }
+            return Some([a, b]);
+        }
+        let v = c.apex;
+        let ia = self.find(v, a).ok()?;
+        let ib = self.find(v, b).ok()?;
+        let list = &self.adjacency[v as usize];
+        if !(list[ia].constraint && list[ib].constraint && ia + 2 <= ib)
+            || list[ia + 1..ib].iter().any(|n| n.constraint)
+        {
+            return None; // the sector was split or its ear already cut
+        }
+        // Cut the ear: delete v's D-edges to w_1..w_m, add the side ab,
+        // re-triangulate the hole a, w_1, …, w_m, b (ccw).
+        self.hole.clear();
+        self.hole.push(a);
+        self.hole.extend(list[ia + 1..ib].iter().map(|n| n.at));
+        self.hole.push(b);
+        self.adjacency[v as usize].drain(ia + 1..ib);
+        let hole = std::mem::take(&mut self.hole);
+        for &w in &hole[1..hole.len() - 1] {
+            self.remove(w, v);
+        }
+        self.insert(a, b, true);
+        self.insert(b, a, true);
+        if hole.len() >= 4 {
+            let vertices: Vec<u32> = hole.iter().map(|&h| self.polygon[h as usize]).collect();
+            self.scratch.triangulate(self.points, &vertices);
+            let diagonals: Vec<[u32; 2]> = self.scratch.diagonals().collect();
+            for [x, y] in diagonals {
+                let (x, y) = (hole[x as usize], hole[y as usize]);
+                self.insert(x, y, false);
+                self.insert(y, x, false);
+                self.push(x, y, NO_APEX);
+            }
+        }
+        // Sectors that changed: at a and b beside the new side, at each w_i
+        // where v was.
+        for &x in &hole {
+            let slot = if x == a {
+                self.find(a, b).expect("just added")
+            } else if x == b {
+                self.find(b, a).expect("just added") + 1
+            } else {
+                self.find(x, v).expect_err("just removed")
+            };
+            if slot >= 1 && slot < self.adjacency[x as usize].len() {
+                self.push_sector(x, slot);
+            }
+        }
+        self.hole = hole;
+        Some([a, b])
+    }
 }

@@ -7,6 +7,39 @@ use crate::kernel::Point;
 use crate::parallel::prelude::*;
 use crate::spatial::SparseGrid;
 
+/// Not on a line chain (see `line_classes` in the parent module).
+pub(super) const NO_LINE: u32 = u32::MAX;
+
+/// Pairs of items of `a` and `b` (cells sorted by class) in the same line
+/// class: never candidates, so the guard does not count them.
+fn same_line_pairs(a: &[u32], b: &[u32], class: &[u32]) -> usize {
+    let (mut i, mut j, mut pairs) = (0, 0, 0);
+    while i < a.len() && j < b.len() {
+        let (ca, cb) = (class[a[i] as usize], class[b[j] as usize]);
+        if ca == NO_LINE || cb == NO_LINE {
+            break; // NO_LINE sorts last
+        }
+        if ca < cb {
+            i += 1;
+        } else if cb < ca {
+            j += 1;
+        } else {
+            let ra = a[i..]
+                .iter()
+                .take_while(|&&x| class[x as usize] == ca)
+                .count();
+            let rb = b[j..]
+                .iter()
+                .take_while(|&&x| class[x as usize] == ca)
+                .count();
+            pairs += ra * rb;
+            i += ra;
+            j += rb;
+        }
+    }
+    pairs
+}
+
 /// The guard's pair budget is `PAIRS_PER_OPEN_VERTEX` per open vertex plus
 /// `EXTRA_PAIRS`. A tuning choice (no measurement of it is recorded, commit
 /// 752d473). For scale: uniform points at the first threshold have about 2.6
@@ -37,7 +70,9 @@ const FINEST_CELL: f64 = 0.999;
 const MIN_RELATIVE_STEP: f64 = 1e-3;
 
 /// The threshold of the next round, at most `proposed`, and the grid of the
-/// open vertices (indices into `open`) with cells a little wider than it.
+/// open vertices (indices into `open`) with cells a little wider than it,
+/// each cell sorted by `class` (the line classes of the parent module;
+/// pairs within one class are not counted).
 ///
 /// Guard: a round enumerates the pairs of open vertices in neighbouring
 /// cells, and its candidates' crossings grow with their square; where points
@@ -50,9 +85,11 @@ pub(super) fn round_grid(
     points: &[Point],
     bbox: [f64; 4],
     open: &[u32],
+    class: &[u32],
     lower: f64,
     proposed: f64,
 ) -> (f64, SparseGrid<u32>) {
+    let any_line = class.iter().any(|&c| c != NO_LINE);
     let budget = PAIRS_PER_OPEN_VERTEX * open.len() + EXTRA_PAIRS;
     let mut threshold = proposed;
     loop {
@@ -62,12 +99,21 @@ pub(super) fn round_grid(
             open.len(),
             |j| points[open[j] as usize],
             |j| j as u32,
-            |j| j as u32,
+            |j| class[j],
         );
         let (pairs, worst) = (0..grid.occupied())
             .into_par_iter()
             .map(|k| {
-                let pairs = grid.cell(k).len() * grid.block_len(k);
+                let cell = grid.cell(k);
+                let pairs = if any_line {
+                    let mut pairs = 0;
+                    grid.for_block(k, |other| {
+                        pairs += cell.len() * other.len() - same_line_pairs(cell, other, class);
+                    });
+                    pairs
+                } else {
+                    cell.len() * grid.block_len(k)
+                };
                 (pairs, pairs)
             })
             .reduce(|| (0, 0), |(s1, m1), (s2, m2)| (s1 + s2, m1.max(m2)));

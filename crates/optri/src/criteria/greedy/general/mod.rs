@@ -81,11 +81,11 @@ mod segment_index;
 
 use super::{keyed_by_length, rounded_squared_length, sort_keyed_runs};
 use crate::error::{Error, Result};
-use crate::kernel::{compare_lengths, Point};
+use crate::kernel::{compare_lengths, orient_sign, Point};
 use crate::parallel::prelude::*;
 use crate::spatial::{bounding_box, convex_hull_cycle, fmax, fmin, morton_order};
 use crate::timing::{Phase, Stopwatch};
-use guard::round_grid;
+use guard::{round_grid, NO_LINE};
 use partial::Partial;
 use segment_index::{PointsNear, Query, SegmentIndex};
 use std::cmp::Ordering;
@@ -158,6 +158,9 @@ fn shorter_than(p: Point, q: Point, t: f64) -> bool {
 /// symbolic perturbation depends on them: the renumbered copy is only used
 /// where an index never decides a tie.
 pub(super) fn greedy_general(original: &[Point], phases: &mut Vec<Phase>) -> Result<Vec<[u32; 3]>> {
+    if let Some(fan) = single_fan(original) {
+        return Ok(fan);
+    }
     let to_original = morton_order(original);
     let local: Vec<Point> = to_original.iter().map(|&v| original[v as usize]).collect();
     let renumbering = Renumbering {
@@ -168,6 +171,49 @@ pub(super) fn greedy_general(original: &[Point], phases: &mut Vec<Phase>) -> Res
         .into_iter()
         .map(|t| t.map(|v| to_original[v as usize]))
         .collect())
+}
+
+/// The triangles of a *fan* — all points but one on a line — whose only
+/// triangulation (hence GT) joins the apex to every point of the line and
+/// consecutive line points to each other; `None` for any other input.
+///
+/// Why a shortcut: the line points stay open until the apex reaches them,
+/// and every pair of them lies in the density guard's cells, so the length
+/// rounds would crawl (issue 15: 157 s at 10⁴ points). The test is exact
+/// (orientations and coordinate comparisons) and costs O(1) on most inputs:
+/// it stops at the second point off a line.
+fn single_fan(points: &[Point]) -> Option<Vec<[u32; 3]>> {
+    let n = points.len();
+    if n < 4 {
+        return None;
+    }
+    // The line holds n - 1 points, so two of the first three lie on it.
+    let apex = [(0, 1), (0, 2), (1, 2)].into_iter().find_map(|(i, j)| {
+        let (pi, pj) = (points[i], points[j]);
+        let mut off = (0..n).filter(|&z| orient_sign(pi, pj, points[z]) != 0);
+        let first = off.next()?;
+        off.next().is_none().then_some(first)
+    })?;
+    let mut line: Vec<u32> = (0..n as u32).filter(|&v| v as usize != apex).collect();
+    // On a line, lexicographic order is the order along it.
+    line.sort_unstable_by(|&a, &b| {
+        let (p, q) = (points[a as usize], points[b as usize]);
+        p[0].total_cmp(&q[0]).then(p[1].total_cmp(&q[1]))
+    });
+    let pa = points[apex];
+    let ccw = orient_sign(pa, points[line[0] as usize], points[line[1] as usize]) > 0;
+    let apex = apex as u32;
+    Some(
+        line.windows(2)
+            .map(|w| {
+                if ccw {
+                    [apex, w[0], w[1]]
+                } else {
+                    [apex, w[1], w[0]]
+                }
+            })
+            .collect(),
+    )
 }
 
 /// Local (memory-friendly) numbering versus the caller's, which decides ties.
@@ -220,7 +266,13 @@ fn greedy_rounds(
         } else {
             THRESHOLD_GROWTH * lower
         };
-        let (threshold, grid) = round_grid(points, bbox, &open, lower, proposed);
+        let gaps: Vec<Option<Vec<[u32; 2]>>> = if round == 0 {
+            vec![None; n]
+        } else {
+            open.par_iter().map(|&v| g.open_gaps(v)).collect()
+        };
+        let class = line_classes(points, &open, &gaps);
+        let (threshold, grid) = round_grid(points, bbox, &open, &class, lower, proposed);
         // Once every pair is shorter than the threshold, take all the rest.
         let last = threshold > LAST_ROUND_MARGIN * diagonal;
         // The point grid answers "a point on this segment?"; a query costs
@@ -237,11 +289,6 @@ fn greedy_rounds(
             near = Some(PointsNear::new(points, bbox, cell));
         }
         let near = near.as_ref().expect("just built");
-        let gaps: Vec<Option<Vec<[u32; 2]>>> = if round == 0 {
-            vec![None; n]
-        } else {
-            open.par_iter().map(|&v| g.open_gaps(v)).collect()
-        };
         // Pairs `open[i], open[j]` in the length range that may leave both
         // endpoints.
         let keep = |i: usize, j: usize| {
@@ -262,8 +309,18 @@ fn greedy_rounds(
                     // Cells a little wider than the threshold: close pairs
                     // sit in neighbouring cells (all cells, in the last round).
                     let reach = if last { diagonal } else { threshold };
+                    let c = class[i];
                     grid.any_cell_near(pv, pv, reach, |cell| {
-                        for &j in cell {
+                        // Cells are sorted by class; skip `v`'s own line.
+                        let (lo, hi) = if c == NO_LINE {
+                            (cell.len(), cell.len())
+                        } else {
+                            (
+                                cell.partition_point(|&j| class[j as usize] < c),
+                                cell.partition_point(|&j| class[j as usize] <= c),
+                            )
+                        };
+                        for &j in cell[..lo].iter().chain(&cell[hi..]) {
                             if open[j as usize] > v && keep(i, j as usize) {
                                 out.push([v, open[j as usize]]);
                             }
@@ -311,6 +368,84 @@ fn greedy_rounds(
     let triangles = g.triangles();
     stopwatch.lap("triangles");
     Ok(triangles)
+}
+
+/// Line classes of the open vertices (indices into `open`), for the guard
+/// and the candidate listing: a vertex `v` whose open gaps are all straight
+/// angles (each bounded by two neighbours collinear with `v`, so all of them
+/// lie on one line `L` through `v`) can only be left strictly off `L`, so no
+/// candidate joins it to another point of `L`. Chains of such vertices along
+/// one line (each the other's gap neighbour) share a class, the smallest
+/// open index in the chain; any other vertex gets [`NO_LINE`]. Pairs within
+/// a class are skipped unlisted: a run of collinear points waiting for a
+/// far apex would otherwise fill the guard's cells with hopeless pairs and
+/// hold the threshold down for thousands of rounds (issue 15: a run of 1000
+/// points with two apexes took 8.8 s). Only the running time depends on the
+/// classes: the skipped pairs fail `leaves_through` anyway.
+fn line_classes(points: &[Point], open: &[u32], gaps: &[Option<Vec<[u32; 2]>>]) -> Vec<u32> {
+    let p = |v: u32| points[v as usize];
+    // A gap neighbour of each straight-angle vertex (`NO_LINE` if none).
+    let line_neighbour: Vec<u32> = open
+        .par_iter()
+        .zip(gaps)
+        .map(|(&v, gaps)| match gaps {
+            Some(list)
+                if !list.is_empty()
+                    && list
+                        .iter()
+                        .all(|&[u, w]| orient_sign(p(v), p(u), p(w)) == 0) =>
+            {
+                list[0][0]
+            }
+            _ => NO_LINE,
+        })
+        .collect();
+    if line_neighbour.iter().all(|&u| u == NO_LINE) {
+        return line_neighbour;
+    }
+    let mut index = vec![NO_LINE; points.len()];
+    for (i, &v) in open.iter().enumerate() {
+        index[v as usize] = i as u32;
+    }
+    // Union-find over open indices: `v` joins the gap neighbours of its own
+    // gaps that are straight-angle vertices of the same line.
+    let mut parent: Vec<u32> = (0..open.len() as u32).collect();
+    fn root(parent: &mut [u32], mut x: u32) -> u32 {
+        while parent[x as usize] != x {
+            let up = parent[parent[x as usize] as usize];
+            parent[x as usize] = up;
+            x = up;
+        }
+        x
+    }
+    for (i, &v) in open.iter().enumerate() {
+        if line_neighbour[i] == NO_LINE {
+            continue;
+        }
+        for &[u, w] in gaps[i].as_deref().unwrap_or_default() {
+            for x in [u, w] {
+                let j = index[x as usize];
+                // `x` is on `v`'s line; it shares the line if its own line
+                // passes through `v`.
+                if j != NO_LINE
+                    && line_neighbour[j as usize] != NO_LINE
+                    && orient_sign(p(x), p(line_neighbour[j as usize]), p(v)) == 0
+                {
+                    let (a, b) = (root(&mut parent, i as u32), root(&mut parent, j));
+                    parent[a.max(b) as usize] = a.min(b);
+                }
+            }
+        }
+    }
+    (0..open.len())
+        .map(|i| {
+            if line_neighbour[i] == NO_LINE {
+                NO_LINE
+            } else {
+                root(&mut parent, i as u32)
+            }
+        })
+        .collect()
 }
 
 /// Pass 1 of [`decide_round`] on a chunk of candidates: the blocked ranks
