@@ -465,8 +465,8 @@ pub(crate) fn lmt_skeleton(
     let mut left_len = vec![0u32; m];
     let mut tri_offsets = vec![0u32; m + 1];
     for (corners, ids) in &triangles {
-        for s in 0..3 {
-            let e = ids[s] as usize;
+        for (s, &e) in ids.iter().enumerate() {
+            let e = e as usize;
             tri_offsets[e + 1] += 1;
             left_len[e] += side_of(corners, s) as u32;
         }
@@ -479,8 +479,8 @@ pub(crate) fn lmt_skeleton(
         .map(|e| (tri_offsets[e], tri_offsets[e] + left_len[e]))
         .unzip();
     for (t, (corners, ids)) in triangles.iter().enumerate() {
-        for s in 0..3 {
-            let e = ids[s] as usize;
+        for (s, &e) in ids.iter().enumerate() {
+            let e = e as usize;
             // The triangle is on the left of corners[s] → corners[s + 1].
             let slot = if side_of(corners, s) {
                 &mut next_left[e]
