@@ -8,13 +8,17 @@
 //!    empty of points. The exact test uses the slightly smaller dyadic angle
 //!    of [`angle_below_diamond`], so it removes only edges the theorem
 //!    removes. Candidates come from each point's neighbourhood in a grid,
-//!    searched in doubling rings until every direction is *dead*: a point `r`
+//!    searched in rings (radius ×√2) until every direction is *dead*: a point `r`
 //!    at distance `d` and angle `θ` from `p` lies strictly inside the left
-//!    triangle of every `pq` whose direction `φ` satisfies `0 < θ − φ < π/4.6`
-//!    once `|pq| > 2cos(π/4.6)·d ≈ 1.551d` (the base angle at `q` is then
-//!    below `π/4.6`; `cos δ + sin δ·cot α` grows on `0 < δ < α` to `2cos α`),
-//!    and symmetrically for the right triangle; directions whose ray leaves
-//!    the bounding box are dead too. The search uses `1.6d` and angular
+//!    triangle (base angle `α'`, the exact test's) of every `pq` whose
+//!    direction `φ` satisfies `0 < θ − φ < α'` once `|pq| > 2cos(α')·d ≈
+//!    1.5515d` (the base angle at `q` is then below `α'`; `cos δ + sin δ·cot α`
+//!    grows on `0 < δ < α` to `2cos α`), and symmetrically for the right
+//!    triangle; directions whose ray leaves the bounding box are dead too.
+//!    A dead direction fails the exact test, so the candidates do not depend
+//!    on the rings' schedule. The exact test scans the disk around the
+//!    midpoint (both triangles lie in it) and first drops the points
+//!    [`certainly_outside_diamonds`] rejects (a certified `f64` filter). The search uses `1.6d` and angular
 //!    margins of 10⁻⁹ rad, far above the rounding of `atan2` on `f64`
 //!    differences (a few 10⁻¹⁶ rad), so the stop is conservative; it only
 //!    chooses which pairs get the exact test. Parallel over points.
@@ -43,8 +47,11 @@ use crate::spatial::{bounding_box, convex_hull_cycle, SparseGrid};
 use std::cmp::Ordering;
 use std::f64::consts::PI;
 
-/// The base angle of the diamond property, π/4.6 (for the search's stop only).
-const DIAMOND_ANGLE: f64 = PI / 4.6;
+/// The angle of the exact test, `α' = arctan(833/1024)` (just below π/4.6),
+/// for the search's stop: a killer is a point the exact test itself finds
+/// inside (`2cos α' ≈ 1.5515 < 1.6`), so the candidates are exactly the pairs
+/// that pass the exact test, whatever the rings' schedule.
+const DIAMOND_ANGLE: f64 = 0.682_904_509_093_552_3;
 /// Angular safety margin of the search's stop, radians.
 const ANGLE_MARGIN: f64 = 1e-9;
 /// Distance factor of the stop: 1.6 > 2cos(π/4.6) ≈ 1.551.
