@@ -34,12 +34,39 @@ pub fn area_by_polygon_program(points: &crate::PointSet, maxmin: bool) -> Vec<[u
 pub fn min_weight_pipeline(
     points: &crate::PointSet,
 ) -> crate::Result<(crate::Triangulation, bool, crate::Diagnostics, f64)> {
+    min_weight_pipeline_with_budget(points, crate::criteria::min_weight::FRONT_BUDGET)
+}
+
+/// [`min_weight_pipeline`] with the exact search on faces with holes
+/// limited to `budget` memoised fronts per face (a tiny budget leaves such
+/// faces unsolved: the result is then not exact, its bound certified).
+pub fn min_weight_pipeline_with_budget(
+    points: &crate::PointSet,
+    budget: usize,
+) -> crate::Result<(crate::Triangulation, bool, crate::Diagnostics, f64)> {
     let mut phases = Vec::new();
-    let g = crate::criteria::min_weight::general_min_weight(points, &mut phases)?;
+    let g = crate::criteria::min_weight::general_min_weight(points, &mut phases, budget)?;
     Ok((
         g.solved.triangulation,
         g.solved.optimality.is_exact(),
         g.solved.diagnostics,
         g.lower_bound,
+    ))
+}
+
+/// The registry's [`Solution`](crate::Solution) of the general min-weight
+/// pipeline with the exact search limited to `budget` fronts per face (for
+/// the JSON document of a result that is not proven optimal).
+pub fn min_weight_solution_with_budget(
+    points: &crate::PointSet,
+    budget: usize,
+) -> crate::Result<crate::Solution> {
+    let mut phases = Vec::new();
+    let g = crate::criteria::min_weight::general_min_weight(points, &mut phases, budget)?;
+    Ok(crate::Solution::from_solved(
+        crate::Criterion::MinWeight,
+        g.solved,
+        phases,
+        &crate::Options::default(),
     ))
 }

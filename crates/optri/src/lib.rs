@@ -58,7 +58,8 @@ pub use criteria::min_weight::min_weight;
 pub use criteria::minmax_length::minmax_length;
 pub use criteria::polygon_criteria::MAX_POLYGON_VERTICES;
 pub use criteria::{
-    CertifiedBound, CriterionInfo, Diagnostics, Optimality, Options, Progress, Requirement,
+    BoundMeasure, CertifiedBound, CriterionInfo, Diagnostics, Optimality, Options, Progress,
+    Requirement,
 };
 pub use error::{Error, PolygonProblem, Result, UnsupportedReason};
 pub use graphs::{

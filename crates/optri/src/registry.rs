@@ -169,7 +169,7 @@ pub fn triangulate_with(
     options.report(criterion.name(), 0.0);
     let solved = (criterion.entry().1)(points, options, &mut phases)?;
     options.report(criterion.name(), 1.0);
-    Ok(Solution::new(criterion, solved, phases, options))
+    Ok(Solution::from_solved(criterion, solved, phases, options))
 }
 
 /// Triangulates the interior of `polygon` by `criterion` with default
@@ -218,7 +218,7 @@ pub fn triangulate_polygon_with(
     options.report(criterion.name(), 0.0);
     let solved = solve(polygon, options, &mut phases)?;
     options.report(criterion.name(), 1.0);
-    Ok(Solution::new(criterion, solved, phases, options))
+    Ok(Solution::from_solved(criterion, solved, phases, options))
 }
 
 /// The result of one criterion in [`compare`]: its solution, or the error
@@ -275,7 +275,7 @@ fn chosen(criteria: &[Criterion]) -> &[Criterion] {
 }
 
 impl Solution {
-    fn new(
+    pub(crate) fn from_solved(
         criterion: Criterion,
         solved: Solved,
         phases: Vec<crate::timing::Phase>,

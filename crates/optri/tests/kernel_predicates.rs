@@ -20,6 +20,7 @@ const SEED_ORIENTATION_AT_LIMITS: u64 = 201;
 const SEED_LENGTHS_AT_LIMITS: u64 = 142;
 const SEED_LUNES_AT_LIMITS: u64 = 2142;
 const SEED_HUGE_AND_TINY_MIXED: u64 = 343;
+const SEED_DIAMOND_FILTER: u64 = 46;
 
 fn next_up_or_down(v: f64, rng: &mut StdRng) -> f64 {
     let k: i64 = rng.gen_range(-2..=2);
@@ -873,4 +874,79 @@ fn area_comparison_at_the_coordinate_limits_is_scale_invariant() {
         }
     }
     assert!(equal > 1000 && unequal > 1000, "{equal} {unequal}");
+}
+
+/// The diamond filter's quick rejection never rejects a point the exact
+/// predicates put inside a diamond triangle (both base angles strictly below
+/// the diamond angle), on points on and within a few ulps of the triangles'
+/// sides, at large offsets and at huge and tiny scales; and it does reject
+/// the points well outside (it is not vacuous).
+#[test]
+fn certainly_outside_diamonds_never_rejects_an_inside_point() {
+    use optri::kernel::{angle_below_diamond, certainly_outside_diamonds};
+    let mut rng = StdRng::seed_from_u64(SEED_DIAMOND_FILTER);
+    let tan = 833.0 / 1024.0;
+    let (mut inside, mut rejected, mut far) = (0usize, 0usize, 0usize);
+    for round in 0..20_000 {
+        let scale = [1.0, 2f64.powi(-100), 2f64.powi(150), 1.0][round % 4];
+        let offset = if round % 4 == 3 { 1e9 } else { 0.0 };
+        let a = [
+            offset + scale * rng.gen_range(-1.0..1.0),
+            offset + scale * rng.gen_range(-1.0..1.0),
+        ];
+        let b = [
+            offset + scale * rng.gen_range(-1.0..1.0),
+            offset + scale * rng.gen_range(-1.0..1.0),
+        ];
+        if a == b {
+            continue;
+        }
+        let (wx, wy) = (b[0] - a[0], b[1] - a[1]);
+        let side = if rng.gen_bool(0.5) { 1.0 } else { -1.0 };
+        let apex = [
+            a[0] + 0.5 * wx - side * 0.5 * tan * wy,
+            a[1] + 0.5 * wy + side * 0.5 * tan * wx,
+        ];
+        // A point on a side of the triangle (or a little beyond), nudged by
+        // a few ulps or a tiny relative amount.
+        let t: f64 = rng.gen_range(-0.05..1.05);
+        let (p, q) = match rng.gen_range(0..3) {
+            0 => (a, apex),
+            1 => (apex, b),
+            _ => (a, b),
+        };
+        let mut c = [p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1])];
+        if rng.gen_bool(0.5) {
+            c = [
+                next_up_or_down(c[0], &mut rng),
+                next_up_or_down(c[1], &mut rng),
+            ];
+        } else {
+            let e = scale * 1e-11 * rng.gen_range(-1.0..1.0);
+            c = [c[0] + e, c[1] - e];
+        }
+        let exactly_inside = angle_below_diamond(a, b, c) && angle_below_diamond(b, a, c);
+        if exactly_inside {
+            inside += 1;
+            assert!(
+                !certainly_outside_diamonds(a, b, c),
+                "rejected an inside point: a {a:?}, b {b:?}, c {c:?}"
+            );
+        }
+        if certainly_outside_diamonds(a, b, c) {
+            rejected += 1;
+        }
+        // Far from both triangles: beyond the apex's height.
+        let d = [
+            a[0] + 0.5 * wx - side * 0.6 * wy,
+            a[1] + 0.5 * wy + side * 0.6 * wx,
+        ];
+        far += certainly_outside_diamonds(a, b, d) as usize;
+    }
+    assert!(inside > 3000, "too few inside points: {inside}");
+    assert!(
+        rejected > 1000,
+        "the filter rejected only {rejected} points near the sides"
+    );
+    assert!(far > 19_000, "the filter rejected only {far} far points");
 }

@@ -340,3 +340,70 @@ fn odd_wheels_beyond_the_skeleton_equal_an_independent_reference() {
         "the exact search ran on {searched} faces only"
     );
 }
+
+/// A face the exact search cannot finish within its budget is reported
+/// honestly: not exact, the lightest of the assembled, Delaunay and greedy
+/// triangulations, and a certified lower bound on the optimum — at most the
+/// independent reference's optimal weight, at most the result's weight —
+/// which the JSON document carries with the gap.
+#[test]
+fn unsolved_faces_report_a_certified_lower_bound() {
+    use optri::internals::{min_weight_pipeline_with_budget, min_weight_solution_with_budget};
+    let mut cases = 0;
+    for k in [13, 15, 17, 19, 21] {
+        for (r, centre) in [(1000.0, [0.0, 0.0]), (1000.0, [3.0, -7.0])] {
+            let mut pts = wheel(k, r, false);
+            pts.push(centre);
+            let ps = PointSet::new(&pts).unwrap();
+            let optimum = wheel_reference(&pts);
+            let (t, exact, d, lower) = min_weight_pipeline_with_budget(&ps, 1).unwrap();
+            if d.get("faces by exact search").unwrap_or(0) + d.get("faces unsolved").unwrap_or(0)
+                == 0
+            {
+                continue; // the skeleton solved this wheel without a search
+            }
+            t.validate().unwrap();
+            let w = weight(&ps, &t);
+            assert!(!exact, "wheel {k}: exact with a budget of one front");
+            assert_eq!(d.get("faces unsolved"), Some(1), "wheel {k}: {d:?}");
+            assert!(
+                lower <= optimum * (1.0 - TOLERANCE),
+                "wheel {k}: lower bound {lower} not below the optimum {optimum}"
+            );
+            assert!(
+                w >= optimum * (1.0 - TOLERANCE),
+                "wheel {k}: weight {w} below the optimum {optimum}"
+            );
+            // Not vacuous: at least the hull, the shortest possible spokes.
+            let hull: f64 = (0..k)
+                .map(|i| {
+                    let (a, b) = (pts[i], pts[(i + 1) % k]);
+                    (a[0] - b[0]).hypot(a[1] - b[1])
+                })
+                .sum();
+            assert!(
+                lower >= hull,
+                "wheel {k}: bound {lower} below the hull {hull}"
+            );
+            // The default budget solves it exactly, to the reference.
+            let (full, exact_full, _, _) = min_weight_pipeline(&ps).unwrap();
+            assert!(exact_full && close(weight(&ps, &full), optimum));
+            // The document: not exact, a lower bound on the weight, the gap.
+            let s = min_weight_solution_with_budget(&ps, 1).unwrap();
+            assert!(!s.exact);
+            let bound = s.bound.clone().expect("a bound for an unsolved face");
+            assert_eq!(bound.measure, optri::BoundMeasure::TotalLength);
+            assert!(!bound.upper && bound.triangle.is_none());
+            let doc = optri::io::TriangulationReport::of_solution(&s).to_json();
+            assert_eq!(doc["exact"], false);
+            assert_eq!(doc["bound"]["kind"], "lower");
+            assert_eq!(doc["bound"]["measure"], "total edge length");
+            assert_eq!(doc["bound"]["weight"].as_f64(), Some(bound.value));
+            let gap = doc["bound"]["gap"].as_f64().unwrap();
+            assert!(gap >= 0.0 && (w - bound.value - gap).abs() <= 1e-9 * w);
+            assert!(doc["bound"].get("area").is_none());
+            cases += 1;
+        }
+    }
+    assert!(cases >= 6, "only {cases} wheels left a face to the search");
+}

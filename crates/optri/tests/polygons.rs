@@ -598,7 +598,10 @@ fn area_criteria_on_general_point_sets_are_honest() {
                 exact += 1;
             }
             let bound = s.bound.clone().expect("general sets report a bound");
-            let b = optri_oracle::enumerate::min_twice_area(ps.input_points(), &[bound.triangle]);
+            let b = optri_oracle::enumerate::min_twice_area(
+                ps.input_points(),
+                &[bound.triangle.expect("an area bound names its triangle")],
+            );
             if c == Criterion::MaxminArea {
                 assert!(bound.upper && best <= b, "{pts:?}: the upper bound fails");
             } else {

@@ -191,17 +191,31 @@ impl Diagnostics {
 }
 
 /// A certified bound on the optimal value of a criterion whose result is
-/// not proven optimal: the optimum is no better than `triangle`'s measure.
+/// not proven optimal: the optimum is no better than `value` — a
+/// triangle's area (area criteria) or a total edge length (min-weight).
 #[derive(Clone, Debug, PartialEq)]
 #[non_exhaustive]
 pub struct CertifiedBound {
-    /// The triangle (input indices) whose measure is the bound.
-    pub triangle: [u32; 3],
-    /// Its measure, rounded for reporting (e.g. an area); decided exactly.
+    /// What `value` measures.
+    pub measure: BoundMeasure,
+    /// Area bounds: the triangle (input indices) whose area is the bound.
+    pub triangle: Option<[u32; 3]>,
+    /// The bound, rounded for reporting in the safe direction where it is
+    /// a sum (a lower bound rounded down); decided exactly.
     pub value: f64,
     /// `true`: no triangulation does better than `value` from above (a
     /// MaxMin criterion's optimum is at most `value`); `false`: from below.
     pub upper: bool,
+}
+
+/// What a [`CertifiedBound`]'s value measures.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum BoundMeasure {
+    /// A triangle's area (MaxMin / MinMax area).
+    Area,
+    /// A total edge length (min-weight: the optimal weight is at least it).
+    TotalLength,
 }
 
 /// What a criterion's `solve` returns to the registry.

@@ -137,7 +137,7 @@ impl<'a> TriangulationReport<'a> {
     pub fn bound_value(&self) -> Option<f64> {
         self.solution
             .and_then(|s| s.bound.as_ref())
-            .map(|b| self.bound_area(b.value))
+            .map(|b| self.bound_in_user_units(b))
     }
 
     /// Under a non-Euclidean metric ([`Solution::metric`]): the longest edge
@@ -152,11 +152,13 @@ impl<'a> TriangulationReport<'a> {
         })
     }
 
-    /// A certified bound's area, in the user's units.
-    fn bound_area(&self, area: f64) -> f64 {
-        match self.input.and_then(|i| i.user) {
-            Some((_, k)) => unscale(unscale(area, k), k),
-            None => area,
+    /// A certified bound's value, in the user's units (an area scales by
+    /// `10^-2k`, a length by `10^-k`).
+    fn bound_in_user_units(&self, b: &crate::CertifiedBound) -> f64 {
+        match (self.input.and_then(|i| i.user), b.measure) {
+            (Some((_, k)), crate::BoundMeasure::Area) => unscale(unscale(b.value, k), k),
+            (Some((_, k)), _) => unscale(b.value, k),
+            (None, _) => b.value,
         }
     }
 
@@ -193,10 +195,19 @@ impl Serialize for TriangulationReport<'_> {
             exact: run.map(|s| s.exact),
             optimality: optimality.map(Optimality::name),
             optimality_bound: optimality.and_then(bound),
-            bound: run.and_then(|s| s.bound.as_ref()).map(|b| BoundDocument {
-                kind: if b.upper { "upper" } else { "lower" },
-                triangle: b.triangle,
-                area: self.bound_area(b.value),
+            bound: run.and_then(|s| s.bound.as_ref()).map(|b| {
+                let value = self.bound_in_user_units(b);
+                let area = b.measure == crate::BoundMeasure::Area;
+                BoundDocument {
+                    kind: if b.upper { "upper" } else { "lower" },
+                    measure: if area { "area" } else { "total edge length" },
+                    triangle: b.triangle,
+                    area: area.then_some(value),
+                    weight: (!area).then_some(value),
+                    // The result's weight minus the bound: how far from
+                    // optimal the result can be (rounded).
+                    gap: (!area).then(|| self.stats().total_edge_length - value),
+                }
             }),
             algorithm: run.map(|s| s.algorithm.as_str()),
             algorithm_detail: run.map(|s| s.algorithm_detail.as_str()),
@@ -225,12 +236,21 @@ impl Serialize for TriangulationReport<'_> {
 }
 
 /// A certified bound on the optimum (`Solution::bound`): the optimum's
-/// measure is at most (`"upper"`) or at least (`"lower"`) `triangle`'s area.
+/// measure is at most (`"upper"`) or at least (`"lower"`) `triangle`'s
+/// `area` (area criteria), or at least `weight` (min-weight; `gap` is the
+/// result's total edge length minus `weight`).
 #[derive(serde::Serialize)]
 struct BoundDocument {
     kind: &'static str,
-    triangle: [u32; 3],
-    area: f64,
+    measure: &'static str,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    triangle: Option<[u32; 3]>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    area: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    weight: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    gap: Option<f64>,
 }
 
 /// Lengths under a non-Euclidean metric (`Solution::metric`); `stats` stays

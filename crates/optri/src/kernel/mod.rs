@@ -59,9 +59,9 @@ pub use length_sums::{compare_length_sums, compare_length_sums_exactly, LengthIn
 pub use lune::{in_half_lune, in_half_lune_symbolic, in_lune, in_lune_symbolic};
 pub use norm::{side_of_direction, Metric, MetricProblem, MAX_LP_EXPONENT};
 pub use predicates::{
-    angle_at_least_30_degrees, angle_below_diamond, compare_angles, compare_areas,
-    compare_corner_angles, compare_doubled_area, compare_lengths, cross_sign, dot_sign,
-    incircle_sign, on_open_segment, orient_sign, properly_cross, segments_intersect,
+    angle_at_least_30_degrees, angle_below_diamond, certainly_outside_diamonds, compare_angles,
+    compare_areas, compare_corner_angles, compare_doubled_area, compare_lengths, cross_sign,
+    dot_sign, incircle_sign, on_open_segment, orient_sign, properly_cross, segments_intersect,
 };
 pub use symbolic::{compare_lengths_symbolic, height_sign, orient_symbolic, segment_order};
 

@@ -289,6 +289,35 @@ pub fn angle_below_diamond(o: Point, a: Point, b: Point) -> bool {
     e.sign() > 0
 }
 
+/// Filter, never wrong when it answers `true`: does `c` certainly lie
+/// outside both closed diamond triangles on `ab` (the isosceles triangles
+/// with base `ab` and base angle `α' = arctan(833/1024)` of
+/// [`angle_below_diamond`])? `false` means "maybe inside": decide with the
+/// exact predicates.
+///
+/// With `w = b − a`, `v = c − a`, `D = w·v`, `C = w×v`, `L = w·w`: a point of
+/// either closed triangle has `|C| ≤ tan α'·D` (angle at `a`) and
+/// `|C| ≤ tan α'·(L − D)` (angle at `b`, as `(a−b)·(c−b) = L − D`). In
+/// floating point each of `D`, `C`, `L` is off by at most `γ₄` (< `5u`)
+/// times `s = (|wₓ|+|w_y|)(|vₓ|+|v_y|) + (|wₓ|+|w_y|)²`, and forming
+/// `0.814·min(D, L − D)` adds a few `u·s` more; the tolerance `10⁻¹⁰·s` is
+/// far above that, so `|C| > 0.814·min(D, L − D) + 10⁻¹⁰·s` (with
+/// `0.814 > 833/1024`) proves `c` outside. Near underflow or overflow the
+/// filter abstains.
+#[inline]
+pub fn certainly_outside_diamonds(a: Point, b: Point, c: Point) -> bool {
+    let (wx, wy, vx, vy) = (b[0] - a[0], b[1] - a[1], c[0] - a[0], c[1] - a[1]);
+    let dot = wx * vx + wy * vy;
+    let cross = wx * vy - wy * vx;
+    let l2 = wx * wx + wy * wy;
+    let w1 = wx.abs() + wy.abs();
+    let s = w1 * (vx.abs() + vy.abs()) + w1 * w1;
+    if !(s > 1e-280 && s < 1e280) {
+        return false;
+    }
+    cross.abs() > 0.814 * dot.min(l2 - dot) + 1e-10 * s
+}
+
 /// Exact comparison of two angles in `[0°, 180°]`: the angle at `p[0]`
 /// between the rays to `p[1]` and `p[2]` versus the angle at `q[0]` between
 /// the rays to `q[1]` and `q[2]`. The rays' points must differ from their

@@ -36,7 +36,10 @@ pub(crate) mod polygon;
 pub use decision::{maxmin_area_at_least, MaxMinAreaDecision};
 
 use super::polygon_criteria::{check_size, corner_point, polygon_program, MAX_POLYGON_VERTICES};
-use super::{CertifiedBound, CriterionInfo, Diagnostics, Optimality, Options, Requirement, Solved};
+use super::{
+    BoundMeasure, CertifiedBound, CriterionInfo, Diagnostics, Optimality, Options, Requirement,
+    Solved,
+};
 use crate::error::{Error, Result, UnsupportedReason};
 use crate::kernel::metrics::area;
 use crate::spatial::{convex_hull_cycle, is_strictly_convex_cycle};
@@ -265,7 +268,8 @@ fn solve_general(
     let triangulation = Triangulation::from_distinct(points, result.triangles);
     let pts = points.points();
     let bound = result.bound.map(|t| CertifiedBound {
-        triangle: t.map(|d| points.input_index(d)),
+        measure: BoundMeasure::Area,
+        triangle: Some(t.map(|d| points.input_index(d))),
         value: area(pts[t[0] as usize], pts[t[1] as usize], pts[t[2] as usize]),
         upper: kind == AreaBottleneck::MaxMin,
     });

@@ -27,7 +27,8 @@ use spade::{ConstrainedDelaunayTriangulation, HasPosition, Point2, Triangulation
 use std::cmp::Ordering;
 use std::collections::{BTreeSet, HashMap, HashSet};
 
-/// Largest number of fronts the exact search memoises per region.
+/// Largest number of fronts the exact search memoises per region (by
+/// default).
 pub(crate) const FRONT_BUDGET: usize = 400_000;
 
 struct Vertex {
@@ -73,15 +74,17 @@ struct Region {
     cdt_triangles: Vec<[u32; 3]>,
 }
 
-/// The regions of the skeleton, solved (in parallel).
+/// The regions of the skeleton, solved (in parallel); the exact search
+/// memoises at most `budget` fronts per region.
 pub(crate) fn solve_regions(
     pts: &[Point],
     sk: &Skeleton,
+    budget: usize,
 ) -> crate::error::Result<Vec<RegionResult>> {
     let regions = regions(pts, sk)?;
     Ok(regions
         .into_par_iter()
-        .map(|r| solve_region(pts, sk, r))
+        .map(|r| solve_region(pts, sk, r, budget))
         .collect())
 }
 
@@ -259,7 +262,7 @@ impl Corner {
     }
 }
 
-fn solve_region(pts: &[Point], sk: &Skeleton, region: Region) -> RegionResult {
+fn solve_region(pts: &[Point], sk: &Skeleton, region: Region, budget: usize) -> RegionResult {
     let corners: usize = region.cycles.iter().map(Vec::len).sum();
     let mut result = RegionResult {
         triangles: Vec::new(),
@@ -296,7 +299,7 @@ fn solve_region(pts: &[Point], sk: &Skeleton, region: Region) -> RegionResult {
             return result;
         }
     } else {
-        let (solved, fronts) = search(pts, sk, &region, &corners_at, &inner);
+        let (solved, fronts) = search(pts, sk, &region, &corners_at, &inner, budget);
         result.fronts = fronts;
         if let Some(t) = solved {
             result.triangles = t;
@@ -423,6 +426,7 @@ fn search(
     region: &Region,
     corners_at: &HashMap<u32, Vec<Corner>>,
     inner: &HashSet<u32>,
+    budget: usize,
 ) -> (Option<Vec<[u32; 3]>>, usize) {
     let vertices: HashSet<u32> = region
         .cycles
@@ -475,6 +479,7 @@ fn search(
         blocked: HashMap::new(),
         memo: HashMap::new(),
         over_budget: false,
+        budget,
     };
     let mut boundary_edges = BTreeSet::new();
     for cycle in &region.cycles {
@@ -552,6 +557,7 @@ struct SearchState<'a> {
     blocked: HashMap<u32, u32>,
     memo: HashMap<Vec<(u32, u32)>, Option<Best>>,
     over_budget: bool,
+    budget: usize,
 }
 
 impl SearchState<'_> {
@@ -616,7 +622,7 @@ impl SearchState<'_> {
         if let Some(known) = self.memo.get(&key) {
             return known.clone();
         }
-        if self.memo.len() >= FRONT_BUDGET {
+        if self.memo.len() >= self.budget {
             self.over_budget = true;
             return None;
         }

@@ -27,9 +27,13 @@
 //! triangle in the search's order wins, so the result is deterministic.
 
 mod faces;
+pub(crate) use faces::FRONT_BUDGET;
 mod skeleton;
 
-use super::{CriterionInfo, Diagnostics, Optimality, Options, Requirement, Solved};
+use super::{
+    BoundMeasure, CertifiedBound, CriterionInfo, Diagnostics, Optimality, Options, Requirement,
+    Solved,
+};
 use crate::error::{Error, Result};
 use crate::kernel::{compare_length_sums, orient_sign, LengthInterval, Point};
 use crate::polygon_program::{optimal_triangulation, Objective};
@@ -66,7 +70,7 @@ pub(crate) fn solve(points: &PointSet, _: &Options, phases: &mut Vec<Phase>) -> 
             bound: None,
         });
     }
-    let general = general_min_weight(points, phases)?;
+    let general = general_min_weight(points, phases, FRONT_BUDGET)?;
     Ok(general.solved)
 }
 
@@ -182,7 +186,13 @@ fn compare_weights(pts: &[Point], a: &[[u32; 3]], b: &[[u32; 3]]) -> Ordering {
     compare_length_sums(&only_a, &only_b)
 }
 
-pub(crate) fn general_min_weight(points: &PointSet, phases: &mut Vec<Phase>) -> Result<General> {
+/// The general pipeline; the exact search on faces with holes memoises at
+/// most `budget` fronts per face ([`faces::FRONT_BUDGET`] by default).
+pub(crate) fn general_min_weight(
+    points: &PointSet,
+    phases: &mut Vec<Phase>,
+    budget: usize,
+) -> Result<General> {
     let pts = points.points();
     // PointSet guarantees three distinct points not on one line.
     let mut watch = Stopwatch::new(phases);
@@ -201,7 +211,7 @@ pub(crate) fn general_min_weight(points: &PointSet, phases: &mut Vec<Phase>) -> 
     diagnostics.add("skeleton candidates left", alive as u64);
     diagnostics.add("certain edges", certain as u64);
     watch.lap("lmt skeleton");
-    let regions = faces::solve_regions(pts, &sk)?;
+    let regions = faces::solve_regions(pts, &sk, budget)?;
     watch.lap("faces and programs");
     let mut triangles: Vec<[u32; 3]> = Vec::with_capacity(2 * n);
     let mut exact = true;
@@ -320,7 +330,14 @@ pub(crate) fn general_min_weight(points: &PointSet, phases: &mut Vec<Phase>) -> 
                 }
             },
             diagnostics,
-            bound: None,
+            // Not proven optimal: the certified lower bound on the optimal
+            // weight, so the gap to the result's weight is known.
+            bound: (!exact).then_some(CertifiedBound {
+                measure: BoundMeasure::TotalLength,
+                triangle: None,
+                value: lower_bound,
+                upper: false,
+            }),
         },
         lower_bound,
     })

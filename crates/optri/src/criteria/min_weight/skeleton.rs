@@ -8,13 +8,17 @@
 //!    empty of points. The exact test uses the slightly smaller dyadic angle
 //!    of [`angle_below_diamond`], so it removes only edges the theorem
 //!    removes. Candidates come from each point's neighbourhood in a grid,
-//!    searched in doubling rings until every direction is *dead*: a point `r`
+//!    searched in rings (radius ×√2) until every direction is *dead*: a point `r`
 //!    at distance `d` and angle `θ` from `p` lies strictly inside the left
-//!    triangle of every `pq` whose direction `φ` satisfies `0 < θ − φ < π/4.6`
-//!    once `|pq| > 2cos(π/4.6)·d ≈ 1.551d` (the base angle at `q` is then
-//!    below `π/4.6`; `cos δ + sin δ·cot α` grows on `0 < δ < α` to `2cos α`),
-//!    and symmetrically for the right triangle; directions whose ray leaves
-//!    the bounding box are dead too. The search uses `1.6d` and angular
+//!    triangle (base angle `α'`, the exact test's) of every `pq` whose
+//!    direction `φ` satisfies `0 < θ − φ < α'` once `|pq| > 2cos(α')·d ≈
+//!    1.5515d` (the base angle at `q` is then below `α'`; `cos δ + sin δ·cot α`
+//!    grows on `0 < δ < α` to `2cos α`), and symmetrically for the right
+//!    triangle; directions whose ray leaves the bounding box are dead too.
+//!    A dead direction fails the exact test, so the candidates do not depend
+//!    on the rings' schedule. The exact test scans the disk around the
+//!    midpoint (both triangles lie in it) and first drops the points
+//!    [`certainly_outside_diamonds`] rejects (a certified `f64` filter). The search uses `1.6d` and angular
 //!    margins of 10⁻⁹ rad, far above the rounding of `atan2` on `f64`
 //!    differences (a few 10⁻¹⁶ rad), so the stop is conservative; it only
 //!    chooses which pairs get the exact test. Parallel over points.
@@ -35,21 +39,26 @@
 //!    between consecutive hull points are always certain.
 
 use crate::kernel::{
-    angle_below_diamond, compare_lengths, dot_sign, orient_sign, properly_cross,
-    segments_intersect, Point,
+    angle_below_diamond, certainly_outside_diamonds, compare_lengths, dot_sign, orient_sign,
+    properly_cross, segments_intersect, Point,
 };
 use crate::parallel::prelude::*;
 use crate::spatial::{bounding_box, convex_hull_cycle, SparseGrid};
 use std::cmp::Ordering;
 use std::f64::consts::PI;
 
-/// The base angle of the diamond property, π/4.6 (for the search's stop only).
-const DIAMOND_ANGLE: f64 = PI / 4.6;
+/// The angle of the exact test, `α' = arctan(833/1024)` (just below π/4.6),
+/// for the search's stop: a killer is a point the exact test itself finds
+/// inside (`2cos α' ≈ 1.5515 < 1.6`), so the candidates are exactly the pairs
+/// that pass the exact test, whatever the rings' schedule.
+const DIAMOND_ANGLE: f64 = 0.682_904_509_093_552_3;
 /// Angular safety margin of the search's stop, radians.
 const ANGLE_MARGIN: f64 = 1e-9;
 /// Distance factor of the stop: 1.6 > 2cos(π/4.6) ≈ 1.551.
 const KILL_FACTOR2: f64 = 1.6 * 1.6;
 const TAU: f64 = 2.0 * PI;
+/// Radius ratio of successive rings of the search.
+const RING_GROWTH: f64 = std::f64::consts::SQRT_2;
 
 /// The candidate edges (pairs `u < v`, sorted) surviving the diamond filter,
 /// with every convex-hull edge among them.
@@ -111,14 +120,8 @@ fn search_from(
             false
         });
         // Candidates of this ring are at least `inner` away: killers closer
-        // than inner/1.6 apply to all of them.
-        killers.clear();
-        killers.extend(
-            seen.iter()
-                .filter(|s| s.1 * KILL_FACTOR2 < inner2)
-                .map(|s| s.0),
-        );
-        killers.sort_unstable_by(f64::total_cmp);
+        // than inner/1.6 apply to all of them. They are the killers the
+        // previous ring's stop test used (points seen since are farther).
         for &(q, angle) in &pending {
             if direction_alive(angle, &killers) && diamond_survives(pts, grid, p, q) {
                 out.push([p, q]);
@@ -139,7 +142,7 @@ fn search_from(
             break;
         }
         inner2 = outer2;
-        radius *= 2.0;
+        radius *= RING_GROWTH;
     }
     out
 }
@@ -240,14 +243,21 @@ fn all_directions_dead(a: Point, bbox: [f64; 4], radius: f64, killers: &[f64]) -
 /// Exact: is at least one of the two diamond triangles on `pq` empty?
 fn diamond_survives(pts: &[Point], grid: &SparseGrid<u32>, p: u32, q: u32) -> bool {
     let (a, b) = (pts[p as usize], pts[q as usize]);
-    let length = (a[0] - b[0]).hypot(a[1] - b[1]);
+    // Both closed triangles lie in the disk of radius |pq|/2 around the
+    // midpoint (the apexes are 0.407|pq| from it); the relative padding
+    // covers the rounding of the midpoint and the length.
+    let mid = [0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1])];
+    let reach = 0.5 * (a[0] - b[0]).hypot(a[1] - b[1]) * (1.0 + 1e-9);
     let (mut left, mut right) = (false, false);
-    grid.any_cell_near(a, b, 0.45 * length, |items| {
+    grid.any_cell_near(mid, mid, reach, |items| {
         for &r in items {
             if r == p || r == q {
                 continue;
             }
             let c = pts[r as usize];
+            if certainly_outside_diamonds(a, b, c) {
+                continue;
+            }
             let o = orient_sign(a, b, c);
             let side = if o > 0 {
                 &mut left
@@ -318,13 +328,6 @@ impl Skeleton {
         &self.cross_list
             [self.cross_offsets[e as usize] as usize..self.cross_offsets[e as usize + 1] as usize]
     }
-
-    fn triangle_valid(&self, t: u32) -> bool {
-        self.triangles[t as usize]
-            .1
-            .iter()
-            .all(|&e| self.alive[e as usize])
-    }
 }
 
 /// Does the closed triangle `abc` (counter-clockwise) contain a point other
@@ -355,9 +358,16 @@ pub(crate) fn triangle_has_point(
 /// shared endpoint (collinear overlap at a shared endpoint counts)?
 fn edges_conflict(pts: &[Point], e: [u32; 2], f: [u32; 2]) -> bool {
     let p = |i: u32| pts[i as usize];
+    let ([a, b], [c, d]) = ([p(e[0]), p(e[1])], [p(f[0]), p(f[1])]);
+    // Disjoint bounding boxes (exact coordinate comparisons): no contact.
+    for k in 0..2 {
+        if a[k].max(b[k]) < c[k].min(d[k]) || c[k].max(d[k]) < a[k].min(b[k]) {
+            return false;
+        }
+    }
     let shared = e.iter().find(|&&x| f.contains(&x)).copied();
     match shared {
-        None => segments_intersect(p(e[0]), p(e[1]), p(f[0]), p(f[1])),
+        None => segments_intersect(a, b, c, d),
         Some(s) => {
             let u = if e[0] == s { e[1] } else { e[0] };
             let v = if f[0] == s { f[1] } else { f[0] };
@@ -417,7 +427,8 @@ pub(crate) fn lmt_skeleton(
             skeleton.hull[e as usize] = true;
         }
     }
-    // Triangles u < v < w, each found from its edge (u, v).
+    // Triangles u < v < w, each found from its edge (u, v): the common
+    // neighbours w > v of u and v, by merging their sorted lists.
     let sk = &skeleton;
     let triangles: Vec<([u32; 3], [u32; 3])> = (0..m as u32)
         .into_par_iter()
@@ -425,52 +436,70 @@ pub(crate) fn lmt_skeleton(
         .flat_map_iter(|e| {
             let [u, v] = sk.edges[e as usize];
             let mut found = Vec::new();
-            for &(w, uw) in sk.neighbours(u) {
-                if w <= v {
-                    continue;
-                }
-                let Some(vw) = sk.edge_id(v, w) else { continue };
-                let o = orient_sign(pts[u as usize], pts[v as usize], pts[w as usize]);
-                if o == 0 {
-                    continue;
-                }
-                let (corners, ids) = if o > 0 {
-                    ([u, v, w], [e, vw, uw])
-                } else {
-                    ([u, w, v], [uw, vw, e])
-                };
-                if !triangle_has_point(pts, grid, corners) {
-                    found.push((corners, ids));
+            let (nu, nv) = (sk.neighbours(u), sk.neighbours(v));
+            let (mut i, mut j) = (
+                nu.partition_point(|x| x.0 <= v),
+                nv.partition_point(|x| x.0 <= v),
+            );
+            while i < nu.len() && j < nv.len() {
+                let ((w, uw), (x, vw)) = (nu[i], nv[j]);
+                match w.cmp(&x) {
+                    Ordering::Less => i += 1,
+                    Ordering::Greater => j += 1,
+                    Ordering::Equal => {
+                        i += 1;
+                        j += 1;
+                        let o = orient_sign(pts[u as usize], pts[v as usize], pts[w as usize]);
+                        if o == 0 {
+                            continue;
+                        }
+                        let (corners, ids) = if o > 0 {
+                            ([u, v, w], [e, vw, uw])
+                        } else {
+                            ([u, w, v], [uw, vw, e])
+                        };
+                        if !triangle_has_point(pts, grid, corners) {
+                            found.push((corners, ids));
+                        }
+                    }
                 }
             }
             found
         })
         .collect();
-    // Per edge: left and right triangles.
-    let mut left: Vec<Vec<u32>> = vec![Vec::new(); m];
-    let mut right: Vec<Vec<u32>> = vec![Vec::new(); m];
-    for (t, (corners, ids)) in triangles.iter().enumerate() {
-        for s in 0..3 {
-            let (a, b) = (corners[s], corners[(s + 1) % 3]);
-            let e = ids[s] as usize;
-            // The triangle is on the left of a → b.
-            if a < b {
-                left[e].push(t as u32);
-            } else {
-                right[e].push(t as u32);
-            }
+    // Per edge (CSR): its triangles on the left of u → v, then on the right.
+    let side_of = |corners: &[u32; 3], s: usize| corners[s] < corners[(s + 1) % 3];
+    let mut left_len = vec![0u32; m];
+    let mut tri_offsets = vec![0u32; m + 1];
+    for (corners, ids) in &triangles {
+        for (s, &e) in ids.iter().enumerate() {
+            let e = e as usize;
+            tri_offsets[e + 1] += 1;
+            left_len[e] += side_of(corners, s) as u32;
         }
     }
-    let mut tri_offsets = vec![0u32; m + 1];
-    let mut tri_list = Vec::new();
     for e in 0..m {
-        skeleton.tri_left_len[e] = left[e].len() as u32;
-        tri_list.extend_from_slice(&left[e]);
-        tri_list.extend_from_slice(&right[e]);
-        tri_offsets[e + 1] = tri_list.len() as u32;
+        tri_offsets[e + 1] += tri_offsets[e];
     }
-    drop(left);
-    drop(right);
+    let mut tri_list = vec![0u32; tri_offsets[m] as usize];
+    let (mut next_left, mut next_right): (Vec<u32>, Vec<u32>) = (0..m)
+        .map(|e| (tri_offsets[e], tri_offsets[e] + left_len[e]))
+        .unzip();
+    for (t, (corners, ids)) in triangles.iter().enumerate() {
+        for (s, &e) in ids.iter().enumerate() {
+            let e = e as usize;
+            // The triangle is on the left of corners[s] → corners[s + 1].
+            let slot = if side_of(corners, s) {
+                &mut next_left[e]
+            } else {
+                &mut next_right[e]
+            };
+            tri_list[*slot as usize] = t as u32;
+            *slot += 1;
+        }
+    }
+    drop((next_left, next_right));
+    skeleton.tri_left_len = left_len;
     skeleton.triangles = triangles;
     skeleton.tri_offsets = tri_offsets;
     skeleton.tri_list = tri_list;
@@ -487,11 +516,21 @@ pub(crate) fn lmt_skeleton(
     let alive_ids: Vec<u32> = (0..m as u32)
         .filter(|&e| skeleton.alive[e as usize])
         .collect();
-    let base = alive_ids
+    // Any positive base is correct (shorter edges join class 0, whose reach
+    // still covers their half-length); a quarter of the median length keeps
+    // the finest grid from being far finer than the typical edge.
+    let mut lengths: Vec<f64> = alive_ids
         .iter()
         .map(|&e| length(&skeleton.edges[e as usize]))
-        .fold(f64::INFINITY, f64::min)
-        .max(f64::MIN_POSITIVE);
+        .collect();
+    let base = if lengths.is_empty() {
+        f64::MIN_POSITIVE
+    } else {
+        let middle = lengths.len() / 2;
+        let (_, median, _) = lengths.select_nth_unstable_by(middle, f64::total_cmp);
+        (0.25 * *median).max(f64::MIN_POSITIVE)
+    };
+    drop(lengths);
     let class_of = |e: &[u32; 2]| ((length(e) / base).log2().floor().max(0.0)) as usize;
     let classes = alive_ids
         .iter()
@@ -569,28 +608,36 @@ pub(crate) fn lmt_skeleton(
     skeleton
 }
 
-/// Is `e` locally minimal for some valid pair of triangles?
-fn locally_minimal(pts: &[Point], sk: &Skeleton, e: u32) -> bool {
+/// Is `e` locally minimal for some valid pair of triangles? `right_apexes`
+/// is scratch space.
+fn locally_minimal(
+    pts: &[Point],
+    sk: &Skeleton,
+    dead: &[bool],
+    e: u32,
+    right_apexes: &mut Vec<Point>,
+) -> bool {
     let [u, v] = sk.edges[e as usize];
     let (left, right) = sk.sides(e);
     let apex = |t: u32| {
         let (c, _) = sk.triangles[t as usize];
-        *c.iter().find(|&&x| x != u && x != v).unwrap()
+        pts[*c.iter().find(|&&x| x != u && x != v).unwrap() as usize]
     };
-    let p = |i: u32| pts[i as usize];
+    let (a, b) = (pts[u as usize], pts[v as usize]);
+    right_apexes.clear();
+    right_apexes.extend(
+        right
+            .iter()
+            .filter(|&&t| !dead[t as usize])
+            .map(|&t| apex(t)),
+    );
     for &tl in left {
-        if !sk.triangle_valid(tl) {
+        if dead[tl as usize] {
             continue;
         }
         let r = apex(tl);
-        for &tr in right {
-            if !sk.triangle_valid(tr) {
-                continue;
-            }
-            let s = apex(tr);
-            if !properly_cross(p(u), p(v), p(r), p(s))
-                || compare_lengths(p(u), p(v), p(r), p(s)) != Ordering::Greater
-            {
+        for &s in right_apexes.iter() {
+            if !properly_cross(a, b, r, s) || compare_lengths(a, b, r, s) != Ordering::Greater {
                 return true;
             }
         }
@@ -598,8 +645,12 @@ fn locally_minimal(pts: &[Point], sk: &Skeleton, e: u32) -> bool {
     false
 }
 
+/// The LMT loop. A triangle is *dead* once one of its edges is removed (a
+/// flag per triangle, set when the edge goes).
 fn run_lmt_loop(pts: &[Point], sk: &mut Skeleton) {
     let m = sk.edges.len();
+    let mut dead = vec![false; sk.triangles.len()];
+    let mut scratch = Vec::new();
     let mut queued = vec![true; m];
     let mut work: Vec<u32> = (0..m as u32).rev().collect();
     while let Some(e) = work.pop() {
@@ -607,20 +658,21 @@ fn run_lmt_loop(pts: &[Point], sk: &mut Skeleton) {
         if !sk.alive[e as usize] || sk.hull[e as usize] {
             continue;
         }
-        if locally_minimal(pts, sk, e) {
+        if locally_minimal(pts, sk, &dead, e, &mut scratch) {
             continue;
         }
         sk.alive[e as usize] = false;
         let (left, right) = sk.sides(e);
-        let touched: Vec<u32> = left
-            .iter()
-            .chain(right)
-            .flat_map(|&t| sk.triangles[t as usize].1)
-            .collect();
-        for f in touched {
-            if f != e && sk.alive[f as usize] && !queued[f as usize] {
-                queued[f as usize] = true;
-                work.push(f);
+        for &t in left.iter().chain(right) {
+            if dead[t as usize] {
+                continue; // its other edges were queued when it died
+            }
+            dead[t as usize] = true;
+            for f in sk.triangles[t as usize].1 {
+                if f != e && sk.alive[f as usize] && !queued[f as usize] {
+                    queued[f as usize] = true;
+                    work.push(f);
+                }
             }
         }
     }
