@@ -13,7 +13,8 @@
 
 use crate::parallel::prelude::*;
 
-const WORD: usize = 64;
+/// Bits per word.
+pub(super) const WORD: usize = 64;
 
 /// `rows` rows of `bits` bits each, row-major in one allocation.
 pub(super) struct BitRows {
@@ -82,6 +83,30 @@ impl BitRows {
                 .enumerate()
                 .for_each(fill_row);
         }
+    }
+
+    /// `f(first_row, words)` on consecutive blocks of `rows_per_block` rows
+    /// (the block's words, one row after the other), in parallel if
+    /// `parallel`. The matrix must not be summarised (`f` may change bits).
+    pub fn blocks_mut(
+        &mut self,
+        rows_per_block: usize,
+        parallel: bool,
+        f: impl Fn(usize, &mut [u64]) + Sync + Send,
+    ) {
+        assert_eq!(self.levels.len(), 1, "summaries would go stale");
+        let size = rows_per_block * self.stride;
+        let block = |(i, words): (usize, &mut [u64])| f(i * rows_per_block, words);
+        if parallel {
+            self.words.par_chunks_mut(size).enumerate().for_each(block);
+        } else {
+            self.words.chunks_mut(size).enumerate().for_each(block);
+        }
+    }
+
+    /// Words per row.
+    pub fn stride(&self) -> usize {
+        self.stride
     }
 
     /// The skewed transpose of a square offset matrix (`rows = bits = k`):
@@ -170,6 +195,45 @@ fn summarise(row: &mut [u64], levels: &[(usize, usize)]) {
     }
 }
 
+/// The set bits in `lo ..= hi` of the words `word(w)`, in increasing order.
+fn ones_of<'a>(
+    lo: usize,
+    hi: usize,
+    word: impl Fn(usize) -> u64 + 'a,
+) -> impl Iterator<Item = usize> + 'a {
+    let words = if lo > hi {
+        0..0
+    } else {
+        lo / WORD..hi / WORD + 1
+    };
+    words.flat_map(move |w| {
+        let mut m = word(w) & in_range(w, lo, hi);
+        std::iter::from_fn(move || {
+            (m != 0).then(|| {
+                let j = m.trailing_zeros() as usize;
+                m &= m - 1;
+                w * WORD + j
+            })
+        })
+    })
+}
+
+/// The bits of word `w` that lie in `lo ..= hi`.
+#[inline]
+pub(super) fn in_range(w: usize, lo: usize, hi: usize) -> u64 {
+    let mut m = !0u64;
+    if w == lo / WORD {
+        m &= !0u64 << (lo % WORD);
+    }
+    if w == hi / WORD && hi % WORD != WORD - 1 {
+        m &= (1u64 << (hi % WORD + 1)) - 1;
+    }
+    if w < lo / WORD || w > hi / WORD {
+        m = 0;
+    }
+    m
+}
+
 /// Sets bit `o` of a level-0 slice.
 #[inline]
 pub(super) fn set(level_0: &mut [u64], o: usize) {
@@ -233,6 +297,7 @@ impl<'a> Row<'a> {
 
     /// The set bits in `lo ..= hi` of `self & !minus_1 & !minus_2`, in
     /// increasing order.
+    #[cfg(test)]
     pub fn ones_without(
         self,
         minus_1: Row<'a>,
@@ -241,27 +306,13 @@ impl<'a> Row<'a> {
         hi: usize,
     ) -> impl Iterator<Item = usize> + 'a {
         let (a, b, c) = (self.level_0(), minus_1.level_0(), minus_2.level_0());
-        let words = if lo > hi {
-            0..0
-        } else {
-            lo / WORD..hi / WORD + 1
-        };
-        words.flat_map(move |w| {
-            let mut m = a[w] & !b[w] & !c[w];
-            if w == lo / WORD {
-                m &= !0u64 << (lo % WORD);
-            }
-            if w == hi / WORD && hi % WORD != WORD - 1 {
-                m &= (1u64 << (hi % WORD + 1)) - 1;
-            }
-            std::iter::from_fn(move || {
-                (m != 0).then(|| {
-                    let j = m.trailing_zeros() as usize;
-                    m &= m - 1;
-                    w * WORD + j
-                })
-            })
-        })
+        ones_of(lo, hi, move |w| a[w] & !b[w] & !c[w])
+    }
+
+    /// The set bits in `lo ..= hi`, in increasing order.
+    pub fn ones_in(self, lo: usize, hi: usize) -> impl Iterator<Item = usize> + 'a {
+        let a = self.level_0();
+        ones_of(lo, hi, move |w| a[w])
     }
 
     /// The set bits, in increasing order.
@@ -324,6 +375,12 @@ mod tests {
                             .collect();
                         let got: Vec<usize> = row.ones_without(other, other, lo, hi).collect();
                         assert_eq!(got, want, "k={k} row {r} {lo}..={hi}");
+                        let want: Vec<usize> = list
+                            .iter()
+                            .copied()
+                            .filter(|&x| lo <= x && x <= hi)
+                            .collect();
+                        assert_eq!(row.ones_in(lo, hi).collect::<Vec<_>>(), want);
                     }
                 }
                 if rows == k {

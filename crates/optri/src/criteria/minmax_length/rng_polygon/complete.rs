@@ -2,10 +2,15 @@
 //! 2-edge, and both sides of it are triangulated by §6 Case 1 (here) or
 //! Case 2 (`case2.rs`).
 
-use super::bits::{set, BitRows};
-use super::{map_corners, Inconsistent, RngPolygon, PARALLEL_CORNERS};
+use super::bits::{in_range, set, BitRows, WORD};
+use super::{map_range, Inconsistent, RngPolygon, NONE, PARALLEL_CORNERS};
 use crate::kernel::in_half_lune_symbolic;
 use std::cmp::Ordering;
+use std::sync::atomic::{AtomicBool, Ordering::Relaxed};
+
+/// Blocks of corners swept independently in §6 step 3 (in parallel): each
+/// costs one summary query per corner to start, so a few per thread.
+const SWEEP_BLOCKS: usize = 16;
 
 impl RngPolygon<'_> {
     /// §5.3: a complete region.
@@ -24,9 +29,9 @@ impl RngPolygon<'_> {
     /// each, three of them, freed on return): which corners `a` sees, which
     /// of its diagonals have an empty counter-clockwise half-lune (`ccw`) and
     /// which an empty clockwise one (`cw`, the skewed transpose of `ccw`).
-    /// Every row is written and read in boundary order; the only reads out
-    /// of row order are the two partner queries at the far end `b` of a
-    /// 2-edge candidate in step 3, O(log₆₄ k) words each.
+    /// Every row is written and read in boundary order; the partners at the
+    /// far end of a 2-edge are swept (step 3 below), so no pair reads a row
+    /// of its own.
     pub(super) fn shortest_expandable_2_edge(&self) -> Result<[usize; 6], Inconsistent> {
         let k = self.k;
         let parallel = k >= PARALLEL_CORNERS;
@@ -66,28 +71,87 @@ impl RngPolygon<'_> {
         // Step 3: the shortest 2-edge whose four partners meet or cross.
         // `η_{ab}` is empty iff bit `off(a, b)` of `ccw` row a is set, and
         // `η_{ba}` iff bit `off(b, a)` of `ccw` row b, which is bit
-        // `off(a, b)` of `cw` row a; so the 2-edges at `a` with `b > a` are
-        // the bits of `visible & !ccw & !cw` in row `a`, word by word.
-        let partner = |found: Option<usize>| found.ok_or(Inconsistent("no partner"));
-        let candidates: Vec<[usize; 6]> =
-            map_corners::<_, Vec<_>>(k, |a| -> Result<Option<[usize; 6]>, Inconsistent> {
-                let mut best: Option<[usize; 6]> = None;
+        // `off(a, b)` of `cw` row a; so the 2-edges `ab` with `b > a` are the
+        // bits of `visible & !ccw & !cw` in row `a`. Their partners `p′`
+        // (below `b` in `ccw` row a) and `q″` (above `a` in `cw` row b) meet
+        // or cross iff `q″ ≤ p′`; `q′` (below `a` in `ccw` row b) and `p″`
+        // (above `b` in `cw` row a) iff `off(b, p″) ≤ off(b, q′)`. The
+        // partners at `a` are queries on row a; those at `b` would read a
+        // different row for every pair, so they are swept instead, one
+        // array entry per `b`: `q″ = min{c ∈ (a, b) : η_{cb} empty}` by
+        // decreasing `a` (pass 1, which also replaces each `visible` row by
+        // its 2-edges passing the first test), `q′`, the last `c` before `a`
+        // in the boundary order from `b` with `η_{bc}` empty, by increasing
+        // `a` (pass 2). The corners are cut into blocks swept independently,
+        // each starting from one summary query per `b`.
+        let broken = AtomicBool::new(false);
+        let partner = |found: Option<usize>| {
+            found.unwrap_or_else(|| {
+                broken.store(true, Relaxed);
+                0
+            })
+        };
+        let block = if parallel {
+            k.div_ceil(SWEEP_BLOCKS).max(WORD)
+        } else {
+            k
+        };
+        let stride = visible.stride();
+        visible.blocks_mut(block, parallel, |a0, rows| {
+            let a1 = a0 + rows.len() / stride;
+            // q2[b]: the smallest c in (a, b) with η_{cb} empty, for the
+            // current a; from rows ≥ a1 by one query, then swept.
+            let mut q2 = vec![NONE; k];
+            for (b, q) in q2.iter_mut().enumerate().skip(a1 + 1) {
+                *q = self.at(b, partner(cw.row(b).succ(self.off(b, a1 - 1)))) as u32;
+            }
+            for a in (a0..a1).rev() {
+                let row = &mut rows[(a - a0) * stride..(a - a0 + 1) * stride];
                 let (ccw_a, cw_a) = (ccw.row(a), cw.row(a));
+                let (ccw_0, cw_0) = (ccw_a.level_0(), cw_a.level_0());
                 // ob ≤ k − 2 (a diagonal) and a + ob < k (b > a).
-                let last = (k - 2).min(k - 1 - a);
-                for ob in visible.row(a).ones_without(ccw_a, cw_a, 2, last) {
-                    let b = self.at(a, ob);
-                    let oa = self.off(b, a);
-                    // The nearest empty sides below and above (§6 step 2). `ccw`
-                    // rows hold offset 1 and `cw` rows offset k − 1, so they
-                    // exist below ob ≥ 2 and above oa ≤ k − 2.
-                    let p1 = self.at(a, partner(ccw_a.pred(ob))?);
-                    let q2 = self.at(b, partner(cw.row(b).succ(oa))?);
-                    if self.off(a, q2) > self.off(a, p1) {
-                        continue;
+                let (lo, hi) = (2, (k - 2).min(k - 1 - a));
+                for (w, word) in row.iter_mut().enumerate() {
+                    let mut m = *word & !ccw_0[w] & !cw_0[w] & in_range(w, lo, hi);
+                    let mut kept = 0;
+                    while m != 0 {
+                        let j = m.trailing_zeros() as usize;
+                        m &= m - 1;
+                        let ob = w * WORD + j;
+                        let p1 = a + partner(ccw_a.pred(ob));
+                        let q2 = partner((q2[a + ob] != NONE).then_some(q2[a + ob] as usize));
+                        if q2 <= p1 {
+                            kept |= 1 << j;
+                        }
                     }
-                    let p2 = self.at(a, partner(cw_a.succ(ob))?);
-                    let q1 = self.at(b, partner(ccw.row(b).pred(oa))?);
+                    *word = kept;
+                }
+                // Row a joins: η_{ab} empty for b = a + o > a.
+                for o in ccw_a.ones_in(1, k - 1 - a) {
+                    q2[a + o] = a as u32;
+                }
+            }
+        });
+        let blocks = k.div_ceil(block);
+        let per_block = |i: usize| -> Option<[usize; 6]> {
+            let (a0, a1) = (i * block, ((i + 1) * block).min(k));
+            // q1[b]: the last c before a in the boundary order from b with
+            // η_{bc} empty; from the corners before a0 by one query, then
+            // swept.
+            let mut q1 = vec![NONE; k];
+            // (For a0 = 0 and b = k − 1 there is no corner before a0 yet.)
+            for (b, q) in q1.iter_mut().enumerate().skip(a0 + 1) {
+                if self.off(b, a0) >= 2 {
+                    *q = self.at(b, partner(ccw.row(b).pred(self.off(b, a0)))) as u32;
+                }
+            }
+            let mut best: Option<[usize; 6]> = None;
+            for a in a0..a1 {
+                let (ccw_a, cw_a) = (ccw.row(a), cw.row(a));
+                for ob in visible.row(a).ones() {
+                    let b = a + ob;
+                    let p2 = self.at(a, partner(cw_a.succ(ob)));
+                    let q1 = q1[b] as usize;
                     if self.off(b, p2) > self.off(b, q1) {
                         continue;
                     }
@@ -97,16 +161,25 @@ impl RngPolygon<'_> {
                             == Ordering::Less
                     });
                     if shorter {
+                        let p1 = a + partner(ccw_a.pred(ob));
+                        let q2 = self.at(b, partner(cw.row(b).succ(self.off(b, a))));
                         best = Some([a, b, p1, q2, q1, p2]);
                     }
                 }
-                Ok(best)
-            })
-            .into_iter()
-            .collect::<Result<Vec<_>, Inconsistent>>()?
+                // Corner a joins: η_{ba} empty for b = a + o > a.
+                for o in cw_a.ones_in(1, k - 1 - a) {
+                    q1[a + o] = a as u32;
+                }
+            }
+            best
+        };
+        let candidates: Vec<[usize; 6]> = map_range::<_, Vec<_>>(parallel, blocks, per_block)
             .into_iter()
             .flatten()
             .collect();
+        if broken.load(Relaxed) {
+            return Err(Inconsistent("no partner"));
+        }
         candidates
             .into_iter()
             .min_by(|c, d| {
@@ -159,35 +232,37 @@ mod tests {
         /// lists per corner and binary searches (the layout before issue 15).
         fn shortest_expandable_2_edge_by_lists(&self) -> Result<[usize; 6], Inconsistent> {
             let k = self.k;
-            let cached: Vec<Vec<usize>> = map_corners(k, |a| self.visible(a));
+            let cached: Vec<Vec<usize>> = map_range(k >= PARALLEL_CORNERS, k, |a| self.visible(a));
             let visible = |a: usize| cached[a].as_slice();
             // Step 1: per corner, the stack scan over its diagonals in angular
             // order; what remains on the stack has an empty half-lune.
-            let ccw_of: Vec<Vec<u32>> = map_corners::<_, Vec<_>>(k, |a| -> Vec<u32> {
-                let vis = visible(a);
-                let o = self.v[a];
-                let mut stack: Vec<usize> = Vec::new();
-                for &b in vis.iter() {
-                    let x = self.v[b];
-                    while let Some(&top) = stack.last() {
-                        if x != self.v[top] && in_half_lune_symbolic(self.points, o, self.v[top], x)
-                        {
-                            stack.pop();
-                        } else {
-                            break;
+            let ccw_of: Vec<Vec<u32>> =
+                map_range::<_, Vec<_>>(k >= PARALLEL_CORNERS, k, |a| -> Vec<u32> {
+                    let vis = visible(a);
+                    let o = self.v[a];
+                    let mut stack: Vec<usize> = Vec::new();
+                    for &b in vis.iter() {
+                        let x = self.v[b];
+                        while let Some(&top) = stack.last() {
+                            if x != self.v[top]
+                                && in_half_lune_symbolic(self.points, o, self.v[top], x)
+                            {
+                                stack.pop();
+                            } else {
+                                break;
+                            }
                         }
+                        stack.push(b);
                     }
-                    stack.push(b);
-                }
-                // Edges and 1-edges with their beneath side counter-clockwise
-                // (towards later diagonals), as offsets in increasing order; the
-                // boundary edge a → a+1 starts the scan whatever its type (§6 step 2).
-                let mut ccw: Vec<u32> = stack.iter().map(|&b| self.off(a, b) as u32).collect();
-                if ccw.first() != Some(&1) {
-                    ccw.insert(0, 1);
-                }
-                ccw
-            });
+                    // Edges and 1-edges with their beneath side counter-clockwise
+                    // (towards later diagonals), as offsets in increasing order; the
+                    // boundary edge a → a+1 starts the scan whatever its type (§6 step 2).
+                    let mut ccw: Vec<u32> = stack.iter().map(|&b| self.off(a, b) as u32).collect();
+                    if ccw.first() != Some(&1) {
+                        ccw.insert(0, 1);
+                    }
+                    ccw
+                });
             // `η_{ab}` is empty iff `off(a, b)` is in `ccw_of[a]`.
             let left_empty =
                 |a: usize, b: usize| ccw_of[a].binary_search(&(self.off(a, b) as u32)).is_ok();
@@ -217,8 +292,10 @@ mod tests {
                 list[i] as usize
             };
             // Step 3: the shortest 2-edge whose four partners meet or cross.
-            let candidates: Vec<[usize; 6]> =
-                map_corners::<_, Vec<_>>(k, |a| -> Result<Option<[usize; 6]>, Inconsistent> {
+            let candidates: Vec<[usize; 6]> = map_range::<_, Vec<_>>(
+                k >= PARALLEL_CORNERS,
+                k,
+                |a| -> Result<Option<[usize; 6]>, Inconsistent> {
                     let mut best: Option<[usize; 6]> = None;
                     for &b in visible(a).iter() {
                         let ob = self.off(a, b);
@@ -247,12 +324,13 @@ mod tests {
                         }
                     }
                     Ok(best)
-                })
-                .into_iter()
-                .collect::<Result<Vec<_>, Inconsistent>>()?
-                .into_iter()
-                .flatten()
-                .collect();
+                },
+            )
+            .into_iter()
+            .collect::<Result<Vec<_>, Inconsistent>>()?
+            .into_iter()
+            .flatten()
+            .collect();
             candidates
                 .into_iter()
                 .min_by(|c, d| {

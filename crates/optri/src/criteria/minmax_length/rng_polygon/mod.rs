@@ -67,15 +67,16 @@ impl fmt::Display for Inconsistent {
     }
 }
 
-/// `f` over all corners `0..k`, in parallel for large regions only.
-fn map_corners<T: Send, R: FromIterator<T> + FromParallelIterator<T>>(
-    k: usize,
+/// `f` over `0..n`, in parallel if `parallel` (large regions only).
+fn map_range<T: Send, R: FromIterator<T> + FromParallelIterator<T>>(
+    parallel: bool,
+    n: usize,
     f: impl Fn(usize) -> T + Sync + Send,
 ) -> R {
-    if k >= PARALLEL_CORNERS {
-        (0..k).into_par_iter().map(f).collect()
+    if parallel {
+        (0..n).into_par_iter().map(f).collect()
     } else {
-        (0..k).map(f).collect()
+        (0..n).map(f).collect()
     }
 }
 
