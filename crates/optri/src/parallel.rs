@@ -152,6 +152,7 @@ mod sequential {
     /// rayon's slice methods that mutate.
     pub(crate) trait ParallelSliceMut<T> {
         fn par_iter_mut(&mut self) -> Seq<std::slice::IterMut<'_, T>>;
+        fn par_chunks_mut(&mut self, size: usize) -> Seq<std::slice::ChunksMut<'_, T>>;
         fn par_sort_unstable(&mut self)
         where
             T: Ord;
@@ -161,6 +162,10 @@ mod sequential {
         #[inline]
         fn par_iter_mut(&mut self) -> Seq<std::slice::IterMut<'_, T>> {
             Seq(self.iter_mut())
+        }
+        #[inline]
+        fn par_chunks_mut(&mut self, size: usize) -> Seq<std::slice::ChunksMut<'_, T>> {
+            Seq(self.chunks_mut(size))
         }
         #[inline]
         fn par_sort_unstable(&mut self)

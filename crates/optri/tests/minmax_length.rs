@@ -590,3 +590,67 @@ fn oracle_cubic_reference_agrees_on_small_tsplib_files() {
         no_fallbacks(&tally, name);
     }
 }
+
+/// Convex position, where one complete rng-polygon holds (nearly) all points
+/// and §6 runs on per-pair bit tables (issue 15): regular polygons
+/// (cocircular, every length repeated), near-cocircular and random convex
+/// sets, with duplicated points and collinear points on hull edges, against
+/// the oracle's exhaustive enumeration (n ≤ 9) and its cubic program.
+#[test]
+fn oracle_agrees_in_convex_position() {
+    let mut rng = StdRng::seed_from_u64(SEED_ORACLE_CUBIC + 1);
+    let regular = |n: usize| -> Vec<Point> {
+        (0..n)
+            .map(|i| {
+                let t = std::f64::consts::TAU * i as f64 / n as f64;
+                [64.0 * t.cos(), 64.0 * t.sin()]
+            })
+            .collect()
+    };
+    let mut sets: Vec<Vec<Point>> = Vec::new();
+    for n in [4usize, 5, 6, 7, 8, 9, 12, 20, 40, 60] {
+        sets.push(regular(n));
+        sets.push(perturbed_circle(&mut rng, n, 1e-3));
+        let mut angles: Vec<f64> = (0..n)
+            .map(|_| rng.gen_range(0.0..std::f64::consts::TAU))
+            .collect();
+        angles.sort_by(f64::total_cmp);
+        sets.push(angles.iter().map(|t| [3.0 * t.cos(), t.sin()]).collect());
+    }
+    // The 12 integer points of x² + y² = 25 (exactly cocircular), with
+    // duplicates; an integer square with collinear points on its edges.
+    let mut with_duplicates = circle_r5_ccw().to_vec();
+    with_duplicates.extend([[5.0, 0.0], [0.0, -5.0]]);
+    sets.push(with_duplicates);
+    sets.push(
+        (0..4)
+            .flat_map(|i| {
+                [
+                    [i as f64, 0.0],
+                    [4.0, i as f64],
+                    [4.0 - i as f64, 4.0],
+                    [0.0, 4.0 - i as f64],
+                ]
+            })
+            .collect(),
+    );
+    for pts in &sets {
+        let ps = PointSet::new(pts).unwrap();
+        let want = oracle_cubic(pts);
+        if ps.len() <= 9 {
+            let best = all_triangulations(ps.points())
+                .iter()
+                .map(|t| max_edge_squared(ps.points(), t))
+                .min()
+                .unwrap();
+            assert_eq!(best, want, "the oracle's references disagree: {pts:?}");
+        }
+        let mut tally = Tally::default();
+        for (t, diagnostics) in [product(&ps), quadratic_only(&ps)] {
+            t.validate().unwrap();
+            assert_eq!(oracle_max_edge(&t), want, "{pts:?}");
+            tally.add(&diagnostics);
+        }
+        no_fallbacks(&tally, pts);
+    }
+}

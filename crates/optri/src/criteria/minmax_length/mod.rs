@@ -120,7 +120,7 @@
 //! | `certificate::length_lemma_bound` | §4 Length Lemma (a lower bound certifying Delaunay regions) |
 //! | `rng_perturbed_flags`, `regions::Regions` | §3 steps 1–2, §5.4 (`rng(S′) ⊆ rng(S)`) |
 //! | `rng_polygon::RngPolygon::incomplete` | §5.1, 1-Edge Lemma, Visibility Lemma |
-//! | `rng_polygon::RngPolygon::visible` | §6 step 1 (diagonals in angular order) |
+//! | `rng_polygon::RngPolygon::visible_offsets` | §6 step 1 (diagonals in angular order) |
 //! | `rng_polygon::RngPolygon::shortest_expandable_2_edge` | §6 steps 1–3, Containment and Crossing Lemmas |
 //! | `rng_polygon::RngPolygon::triangulate_side` | §5.3 step 2, §6 Case 1, Expandability Lemma |
 //! | `rng_polygon::RngPolygon::case_2` | §6 Case 2 step 1 |

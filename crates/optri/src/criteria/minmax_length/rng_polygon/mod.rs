@@ -9,7 +9,8 @@
 //! | [`crate::kernel::height_sign`] | kernel | distance of a lune vertex from `pq` (§5.1 step 1) |
 //! | [`RngPolygon::triangulate`] | here | §5.1 for an incomplete rng-polygon, else §5.3 |
 //! | [`RngPolygon::incomplete`] | `incomplete.rs` | §5.1, incomplete rng-polygons (1-Edge Lemma) |
-//! | [`RngPolygon::visible`] | `visibility.rs` | diagonals at a vertex in angular order (§6 step 1) |
+//! | [`RngPolygon::visible_offsets`] | `visibility.rs` | diagonals at a vertex in angular order (§6 step 1) |
+//! | `BitRows` | `bits.rs` | the per-pair tables of §6 steps 1–3, one bit a pair |
 //! | [`RngPolygon::complete`] | `complete.rs` | §5.3, complete rng-polygons |
 //! | [`RngPolygon::shortest_expandable_2_edge`] | `complete.rs` | §6 steps 1–3 (stack scan, `p′ p″ q′ q″`, Crossing Lemma) |
 //! | [`RngPolygon::triangulate_side`] | `complete.rs` | §5.3 step 2 and §6 Case 1 (Expandability Lemma) |
@@ -31,6 +32,7 @@
 //! ([`super::fallback`]); the run's counters report it, and the tests assert
 //! that it never happens.
 
+mod bits;
 mod case2;
 mod complete;
 mod incomplete;
@@ -65,15 +67,16 @@ impl fmt::Display for Inconsistent {
     }
 }
 
-/// `f` over all corners `0..k`, in parallel for large regions only.
-fn map_corners<T: Send, R: FromIterator<T> + FromParallelIterator<T>>(
-    k: usize,
+/// `f` over `0..n`, in parallel if `parallel` (large regions only).
+fn map_range<T: Send, R: FromIterator<T> + FromParallelIterator<T>>(
+    parallel: bool,
+    n: usize,
     f: impl Fn(usize) -> T + Sync + Send,
 ) -> R {
-    if k >= PARALLEL_CORNERS {
-        (0..k).into_par_iter().map(f).collect()
+    if parallel {
+        (0..n).into_par_iter().map(f).collect()
     } else {
-        (0..k).map(f).collect()
+        (0..n).map(f).collect()
     }
 }
 

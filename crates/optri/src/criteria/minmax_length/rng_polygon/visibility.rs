@@ -1,15 +1,29 @@
 //! The corners visible from a corner, in angular order (§6 step 1): the
 //! walk through the region's Delaunay triangles described in [`super`].
 
+use super::bits::set;
 use super::{RngPolygon, NONE};
 
 impl RngPolygon<'_> {
     /// Positions visible from corner `a` (diagonals and the two boundary
     /// edges), in counter-clockwise angular order, which for a (weakly)
     /// simple polygon is boundary order from `a + 1` to `a − 1`.
+    #[cfg(test)]
     pub(super) fn visible(&self, a: usize) -> Vec<usize> {
+        let mut row = vec![0u64; self.k.div_ceil(64)];
+        self.visible_offsets(a, &mut row);
+        (1..self.k)
+            .filter(|&o| row[o / 64] >> (o % 64) & 1 == 1)
+            .map(|o| self.at(a, o))
+            .collect()
+    }
+
+    /// [`Self::visible`] as bits: sets bit `off(a, b)` of `row` (zeroed, at
+    /// least `k` bits) for every position `b` visible from `a`. Setting bits
+    /// puts them in boundary order, which is angular order, without a sort.
+    pub(super) fn visible_offsets(&self, a: usize, row: &mut [u64]) {
         let o = self.v[a];
-        let mut out = Vec::new();
+        let mut mark = |b: u32| set(row, self.off(a, b as usize));
         // (triangle, edge j, r, l): edge j of the triangle, seen from o
         // through the wedge from ray o→r (clockwise side) to ray o→l.
         let mut stack: Vec<(u32, u8, u32, u32)> = Vec::new();
@@ -17,8 +31,8 @@ impl RngPolygon<'_> {
         loop {
             let (c, pos) = (&self.corners[t as usize], &self.positions[t as usize]);
             let (i1, i2) = ((i as usize + 1) % 3, (i as usize + 2) % 3);
-            out.push(pos[i1] as usize);
-            out.push(pos[i2] as usize);
+            mark(pos[i1]);
+            mark(pos[i2]);
             if self.neighbours[t as usize][i1] != NONE {
                 stack.push((t, i1 as u8, c[i1], c[i2]));
             }
@@ -47,7 +61,7 @@ impl RngPolygon<'_> {
             let right_of_l = self.geo.orient(o, z, l) > 0;
             let left_of_r = self.geo.orient(o, r, z) > 0;
             if left_of_r && right_of_l {
-                out.push(self.positions[t2 as usize][iz] as usize);
+                mark(self.positions[t2 as usize][iz]);
             }
             let n2 = &self.neighbours[t2 as usize];
             if left_of_r && n2[ix] != NONE {
@@ -58,15 +72,8 @@ impl RngPolygon<'_> {
             }
             let _ = iy;
         }
-        // Boundary order by marking: O(k), no sort.
-        let mut mark = vec![false; self.k];
-        for &b in &out {
-            mark[b] = true;
-        }
-        (1..self.k)
-            .map(|o| self.at(a, o))
-            .filter(|&b| mark[b])
-            .collect()
+        // Offset 0 is `a` itself (a fan corner can be a crack copy of it).
+        row[0] &= !1;
     }
 }
 
