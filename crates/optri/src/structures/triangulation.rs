@@ -110,6 +110,7 @@ impl Triangulation {
     /// points in the same order at other values: the user's doubles of a
     /// triangulation validated on their decimals scaled to integers (the
     /// decisions were made there; see `io::doubles_as_decimals`).
+    #[cfg(feature = "io")]
     pub(crate) fn with_point_set(self, point_set: PointSet) -> Self {
         debug_assert_eq!(
             point_set.input_points().len(),

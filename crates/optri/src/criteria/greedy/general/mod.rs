@@ -65,6 +65,14 @@
 //! remaining pairs of open vertices; that is quadratic in their number, which
 //! is why convex inputs go to [`super::convex`].
 //!
+//! # Collinear points
+//! A *fan* (all points but one on a line) has one triangulation, returned
+//! directly (`single_fan`). Open vertices whose open gaps are all straight
+//! angles on one line form *line classes* (`line_classes`): no candidate
+//! joins two points of a class, so their pairs are neither listed nor
+//! counted by the guard. Both only change the running time. Runs with
+//! several apexes still make the rounds crawl (issue 15, open).
+//!
 //! # Files
 //! | file | what | implements |
 //! |---|---|---|

@@ -180,6 +180,12 @@ impl RngPolygon<'_> {
         if broken.load(Relaxed) {
             return Err(Inconsistent("no partner"));
         }
+        self.shortest_candidate(candidates)
+    }
+
+    /// The candidate `[a, b, …]` whose 2-edge `ab` is shortest (the first
+    /// of equals, in the exact segment order of `geo`).
+    fn shortest_candidate(&self, candidates: Vec<[usize; 6]>) -> Result<[usize; 6], Inconsistent> {
         candidates
             .into_iter()
             .min_by(|c, d| {
@@ -331,13 +337,7 @@ mod tests {
             .into_iter()
             .flatten()
             .collect();
-            candidates
-                .into_iter()
-                .min_by(|c, d| {
-                    self.geo
-                        .compare_lengths([self.v[c[0]], self.v[c[1]]], [self.v[d[0]], self.v[d[1]]])
-                })
-                .ok_or(Inconsistent("site10"))
+            self.shortest_candidate(candidates)
         }
     }
 
