@@ -719,7 +719,12 @@ pub fn triangulation_from_json(value: &Value) -> Result<Triangulation> {
         Triangulation::from_triangles(&PointSet::new(working)?, triangles)?
     };
     Ok(match &read.scaled {
-        Some(_) => triangulation.with_point_set(PointSet::new(read.input.points())?),
+        Some(_) => {
+            // A polygon ring may repeat its first vertex at the end, which
+            // `SimplePolygon::new` dropped: keep as many user points.
+            let n = triangulation.point_set().input_points().len();
+            triangulation.with_point_set(PointSet::new(&read.input.points()[..n])?)
+        }
         None => triangulation,
     })
 }
@@ -891,6 +896,24 @@ mod tests {
             assert_eq!(back.triangles(), solution.triangulation.triangles());
             assert_eq!(back.points(), read.input.points(), "the user's values");
         }
+        // A polygon document whose ring repeats its first vertex at the end
+        // (found by the fuzzer: the closing vertex is dropped on both sides).
+        let ring = [
+            [0.0, 0.0],
+            [0.2, 0.0],
+            [0.2, 0.1],
+            [0.1, 0.1],
+            [0.0, 0.2],
+            [0.0, 0.0],
+        ];
+        let v = json!({
+            "domain": "polygon",
+            "coordinates": ring,
+            "triangles": [[0, 1, 2], [0, 2, 3], [0, 3, 4]],
+        });
+        let back = triangulation_from_json(&v).unwrap();
+        assert_eq!(back.points(), &ring[..5]);
+        assert_eq!(back.triangles().len(), 3);
     }
 
     #[test]
