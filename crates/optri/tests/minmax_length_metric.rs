@@ -32,15 +32,19 @@ fn metrics() -> Vec<(Metric, Norm)> {
 }
 
 fn solve(pts: &[Point], metric: &Metric) -> optri::Triangulation {
-    let ps = PointSet::new(pts).unwrap();
+    solution(&PointSet::new(pts).unwrap(), metric).triangulation
+}
+
+/// The product's minmax-length solution under `metric`, validated.
+fn solution(ps: &PointSet, metric: &Metric) -> optri::Solution {
     let s = triangulate_with(
-        &ps,
+        ps,
         Criterion::MinmaxLength,
         &Options::default().with_metric(metric.clone()),
     )
     .unwrap();
     s.triangulation.validate().unwrap();
-    s.triangulation
+    s
 }
 
 fn value(norm: &Norm, t: &optri::Triangulation) -> num_rational::BigRational {
@@ -229,13 +233,7 @@ fn hull_certificate_is_exact_and_both_ways_occur() {
                 let (cubic, _) = minmax_length_under_with(&ps, &metric, None).unwrap();
                 value(&norm, &cubic)
             };
-            let s = triangulate_with(
-                &ps,
-                Criterion::MinmaxLength,
-                &Options::default().with_metric(metric.clone()),
-            )
-            .unwrap();
-            s.triangulation.validate().unwrap();
+            let s = solution(&ps, &metric);
             assert_eq!(value(&norm, &s.triangulation), want, "{metric} on {name}");
             if s.diagnostics.get("regions_certified_by_bound") == Some(1) {
                 certified += 1;
