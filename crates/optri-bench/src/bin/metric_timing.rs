@@ -17,7 +17,11 @@
 //!   (radius jittered by 1e-9 relative): one incomplete region, solved by
 //!   §5.1; time per N and time / N².
 //! * `circle METRIC N…`: the same on the whole circle: one *complete*
-//!   region (every hull segment is an RNG edge), solved by the cubic program.
+//!   region (every hull segment is an RNG edge), solved by §5.3/§6.
+//!
+//! Both convex modes also time the Euclidean minmax-length triangulation of
+//! the same points in the same process, and print the ratio to the previous
+//! N (≈ 4 per doubling for O(n²)).
 
 use optri::kernel::Metric;
 use optri::{triangulate_with, Criterion, Options, PointSet};
@@ -56,18 +60,23 @@ fn main() {
         Some(kind @ ("arc" | "circle")) => {
             let turn = if kind == "arc" { 1.0 / 3.0 } else { 1.0 };
             let metric = Metric::parse(&args[1]).expect("metric");
+            let mut previous: Option<f64> = None;
             for n in args[2..].iter().map(|s| s.parse::<usize>().expect("N")) {
                 let ps = PointSet::new(&arc(n, turn)).unwrap();
+                let (_, euclidean) = secs(|| minmax(&ps, &Metric::euclidean()));
                 let (s, t) = secs(|| minmax(&ps, &metric));
                 let d: Vec<String> = s
                     .diagnostics
                     .iter()
                     .map(|(k, v)| format!("{k}={v}"))
                     .collect();
+                let doubling =
+                    previous.map_or(String::new(), |p| format!(", {:.2}× previous", t / p));
+                previous = Some(t);
                 println!(
-                    "{kind} {metric} n={n}: {t:.3} s, {:.3e} s/n², {:.3e} s/n³, {}",
+                    "{kind} {metric} n={n}: {t:.3} s{doubling}, {:.3e} s/n², Euclidean {euclidean:.3} s ({:.2}×), {}",
                     t / (n as f64 * n as f64),
-                    t / (n as f64).powi(3),
+                    t / euclidean,
                     d.join(" ")
                 );
             }

@@ -61,7 +61,7 @@
 
 use super::expansion::{sign_of_sum, two_diff, Expansion};
 use super::predicates::{compare_lengths, orient_sign};
-use super::symbolic::compare_lengths_symbolic;
+use super::symbolic::{compare_lengths_symbolic, orient_symbolic};
 use super::{check_coordinate, Point};
 use num_bigint::BigInt;
 use num_rational::BigRational;
@@ -546,6 +546,18 @@ impl Metric {
     pub fn in_lune_symbolic(&self, points: &[Point], p: u32, q: u32, x: u32) -> bool {
         self.compare_lengths_symbolic(points, [p, x], [p, q]) == Ordering::Less
             && self.compare_lengths_symbolic(points, [q, x], [p, q]) == Ordering::Less
+    }
+
+    /// Is `x` in the half-lune `η_pq` under this norm and its tie-break:
+    /// strictly inside the lune of `pq` and to the left of `p → q` in the
+    /// kernel's perturbation `S′` (where no point is on the line, so the
+    /// closed and open half-planes agree)? The metric form of
+    /// [`crate::kernel::in_half_lune_symbolic`], for §6 step 1's stack scan.
+    pub fn in_half_lune_symbolic(&self, points: &[Point], p: u32, q: u32, x: u32) -> bool {
+        x != p
+            && x != q
+            && orient_symbolic(points, p, q, x) > 0
+            && self.in_lune_symbolic(points, p, q, x)
     }
 
     /// `‖v + δ‖ − ‖v‖` (or its p-th power form) for segment `ab` as a series in ε.

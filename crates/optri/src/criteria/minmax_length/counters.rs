@@ -16,7 +16,7 @@ impl Count {
         self.0.fetch_add(by, Ordering::Relaxed);
     }
 
-    fn get(&self) -> u64 {
+    pub fn get(&self) -> u64 {
         self.0.load(Ordering::Relaxed) as u64
     }
 }
@@ -87,8 +87,18 @@ impl Counters {
     /// The counters the metric path reports (the others stay zero there).
     pub fn into_diagnostics_for_metric(self) -> Diagnostics {
         let mut d = Diagnostics::default();
-        d.add("flat_triangles", self.flat_triangles.get());
-        d.add("fallbacks", self.fallbacks.get());
+        for (name, count) in [
+            ("case_1", &self.case_1),
+            ("case_2", &self.case_2),
+            ("case_2_hull_fallbacks", &self.case_2_hull_fallbacks),
+            ("case_2_pockets_by_5_1", &self.case_2_pockets_by_5_1),
+            ("case_2_pockets_by_fan_out", &self.case_2_pockets_by_fan_out),
+            ("case_2_pocket_fallbacks", &self.case_2_pocket_fallbacks),
+            ("flat_triangles", &self.flat_triangles),
+            ("fallbacks", &self.fallbacks),
+        ] {
+            d.add(name, count.get());
+        }
         d
     }
 }

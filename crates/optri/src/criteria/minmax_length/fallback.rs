@@ -3,6 +3,7 @@
 //! say so), the exact cubic program triangulates the polygon instead.
 
 use super::counters::Counters;
+use super::length_order::LengthOrder;
 use super::polygon::Region;
 use crate::kernel::Point;
 
@@ -24,9 +25,10 @@ pub(crate) enum Fallback {
 
 /// The cubic safety net: counts the `part`, drops what `out` gained since
 /// `mark` and appends the cubic program's triangulation of the polygon
-/// `vertices` (counter-clockwise).
+/// `vertices` (counter-clockwise), with chords compared by `order`.
 pub(crate) fn cubic_fallback(
     points: &[Point],
+    order: impl LengthOrder,
     part: Fallback,
     vertices: &[u32],
     counters: &Counters,
@@ -51,5 +53,5 @@ pub(crate) fn cubic_fallback(
         vertices,
         symbolic: !matches!(part, Fallback::Region),
     };
-    out.extend(region.minmax_triangulation_cubic());
+    out.extend(order.cubic(&region));
 }

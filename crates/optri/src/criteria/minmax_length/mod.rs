@@ -146,6 +146,7 @@
 mod certificate;
 mod counters;
 mod fallback;
+mod length_order;
 pub(crate) mod polygon;
 pub(crate) mod regions;
 mod repair;
@@ -163,6 +164,7 @@ use crate::timing::{timed, Phase};
 use certificate::{length_lemma_bound, longest_side, small_region};
 use counters::Counters;
 use fallback::{cubic_fallback, Fallback};
+use length_order::EuclideanOrder;
 use polygon::Region;
 use regions::Regions;
 use repair::repair_flat_triangles;
@@ -186,7 +188,7 @@ pub(crate) fn solve(
 ) -> Result<Solved> {
     if !options.metric.is_euclidean() {
         let method = under_metric::MetricMethod::Product {
-            incomplete_from: under_metric::INCOMPLETE_FROM,
+            quadratic_from: under_metric::QUADRATIC_FROM,
             certify: true,
         };
         let (triangulation, diagnostics) =
@@ -228,20 +230,21 @@ const ALGORITHM: &str = "Edelsbrunner–Tan O(n²): Length-Lemma lower bound (lo
 /// The method's name under a non-Euclidean metric.
 const ALGORITHM_UNDER_METRIC: &str = "Edelsbrunner–Tan §7: the longest hull segment in the metric (a lower bound) certifies the Delaunay triangulation when no edge of it is longer; otherwise hull ∪ RNG regions under the simulated strictly convex norm (RNG by nearest neighbours in sectors, exact lunes); §5.1 (visible lune vertex minimising the longer side) on large incomplete regions, the exact cubic program on the others; §5.4 flat-triangle repair";
 
-/// Minmax-length under `metric` with the cubic program on every region, or
-/// with §5.1 on every incomplete region of at least
-/// `incomplete_from` corners (0: all of them), and the diagnostics. For tests
-/// and benchmarks.
+/// Minmax-length under `metric` with the cubic program on every region
+/// (`quadratic_from = None`), or with §5.1 on every incomplete and §5.3/§6 on
+/// every complete region of at least `quadratic_from` corners (0: all of
+/// them; complete regions only where the Delaunay triangles tile them), and
+/// the diagnostics. No hull certificate. For tests and benchmarks.
 #[cfg(any(test, feature = "internals"))]
 pub fn minmax_length_under_with(
     points: &PointSet,
     metric: &crate::kernel::Metric,
-    incomplete_from: Option<usize>,
+    quadratic_from: Option<usize>,
 ) -> Result<(Triangulation, Diagnostics)> {
-    let method = match incomplete_from {
+    let method = match quadratic_from {
         None => under_metric::MetricMethod::Cubic,
         Some(k) => under_metric::MetricMethod::Product {
-            incomplete_from: k,
+            quadratic_from: k,
             certify: false,
         },
     };
@@ -413,6 +416,7 @@ fn run(
                                 let mut out = Vec::new();
                                 cubic_fallback(
                                     pts,
+                                    EuclideanOrder,
                                     Fallback::Region,
                                     vertices,
                                     &counters,

@@ -42,15 +42,16 @@
 //! certificate holds (BENCHMARKS.md); otherwise its cost is one Delaunay
 //! triangulation and one pass over its edges.
 
-use super::counters::Counters;
+use super::counters::{Count, Counters};
+use super::length_order::{LengthOrder, MetricOrder};
 use super::polygon::Region;
 use super::repair::repair_flat_triangles;
+use super::rng_polygon::{Mesh, RngPolygon};
 use crate::criteria::Diagnostics;
 use crate::error::{Error, Result};
 use crate::graphs::rng_under;
 use crate::kernel::Metric;
 use crate::parallel::prelude::*;
-use crate::polygon_program::{optimal_triangulation, LargestDiagonal};
 use crate::spatial::convex_hull_cycle;
 use crate::structures::{DelaunayGraph, PlanarGraph, PointSet, Triangulation};
 use crate::timing::{timed, Phase};
@@ -60,11 +61,12 @@ use std::collections::HashSet;
 /// Which polygon method the regions use.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub(crate) enum MetricMethod {
-    /// §5.1 on incomplete regions of at least this many corners, the cubic
-    /// program on the rest; with `certify`, the hull certificate first
-    /// (module docs, hull certificate).
+    /// On regions of at least `quadratic_from` corners: §5.1 if incomplete,
+    /// §5.3/§6 if complete (where the Delaunay triangles tile the region);
+    /// the cubic program on the rest. With `certify`, the hull certificate
+    /// first (module docs, hull certificate).
     Product {
-        incomplete_from: usize,
+        quadratic_from: usize,
         certify: bool,
     },
     /// The cubic program on every region (test reference).
@@ -72,8 +74,8 @@ pub(crate) enum MetricMethod {
     Cubic,
 }
 
-/// Incomplete regions of at least this many corners use §5.1.
-pub(crate) const INCOMPLETE_FROM: usize = 16;
+/// Regions of at least this many corners use §5.1 or §5.3/§6.
+pub(crate) const QUADRATIC_FROM: usize = 16;
 
 pub(crate) fn run_under(
     points: &PointSet,
@@ -92,7 +94,6 @@ pub(crate) fn run_under(
     let rng = timed(phases, "rng", || rng_under(pts, metric)).map_err(Error::InvalidMetric)?;
     let hull = timed(phases, "hull", || convex_hull_cycle(pts));
     let (faces, rng_set) = timed(phases, "regions", || {
-        let key = |a: u32, b: u32| [a.min(b), a.max(b)];
         let rng_set: HashSet<[u32; 2]> = rng.iter().map(|e| key(e[0], e[1])).collect();
         let mut edges = rng.clone();
         for i in 0..hull.len() {
@@ -107,8 +108,37 @@ pub(crate) fn run_under(
             .collect();
         (faces, rng_set)
     });
+    let quadratic_from = match method {
+        MetricMethod::Product { quadratic_from, .. } => Some(quadratic_from.max(4)),
+        MetricMethod::Cubic => None,
+    };
+    // The boundary positions `i` whose edge `v[i] v[i+1]` is not in the RNG.
+    let missing = |face: &[u32]| -> Vec<usize> {
+        let k = face.len();
+        (0..k)
+            .filter(|&i| !rng_set.contains(&key(face[i], face[(i + 1) % k])))
+            .collect()
+    };
+    // The Delaunay triangles with the metric's RNG edges marked, for §6's
+    // visibility walk; only if some large complete region needs them.
+    let delaunay = timed(phases, "mesh", || {
+        let needed = quadratic_from.is_some_and(|from| {
+            faces
+                .iter()
+                .any(|f| f.len() >= from && missing(f).is_empty())
+        });
+        let g = needed.then(|| DelaunayGraph::with_topology(pts).ok())??;
+        let flags: Vec<bool> = g
+            .edges
+            .iter()
+            .map(|(e, _)| rng_set.contains(&key(e[0], e[1])))
+            .collect();
+        Some((g, flags))
+    });
+    let mesh = delaunay.as_ref().map(|(g, flags)| Mesh::new(g, flags));
     let counters = Counters::default();
-    let by_5_1 = std::sync::atomic::AtomicU64::new(0);
+    let (by_5_1, by_5_3, outside_mesh) = (Count::default(), Count::default(), Count::default());
+    let order = MetricOrder(metric);
     let triangles: Vec<[u32; 3]> = timed(phases, "polygons", || {
         faces
             .par_iter()
@@ -119,28 +149,33 @@ pub(crate) fn run_under(
                     symbolic: true,
                 };
                 let k = face.len();
-                if let MetricMethod::Product {
-                    incomplete_from, ..
-                } = method
-                {
-                    if k >= incomplete_from.max(4) {
-                        let missing: Vec<usize> = (0..k)
-                            .filter(|&i| {
-                                let (a, b) = (face[i], face[(i + 1) % k]);
-                                !rng_set.contains(&[a.min(b), a.max(b)])
-                            })
-                            .collect();
-                        if let [i] = missing[..] {
+                if quadratic_from.is_some_and(|from| k >= from) {
+                    match missing(face)[..] {
+                        [i] => {
                             let convex = region.is_strictly_convex();
                             if let Some(t) = incomplete(&region, metric, convex, (i + 1) % k) {
-                                by_5_1.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+                                by_5_1.add(1);
                                 return t;
                             }
                             counters.fallbacks.add(1);
                         }
+                        [] => match &mesh {
+                            Some(mesh) if mesh.tiles(face) => {
+                                let solved =
+                                    RngPolygon::with_order(pts, face, mesh, &counters, order)
+                                        .and_then(|f| f.triangulate());
+                                if let Ok(t) = solved {
+                                    by_5_3.add(1);
+                                    return t;
+                                }
+                                counters.fallbacks.add(1);
+                            }
+                            _ => outside_mesh.add(1),
+                        },
+                        _ => {}
                     }
                 }
-                cubic(&region, metric)
+                order.cubic(&region)
             })
             .collect()
     });
@@ -149,8 +184,15 @@ pub(crate) fn run_under(
     });
     let mut diagnostics = counters.into_diagnostics_for_metric();
     diagnostics.add("regions", faces.len() as u64);
-    diagnostics.add("regions_by_5_1", by_5_1.into_inner());
+    diagnostics.add("regions_by_5_1", by_5_1.get());
+    diagnostics.add("regions_by_5_3", by_5_3.get());
+    diagnostics.add("complete_regions_outside_mesh", outside_mesh.get());
     Ok((Triangulation::from_distinct(points, triangles), diagnostics))
+}
+
+/// An undirected edge as a sorted pair.
+fn key(a: u32, b: u32) -> [u32; 2] {
+    [a.min(b), a.max(b)]
 }
 
 /// The hull certificate of the module docs: the Euclidean Delaunay triangulation if none
@@ -187,29 +229,6 @@ fn hull_certificate(
     });
     certified?;
     Some(Triangulation::from_distinct(points, g.triangles))
-}
-
-/// §3's cubic program on one region with the metric's chord order.
-fn cubic(region: &Region, metric: &Metric) -> Vec<[u32; 3]> {
-    let v = region.vertices;
-    let k = v.len();
-    if k == 3 {
-        return vec![[v[0], v[1], v[2]]];
-    }
-    let convex = region.is_strictly_convex();
-    optimal_triangulation(
-        k,
-        |i, j| convex || region.is_diagonal(i, j),
-        |i, m, j| region.orient(v[i], v[m], v[j]) > 0,
-        &LargestDiagonal::new(k, |s: [usize; 2], t: [usize; 2]| {
-            metric.compare_lengths_symbolic(region.points, [v[s[0]], v[s[1]]], [v[t[0]], v[t[1]]])
-        }),
-    )
-    .expect("a polygonal region always has a triangulation")
-    .triangles
-    .into_iter()
-    .map(|t| t.map(|c| v[c]))
-    .collect()
 }
 
 /// §5.1 on a region whose only non-RNG edge ends at position `start` (the

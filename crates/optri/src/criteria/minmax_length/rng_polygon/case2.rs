@@ -10,11 +10,11 @@
 
 use super::{Inconsistent, RngPolygon};
 use crate::criteria::minmax_length::fallback::{cubic_fallback, Fallback};
+use crate::criteria::minmax_length::length_order::LengthOrder;
 use crate::criteria::minmax_length::polygon::Region;
-use crate::kernel::in_half_lune_symbolic;
 use std::cmp::Ordering;
 
-impl RngPolygon<'_> {
+impl<L: LengthOrder> RngPolygon<'_, L> {
     /// §6 Case 2 on the side `s … e` of the 2-edge `e → s`, whose partners
     /// `s·ns` and `e·ne` cross. Step 1: with `|ne s| < |ne e|` (else the
     /// mirror image) §5.1 beyond the 1-edge `e·ne`; steps 2–3 on the rest:
@@ -33,7 +33,7 @@ impl RngPolygon<'_> {
         // Step 1 beyond the shorter-side 1-edge, then steps 2–3 on the rest:
         // (apex, from … to) is (q, p … q″), or the mirror image.
         let (apex, from, to, forward) =
-            if self.geo.compare_lengths([vne, vs], [vne, ve]) == Ordering::Less {
+            if self.order.compare(self.points, [vne, vs], [vne, ve]) == Ordering::Less {
                 self.incomplete(ne, self.off(ne, e), out)?;
                 (e, s, ne, true)
             } else {
@@ -48,6 +48,7 @@ impl RngPolygon<'_> {
                 .collect();
             cubic_fallback(
                 self.points,
+                self.order,
                 Fallback::Case2Remainder,
                 &rest,
                 self.counters,
@@ -127,6 +128,7 @@ impl RngPolygon<'_> {
                     .collect();
                 cubic_fallback(
                     self.points,
+                    self.order,
                     Fallback::Case2Pocket,
                     &pocket,
                     self.counters,
@@ -145,7 +147,7 @@ impl RngPolygon<'_> {
         !self
             .v
             .iter()
-            .any(|&w| w != vx && w != vy && in_half_lune_symbolic(self.points, vx, vy, w))
+            .any(|&w| w != vx && w != vy && self.order.in_half_lune(self.points, vx, vy, w))
     }
 
     /// §6 Case 2 step 3 for the pocket `Y_uv`: the chain `a … b` (positions)
@@ -190,11 +192,16 @@ impl RngPolygon<'_> {
             if j == apex {
                 break;
             }
-            if self.v[j] != vu && self.geo.compare_lengths([vu, self.v[j]], pq) == Ordering::Less {
+            if self.v[j] != vu
+                && self.order.compare(self.points, [vu, self.v[j]], pq) == Ordering::Less
+            {
                 candidates.push(j);
             }
         }
-        candidates.sort_by(|&x, &y| self.geo.compare_lengths([vu, self.v[x]], [vu, self.v[y]]));
+        candidates.sort_by(|&x, &y| {
+            self.order
+                .compare(self.points, [vu, self.v[x]], [vu, self.v[y]])
+        });
         let enters_c = |x: u32| {
             cone.is_some_and(|[c1, c2]| {
                 self.geo.orient(vu, c1, x) == self.geo.orient(vu, c1, c2)
@@ -301,7 +308,9 @@ impl RngPolygon<'_> {
             }
             for j in 0..3 {
                 let (x, y) = (t[j], t[(j + 1) % 3]);
-                if self.geo.compare_lengths([x, y], pq) != Ordering::Less && !is_chain_edge(x, y) {
+                if self.order.compare(self.points, [x, y], pq) != Ordering::Less
+                    && !is_chain_edge(x, y)
+                {
                     return Err(Inconsistent("pocket edge not shorter than pq"));
                 }
             }

@@ -4,7 +4,7 @@
 
 use super::bits::{in_range, set, BitRows, WORD};
 use super::{map_range, Inconsistent, RngPolygon, NONE, PARALLEL_CORNERS};
-use crate::kernel::in_half_lune_symbolic;
+use crate::criteria::minmax_length::length_order::LengthOrder;
 use std::cmp::Ordering;
 use std::sync::atomic::{AtomicBool, Ordering::Relaxed};
 
@@ -12,7 +12,7 @@ use std::sync::atomic::{AtomicBool, Ordering::Relaxed};
 /// costs one summary query per corner to start, so a few per thread.
 const SWEEP_BLOCKS: usize = 16;
 
-impl RngPolygon<'_> {
+impl<L: LengthOrder> RngPolygon<'_, L> {
     /// §5.3: a complete region.
     pub(super) fn complete(&self) -> Result<Vec<[u32; 3]>, Inconsistent> {
         let [a, b, p1, q2, q1, p2] = self.shortest_expandable_2_edge()?;
@@ -50,7 +50,7 @@ impl RngPolygon<'_> {
             for b in visible.row(a).ones().map(|off| self.at(a, off)) {
                 let x = self.v[b];
                 while let Some(&top) = stack.last() {
-                    if x != self.v[top] && in_half_lune_symbolic(self.points, o, self.v[top], x) {
+                    if x != self.v[top] && self.order.in_half_lune(self.points, o, self.v[top], x) {
                         stack.pop();
                     } else {
                         break;
@@ -156,9 +156,11 @@ impl RngPolygon<'_> {
                         continue;
                     }
                     let shorter = best.is_none_or(|c| {
-                        self.geo
-                            .compare_lengths([self.v[a], self.v[b]], [self.v[c[0]], self.v[c[1]]])
-                            == Ordering::Less
+                        self.order.compare(
+                            self.points,
+                            [self.v[a], self.v[b]],
+                            [self.v[c[0]], self.v[c[1]]],
+                        ) == Ordering::Less
                     });
                     if shorter {
                         let p1 = a + partner(ccw_a.pred(ob));
@@ -184,13 +186,16 @@ impl RngPolygon<'_> {
     }
 
     /// The candidate `[a, b, …]` whose 2-edge `ab` is shortest (the first
-    /// of equals, in the exact segment order of `geo`).
+    /// of equals, in the exact segment order of `order`).
     fn shortest_candidate(&self, candidates: Vec<[usize; 6]>) -> Result<[usize; 6], Inconsistent> {
         candidates
             .into_iter()
             .min_by(|c, d| {
-                self.geo
-                    .compare_lengths([self.v[c[0]], self.v[c[1]]], [self.v[d[0]], self.v[d[1]]])
+                self.order.compare(
+                    self.points,
+                    [self.v[c[0]], self.v[c[1]]],
+                    [self.v[d[0]], self.v[d[1]]],
+                )
             })
             .ok_or(Inconsistent("site10"))
     }
@@ -225,7 +230,7 @@ mod tests {
     use super::*;
     use crate::criteria::minmax_length::counters::Counters;
     use crate::criteria::minmax_length::{regions, rng_perturbed, rng_perturbed_flags};
-    use crate::kernel::Point;
+    use crate::kernel::{in_half_lune_symbolic, Point};
     use crate::spatial::convex_hull_cycle;
     use crate::structures::DelaunayGraph;
     use rand::{rngs::StdRng, Rng, SeedableRng};

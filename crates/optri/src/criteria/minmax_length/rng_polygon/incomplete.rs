@@ -2,9 +2,9 @@
 //! them (1-Edge Lemma).
 
 use super::{Inconsistent, RngPolygon};
-use crate::kernel::{height_sign, in_lune_symbolic};
+use crate::criteria::minmax_length::length_order::LengthOrder;
 
-impl RngPolygon<'_> {
+impl<L: LengthOrder> RngPolygon<'_, L> {
     /// §5.1 on the chain of positions `s, s+1, …, s+m` whose closing edge
     /// `(s+m) → s` is a 1-edge with the chain beyond it. Each step draws the
     /// triangle to the lune vertex nearest to the closing edge; by the
@@ -32,36 +32,63 @@ impl RngPolygon<'_> {
                 continue;
             }
             let (p, q) = (self.v[s], self.v[self.at(s, m)]);
-            let mut best: Option<(usize, u32)> = None;
-            for i in 1..m {
-                let x = self.v[self.at(s, i)];
-                if !in_lune_symbolic(self.points, p, q, x) || self.geo.orient(p, q, x) > 0 {
-                    continue;
-                }
-                let better = match best {
-                    None => true,
-                    Some((_, y)) if y == x => {
-                        // The same vertex at two positions (a crack): take the
-                        // copy whose corner opens towards p.
-                        let pos = self.at(s, i);
-                        self.geo.strictly_inside_wedge(
-                            x,
-                            self.v[self.at(pos, 1)],
-                            self.v[self.at(pos, self.k - 1)],
-                            p,
-                        )
+            // The lune vertex on the chain's side that `L` prefers (the
+            // nearest to `pq`, or the remark's choice under a metric),
+            // among those visible from `p` and `q` if `visible_only`.
+            let choose = |visible_only: bool| -> Option<usize> {
+                let mut best: Option<(usize, u32)> = None;
+                for i in 1..m {
+                    let x = self.v[self.at(s, i)];
+                    if !self.order.in_lune(self.points, p, q, x) || self.geo.orient(p, q, x) > 0 {
+                        continue;
                     }
-                    Some((_, y)) => height_sign(self.points, p, q, x, y) > 0,
-                };
-                if better {
-                    best = Some((i, x));
+                    if visible_only && !self.visible_from_chord(s, m, i) {
+                        continue;
+                    }
+                    let better = match best {
+                        None => true,
+                        Some((_, y)) if y == x => {
+                            // The same vertex at two positions (a crack): take
+                            // the copy whose corner opens towards p.
+                            let pos = self.at(s, i);
+                            self.geo.strictly_inside_wedge(
+                                x,
+                                self.v[self.at(pos, 1)],
+                                self.v[self.at(pos, self.k - 1)],
+                                p,
+                            )
+                        }
+                        Some((_, y)) => self.order.nearer_to_edge(self.points, p, q, x, y),
+                    };
+                    if better {
+                        best = Some((i, x));
+                    }
                 }
+                best.map(|(i, _)| i)
+            };
+            let mut i = choose(false).ok_or(Inconsistent("site9"))?;
+            // The nearest vertex is visible (§5.1); the remark's choice is
+            // only allowed if it is, which a convex region guarantees.
+            if !L::CHOICE_IS_VISIBLE && !self.convex && !self.visible_from_chord(s, m, i) {
+                i = choose(true).ok_or(Inconsistent("no visible lune vertex"))?;
             }
-            let (i, _) = best.ok_or(Inconsistent("site9"))?;
             emit(s, self.at(s, i), self.at(s, m));
             stack.push((s, i));
             stack.push((self.at(s, i), m - i));
         }
         Ok(())
+    }
+
+    /// Are both sides `p x` and `x q` of the §5.1 triangle on the chain
+    /// `s … s+m` (chord `pq`, `x` at `s+i`) boundary edges or diagonals of
+    /// the region? A diagonal of the region from an endpoint of the chord to
+    /// a chain vertex stays inside the sub-polygon. O(k).
+    fn visible_from_chord(&self, s: usize, m: usize, i: usize) -> bool {
+        let sees = |a: usize, b: usize| {
+            let o = self.off(a, b);
+            o == 1 || o == self.k - 1 || self.geo.is_diagonal(a, b)
+        };
+        let x = self.at(s, i);
+        sees(s, x) && sees(x, self.at(s, m))
     }
 }

@@ -72,6 +72,16 @@ impl<'a> Mesh<'a> {
         }
     }
 
+    /// Do the triangles tile the region with boundary walk `corners`
+    /// (counter-clockwise): is every boundary edge a Delaunay edge with a
+    /// triangle on its region side? Always so for the regions of
+    /// `ch(S) ∪ rng(S′)`; under another metric only where the metric's RNG
+    /// edges on the boundary happen to be Delaunay edges.
+    pub fn tiles(&self, corners: &[u32]) -> bool {
+        let k = corners.len();
+        (0..k).all(|i| self.side(corners[i], corners[(i + 1) % k]).is_some())
+    }
+
     /// The triangle to the left of `u → v`.
     pub(super) fn left_of(&self, u: u32, v: u32) -> Option<u32> {
         self.side(u, v).map(|(t, _)| t)

@@ -42,6 +42,7 @@ mod visibility;
 pub(crate) use mesh::Mesh;
 
 use super::counters::Counters;
+use super::length_order::{EuclideanOrder, LengthOrder};
 use super::polygon::Region;
 use crate::kernel::Point;
 use crate::parallel::prelude::*;
@@ -82,9 +83,15 @@ fn map_range<T: Send, R: FromIterator<T> + FromParallelIterator<T>>(
 
 /// One region of `ch(S) ∪ rng(S′)` (an rng-polygon), prepared for the §6
 /// scans: its Delaunay triangles with local adjacency (no hashing during the
-/// walks).
-pub(crate) struct RngPolygon<'a> {
+/// walks). Lengths are compared by `L` (Euclidean unless a metric is given,
+/// [`RngPolygon::with_order`]).
+pub(crate) struct RngPolygon<'a, L: LengthOrder = EuclideanOrder> {
     points: &'a [Point],
+    order: L,
+    /// Is the region strictly convex? Computed only where the §5.1 choice of
+    /// `L` needs a visibility check ([`LengthOrder::CHOICE_IS_VISIBLE`]);
+    /// `true` otherwise (no check).
+    convex: bool,
     v: &'a [u32],
     k: usize,
     mesh: &'a Mesh<'a>,
@@ -102,12 +109,28 @@ pub(crate) struct RngPolygon<'a> {
 
 impl<'a> RngPolygon<'a> {
     /// The region with corners `v` (counter-clockwise positions; the
-    /// Delaunay triangles inside it are read from `mesh`).
+    /// Delaunay triangles inside it are read from `mesh`), Euclidean lengths.
     pub fn new(
         points: &'a [Point],
         v: &'a [u32],
         mesh: &'a Mesh<'a>,
         counters: &'a Counters,
+    ) -> Result<Self, Inconsistent> {
+        Self::with_order(points, v, mesh, counters, EuclideanOrder)
+    }
+}
+
+impl<'a, L: LengthOrder> RngPolygon<'a, L> {
+    /// [`RngPolygon::new`] with lengths compared by `order`. Every boundary
+    /// edge of the region must be a Delaunay edge marked in `mesh` (or a
+    /// hull edge); the triangles only tile the region, so they need not be
+    /// Delaunay for `order`.
+    pub fn with_order(
+        points: &'a [Point],
+        v: &'a [u32],
+        mesh: &'a Mesh<'a>,
+        counters: &'a Counters,
+        order: L,
     ) -> Result<Self, Inconsistent> {
         let k = v.len();
         // The region's Delaunay triangles: flood fill inside the boundary.
@@ -176,8 +199,15 @@ impl<'a> RngPolygon<'a> {
         if positions.iter().flatten().any(|&p| p == NONE) {
             return Err(Inconsistent("corner without position"));
         }
+        let geo = Region {
+            points,
+            vertices: v,
+            symbolic: true,
+        };
         Ok(Self {
             points,
+            order,
+            convex: L::CHOICE_IS_VISIBLE || geo.is_strictly_convex(),
             v,
             k,
             mesh,
@@ -186,11 +216,7 @@ impl<'a> RngPolygon<'a> {
             neighbours,
             positions,
             fan_start,
-            geo: Region {
-                points,
-                vertices: v,
-                symbolic: true,
-            },
+            geo,
         })
     }
 

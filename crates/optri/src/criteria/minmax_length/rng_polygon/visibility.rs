@@ -3,8 +3,9 @@
 
 use super::bits::set;
 use super::{RngPolygon, NONE};
+use crate::criteria::minmax_length::length_order::LengthOrder;
 
-impl RngPolygon<'_> {
+impl<L: LengthOrder> RngPolygon<'_, L> {
     /// Positions visible from corner `a` (diagonals and the two boundary
     /// edges), in counter-clockwise angular order, which for a (weakly)
     /// simple polygon is boundary order from `a + 1` to `a − 1`.
