@@ -6,6 +6,7 @@
 //! cargo run --release -p optri-bench --bin metric_timing -- framed N [METRIC...]
 //! cargo run --release -p optri-bench --bin metric_timing -- arc METRIC N...
 //! cargo run --release -p optri-bench --bin metric_timing -- circle METRIC N...
+//! cargo run --release -p optri-bench --bin metric_timing -- regular METRIC N...
 //! ```
 //! * `uniform N` (default 1 000 000; metrics default `l1 linf`): Delaunay
 //!   alone, then minmax-length under each metric with its phases, and the
@@ -16,8 +17,12 @@
 //! * `arc METRIC N…`: N points in convex position on a 120° circular arc
 //!   (radius jittered by 1e-9 relative): one incomplete region, solved by
 //!   §5.1; time per N and time / N².
-//! * `circle METRIC N…`: the same on the whole circle: one *complete*
-//!   region (every hull segment is an RNG edge), solved by §5.3/§6.
+//! * `circle METRIC N…`: the same on the whole circle: complete regions
+//!   (every hull segment is an RNG edge), solved by §5.3/§6 where they are
+//!   strictly convex or tiled by the Delaunay triangles; from n ≈ 4000 the
+//!   jitter puts points inside the hull, and regions cut by non-Delaunay RNG
+//!   chords go to the cubic program (`complete_regions_outside_mesh`).
+//! * `regular METRIC N…`: the regular N-gon of radius 1000 (strictly convex).
 //!
 //! Both convex modes also time the Euclidean minmax-length triangulation of
 //! the same points in the same process, and print the ratio to the previous
@@ -49,6 +54,18 @@ fn arc(n: usize, turn: f64) -> Vec<[f64; 2]> {
         .collect()
 }
 
+/// The regular `n`-gon of radius 1000 as `f64` samples: strictly convex
+/// position (the sagitta stays far above the rounding), every chord length
+/// repeated n times (ties for every norm).
+fn regular(n: usize) -> Vec<[f64; 2]> {
+    (0..n)
+        .map(|i| {
+            let a = 2.0 * std::f64::consts::PI * i as f64 / n as f64;
+            [1e3 * a.cos(), 1e3 * a.sin()]
+        })
+        .collect()
+}
+
 fn minmax(points: &PointSet, metric: &Metric) -> optri::Solution {
     let options = Options::default().with_metric(metric.clone());
     triangulate_with(points, Criterion::MinmaxLength, &options).expect("minmax-length")
@@ -57,12 +74,17 @@ fn minmax(points: &PointSet, metric: &Metric) -> optri::Solution {
 fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();
     match args.first().map(String::as_str) {
-        Some(kind @ ("arc" | "circle")) => {
+        Some(kind @ ("arc" | "circle" | "regular")) => {
             let turn = if kind == "arc" { 1.0 / 3.0 } else { 1.0 };
             let metric = Metric::parse(&args[1]).expect("metric");
             let mut previous: Option<f64> = None;
             for n in args[2..].iter().map(|s| s.parse::<usize>().expect("N")) {
-                let ps = PointSet::new(&arc(n, turn)).unwrap();
+                let pts = if kind == "regular" {
+                    regular(n)
+                } else {
+                    arc(n, turn)
+                };
+                let ps = PointSet::new(&pts).unwrap();
                 let (_, euclidean) = secs(|| minmax(&ps, &Metric::euclidean()));
                 let (s, t) = secs(|| minmax(&ps, &metric));
                 let d: Vec<String> = s

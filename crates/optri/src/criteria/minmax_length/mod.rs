@@ -138,6 +138,8 @@
 //! | `regions.rs` | the regions of `ch(S) ∪ rng(S′)` read off the Delaunay triangles |
 //! | `certificate.rs` | the Length Lemma and apex lower-bound certificates |
 //! | `rng_polygon/` | the O(k²) rng-polygon algorithm (§5.1–§6), one file per part |
+//! | `length_order.rs` | the length order it compares by: Euclidean, or a metric (§7) |
+//! | `under_metric.rs` | the driver under a non-Euclidean metric (§7) |
 //! | `polygon.rs` | a region's exact geometry and the cubic program |
 //! | `fallback.rs` | the cubic safety net |
 //! | `counters.rs` | the per-run counters behind the diagnostics |
@@ -228,7 +230,7 @@ pub(crate) fn solve(
 const ALGORITHM: &str = "Edelsbrunner–Tan O(n²): Length-Lemma lower bound (longest hull/RNG edge) certifies Delaunay regions; hull ∪ RNG(S′) regions; §5.1 incomplete and §5.3/§6 complete rng-polygons on the symbolic perturbation (exact cubic DP, pruned by the regions' Delaunay diagonals, for regions under 32 corners; §6 Case 2 pockets by u_L search, clipped §5.1 and §5.2 fan-out); §5.4 flat-triangle repair";
 
 /// The method's name under a non-Euclidean metric.
-const ALGORITHM_UNDER_METRIC: &str = "Edelsbrunner–Tan §7: the longest hull segment in the metric (a lower bound) certifies the Delaunay triangulation when no edge of it is longer; otherwise hull ∪ RNG regions under the simulated strictly convex norm (RNG by nearest neighbours in sectors, exact lunes); §5.1 (visible lune vertex minimising the longer side) on large incomplete regions, the exact cubic program on the others; §5.4 flat-triangle repair";
+const ALGORITHM_UNDER_METRIC: &str = "Edelsbrunner–Tan §7: the longest hull segment in the metric (a lower bound) certifies the Delaunay triangulation when no edge of it is longer; otherwise hull ∪ RNG regions under the simulated strictly convex norm (RNG by nearest neighbours in sectors, exact lunes); §5.1 (visible lune vertex minimising the longer side) on large incomplete regions, §5.3/§6 (the Euclidean rng-polygon algorithm under the metric's order, cubic safety net) on large complete ones, the exact cubic program on the others; §5.4 flat-triangle repair";
 
 /// Minmax-length under `metric` with the cubic program on every region
 /// (`quadratic_from = None`), or with §5.1 on every incomplete and §5.3/§6 on

@@ -12,18 +12,40 @@
 //!    RNG of a strictly convex norm is plane, and a point on the open segment
 //!    `pq` lies in `pq`'s lune. So the regions of `ch(S) ∪ rng_N(S′)` are
 //!    found by the planar-graph face walk without perturbation.
-//! 2. Each region: §5.1 with the remark's vertex choice for large
-//!    *incomplete* regions (the one non-RNG edge `pq` is a hull edge, a 1-edge
-//!    with the region beyond it; take the lune vertex visible from `p` and `q`
-//!    minimising `max(|xp|, |xq|)`, recurse on both sides) — this avoids §7's
-//!    point-to-segment distance; O(k²) on convex regions (all visible), plus
-//!    the O(k) visibility tests otherwise; every other region goes to §3's
-//!    exact cubic program with the metric's chord order. **Not proven here:** §7 asserts that §5–§6 carry
-//!    over to strictly convex norms "after careful re-examination" without
-//!    giving it; the §5.1 step is therefore tested against the cubic program
-//!    and exhaustive enumeration (tests/minmax_length_metric.rs), and the
-//!    §5.3/§6 complete-polygon algorithm is not used under non-Euclidean
-//!    metrics (complete regions cost O(k³)).
+//! 2. Each region of at least [`QUADRATIC_FROM`] corners:
+//!    * *incomplete* (the one non-RNG edge `pq` is a hull edge, a 1-edge
+//!      with the region beyond it): §5.1 with the remark's vertex choice
+//!      (the lune vertex visible from `p` and `q` minimising
+//!      `max(|xp|, |xq|)`, recursing on both sides) — this avoids §7's
+//!      point-to-segment distance; O(k²) on convex regions (all visible),
+//!      plus the O(k) visibility tests otherwise;
+//!    * *complete* (every edge in `rng_N(S′)`): the Euclidean product's
+//!      §5.3/§6 algorithm ([`super::rng_polygon`]) under the metric's order
+//!      ([`MetricOrder`]: the simulated norm's comparisons, lunes and
+//!      half-lunes, and in §5.1 the remark's choice again, its visibility
+//!      checked in O(k) where the region is not convex). O(k²). Its
+//!      visibility walk needs a triangulation of the region: a fan if the
+//!      region is strictly convex (convex position), else the Euclidean
+//!      Delaunay triangles with the metric's RNG edges marked, which tile
+//!      the region only if its boundary edges are Delaunay edges; other
+//!      complete regions (`complete_regions_outside_mesh`) go to the cubic
+//!      program.
+//!
+//!    Every other region goes to §3's exact cubic program with the metric's
+//!    chord order. **Not proven here:** §7 asserts that §5–§6 carry over to
+//!    strictly convex norms "after careful re-examination" without giving
+//!    it. §5.1's invariant holds for any visible lune vertex (the remark);
+//!    the stack scan's half-lune classification, the Crossing-Lemma partner
+//!    test and Case 2's Claims 1–5 are used as the Euclidean proofs have
+//!    them and are *tested only*: against the cubic program and exhaustive
+//!    enumeration under L1, L∞, L3 and a hexagonal norm
+//!    (tests/minmax_length_metric.rs, tests/minmax_length_metric_complete.rs,
+//!    convex position full of ties included), with the safety nets asserted
+//!    silent. The nets stay: an invariant failure (`Inconsistent`) sends the
+//!    region to the cubic program (`fallbacks`), a Case 2 pocket or
+//!    remainder failing its check likewise (`case_2_pocket_fallbacks`,
+//!    `case_2_hull_fallbacks`); a wrong step that no check detects would
+//!    give a non-optimal result, which is what the tests look for.
 //! 3. §5.4's repair of flat triangles: a point on segment `uw` is no farther
 //!    from `y` than `max(|uy|, |wy|)` in every norm (convexity), so the
 //!    longest edge does not grow.
@@ -123,9 +145,16 @@ pub(crate) fn run_under(
     // visibility walk; only if some large complete region needs them.
     let delaunay = timed(phases, "mesh", || {
         let needed = quadratic_from.is_some_and(|from| {
-            faces
-                .iter()
-                .any(|f| f.len() >= from && missing(f).is_empty())
+            faces.iter().any(|f| {
+                f.len() >= from
+                    && missing(f).is_empty()
+                    && !Region {
+                        points: pts,
+                        vertices: f,
+                        symbolic: true,
+                    }
+                    .is_strictly_convex()
+            })
         });
         let g = needed.then(|| DelaunayGraph::with_topology(pts).ok())??;
         let flags: Vec<bool> = g
@@ -159,19 +188,25 @@ pub(crate) fn run_under(
                             }
                             counters.fallbacks.add(1);
                         }
-                        [] => match &mesh {
-                            Some(mesh) if mesh.tiles(face) => {
-                                let solved =
-                                    RngPolygon::with_order(pts, face, mesh, &counters, order)
-                                        .and_then(|f| f.triangulate());
-                                if let Ok(t) = solved {
-                                    by_5_3.add(1);
-                                    return t;
+                        [] => {
+                            let polygon = if region.is_strictly_convex() {
+                                Some(RngPolygon::convex_fan(pts, face, &counters, order))
+                            } else {
+                                mesh.as_ref()
+                                    .filter(|m| m.tiles(face))
+                                    .map(|m| RngPolygon::with_order(pts, face, m, &counters, order))
+                            };
+                            match polygon {
+                                Some(polygon) => {
+                                    if let Ok(t) = polygon.and_then(|f| f.triangulate()) {
+                                        by_5_3.add(1);
+                                        return t;
+                                    }
+                                    counters.fallbacks.add(1);
                                 }
-                                counters.fallbacks.add(1);
+                                None => outside_mesh.add(1),
                             }
-                            _ => outside_mesh.add(1),
-                        },
+                        }
                         _ => {}
                     }
                 }

@@ -7,9 +7,11 @@ use crate::criteria::minmax_length::length_order::LengthOrder;
 impl<L: LengthOrder> RngPolygon<'_, L> {
     /// §5.1 on the chain of positions `s, s+1, …, s+m` whose closing edge
     /// `(s+m) → s` is a 1-edge with the chain beyond it. Each step draws the
-    /// triangle to the lune vertex nearest to the closing edge; by the
-    /// 1-Edge Lemma the two new edges are 1-edges (or region edges) with the
-    /// rest beyond them, and all are shorter than the closing edge.
+    /// triangle to the lune vertex nearest to the closing edge (under a
+    /// metric: minimising `max(|xp|, |xq|)` among the visible ones, the
+    /// remark after §5.1); by the 1-Edge Lemma the two new edges are
+    /// 1-edges (or region edges) with the rest beyond them, and all are
+    /// shorter than the closing edge.
     pub(super) fn incomplete(
         &self,
         s: usize,

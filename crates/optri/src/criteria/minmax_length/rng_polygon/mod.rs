@@ -4,9 +4,17 @@
 //! perturbation `S′` (no equal lengths, no three collinear points), as §5.3
 //! prescribes.
 //!
+//! Every length comparison, lune and half-lune test, and §5.1's vertex
+//! choice goes through the region's [`LengthOrder`]: Euclidean in the
+//! product's Euclidean path ([`RngPolygon::new`], monomorphised to the
+//! Euclidean predicates), or a normed metric's simulated strictly convex
+//! norm under §7 ([`RngPolygon::with_order`], from `under_metric.rs`, where
+//! the module docs say what is proven and what only tested). Orientations,
+//! visibility and the triangles that tile the region do not depend on it.
+//!
 //! | function | file | paper |
 //! |---|---|---|
-//! | [`crate::kernel::height_sign`] | kernel | distance of a lune vertex from `pq` (§5.1 step 1) |
+//! | [`LengthOrder::nearer_to_edge`] | `../length_order.rs` | §5.1 step 1: distance of a lune vertex from `pq` ([`crate::kernel::height_sign`]), or under a metric the remark's `max(|xp|, |xq|)` |
 //! | [`RngPolygon::triangulate`] | here | §5.1 for an incomplete rng-polygon, else §5.3 |
 //! | [`RngPolygon::incomplete`] | `incomplete.rs` | §5.1, incomplete rng-polygons (1-Edge Lemma) |
 //! | [`RngPolygon::visible_offsets`] | `visibility.rs` | diagonals at a vertex in angular order (§6 step 1) |
@@ -94,7 +102,9 @@ pub(crate) struct RngPolygon<'a, L: LengthOrder = EuclideanOrder> {
     convex: bool,
     v: &'a [u32],
     k: usize,
-    mesh: &'a Mesh<'a>,
+    /// The Delaunay triangles it was read from (`None`: a fan, see
+    /// [`RngPolygon::convex_fan`]).
+    mesh: Option<&'a Mesh<'a>>,
     counters: &'a Counters,
     /// Corners (vertex indices, counter-clockwise) of the local triangles.
     corners: Vec<[u32; 3]>,
@@ -210,7 +220,66 @@ impl<'a, L: LengthOrder> RngPolygon<'a, L> {
             convex: L::CHOICE_IS_VISIBLE || geo.is_strictly_convex(),
             v,
             k,
-            mesh,
+            mesh: Some(mesh),
+            counters,
+            corners,
+            neighbours,
+            positions,
+            fan_start,
+            geo,
+        })
+    }
+
+    /// A complete, strictly convex region (every corner a strict left turn
+    /// in `S′`, no repeated vertex) tiled by the fan from position 0:
+    /// triangle `t` has the positions `0, t+1, t+2`. For regions whose
+    /// boundary is not made of Delaunay edges (under a metric, RNG chords
+    /// need not be), where a [`Mesh`] cannot supply the triangles; the
+    /// visibility walk only needs some triangulation of the region.
+    pub fn convex_fan(
+        points: &'a [Point],
+        v: &'a [u32],
+        counters: &'a Counters,
+        order: L,
+    ) -> Result<Self, Inconsistent> {
+        let k = v.len();
+        let geo = Region {
+            points,
+            vertices: v,
+            symbolic: true,
+        };
+        if k < 3 || !geo.is_strictly_convex() {
+            return Err(Inconsistent("fan of a region that is not strictly convex"));
+        }
+        let n = k - 2;
+        let corners: Vec<[u32; 3]> = (0..n).map(|t| [v[0], v[t + 1], v[t + 2]]).collect();
+        let positions: Vec<[u32; 3]> = (0..n).map(|t| [0, t as u32 + 1, t as u32 + 2]).collect();
+        // Side 0 (0 → t+1) borders t − 1, side 1 is the boundary, side 2
+        // (t+2 → 0) borders t + 1.
+        let neighbours: Vec<[u32; 3]> = (0..n)
+            .map(|t| {
+                let before = if t > 0 { t as u32 - 1 } else { NONE };
+                let after = if t + 1 < n { t as u32 + 1 } else { NONE };
+                [before, NONE, after]
+            })
+            .collect();
+        // Each corner's fan starts at the triangle left of its boundary edge
+        // a → a+1: triangle 0 for position 0, a − 1 (corner 1) for
+        // 1 ≤ a ≤ k − 2, and n − 1 (corner 2) for a = k − 1.
+        let fan_start: Vec<(u32, u8)> = (0..k)
+            .map(|a| match a {
+                0 => (0, 0),
+                a if a + 1 < k => (a as u32 - 1, 1),
+                _ => (n as u32 - 1, 2),
+            })
+            .collect();
+        Ok(Self {
+            points,
+            order,
+            convex: true,
+            v,
+            k,
+            mesh: None,
             counters,
             corners,
             neighbours,
@@ -234,7 +303,11 @@ impl<'a, L: LengthOrder> RngPolygon<'a, L> {
     /// (an incomplete rng-polygon, beyond that edge), else §5.3.
     pub fn triangulate(&self) -> Result<Vec<[u32; 3]>, Inconsistent> {
         let k = self.k;
-        if let Some(a) = (0..k).find(|&a| self.mesh.is_hull_only(self.v[a], self.v[(a + 1) % k])) {
+        let hull_only = |a: usize| {
+            self.mesh
+                .is_some_and(|m| m.is_hull_only(self.v[a], self.v[(a + 1) % k]))
+        };
+        if let Some(a) = (0..k).find(|&a| hull_only(a)) {
             let mut out = Vec::with_capacity(k - 2);
             self.incomplete((a + 1) % k, k - 1, &mut out)?;
             return Ok(out);
