@@ -57,8 +57,11 @@ const ANGLE_MARGIN: f64 = 1e-9;
 /// Distance factor of the stop: 1.6 > 2cos(π/4.6) ≈ 1.551.
 const KILL_FACTOR2: f64 = 1.6 * 1.6;
 const TAU: f64 = 2.0 * PI;
-/// Radius ratio of successive rings of the search.
-const RING_GROWTH: f64 = std::f64::consts::SQRT_2;
+/// Radius ratio of successive rings of the search: each cell is read once
+/// whatever the ratio, so a small one only costs stop tests and saves the
+/// exact tests of pairs beyond the stop radius (1.25 ran 5 % fewer
+/// instructions than √2 at 10⁴ uniform points, same candidates).
+const RING_GROWTH: f64 = 1.25;
 
 /// The candidate edges (pairs `u < v`, sorted) surviving the diamond filter,
 /// with every convex-hull edge among them.
@@ -69,10 +72,17 @@ pub(crate) fn diamond_candidates(pts: &[Point]) -> Vec<[u32; 2]> {
     let cell = ((w * h) / n as f64).sqrt().max(w.max(h) / n as f64);
     let grid = SparseGrid::new(bbox, cell, n, |i| pts[i], |i| i as u32, |i| i as u32);
     let diagonal = w.hypot(h);
-    let mut edges: Vec<[u32; 2]> = (0..n as u32)
+    // Points in cell order, so that consecutive searches read the same
+    // cells (the result is sorted below, so the order does not matter).
+    let mut edges: Vec<[u32; 2]> = (0..grid.occupied())
         .into_par_iter()
-        .with_min_len(64)
-        .flat_map_iter(|p| search_from(pts, &grid, bbox, cell, diagonal, p))
+        .with_min_len(16)
+        .flat_map_iter(|k| {
+            let grid = &grid;
+            grid.cell(k)
+                .iter()
+                .flat_map(move |&p| search_from(pts, grid, bbox, cell, diagonal, p))
+        })
         .collect();
     let hull = convex_hull_cycle(pts);
     for i in 0..hull.len() {
@@ -86,11 +96,14 @@ pub(crate) fn diamond_candidates(pts: &[Point]) -> Vec<[u32; 2]> {
 
 /// The pairs `[p, q]`, `q > p`, from `p`'s search that survive the exact test.
 ///
-/// Each ring's points are visited by increasing distance, and every point
-/// seen becomes a killer as soon as the visited distance exceeds 1.6 times
-/// its own (dead sectors grown point by point, as in Haas 2018 §3): a pair
-/// whose direction is dead fails the exact test, so it is skipped without
-/// changing the result.
+/// Each grid cell is read once: the cells of each ring's block not in the
+/// previous block go to a waiting list, from which the ring takes the
+/// points closer than its radius. Each ring's points are visited by
+/// increasing distance, and every point seen becomes a killer as soon as
+/// the visited distance exceeds 1.6 times its own (dead sectors grown point
+/// by point, as in Haas 2018 §3): a pair whose direction is dead fails the
+/// exact test, so it is skipped without changing the result. Angles are
+/// computed only for the points a test or a killer needs.
 fn search_from(
     pts: &[Point],
     grid: &SparseGrid<u32>,
@@ -100,51 +113,73 @@ fn search_from(
     p: u32,
 ) -> Vec<[u32; 2]> {
     let a = pts[p as usize];
+    let angle_to = |q: u32| {
+        let b = pts[q as usize];
+        angle_of(b[0] - a[0], b[1] - a[1])
+    };
     let mut out = Vec::new();
-    // Points seen in earlier rings, by increasing squared distance: (squared
-    // distance, angle); `seen[..promoted]` are killers already.
-    let mut seen: Vec<(f64, f64)> = Vec::new();
+    // Points of earlier rings, by increasing squared distance: (squared
+    // distance, angle or NaN if not computed yet, index); `seen[..promoted]`
+    // are killers already.
+    let mut seen: Vec<(f64, f64, u32)> = Vec::new();
     let mut promoted = 0;
+    // Points of the blocks read so far not yet in a ring: (squared distance, index).
+    let mut waiting: Vec<(f64, u32)> = Vec::new();
     let mut ring: Vec<(f64, f64, u32)> = Vec::new();
     let mut killers: Vec<f64> = Vec::new(); // sorted angles
-    let promote = |killers: &mut Vec<f64>, angle: f64| {
-        let at = killers.partition_point(|&t| t < angle);
-        killers.insert(at, angle);
+    let promote = |killers: &mut Vec<f64>, entry: &mut (f64, f64, u32)| {
+        if entry.1.is_nan() {
+            entry.1 = angle_to(entry.2);
+        }
+        let at = killers.partition_point(|&t| t < entry.1);
+        killers.insert(at, entry.1);
     };
-    let (mut inner2, mut radius) = (0.0f64, 2.0 * cell);
+    let mut read: Option<[u64; 4]> = None;
+    let mut radius = 2.0 * cell;
     loop {
         let outer2 = radius * radius;
-        grid.any_cell_near(a, a, radius, |items| {
+        // Every point closer than `radius` lies in this block.
+        let block = grid.block_around(a, radius);
+        grid.for_cells_between(block, read, |items| {
             for &q in items {
-                if q == p {
-                    continue;
-                }
-                let b = pts[q as usize];
-                let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
-                let d2 = dx * dx + dy * dy;
-                if d2 >= inner2 && d2 < outer2 {
-                    ring.push((d2, angle_of(dx, dy), q));
+                if q != p {
+                    let b = pts[q as usize];
+                    let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
+                    waiting.push((dx * dx + dy * dy, q));
                 }
             }
-            false
+        });
+        read = Some(block);
+        waiting.retain(|&(d2, q)| {
+            let inside = d2 < outer2;
+            if inside {
+                ring.push((d2, f64::NAN, q));
+            }
+            !inside
         });
         ring.sort_unstable_by(|x, y| x.0.total_cmp(&y.0));
         // Killers closer than d/1.6 apply to a pair of length d: first those
         // of earlier rings, then this ring's own points, in distance order.
         let mut own = 0;
-        for &(d2, angle, q) in &ring {
+        for i in 0..ring.len() {
+            let d2 = ring[i].0;
             while promoted < seen.len() && seen[promoted].0 * KILL_FACTOR2 < d2 {
-                promote(&mut killers, seen[promoted].1);
+                promote(&mut killers, &mut seen[promoted]);
                 promoted += 1;
             }
             if promoted == seen.len() {
-                while own < ring.len() && ring[own].0 * KILL_FACTOR2 < d2 {
-                    promote(&mut killers, ring[own].1);
+                while own < i && ring[own].0 * KILL_FACTOR2 < d2 {
+                    promote(&mut killers, &mut ring[own]);
                     own += 1;
                 }
             }
-            if q > p && direction_alive(angle, &killers) && diamond_survives(pts, grid, p, q) {
-                out.push([p, q]);
+            let q = ring[i].2;
+            if q > p {
+                let angle = angle_to(q);
+                ring[i].1 = angle;
+                if direction_alive(angle, &killers) && diamond_survives(pts, grid, p, q) {
+                    out.push([p, q]);
+                }
             }
         }
         // This ring's killers so far stay killers: move the ring to `seen`
@@ -152,19 +187,18 @@ fn search_from(
         if promoted == seen.len() {
             promoted += own;
         }
-        seen.extend(ring.drain(..).map(|(d2, angle, _)| (d2, angle)));
+        seen.append(&mut ring);
         if radius > diagonal {
             break;
         }
         // The stop test: killers for every pair beyond this ring.
         while promoted < seen.len() && seen[promoted].0 * KILL_FACTOR2 < outer2 {
-            promote(&mut killers, seen[promoted].1);
+            promote(&mut killers, &mut seen[promoted]);
             promoted += 1;
         }
         if all_directions_dead(a, bbox, radius, &killers) {
             break;
         }
-        inner2 = outer2;
         radius *= RING_GROWTH;
     }
     out
