@@ -98,12 +98,10 @@ pub(crate) fn diamond_candidates(pts: &[Point]) -> Vec<[u32; 2]> {
 ///
 /// Each grid cell is read once: the cells of each ring's block not in the
 /// previous block go to a waiting list, from which the ring takes the
-/// points closer than its radius. Each ring's points are visited by
-/// increasing distance, and every point seen becomes a killer as soon as
-/// the visited distance exceeds 1.6 times its own (dead sectors grown point
-/// by point, as in Haas 2018 §3): a pair whose direction is dead fails the
-/// exact test, so it is skipped without changing the result. Angles are
-/// computed only for the points a test or a killer needs.
+/// points closer than its radius. A pair whose direction is dead for the
+/// killers of the previous stop test fails the exact test, so it is skipped
+/// without changing the result. Angles are computed only for the points a
+/// test or a killer needs.
 fn search_from(
     pts: &[Point],
     grid: &SparseGrid<u32>,
@@ -118,22 +116,15 @@ fn search_from(
         angle_of(b[0] - a[0], b[1] - a[1])
     };
     let mut out = Vec::new();
-    // Points of earlier rings, by increasing squared distance: (squared
-    // distance, angle or NaN if not computed yet, index); `seen[..promoted]`
-    // are killers already.
+    // Points of earlier rings: (squared distance, angle or NaN if not
+    // computed yet, index); `seen[..promoted]` are the killers, the rest are
+    // farther (sorted by distance at each stop test).
     let mut seen: Vec<(f64, f64, u32)> = Vec::new();
     let mut promoted = 0;
     // Points of the blocks read so far not yet in a ring: (squared distance, index).
     let mut waiting: Vec<(f64, u32)> = Vec::new();
     let mut ring: Vec<(f64, f64, u32)> = Vec::new();
     let mut killers: Vec<f64> = Vec::new(); // sorted angles
-    let promote = |killers: &mut Vec<f64>, entry: &mut (f64, f64, u32)| {
-        if entry.1.is_nan() {
-            entry.1 = angle_to(entry.2);
-        }
-        let at = killers.partition_point(|&t| t < entry.1);
-        killers.insert(at, entry.1);
-    };
     let mut read: Option<[u64; 4]> = None;
     let mut radius = 2.0 * cell;
     loop {
@@ -157,44 +148,35 @@ fn search_from(
             }
             !inside
         });
-        ring.sort_unstable_by(|x, y| x.0.total_cmp(&y.0));
-        // Killers closer than d/1.6 apply to a pair of length d: first those
-        // of earlier rings, then this ring's own points, in distance order.
-        let mut own = 0;
-        for i in 0..ring.len() {
-            let d2 = ring[i].0;
-            while promoted < seen.len() && seen[promoted].0 * KILL_FACTOR2 < d2 {
-                promote(&mut killers, &mut seen[promoted]);
-                promoted += 1;
-            }
-            if promoted == seen.len() {
-                while own < i && ring[own].0 * KILL_FACTOR2 < d2 {
-                    promote(&mut killers, &mut ring[own]);
-                    own += 1;
-                }
-            }
-            let q = ring[i].2;
+        // The killers (closer than inner/1.6) apply to every pair of this
+        // ring: they are the previous stop test's.
+        for entry in ring.iter_mut() {
+            let q = entry.2;
             if q > p {
-                let angle = angle_to(q);
-                ring[i].1 = angle;
-                if direction_alive(angle, &killers) && diamond_survives(pts, grid, p, q) {
+                entry.1 = angle_to(q);
+                if direction_alive(entry.1, &killers) && diamond_survives(pts, grid, p, q) {
                     out.push([p, q]);
                 }
             }
-        }
-        // This ring's killers so far stay killers: move the ring to `seen`
-        // with the promoted prefix accounted for.
-        if promoted == seen.len() {
-            promoted += own;
         }
         seen.append(&mut ring);
         if radius > diagonal {
             break;
         }
-        // The stop test: killers for every pair beyond this ring.
+        // The stop test: killers for every pair beyond this ring, in one
+        // batch (sorted once; inserting them one by one cost more).
+        seen[promoted..].sort_unstable_by(|x, y| x.0.total_cmp(&y.0));
+        let before = killers.len();
         while promoted < seen.len() && seen[promoted].0 * KILL_FACTOR2 < outer2 {
-            promote(&mut killers, &mut seen[promoted]);
+            let entry = &mut seen[promoted];
+            if entry.1.is_nan() {
+                entry.1 = angle_to(entry.2);
+            }
+            killers.push(entry.1);
             promoted += 1;
+        }
+        if killers.len() > before {
+            killers.sort_unstable_by(f64::total_cmp);
         }
         if all_directions_dead(a, bbox, radius, &killers) {
             break;
