@@ -37,6 +37,13 @@ pub fn min_weight_pipeline(
     min_weight_pipeline_with_budget(points, crate::criteria::min_weight::FRONT_BUDGET)
 }
 
+/// The general min-weight pipeline's edge sets on `points`: the diamond
+/// filter's candidates, the edges left by the LMT loop and the certain
+/// edges (distinct indices, sorted pairs `u < v`, each list sorted).
+pub fn min_weight_skeleton_edges(points: &crate::PointSet) -> [Vec<[u32; 2]>; 3] {
+    crate::criteria::min_weight::skeleton_edge_sets(points)
+}
+
 /// [`min_weight_pipeline`] with the exact search on faces with holes
 /// limited to `budget` memoised fronts per face (a tiny budget leaves such
 /// faces unsolved: the result is then not exact, its bound certified).

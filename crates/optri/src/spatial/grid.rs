@@ -259,6 +259,50 @@ impl<T: Copy + Send + Sync> SparseGrid<T> {
         (r0..=r1).any(|r| self.any_cell_in_row(r, c0, c1, |k| f(self.cell(k))))
     }
 
+    /// The cell block `[c0, c1, r0, r1]` (inclusive) that
+    /// [`any_cell_near`](Self::any_cell_near)`(a, a, pad, ..)` scans.
+    #[inline]
+    pub(crate) fn block_around(&self, a: Point, pad: f64) -> [u64; 4] {
+        let (px, py) = (pad + self.slack_x, pad + self.slack_y);
+        [
+            self.column(a[0] - px),
+            self.column(a[0] + px),
+            self.row(a[1] - py),
+            self.row(a[1] + py),
+        ]
+    }
+
+    /// Calls `f` on the items of every occupied cell of block `outer` that
+    /// is not in block `inner` (blocks from [`block_around`](Self::block_around);
+    /// `inner` inside `outer`, or `None`): growing blocks visit each cell once.
+    pub(crate) fn for_cells_between(
+        &self,
+        outer: [u64; 4],
+        inner: Option<[u64; 4]>,
+        mut f: impl FnMut(&[T]),
+    ) {
+        let [c0, c1, r0, r1] = outer;
+        for r in r0..=r1 {
+            let mut visit = |from: u64, to: u64| {
+                if from <= to {
+                    self.any_cell_in_row(r, from, to, |k| {
+                        f(self.cell(k));
+                        false
+                    });
+                }
+            };
+            match inner {
+                Some([i0, i1, j0, j1]) if (j0..=j1).contains(&r) => {
+                    if i0 > c0 {
+                        visit(c0, i0 - 1);
+                    }
+                    visit(i1 + 1, c1);
+                }
+                _ => visit(c0, c1),
+            }
+        }
+    }
+
     /// Calls `f` on the items of the occupied cell `k` and of each of its
     /// occupied neighbours.
     pub(crate) fn for_block(&self, k: usize, mut f: impl FnMut(&[T])) {

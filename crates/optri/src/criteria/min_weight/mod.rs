@@ -147,6 +147,36 @@ impl<P: Fn(usize) -> Point> Objective for TotalLength<'_, P> {
     }
 }
 
+/// The diamond filter's candidates, the edges the LMT loop leaves and the
+/// certain edges of the general pipeline on `points` (distinct indices,
+/// sorted pairs `u < v`), for the tests that compare them with brute-force
+/// references.
+#[cfg(feature = "internals")]
+pub(crate) fn skeleton_edge_sets(points: &PointSet) -> [Vec<[u32; 2]>; 3] {
+    let pts = points.points();
+    let candidates = skeleton::diamond_candidates(pts);
+    let grid = point_grid(pts);
+    let sk = skeleton::lmt_skeleton(pts, &grid, candidates.clone());
+    let pick = |flags: &[bool]| -> Vec<[u32; 2]> {
+        sk.edges
+            .iter()
+            .zip(flags)
+            .filter(|(_, &f)| f)
+            .map(|(&e, _)| e)
+            .collect()
+    };
+    [candidates, pick(&sk.alive), pick(&sk.certain)]
+}
+
+/// A grid of the points with about one point per cell.
+fn point_grid(pts: &[Point]) -> SparseGrid<u32> {
+    let bbox = bounding_box(pts);
+    let (w, h) = (bbox[2] - bbox[0], bbox[3] - bbox[1]);
+    let n = pts.len();
+    let cell = ((w * h) / n as f64).sqrt().max(w.max(h) / n as f64);
+    SparseGrid::new(bbox, cell, n, |i| pts[i], |i| i as u32, |i| i as u32)
+}
+
 /// The general pipeline's result with its certified lower bound.
 pub(crate) struct General {
     pub solved: Solved,
@@ -200,11 +230,8 @@ pub(crate) fn general_min_weight(
     let candidates = skeleton::diamond_candidates(pts);
     diagnostics.add("diamond candidates", candidates.len() as u64);
     watch.lap("diamond filter");
-    let bbox = bounding_box(pts);
-    let (w, h) = (bbox[2] - bbox[0], bbox[3] - bbox[1]);
     let n = pts.len();
-    let cell = ((w * h) / n as f64).sqrt().max(w.max(h) / n as f64);
-    let grid = SparseGrid::new(bbox, cell, n, |i| pts[i], |i| i as u32, |i| i as u32);
+    let grid = point_grid(pts);
     let sk = skeleton::lmt_skeleton(pts, &grid, candidates);
     let alive = sk.alive.iter().filter(|&&a| a).count();
     let certain = sk.certain.iter().filter(|&&a| a).count();

@@ -8,7 +8,8 @@
 //!    empty of points. The exact test uses the slightly smaller dyadic angle
 //!    of [`angle_below_diamond`], so it removes only edges the theorem
 //!    removes. Candidates come from each point's neighbourhood in a grid,
-//!    searched in rings (radius ×√2) until every direction is *dead*: a point `r`
+//!    searched in rings (radius ×1.25, each grid cell read once) until every
+//!    direction is *dead*: a point `r`
 //!    at distance `d` and angle `θ` from `p` lies strictly inside the left
 //!    triangle (base angle `α'`, the exact test's) of every `pq` whose
 //!    direction `φ` satisfies `0 < θ − φ < α'` once `|pq| > 2cos(α')·d ≈
@@ -32,7 +33,10 @@
 //!    triangles (no point in the closed triangle but its corners) whose two
 //!    other edges are still candidates; an edge without a locally minimal
 //!    pair is removed, which can only invalidate triangles of its
-//!    neighbours, so a work list reaches the fixed point. Edges that
+//!    neighbours, so a work list reaches the fixed point. Emptiness is
+//!    decided lazily, only for a pair of triangles that passes the length
+//!    test (at 10⁴ uniform points the emptiness tests visit 47 % fewer grid
+//!    cells, by callgrind call counts). Edges that
 //!    intersect no remaining candidate are *certain*: in every triangulation
 //!    drawn from the candidates (a triangulation is a maximal non-crossing
 //!    set), hence in every minimum-weight triangulation. Convex-hull edges
@@ -57,8 +61,11 @@ const ANGLE_MARGIN: f64 = 1e-9;
 /// Distance factor of the stop: 1.6 > 2cos(π/4.6) ≈ 1.551.
 const KILL_FACTOR2: f64 = 1.6 * 1.6;
 const TAU: f64 = 2.0 * PI;
-/// Radius ratio of successive rings of the search.
-const RING_GROWTH: f64 = std::f64::consts::SQRT_2;
+/// Radius ratio of successive rings of the search: each cell is read once
+/// whatever the ratio, so a small one only costs stop tests and saves the
+/// exact tests of pairs beyond the stop radius (1.25 ran 5 % fewer
+/// instructions than √2 at 10⁴ uniform points, same candidates).
+const RING_GROWTH: f64 = 1.25;
 
 /// The candidate edges (pairs `u < v`, sorted) surviving the diamond filter,
 /// with every convex-hull edge among them.
@@ -69,10 +76,17 @@ pub(crate) fn diamond_candidates(pts: &[Point]) -> Vec<[u32; 2]> {
     let cell = ((w * h) / n as f64).sqrt().max(w.max(h) / n as f64);
     let grid = SparseGrid::new(bbox, cell, n, |i| pts[i], |i| i as u32, |i| i as u32);
     let diagonal = w.hypot(h);
-    let mut edges: Vec<[u32; 2]> = (0..n as u32)
+    // Points in cell order, so that consecutive searches read the same
+    // cells (the result is sorted below, so the order does not matter).
+    let mut edges: Vec<[u32; 2]> = (0..grid.occupied())
         .into_par_iter()
-        .with_min_len(64)
-        .flat_map_iter(|p| search_from(pts, &grid, bbox, cell, diagonal, p))
+        .with_min_len(16)
+        .flat_map_iter(|k| {
+            let grid = &grid;
+            grid.cell(k)
+                .iter()
+                .flat_map(move |&p| search_from(pts, grid, bbox, cell, diagonal, p))
+        })
         .collect();
     let hull = convex_hull_cycle(pts);
     for i in 0..hull.len() {
@@ -85,6 +99,13 @@ pub(crate) fn diamond_candidates(pts: &[Point]) -> Vec<[u32; 2]> {
 }
 
 /// The pairs `[p, q]`, `q > p`, from `p`'s search that survive the exact test.
+///
+/// Each grid cell is read once: the cells of each ring's block not in the
+/// previous block go to a waiting list, from which the ring takes the
+/// points closer than its radius. A pair whose direction is dead for the
+/// killers of the previous stop test fails the exact test, so it is skipped
+/// without changing the result. Angles are computed only for the points a
+/// test or a killer needs.
 fn search_from(
     pts: &[Point],
     grid: &SparseGrid<u32>,
@@ -94,54 +115,76 @@ fn search_from(
     p: u32,
 ) -> Vec<[u32; 2]> {
     let a = pts[p as usize];
+    let angle_to = |q: u32| {
+        let b = pts[q as usize];
+        angle_of(b[0] - a[0], b[1] - a[1])
+    };
     let mut out = Vec::new();
-    let mut seen: Vec<(f64, f64)> = Vec::new(); // (angle, squared distance)
-    let mut pending: Vec<(u32, f64)> = Vec::new();
-    let mut killers: Vec<f64> = Vec::new();
-    let (mut inner2, mut radius) = (0.0f64, 2.0 * cell);
+    // Points of earlier rings: (squared distance, angle or NaN if not
+    // computed yet, index); `seen[..promoted]` are the killers, the rest are
+    // farther (sorted by distance at each stop test).
+    let mut seen: Vec<(f64, f64, u32)> = Vec::new();
+    let mut promoted = 0;
+    // Points of the blocks read so far not yet in a ring: (squared distance, index).
+    let mut waiting: Vec<(f64, u32)> = Vec::new();
+    let mut ring: Vec<(f64, f64, u32)> = Vec::new();
+    let mut killers: Vec<f64> = Vec::new(); // sorted angles
+    let mut read: Option<[u64; 4]> = None;
+    let mut radius = 2.0 * cell;
     loop {
         let outer2 = radius * radius;
-        grid.any_cell_near(a, a, radius, |items| {
+        // Every point closer than `radius` lies in this block.
+        let block = grid.block_around(a, radius);
+        grid.for_cells_between(block, read, |items| {
             for &q in items {
-                if q == p {
-                    continue;
-                }
-                let b = pts[q as usize];
-                let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
-                let d2 = dx * dx + dy * dy;
-                if d2 >= inner2 && d2 < outer2 {
-                    let angle = angle_of(dx, dy);
-                    seen.push((angle, d2));
-                    if q > p {
-                        pending.push((q, angle));
-                    }
+                if q != p {
+                    let b = pts[q as usize];
+                    let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
+                    waiting.push((dx * dx + dy * dy, q));
                 }
             }
-            false
         });
-        // Candidates of this ring are at least `inner` away: killers closer
-        // than inner/1.6 apply to all of them. They are the killers the
-        // previous ring's stop test used (points seen since are farther).
-        for &(q, angle) in &pending {
-            if direction_alive(angle, &killers) && diamond_survives(pts, grid, p, q) {
-                out.push([p, q]);
+        read = Some(block);
+        waiting.retain(|&(d2, q)| {
+            let inside = d2 < outer2;
+            if inside {
+                ring.push((d2, f64::NAN, q));
+            }
+            !inside
+        });
+        // The killers (closer than inner/1.6) apply to every pair of this
+        // ring: they are the previous stop test's.
+        for entry in ring.iter_mut() {
+            let q = entry.2;
+            if q > p {
+                entry.1 = angle_to(q);
+                if direction_alive(entry.1, &killers) && diamond_survives(pts, grid, p, q) {
+                    out.push([p, q]);
+                }
             }
         }
-        pending.clear();
+        seen.append(&mut ring);
         if radius > diagonal {
             break;
         }
-        killers.clear();
-        killers.extend(
-            seen.iter()
-                .filter(|s| s.1 * KILL_FACTOR2 < outer2)
-                .map(|s| s.0),
-        );
-        killers.sort_unstable_by(f64::total_cmp);
+        // The stop test: killers for every pair beyond this ring, in one
+        // batch (sorted once; inserting them one by one cost more).
+        seen[promoted..].sort_unstable_by(|x, y| x.0.total_cmp(&y.0));
+        let before = killers.len();
+        while promoted < seen.len() && seen[promoted].0 * KILL_FACTOR2 < outer2 {
+            let entry = &mut seen[promoted];
+            if entry.1.is_nan() {
+                entry.1 = angle_to(entry.2);
+            }
+            killers.push(entry.1);
+            promoted += 1;
+        }
+        if killers.len() > before {
+            killers.sort_unstable_by(f64::total_cmp);
+        }
         if all_directions_dead(a, bbox, radius, &killers) {
             break;
         }
-        inner2 = outer2;
         radius *= RING_GROWTH;
     }
     out
@@ -287,9 +330,12 @@ pub(crate) struct Skeleton {
     pub certain: Vec<bool>,
     /// Convex-hull edge (between consecutive hull points).
     pub hull: Vec<bool>,
-    /// Empty candidate triangles (counter-clockwise) and their edge ids.
+    /// The empty triangles (counter-clockwise) whose three edges are left
+    /// by the LMT loop, with their edge ids. During the loop: every
+    /// non-flat triangle of three candidate edges.
     pub triangles: Vec<([u32; 3], [u32; 3])>,
-    /// CSR per edge: its triangles on the left of `u → v` (u < v), then right.
+    /// CSR per edge: its triangles on the left of `u → v` (u < v), then
+    /// right; emptied after the loop.
     tri_offsets: Vec<u32>,
     tri_list: Vec<u32>,
     tri_left_len: Vec<u32>,
@@ -427,8 +473,10 @@ pub(crate) fn lmt_skeleton(
             skeleton.hull[e as usize] = true;
         }
     }
-    // Triangles u < v < w, each found from its edge (u, v): the common
-    // neighbours w > v of u and v, by merging their sorted lists.
+    // Triangles u < v < w of candidate edges, each found from its edge
+    // (u, v): the common neighbours w > v of u and v, by merging their
+    // sorted lists. Whether one is empty is decided only when the loop needs
+    // it (most are never asked: their edge fails the length test first).
     let sk = &skeleton;
     let triangles: Vec<([u32; 3], [u32; 3])> = (0..m as u32)
         .into_par_iter()
@@ -453,14 +501,12 @@ pub(crate) fn lmt_skeleton(
                         if o == 0 {
                             continue;
                         }
-                        let (corners, ids) = if o > 0 {
+                        // Emptiness is decided lazily, in the loop.
+                        found.push(if o > 0 {
                             ([u, v, w], [e, vw, uw])
                         } else {
                             ([u, w, v], [uw, vw, e])
-                        };
-                        if !triangle_has_point(pts, grid, corners) {
-                            found.push((corners, ids));
-                        }
+                        });
                     }
                 }
             }
@@ -505,7 +551,29 @@ pub(crate) fn lmt_skeleton(
     skeleton.tri_list = tri_list;
     // The loop needs no crossings; certainty does, among the survivors only
     // (far fewer and shorter than the filter's candidates).
-    run_lmt_loop(pts, &mut skeleton);
+    let state = run_lmt_loop(pts, grid, &mut skeleton);
+    // Keep the empty triangles whose edges are all left (the faces' only
+    // use); the per-edge triangle lists served the loop alone.
+    let sk = &skeleton;
+    let kept: Vec<([u32; 3], [u32; 3])> = (0..sk.triangles.len())
+        .into_par_iter()
+        .with_min_len(1024)
+        .filter(|&t| {
+            let (corners, ids) = sk.triangles[t];
+            ids.iter().all(|&f| sk.alive[f as usize])
+                && match state[t] {
+                    TriangleState::Empty => true,
+                    TriangleState::Dead => false,
+                    TriangleState::Unknown => !triangle_has_point(pts, grid, corners),
+                }
+        })
+        .map(|t| sk.triangles[t])
+        .collect();
+    drop(state);
+    skeleton.triangles = kept;
+    skeleton.tri_offsets = Vec::new();
+    skeleton.tri_list = Vec::new();
+    skeleton.tri_left_len = Vec::new();
     // Crossings: edges in length classes of powers of two, each class in a
     // grid of its midpoints; an edge of class k (length < 2^(k+1)·base)
     // meeting segment e has its midpoint within 2^k·base of e.
@@ -577,11 +645,13 @@ pub(crate) fn lmt_skeleton(
             }
             let ends = sk.edges[e as usize];
             let (a, b) = (pts[ends[0] as usize], pts[ends[1] as usize]);
+            // Each conflicting pair once, from its smaller id (the relation
+            // is symmetric); the lists are mirrored below.
             let mut out = Vec::new();
             for (reach, g) in &grids {
                 g.any_cell_near(a, b, *reach, |items| {
                     for &f in items {
-                        if f != e && edges_conflict(pts, ends, sk.edges[f as usize]) {
+                        if f > e && edges_conflict(pts, ends, sk.edges[f as usize]) {
                             out.push(f);
                         }
                     }
@@ -594,10 +664,26 @@ pub(crate) fn lmt_skeleton(
         })
         .collect();
     let mut cross_offsets = vec![0u32; m + 1];
-    let mut cross_list = Vec::new();
+    for (e, list) in crossings.iter().enumerate() {
+        cross_offsets[e + 1] += list.len() as u32;
+        for &f in list {
+            cross_offsets[f as usize + 1] += 1;
+        }
+    }
+    for e in 0..m {
+        cross_offsets[e + 1] += cross_offsets[e];
+    }
+    // Filling by increasing `e` keeps every list sorted: an edge first gets
+    // its smaller partners (in increasing order), then its own larger ones.
+    let mut cross_list = vec![0u32; cross_offsets[m] as usize];
+    let mut next: Vec<u32> = cross_offsets[..m].to_vec();
     for (e, list) in crossings.into_iter().enumerate() {
-        cross_list.extend_from_slice(&list);
-        cross_offsets[e + 1] = cross_list.len() as u32;
+        for f in list {
+            cross_list[next[e] as usize] = f;
+            next[e] += 1;
+            cross_list[next[f as usize] as usize] = e as u32;
+            next[f as usize] += 1;
+        }
     }
     skeleton.cross_offsets = cross_offsets;
     skeleton.cross_list = cross_list;
@@ -608,14 +694,46 @@ pub(crate) fn lmt_skeleton(
     skeleton
 }
 
-/// Is `e` locally minimal for some valid pair of triangles? `right_apexes`
-/// is scratch space.
+/// What the LMT loop knows of a candidate triangle.
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum TriangleState {
+    /// Not yet tested for emptiness, no edge removed.
+    Unknown,
+    /// Empty, no edge removed: some edge may rely on it.
+    Empty,
+    /// An edge removed, or a point inside: never valid again.
+    Dead,
+}
+
+/// Is triangle `t` valid (no edge removed and empty)? Decides emptiness on
+/// first use.
+fn valid_triangle(
+    pts: &[Point],
+    grid: &SparseGrid<u32>,
+    sk: &Skeleton,
+    state: &mut [TriangleState],
+    t: u32,
+) -> bool {
+    let slot = &mut state[t as usize];
+    if *slot == TriangleState::Unknown {
+        *slot = if triangle_has_point(pts, grid, sk.triangles[t as usize].0) {
+            TriangleState::Dead
+        } else {
+            TriangleState::Empty
+        };
+    }
+    *slot == TriangleState::Empty
+}
+
+/// Is `e` locally minimal for some pair of valid triangles? The pair's
+/// shape (not a strictly convex quadrilateral, or `e` not longer than the
+/// other diagonal) is tested first, emptiness only for a pair that passes.
 fn locally_minimal(
     pts: &[Point],
+    grid: &SparseGrid<u32>,
     sk: &Skeleton,
-    dead: &[bool],
+    state: &mut [TriangleState],
     e: u32,
-    right_apexes: &mut Vec<Point>,
 ) -> bool {
     let [u, v] = sk.edges[e as usize];
     let (left, right) = sk.sides(e);
@@ -624,20 +742,23 @@ fn locally_minimal(
         pts[*c.iter().find(|&&x| x != u && x != v).unwrap() as usize]
     };
     let (a, b) = (pts[u as usize], pts[v as usize]);
-    right_apexes.clear();
-    right_apexes.extend(
-        right
-            .iter()
-            .filter(|&&t| !dead[t as usize])
-            .map(|&t| apex(t)),
-    );
     for &tl in left {
-        if dead[tl as usize] {
+        if state[tl as usize] == TriangleState::Dead {
             continue;
         }
         let r = apex(tl);
-        for &s in right_apexes.iter() {
-            if !properly_cross(a, b, r, s) || compare_lengths(a, b, r, s) != Ordering::Greater {
+        for &tr in right {
+            if state[tr as usize] == TriangleState::Dead {
+                continue;
+            }
+            let s = apex(tr);
+            if properly_cross(a, b, r, s) && compare_lengths(a, b, r, s) == Ordering::Greater {
+                continue;
+            }
+            if !valid_triangle(pts, grid, sk, state, tl) {
+                break; // tl holds a point: no pair with it
+            }
+            if valid_triangle(pts, grid, sk, state, tr) {
                 return true;
             }
         }
@@ -645,12 +766,13 @@ fn locally_minimal(
     false
 }
 
-/// The LMT loop. A triangle is *dead* once one of its edges is removed (a
-/// flag per triangle, set when the edge goes).
-fn run_lmt_loop(pts: &[Point], sk: &mut Skeleton) {
+/// The LMT loop; returns the triangles' final states. A triangle dies once
+/// one of its edges is removed; only an edge whose local minimality rested
+/// on a triangle known to be empty can lose it, so only the other edges of
+/// such a triangle are queued again (an untested triangle supported none).
+fn run_lmt_loop(pts: &[Point], grid: &SparseGrid<u32>, sk: &mut Skeleton) -> Vec<TriangleState> {
     let m = sk.edges.len();
-    let mut dead = vec![false; sk.triangles.len()];
-    let mut scratch = Vec::new();
+    let mut state = vec![TriangleState::Unknown; sk.triangles.len()];
     let mut queued = vec![true; m];
     let mut work: Vec<u32> = (0..m as u32).rev().collect();
     while let Some(e) = work.pop() {
@@ -658,16 +780,16 @@ fn run_lmt_loop(pts: &[Point], sk: &mut Skeleton) {
         if !sk.alive[e as usize] || sk.hull[e as usize] {
             continue;
         }
-        if locally_minimal(pts, sk, &dead, e, &mut scratch) {
+        if locally_minimal(pts, grid, sk, &mut state, e) {
             continue;
         }
         sk.alive[e as usize] = false;
         let (left, right) = sk.sides(e);
         for &t in left.iter().chain(right) {
-            if dead[t as usize] {
-                continue; // its other edges were queued when it died
+            let before = std::mem::replace(&mut state[t as usize], TriangleState::Dead);
+            if before != TriangleState::Empty {
+                continue;
             }
-            dead[t as usize] = true;
             for f in sk.triangles[t as usize].1 {
                 if f != e && sk.alive[f as usize] && !queued[f as usize] {
                     queued[f as usize] = true;
@@ -676,4 +798,5 @@ fn run_lmt_loop(pts: &[Point], sk: &mut Skeleton) {
             }
         }
     }
+    state
 }
