@@ -7,7 +7,8 @@
 
 use optri::kernel::{
     angle_at_least_30_degrees, compare_areas, compare_corner_angles, compare_lengths, dot_sign,
-    in_half_lune, in_lune, incircle_sign, orient_sign, MAX_COORDINATE, MIN_COORDINATE,
+    exact_squared_length, in_half_lune, in_lune, incircle_sign, orient_sign, MAX_COORDINATE,
+    MIN_COORDINATE,
 };
 use optri_oracle as oracle;
 use rand::rngs::StdRng;
@@ -21,6 +22,7 @@ const SEED_LENGTHS_AT_LIMITS: u64 = 142;
 const SEED_LUNES_AT_LIMITS: u64 = 2142;
 const SEED_HUGE_AND_TINY_MIXED: u64 = 343;
 const SEED_DIAMOND_FILTER: u64 = 46;
+const SEED_EXACT_SQUARED_LENGTHS: u64 = 1_000_000;
 
 fn next_up_or_down(v: f64, rng: &mut StdRng) -> f64 {
     let k: i64 = rng.gen_range(-2..=2);
@@ -949,4 +951,54 @@ fn certainly_outside_diamonds_never_rejects_an_inside_point() {
         "the filter rejected only {rejected} points near the sides"
     );
     assert!(far > 19_000, "the filter rejected only {far} far points");
+}
+
+/// `exact_squared_length` claims exactness only when it holds: wherever it
+/// answers for both segments, the numbers compare as the exact rational
+/// lengths do (nearly degenerate samples at every scale, where it must
+/// often decline), and it always answers on integer coordinates below 2²⁵,
+/// as a six-decimal file scaled by 10⁶ gives, negative ones included.
+#[test]
+fn exact_squared_lengths_are_exact_where_claimed() {
+    let mut rng = StdRng::seed_from_u64(SEED_EXACT_SQUARED_LENGTHS);
+    let (mut claimed, mut declined, mut ties) = (0, 0, 0);
+    let settings = [
+        (1.0, 0.0),
+        (1e6, 0.0),
+        (1e-3, 2f64.powi(40)),
+        (2f64.powi(-100), 0.0),
+        (2f64.powi(150), 0.0),
+        (2f64.powi(24), -(2f64.powi(24))),
+    ];
+    for &(scale, offset) in &settings {
+        for _ in 0..3000 {
+            let [a, b, c, d] = sample(&mut rng, scale, offset);
+            match (exact_squared_length(a, b), exact_squared_length(c, d)) {
+                (Some(s), Some(t)) => {
+                    let expected = oracle::compare_squared_lengths(a, b, c, d);
+                    assert_eq!(s.total_cmp(&t), expected, "{a:?} {b:?} {c:?} {d:?}");
+                    claimed += 1;
+                    ties += expected.is_eq() as usize;
+                }
+                _ => declined += 1,
+            }
+        }
+    }
+    for _ in 0..3000 {
+        let q = |rng: &mut StdRng| {
+            let limit = (1i64 << 25) - 1;
+            [
+                rng.gen_range(-limit..=limit) as f64,
+                rng.gen_range(-limit..=limit) as f64,
+            ]
+        };
+        let (a, b) = (q(&mut rng), q(&mut rng));
+        let length = exact_squared_length(a, b).expect("integers below 2^25 are exact");
+        let (dx, dy) = ((a[0] - b[0]) as i128, (a[1] - b[1]) as i128);
+        assert_eq!(length as i128, dx * dx + dy * dy);
+    }
+    assert!(
+        claimed > 1000 && declined > 1000 && ties > 100,
+        "{claimed} {declined} {ties}"
+    );
 }

@@ -8,12 +8,17 @@
 //! ```
 //! `clustered N`: N points in N/1000 square clusters (at least 20) with
 //! random centres and sizes over two orders of magnitude.
+//! `uniform-integer N`: `uniform` rounded to six decimals and scaled by
+//! 10⁶, i.e. the integers the CLI computes on for a file of six-decimal
+//! points (equal lengths are common there; `uniform` has practically none).
 //! `fan N`: `(i, 0)` for `i < N` plus the apex `(N/2, 1)` (issue 15).
 //! `circle N`: the regular N-gon of radius 1000 sampled with cos/sin.
 //! `random-circle N`: N points at random angles on that circle (rounded to
 //! `f64`, convex position as rounding decides).
 //! `cocircular N`: in one process, GT of `circle N`, `random-circle N` and
 //! `2N`, `convex N` and `2N`, with the issue-15 ratios.
+//! With `WRITE_POINTS=FILE` the points are written to `FILE` with six
+//! decimals (the input of whole CLI runs) instead of timed.
 //! `uniform` reports GT time as a ratio to the Delaunay time of the same
 //! run; every mode reports the peak resident set size (`VmHWM`) before and
 //! after GT.
@@ -88,6 +93,10 @@ fn main() {
     let mut rng = StdRng::seed_from_u64(SEED);
     let pts = match mode {
         "uniform" => uniform_in_box(&mut rng, n, [0.0, 0.0], [1.0, 1.0]),
+        "uniform-integer" => uniform_in_box(&mut rng, n, [0.0, 0.0], [1.0, 1.0])
+            .into_iter()
+            .map(|p| p.map(|x| (x * 1e6).round()))
+            .collect(),
         // A lens of two integer parabolas: strictly convex, not semicircular.
         "convex" => convex_lens(&mut rng, n),
         // Integer points on `y = x²`: semicircular.
@@ -97,10 +106,20 @@ fn main() {
         "circle" => sampled_circle(n, 1000.0),
         "random-circle" => circle_at_random_angles(&mut rng, n, 1000.0),
         other => panic!(
-            "unknown mode {other} (uniform | clustered | convex | semicircular | fan | circle \
+            "unknown mode {other} (uniform | uniform-integer | clustered | convex | semicircular | fan | circle \
              | random-circle | cocircular)"
         ),
     };
+    if let Ok(path) = std::env::var("WRITE_POINTS") {
+        // The input for whole CLI runs: six decimals, one point a line.
+        let text: String = pts
+            .iter()
+            .map(|p| format!("{:.6} {:.6}\n", p[0], p[1]))
+            .collect();
+        std::fs::write(&path, text).expect("write the points");
+        println!("wrote {} points to {path}", pts.len());
+        return;
+    }
     let ps = PointSet::new(&pts).expect("valid points");
     let rss_before = peak_rss_mib();
     let start = Instant::now();
@@ -115,7 +134,7 @@ fn main() {
          peak_rss_before={rss_before:.1}MiB peak_rss_after={rss_gt:.1}MiB",
         ps.len(),
     );
-    if matches!(mode, "uniform" | "clustered" | "fan") {
+    if matches!(mode, "uniform" | "uniform-integer" | "clustered" | "fan") {
         // This machine's timings vary by ±20% from run to run: alternate
         // Delaunay and GT runs and compare medians.
         let runs: usize = std::env::var("RUNS")

@@ -74,14 +74,6 @@ impl Expansion {
         self.add(p);
     }
 
-    /// Adds `sign * (h + l)²` exactly, where `h + l` is an exact two-term value
-    /// (typically the output of [`two_diff`]).
-    pub fn add_square(&mut self, h: f64, l: f64, sign: f64) {
-        self.add_product(sign * h, h);
-        self.add_product(sign * 2.0 * h, l);
-        self.add_product(sign * l, l);
-    }
-
     /// Adds `sign * (a + b) * (c + d)` exactly, for exact two-term values.
     pub fn add_two_term_product(&mut self, (a, b): (f64, f64), (c, d): (f64, f64), sign: f64) {
         self.add_product(sign * a, c);
@@ -119,13 +111,53 @@ impl Expansion {
     }
 }
 
+/// Sums of at most this many terms are expanded on the stack by
+/// [`sign_of_sum`] (an expansion of `k` terms has at most `k` components);
+/// longer ones use an [`Expansion`]. A chosen size: the length predicates
+/// need at most 24 terms.
+const STACK_TERMS: usize = 32;
+
 /// The exact sign of `terms[0] + terms[1] + …`.
+///
+/// Called in the inner loops of exact sorts (every tie of rounded lengths),
+/// so short sums avoid the heap: the same GROW-EXPANSION as
+/// [`Expansion::add`] in a stack buffer, skipping zero terms (adding zero
+/// leaves the sum unchanged).
 pub fn sign_of_sum(terms: &[f64]) -> i32 {
-    let mut e = Expansion::new();
-    for &t in terms {
-        e.add(t);
+    if terms.len() > STACK_TERMS {
+        let mut e = Expansion::new();
+        for &t in terms {
+            e.add(t);
+        }
+        return e.sign();
     }
-    e.sign()
+    let mut components = [0.0; STACK_TERMS];
+    let mut len = 0;
+    for &b in terms {
+        if b == 0.0 {
+            continue;
+        }
+        let mut q = b;
+        let mut out = 0;
+        for i in 0..len {
+            let (s, e) = two_sum(q, components[i]);
+            q = s;
+            if e != 0.0 {
+                components[out] = e;
+                out += 1;
+            }
+        }
+        len = out;
+        if q != 0.0 {
+            components[len] = q;
+            len += 1;
+        }
+    }
+    match len {
+        0 => 0,
+        _ if components[len - 1] > 0.0 => 1,
+        _ => -1,
+    }
 }
 
 #[cfg(test)]
@@ -150,6 +182,30 @@ mod tests {
     }
 
     #[test]
+    fn sign_of_sum_on_the_stack_agrees_with_the_expansion() {
+        // Sums with zeros, cancellations and components far apart, on both
+        // sides of the stack buffer's size.
+        let tiny = 2f64.powi(-60);
+        let pattern = [
+            1e16, 0.0, 1.0, -1e16, tiny, -tiny, 3.0, -4.0, 0.5, -0.5, 1e-300,
+        ];
+        for len in [0, 1, 2, 5, 11, STACK_TERMS, STACK_TERMS + 1, 40] {
+            for shift in 0..pattern.len() {
+                let terms: Vec<f64> = (0..len)
+                    .map(|i| {
+                        pattern[(i + shift) % pattern.len()] * if i % 3 == 0 { -1.0 } else { 1.0 }
+                    })
+                    .collect();
+                let mut e = Expansion::new();
+                for &t in &terms {
+                    e.add(t);
+                }
+                assert_eq!(sign_of_sum(&terms), e.sign(), "{terms:?}");
+            }
+        }
+    }
+
+    #[test]
     fn products_of_expansions_are_exact() {
         // (1 + 2^-60)(1 - 2^-60) = 1 - 2^-120, invisible in f64.
         let tiny = 2f64.powi(-60);
@@ -163,19 +219,6 @@ mod tests {
         e.add(-2.0);
         assert_eq!(e.sign(), -1);
         e.add(2.0 * tiny * tiny);
-        assert_eq!(e.sign(), 0);
-    }
-
-    #[test]
-    fn squares_expand_exactly() {
-        // (1 + 2^-60)^2 - 1 - 2^-59 = 2^-120 > 0, invisible in f64.
-        let tiny = 2f64.powi(-60);
-        let mut e = Expansion::new();
-        e.add_square(1.0, tiny, 1.0);
-        e.add(-1.0);
-        e.add(-2.0 * tiny);
-        assert_eq!(e.sign(), 1);
-        e.add(-tiny * tiny);
         assert_eq!(e.sign(), 0);
     }
 }

@@ -61,9 +61,13 @@ pub use norm::{side_of_direction, Metric, MetricProblem, MAX_LP_EXPONENT};
 pub use predicates::{
     angle_at_least_30_degrees, angle_below_diamond, certainly_outside_diamonds, compare_angles,
     compare_areas, compare_corner_angles, compare_doubled_area, compare_lengths, cross_sign,
-    dot_sign, incircle_sign, on_open_segment, orient_sign, properly_cross, segments_intersect,
+    dot_sign, exact_squared_length, incircle_sign, on_open_segment, orient_sign, properly_cross,
+    segments_intersect,
 };
-pub use symbolic::{compare_lengths_symbolic, height_sign, orient_symbolic, segment_order};
+pub use symbolic::{
+    compare_equal_lengths_symbolic, compare_lengths_symbolic, height_sign, orient_symbolic,
+    segment_order,
+};
 
 /// Why a coordinate is not accepted (see the module docs for the range).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

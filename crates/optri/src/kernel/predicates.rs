@@ -5,7 +5,7 @@
 //! comparisons use a floating-point filter and fall back to exact
 //! [`Expansion`] arithmetic when the filter cannot decide.
 
-use super::expansion::{two_diff, Expansion};
+use super::expansion::{sign_of_sum, two_diff, two_product, two_sum, Expansion};
 use super::Point;
 use std::cmp::Ordering;
 
@@ -60,16 +60,52 @@ pub fn compare_lengths(a: Point, b: Point, c: Point, d: Point) -> Ordering {
     exact_length_difference_sign(a, b, c, d).cmp(&0)
 }
 
-/// `|ab|² - |cd|²` evaluated exactly; returns its sign.
-fn exact_length_difference_sign(a: Point, b: Point, c: Point, d: Point) -> i32 {
-    let mut e = Expansion::new();
-    for k in 0..2 {
-        let (h, l) = two_diff(a[k], b[k]);
-        e.add_square(h, l, 1.0);
-        let (h, l) = two_diff(c[k], d[k]);
-        e.add_square(h, l, -1.0);
+/// `|pq|²` when `f64` arithmetic computes it exactly, else `None`: both
+/// coordinate differences, both squares and their sum are exact (their
+/// error terms by [`two_diff`], [`two_product`] and [`two_sum`] are zero).
+/// Two such values compare as numbers exactly as [`compare_lengths`]
+/// compares the segments. Integer coordinates below 2²⁵ in magnitude always
+/// qualify: a file of six-decimal points is read as such integers, and its
+/// equal lengths need no expansion arithmetic.
+#[inline]
+pub fn exact_squared_length(p: Point, q: Point) -> Option<f64> {
+    let (dx, ex) = two_diff(p[0], q[0]);
+    let (dy, ey) = two_diff(p[1], q[1]);
+    if ex != 0.0 || ey != 0.0 {
+        return None;
     }
-    e.sign()
+    let ((xx, exx), (yy, eyy)) = (two_product(dx, dx), two_product(dy, dy));
+    let (sum, es) = two_sum(xx, yy);
+    (exx == 0.0 && eyy == 0.0 && es == 0.0).then_some(sum)
+}
+
+/// `|ab|² - |cd|²` evaluated exactly; returns its sign.
+///
+/// Each coordinate difference is an exact two-term value `h + l`
+/// ([`two_diff`]), and `(h + l)² = h² + 2hl + l²` is a sum of exact
+/// [`two_product`]s: at most 24 terms, summed on the stack by
+/// [`sign_of_sum`]. When a difference is exact (`l = 0`, e.g. on integer
+/// coordinates, where equal lengths are common and every tie comes here)
+/// only `h²` is expanded.
+fn exact_length_difference_sign(a: Point, b: Point, c: Point, d: Point) -> i32 {
+    let mut terms = [0.0; 24];
+    let mut n = 0;
+    let mut push = |(p, e): (f64, f64)| {
+        terms[n] = p;
+        terms[n + 1] = e;
+        n += 2;
+    };
+    for k in 0..2 {
+        for (p, q, sign) in [(a, b, 1.0), (c, d, -1.0)] {
+            let (h, l) = two_diff(p[k], q[k]);
+            push(two_product(sign * h, h));
+            if l != 0.0 {
+                push(two_product(sign * 2.0 * h, l));
+                push(two_product(sign * l, l));
+            }
+        }
+    }
+    sign_of_sum(&terms[..n])
 }
 
 /// Exact sign of the dot product `(a - o) · (b - o)`.

@@ -50,68 +50,67 @@ pub fn orient_symbolic(points: &[Point], i: u32, j: u32, k: u32) -> i32 {
 /// Returns `Equal` only if the two segments are the same pair of points.
 /// Segments sharing an endpoint are handled (coefficients add up).
 pub fn compare_lengths_symbolic(points: &[Point], ab: [u32; 2], cd: [u32; 2]) -> Ordering {
-    let [a, b] = ab;
-    let [c, d] = cd;
     let p = |m: u32| points[m as usize];
-    let exact = compare_lengths(p(a), p(b), p(c), p(d));
-    if exact != Ordering::Equal {
-        return exact;
-    }
-    let same =
-        |s: [u32; 2], t: [u32; 2]| (s[0] == t[0] && s[1] == t[1]) || (s[0] == t[1] && s[1] == t[0]);
-    if same(ab, cd) {
-        return Ordering::Equal;
-    }
-    // f(ε) = Σ_u (A_u + Σ α_v ε_v)² − (B_u + Σ β_v ε_v)², A = a−b, B = c−d.
-    // Variable v = (point m, coordinate u), rank 2m + (u == x).
-    let alpha = |m: u32| (m == a) as i32 - (m == b) as i32;
-    let beta = |m: u32| (m == c) as i32 - (m == d) as i32;
-    let mut ms = [a, b, c, d];
-    ms.sort_unstable();
-    let mut vars: Vec<(u32, usize)> = Vec::with_capacity(8); // (point, coord) by increasing rank
-    for (n, &m) in ms.iter().enumerate() {
-        if n > 0 && ms[n - 1] == m {
-            continue;
+    compare_lengths(p(ab[0]), p(ab[1]), p(cd[0]), p(cd[1]))
+        .then_with(|| compare_equal_lengths_symbolic(ab.map(|m| (m, p(m))), cd.map(|m| (m, p(m)))))
+}
+
+/// The order of [`compare_lengths_symbolic`] between two segments whose
+/// lengths are *exactly equal*, each given by its endpoints' indices and
+/// points; `Equal` only for the same pair of indices. Coordinate
+/// comparisons only, no arithmetic.
+///
+/// Taking (index, point) pairs lets a caller that keeps the points in
+/// another order (a renumbered copy) decide ties on the original indices
+/// without looking the points up again.
+///
+/// Why this closed form: `f(ε) = |ab|² − |cd|²` after the perturbation is
+/// `Σ_u (A_u + Σ_v α_v ε_v)² − (B_u + Σ_v β_v ε_v)²`, `A = a − b`,
+/// `B = c − d`, `α_v = [v ∈ a] − [v ∈ b]`, `β_v` likewise, and `f(0) = 0`.
+/// Its sign is that of the first non-zero coefficient by increasing
+/// exponent (kernel docs); the largest perturbation is `ε_{y_m}` for the
+/// smallest index `m` of the four, whose monomials `ε_{y_m}`, `ε_{y_m}²`
+/// come before every other.
+/// * `m` is an endpoint of one segment only, say `ab = {m, u}`: the linear
+///   coefficient is `2(m − u)_y` and the square's is `α² − β² = 1`, so
+///   `ab` is longer iff `m_y ≥ u_y` (symmetrically for `cd`). The segment
+///   holding `m` is the one with the smaller lower index.
+/// * `m` is shared, `ab = {m, u}`, `cd = {m, w}`: the linear coefficient
+///   is `2(w − u)_y`, the square's `0`; next comes `ε_{x_m}` with
+///   `2(w − u)_x`, which is non-zero when `u_y = w_y` as the points are
+///   distinct. So `ab` is longer iff `(u_y, u_x) < (w_y, w_x)`
+///   lexicographically.
+///
+/// The test `closed_form_equals_the_coefficient_walk` checks this against
+/// the coefficient-by-coefficient evaluation it replaced.
+pub fn compare_equal_lengths_symbolic(ab: [(u32, Point); 2], cd: [(u32, Point); 2]) -> Ordering {
+    // Each segment as (lower index, its point, the other endpoint's point).
+    let by_lower = |s: [(u32, Point); 2]| {
+        if s[0].0 < s[1].0 {
+            (s[0].0, s[0].1, s[1])
+        } else {
+            (s[1].0, s[1].1, s[0])
         }
-        vars.push((m, 1)); // y first: rank 2m
-        vars.push((m, 0)); // then x: rank 2m+1
-    }
-    let to_ordering = |s: i32| {
-        if s > 0 {
+    };
+    let (m_ab, p_ab, u) = by_lower(ab);
+    let (m_cd, p_cd, w) = by_lower(cd);
+    // `Greater` iff the segment holding the smallest index is the longer.
+    let longer_if = |holder_is_longer: bool| {
+        if holder_is_longer {
             Ordering::Greater
         } else {
             Ordering::Less
         }
     };
-    for (n, &(m, u)) in vars.iter().enumerate() {
-        let (al, be) = (alpha(m), beta(m));
-        // Linear coefficient 2(α A_u − β B_u).
-        let (al_f, be_f) = (al as f64, be as f64);
-        let lin = sign_of_sum(&[
-            al_f * p(a)[u],
-            -al_f * p(b)[u],
-            -be_f * p(c)[u],
-            be_f * p(d)[u],
-        ]);
-        if lin != 0 {
-            return to_ordering(lin);
-        }
-        // Cross terms with earlier variables of the same coordinate.
-        for &(w, uw) in &vars[..n] {
-            if uw != u {
-                continue;
-            }
-            let cross = al * alpha(w) - be * beta(w);
-            if cross != 0 {
-                return to_ordering(cross);
-            }
-        }
-        let square = al * al - be * be;
-        if square != 0 {
-            return to_ordering(square);
-        }
+    match m_ab.cmp(&m_cd) {
+        Ordering::Less => longer_if(p_ab[1] >= u.1[1]),
+        Ordering::Greater => longer_if(p_cd[1] >= w.1[1]).reverse(),
+        Ordering::Equal if u.0 == w.0 => Ordering::Equal,
+        // `ab` is longer iff u < w in (y, x) order.
+        Ordering::Equal => (w.1[1], w.1[0])
+            .partial_cmp(&(u.1[1], u.1[0]))
+            .expect("finite coordinates"),
     }
-    unreachable!("distinct segments always differ under the perturbation")
 }
 
 /// Total order on segments used by every length-driven algorithm:
@@ -225,6 +224,108 @@ mod tests {
                 }
             }
         }
+    }
+
+    /// The coefficient-by-coefficient evaluation of the perturbed length
+    /// difference that [`compare_equal_lengths_symbolic`]'s closed form
+    /// replaced (for two distinct segments of exactly equal length).
+    fn equal_lengths_by_coefficient_walk(points: &[Point], ab: [u32; 2], cd: [u32; 2]) -> Ordering {
+        let [a, b] = ab;
+        let [c, d] = cd;
+        let p = |m: u32| points[m as usize];
+        let alpha = |m: u32| (m == a) as i32 - (m == b) as i32;
+        let beta = |m: u32| (m == c) as i32 - (m == d) as i32;
+        let mut ms = [a, b, c, d];
+        ms.sort_unstable();
+        let mut vars: Vec<(u32, usize)> = Vec::new(); // (point, coord) by increasing rank
+        for (n, &m) in ms.iter().enumerate() {
+            if n > 0 && ms[n - 1] == m {
+                continue;
+            }
+            vars.push((m, 1)); // y first: rank 2m
+            vars.push((m, 0)); // then x: rank 2m+1
+        }
+        let to_ordering = |s: i32| if s > 0 { Greater } else { Less };
+        for (n, &(m, u)) in vars.iter().enumerate() {
+            let (al, be) = (alpha(m), beta(m));
+            let (al_f, be_f) = (al as f64, be as f64);
+            let lin = sign_of_sum(&[
+                al_f * p(a)[u],
+                -al_f * p(b)[u],
+                -be_f * p(c)[u],
+                be_f * p(d)[u],
+            ]);
+            if lin != 0 {
+                return to_ordering(lin);
+            }
+            for &(w, uw) in &vars[..n] {
+                if uw != u {
+                    continue;
+                }
+                let cross = al * alpha(w) - be * beta(w);
+                if cross != 0 {
+                    return to_ordering(cross);
+                }
+            }
+            let square = al * al - be * be;
+            if square != 0 {
+                return to_ordering(square);
+            }
+        }
+        unreachable!("distinct segments always differ under the perturbation")
+    }
+
+    #[test]
+    fn closed_form_equals_the_coefficient_walk() {
+        // Small integer grids (most lengths tie, many segments share an
+        // endpoint), numbered in several orders, every pair of distinct
+        // segments with exactly equal lengths, plus huge and negative
+        // coordinates of the same shape.
+        let mut ties = 0;
+        for (side, scale, shift) in [
+            (4, 1.0, 0.0),
+            (5, 3.0, -7.0),
+            (4, 1e40, -2e40),
+            (3, 1e-30, 0.0),
+        ] {
+            let base: Vec<Point> = (0..side * side)
+                .map(|k| [(k % side) as f64 * scale + shift, (k / side) as f64 * scale])
+                .collect();
+            for numbering in 0..4usize {
+                // A different index order each time: reversed, strided (7 is
+                // prime to 9, 16 and 25), rotated.
+                let n = base.len();
+                let pts: Vec<Point> = (0..n)
+                    .map(|i| match numbering {
+                        0 => base[i],
+                        1 => base[n - 1 - i],
+                        2 => base[(i * 7) % n],
+                        _ => base[(i + n / 2) % n],
+                    })
+                    .collect();
+                let segs: Vec<[u32; 2]> = (0..n as u32)
+                    .flat_map(|i| (i + 1..n as u32).map(move |j| [i, j]))
+                    .collect();
+                for s in &segs {
+                    for t in &segs {
+                        let p = |m: u32| pts[m as usize];
+                        if s == t || compare_lengths(p(s[0]), p(s[1]), p(t[0]), p(t[1])) != Equal {
+                            continue;
+                        }
+                        ties += 1;
+                        let walk = equal_lengths_by_coefficient_walk(&pts, *s, *t);
+                        for (s2, t2) in [(*s, *t), ([s[1], s[0]], *t), (*s, [t[1], t[0]])] {
+                            assert_eq!(
+                                compare_lengths_symbolic(&pts, s2, t2),
+                                walk,
+                                "{s2:?} {t2:?}"
+                            );
+                        }
+                    }
+                }
+            }
+        }
+        assert!(ties > 10_000, "only {ties} ties");
     }
 
     #[test]

@@ -214,7 +214,7 @@ pub fn greedy_naive_edges(points: &PointSet) -> Vec<[u32; 2]> {
 pub(crate) fn sort_segments(points: &[Point], segments: &mut Vec<[u32; 2]>) {
     let mut keyed = keyed_by_length(points, segments, |_, s| s);
     let order = crate::kernel::segment_order(points);
-    sort_keyed_runs(&mut keyed, |x, y| order(x, y));
+    sort_keyed_runs(&mut keyed, |s| s, |x, y| order(x, y));
     segments.clear();
     segments.extend(keyed.into_iter().map(|(_, s)| s));
 }
@@ -255,24 +255,51 @@ pub(crate) fn keyed_by_length<T: Send>(
 /// Sorts `(rounded squared length, item)` pairs into the exact order
 /// `exact`: by the rounded key first, then runs of keys within a relative
 /// [`KEY_RUN_GAP`] of their neighbours by `exact` (see `sort_segments`
-/// for why that is enough).
-pub(crate) fn sort_keyed_runs<T: Send>(
+/// for why that is enough), which compares what `gather` takes from each
+/// item of the run.
+///
+/// Why the gathering and the parallel runs: on integer coordinates (a file
+/// of six-decimal points, scaled) equal squared lengths are common, most
+/// keys sit in runs, and the exact comparisons are most of the sort's work.
+/// A run's items lie anywhere in the input, so `gather` reads each one's
+/// data once (one scattered read per item, not two per comparison) into a
+/// buffer that the comparisons then share.
+pub(crate) fn sort_keyed_runs<T: Send + Copy, U: Send>(
     keyed: &mut [(f64, T)],
-    exact: impl Fn(&T, &T) -> std::cmp::Ordering,
+    gather: impl Fn(T) -> U + Sync,
+    exact: impl Fn(&U, &U) -> std::cmp::Ordering + Sync,
 ) {
     keyed.par_sort_unstable_by(|x, y| x.0.total_cmp(&y.0));
-    let mut start = 0;
-    while start < keyed.len() {
-        let mut end = start + 1;
-        while end < keyed.len() && keyed[end].0 - keyed[end - 1].0 <= KEY_RUN_GAP * keyed[end].0 {
+    let mut runs: Vec<&mut [(f64, T)]> = Vec::new();
+    let mut rest = keyed;
+    while !rest.is_empty() {
+        let mut end = 1;
+        while end < rest.len() && rest[end].0 - rest[end - 1].0 <= KEY_RUN_GAP * rest[end].0 {
             end += 1;
         }
-        if end - start > 1 {
-            keyed[start..end].sort_unstable_by(|x, y| exact(&x.1, &y.1));
+        let (run, tail) = rest.split_at_mut(end);
+        if end > 1 {
+            runs.push(run);
         }
-        start = end;
+        rest = tail;
     }
+    runs.par_chunks_mut(RUNS_PER_TASK).for_each(|chunk| {
+        let mut buffer: Vec<(f64, T, U)> = Vec::new();
+        for run in chunk.iter_mut() {
+            buffer.clear();
+            buffer.extend(run.iter().map(|&(key, item)| (key, item, gather(item))));
+            buffer.sort_unstable_by(|x, y| exact(&x.2, &y.2));
+            for (slot, &(key, item, _)) in run.iter_mut().zip(&buffer) {
+                *slot = (key, item);
+            }
+        }
+    });
 }
+
+/// Runs per parallel task in [`sort_keyed_runs`]. A tuning choice: most
+/// runs hold a few segments, so a task takes many; the result does not
+/// depend on it.
+const RUNS_PER_TASK: usize = 1024;
 
 /// Edges as sorted `[min, max]` pairs, sorted.
 #[cfg(any(test, feature = "internals"))]

@@ -89,7 +89,9 @@ mod segment_index;
 
 use super::{keyed_by_length, rounded_squared_length, sort_keyed_runs};
 use crate::error::{Error, Result};
-use crate::kernel::{compare_lengths, orient_sign, Point};
+use crate::kernel::{
+    compare_equal_lengths_symbolic, compare_lengths, exact_squared_length, orient_sign, Point,
+};
 use crate::parallel::prelude::*;
 use crate::spatial::{bounding_box, convex_hull_cycle, fmax, fmin, morton_order};
 use crate::timing::{Phase, Stopwatch};
@@ -172,13 +174,32 @@ pub(super) fn greedy_general(original: &[Point], phases: &mut Vec<Phase>) -> Res
     let to_original = morton_order(original);
     let local: Vec<Point> = to_original.iter().map(|&v| original[v as usize]).collect();
     let renumbering = Renumbering {
-        original,
         to_original: &to_original,
     };
-    Ok(greedy_rounds(&local, &renumbering, phases)?
-        .into_iter()
-        .map(|t| t.map(|v| to_original[v as usize]))
-        .collect())
+    let mut triangles: Vec<[u32; 3]> = greedy_rounds(&local, &renumbering, phases)?
+        .into_par_iter()
+        .map(|t| smallest_corner_first(t.map(|v| to_original[v as usize])))
+        .collect();
+    // Sorted, as the Delaunay triangles are (`canonical_order` in
+    // `structures::delaunay_graph`): the edge list every consumer builds
+    // (`Triangulation::edges`, sorted) then starts from nearly sorted pairs,
+    // not from pairs in spatial order, which are random in the input's
+    // numbering (1 s of a 10⁶-point CLI run's writing).
+    triangles.par_sort_unstable();
+    Ok(triangles)
+}
+
+/// The same triangle (same orientation) rotated to start at its smallest
+/// index.
+fn smallest_corner_first(t: [u32; 3]) -> [u32; 3] {
+    let [a, b, c] = t;
+    if a < b && a < c {
+        t
+    } else if b < c {
+        [b, c, a]
+    } else {
+        [c, a, b]
+    }
 }
 
 /// The triangles of a *fan* — all points but one on a line — whose only
@@ -226,18 +247,37 @@ fn single_fan(points: &[Point]) -> Option<Vec<[u32; 3]>> {
 
 /// Local (memory-friendly) numbering versus the caller's, which decides ties.
 struct Renumbering<'a> {
-    original: &'a [Point],
     to_original: &'a [u32],
 }
 
 impl Renumbering<'_> {
     /// The position of each local-index segment in the global segment order
     /// (exact; see [`super::sort_keyed_runs`]).
+    ///
+    /// That order is [`crate::kernel::segment_order`] on the original
+    /// indices; the local copy holds the same coordinates, so lengths are
+    /// compared there and only ties look at the original indices
+    /// ([`compare_equal_lengths_symbolic`]). Squared lengths that `f64`
+    /// computes exactly (integer coordinates, where ties are common:
+    /// [`exact_squared_length`]) are compared as numbers, the others by
+    /// [`compare_lengths`].
     fn ranks(&self, points: &[Point], segments: &[[u32; 2]]) -> Vec<u32> {
         let mut keyed = keyed_by_length(points, segments, |i, _| i as u32);
-        let order = crate::kernel::segment_order(self.original);
-        let original = |i: u32| segments[i as usize].map(|v| self.to_original[v as usize]);
-        sort_keyed_runs(&mut keyed, |&i, &j| order(&original(i), &original(j)));
+        let gather = |i: u32| {
+            let ends =
+                segments[i as usize].map(|v| (self.to_original[v as usize], points[v as usize]));
+            (ends, exact_squared_length(ends[0].1, ends[1].1))
+        };
+        type Gathered = ([(u32, Point); 2], Option<f64>);
+        let exact = |x: &Gathered, y: &Gathered| {
+            let ([a, b], [c, d]) = (x.0, y.0);
+            match (x.1, y.1) {
+                (Some(s), Some(t)) => s.total_cmp(&t),
+                _ => compare_lengths(a.1, b.1, c.1, d.1),
+            }
+            .then_with(|| compare_equal_lengths_symbolic(x.0, y.0))
+        };
+        sort_keyed_runs(&mut keyed, gather, exact);
         let mut rank = vec![0u32; segments.len()];
         for (position, &(_, i)) in keyed.iter().enumerate() {
             rank[i as usize] = position as u32;
