@@ -171,13 +171,13 @@ mod tests {
     fn the_floor_grows_after_quiet_rounds_and_shrinks_after_busy_ones() {
         let mut floor = MIN_RELATIVE_STEP;
         for _ in 0..7 {
-            floor = next_floor(floor, 15, 1000);
+            floor = next_floor(floor, 249, 1000);
         }
         assert_eq!(floor, MIN_RELATIVE_STEP * 128.0);
         floor = next_floor(floor, 0, 1000);
         assert_eq!(floor, MAX_FLOOR);
-        assert_eq!(next_floor(floor, 15, 1000), MAX_FLOOR);
-        assert_eq!(next_floor(floor, 16, 1000), 0.5 * MAX_FLOOR);
+        assert_eq!(next_floor(floor, 249, 1000), MAX_FLOOR);
+        assert_eq!(next_floor(floor, 250, 1000), 0.5 * MAX_FLOOR);
         assert_eq!(next_floor(MIN_RELATIVE_STEP, 5000, 1000), MIN_RELATIVE_STEP);
     }
 }
