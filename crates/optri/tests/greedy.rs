@@ -36,6 +36,7 @@ const SEED_NAIVE_REFERENCE: u64 = 16;
 const SEED_REGISTRY: u64 = 9;
 const SEED_CONVEX_10000: u64 = 12;
 const SEED_CLIFF_FAMILIES: u64 = 17;
+const SEED_DEGENERATE_FAMILIES: u64 = 18;
 
 /// Distinct-index `[min, max]` edges of a triangulation, sorted.
 fn distinct_edges(ps: &PointSet, t: &optri::Triangulation) -> Vec<[u32; 2]> {
@@ -709,4 +710,122 @@ fn cliff_families_match_the_oracle() {
     }
     assert!(tally.sets >= 800, "{tally:?}");
     assert!(tally.dispatched[1] >= 100, "{tally:?}");
+}
+
+/// The boundary of the square `[0, k]²` with `k` integer points a side
+/// (corners once): convex but not strictly, so the general algorithm.
+fn square_boundary(k: usize) -> Vec<Point> {
+    let side = k as f64;
+    (0..k)
+        .flat_map(|i| {
+            let t = i as f64;
+            [[t, 0.0], [side, t], [side - t, side], [0.0, side - t]]
+        })
+        .collect()
+}
+
+/// Issue 15's degenerate families for the general algorithm, small, edge for
+/// edge against the oracle: boundaries of squares and rectangles (sides
+/// along the axes and the diagonals, huge and negative coordinates, with
+/// interior points), collinear runs cut into several chains on one line and
+/// on parallel lines with apexes on both sides (the line classes are joined
+/// per line), two concentric sampled circles, a grid's rows with apexes,
+/// heavy duplicates and a cluster far below the bounding box's resolution.
+#[test]
+fn degenerate_families_of_issue_15_match_the_oracle() {
+    let mut rng = StdRng::seed_from_u64(SEED_DEGENERATE_FAMILIES);
+    let mut tally = Tally::default();
+    let maps: [(&str, PointMap); 4] = [
+        ("axes", |p| p),
+        ("diagonal", |p| [p[0] + p[1], p[0] - p[1]]),
+        ("huge", |p| [p[0] * 2f64.powi(100), p[1] * 2f64.powi(100)]),
+        ("negative", |p| [-3.0 * p[1] - 1e6, -3.0 * p[0]]),
+    ];
+    for k in (2..=12).chain([25, 60, 150]) {
+        for (what, map) in maps {
+            let pts: Vec<Point> = square_boundary(k).into_iter().map(map).collect();
+            check(&pts, &format!("square boundary {k} {what}"), &mut tally);
+        }
+        let mut pts = square_boundary(k);
+        for _ in 0..3 {
+            let side = k as f64;
+            pts.push([
+                rng.gen_range(0.1..side - 0.1),
+                rng.gen_range(0.1..side - 0.1),
+            ]);
+        }
+        check(
+            &pts,
+            &format!("square boundary {k} with inner points"),
+            &mut tally,
+        );
+    }
+    for case in 0..60 {
+        let (w, h) = (rng.gen_range(1..30), rng.gen_range(1..30));
+        let mut pts: Vec<Point> = (0..w).map(|i| [i as f64, 0.0]).collect();
+        pts.extend((0..h).map(|j| [w as f64, j as f64]));
+        pts.extend((0..w).map(|i| [(w - i) as f64, h as f64]));
+        pts.extend((0..h).map(|j| [0.0, (h - j) as f64]));
+        check(&pts, &format!("rectangle {w}x{h}, case {case}"), &mut tally);
+    }
+    // Runs with gaps on one line, or on two parallel lines, apexes on both
+    // sides of each: several chains a line once the apexes' fans end.
+    for case in 0..150 {
+        let mut pts = Vec::new();
+        let lines = [vec![0.0], vec![0.0, 3.0], vec![0.0, 1e-3]][case % 3].clone();
+        for &y in &lines {
+            let mut x = 0;
+            for _ in 0..rng.gen_range(2..5) {
+                let run = rng.gen_range(2..25);
+                pts.extend((x..x + run).map(|i| [i as f64, y]));
+                x += run + rng.gen_range(1..8);
+            }
+            for _ in 0..rng.gen_range(2..6) {
+                let above = [1.0, -1.0, 0.5, -7.0][rng.gen_range(0..4)];
+                pts.push([rng.gen_range(-2..x + 2) as f64, y + above]);
+            }
+        }
+        check(
+            &pts,
+            &format!("runs on {} lines, case {case}", lines.len()),
+            &mut tally,
+        );
+    }
+    for k in [400, 1000] {
+        let mut pts: Vec<Point> = (0..k).map(|i| [i as f64, 0.0]).collect();
+        pts.extend([[(k / 3) as f64, 1.0], [(2 * k / 3) as f64, -1.0]]);
+        check(&pts, &format!("run of {k} with two apexes"), &mut tally);
+    }
+    // A grid's rows (every row a line) with points above and below.
+    for (w, h) in [(30, 4), (12, 12), (40, 2)] {
+        let mut pts = grid(w, h, 1.0);
+        pts.extend([[w as f64 / 3.0, -1.5], [w as f64 / 2.0, h as f64 + 0.5]]);
+        check(&pts, &format!("grid {w}x{h} with apexes"), &mut tally);
+    }
+    // Two concentric sampled circles, aligned or rotated by half a step.
+    for n in [6, 8, 13, 32, 60, 200] {
+        for (inner, turn) in [(0.5, 0.0), (0.9, 0.5), (0.999, 0.0)] {
+            let mut pts = sampled_circle(n, 1000.0);
+            let step = std::f64::consts::TAU / n as f64;
+            pts.extend((0..n).map(|i| {
+                let a = (i as f64 + turn) * step;
+                [1000.0 * inner * a.cos(), 1000.0 * inner * a.sin()]
+            }));
+            check(
+                &pts,
+                &format!("two circles n={n} inner {inner} turn {turn}"),
+                &mut tally,
+            );
+        }
+    }
+    // Heavy duplicates: 3000 points, 20 distinct.
+    let distinct = uniform_in_square(&mut rng, 20, 1.0);
+    let pts: Vec<Point> = (0..3000).map(|i| distinct[(i * 7) % 20]).collect();
+    check(&pts, "3000 points, 20 distinct", &mut tally);
+    // A cluster in a 2·10⁻⁹ box (the grids' finest cells) plus two far points.
+    let mut pts = uniform_in_square(&mut rng, 300, 1e-9);
+    pts.extend([[-0.5, -0.5], [0.5, -0.2]]);
+    check(&pts, "300 points in a 1e-9 box plus two", &mut tally);
+    assert!(tally.sets >= 300, "{tally:?}");
+    assert!(tally.dispatched[0] >= 280, "{tally:?}");
 }

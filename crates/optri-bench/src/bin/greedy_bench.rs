@@ -15,6 +15,12 @@
 //! `circle N`: the regular N-gon of radius 1000 sampled with cos/sin.
 //! `random-circle N`: N points at random angles on that circle (rounded to
 //! `f64`, convex position as rounding decides).
+//! Issue 15's degenerate families (`cliff_family`): `run2apex N` (a run of
+//! N − 2 integer points with apexes on both sides), `square N` (the boundary
+//! of a square, N/4 integer points a side), `tiny-cluster N` (N points in a
+//! 10⁻⁹ box plus two far points), `duplicates N` (N points, 100 distinct),
+//! `grid N` (the ⌊√N⌋² integer grid), `two-circles N` (N/2 on each of two
+//! concentric sampled circles).
 //! `cocircular N`: in one process, GT of `circle N`, `random-circle N` and
 //! `2N`, `convex N` and `2N`, with the issue-15 ratios.
 //! With `WRITE_POINTS=FILE` the points are written to `FILE` with six
@@ -105,9 +111,11 @@ fn main() {
         "fan" => fan(n),
         "circle" => sampled_circle(n, 1000.0),
         "random-circle" => circle_at_random_angles(&mut rng, n, 1000.0),
+        other if cliff_family(other, n).is_some() => cliff_family(other, n).expect("checked"),
         other => panic!(
-            "unknown mode {other} (uniform | uniform-integer | clustered | convex | semicircular | fan | circle \
-             | random-circle | cocircular)"
+            "unknown mode {other} (uniform | uniform-integer | clustered | convex | semicircular | fan \
+             | circle | random-circle | cocircular | run2apex | square | tiny-cluster | duplicates \
+             | grid | two-circles)"
         ),
     };
     if let Ok(path) = std::env::var("WRITE_POINTS") {
@@ -167,4 +175,48 @@ fn main() {
     for phase in &solution.phases {
         println!("  phase {:20} {:9.1} ms", phase.name, phase.ms);
     }
+}
+
+/// Issue 15's degenerate families by name (module docs), `None` for other
+/// names.
+fn cliff_family(mode: &str, n: usize) -> Option<Vec<[f64; 2]>> {
+    let mut rng = StdRng::seed_from_u64(SEED);
+    Some(match mode {
+        "run2apex" => {
+            let k = n.saturating_sub(2).max(3);
+            let mut pts: Vec<[f64; 2]> = (0..k).map(|i| [i as f64, 0.0]).collect();
+            pts.extend([[(k / 3) as f64, 1.0], [(2 * k / 3) as f64, -1.0]]);
+            pts
+        }
+        "square" => {
+            let side = (n / 4).max(2) as f64;
+            (0..(n / 4).max(2))
+                .flat_map(|i| {
+                    let t = i as f64;
+                    [[t, 0.0], [side, t], [side - t, side], [0.0, side - t]]
+                })
+                .collect()
+        }
+        "tiny-cluster" => {
+            let mut pts = uniform_in_box(&mut rng, n, [0.5, 0.5], [0.5 + 1e-9, 0.5 + 1e-9]);
+            pts.extend([[0.0, 0.0], [1.0, 0.3]]);
+            pts
+        }
+        "duplicates" => {
+            let distinct = uniform_in_box(&mut rng, 100, [0.0, 0.0], [1.0, 1.0]);
+            (0..n).map(|i| distinct[i % distinct.len()]).collect()
+        }
+        "grid" => {
+            let side = (n as f64).sqrt() as usize;
+            (0..side * side)
+                .map(|i| [(i % side) as f64, (i / side) as f64])
+                .collect()
+        }
+        "two-circles" => {
+            let mut pts = sampled_circle(n / 2, 1000.0);
+            pts.extend(sampled_circle(n - n / 2, 500.0));
+            pts
+        }
+        _ => return None,
+    })
 }

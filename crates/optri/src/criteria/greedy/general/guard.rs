@@ -64,12 +64,44 @@ const CELL_WIDENING: f64 = 1.001;
 const FINEST_CELL: f64 = 0.999;
 
 /// The guard stops halving once the step above the last threshold is below
-/// this fraction of the threshold. A chosen floor: after round 0, where the
-/// step starts at the last threshold, it bounds the halvings at about
-/// log₂ 1000 ≈ 10 a round.
-const MIN_RELATIVE_STEP: f64 = 1e-3;
+/// a fraction of the threshold, the *floor*, which starts at this value. A
+/// chosen floor: after round 0, where the step starts at the last
+/// threshold, it bounds the halvings at about log₂ 1000 ≈ 10 a round.
+pub(super) const MIN_RELATIVE_STEP: f64 = 1e-3;
 
-/// The threshold of the next round, at most `proposed`, and the grid of the
+/// The largest floor: a stretch of quiet rounds still grows the threshold
+/// by at least 4/3 a round. A chosen cap below 1 (where the guard would not
+/// shrink the step at all), so that the guard keeps bounding a round's pairs
+/// to within a constant factor of the step it wants.
+const MAX_FLOOR: f64 = 0.25;
+
+/// A round is *quiet* when its candidates times this are fewer than its open
+/// vertices. A chosen ratio: the crawls below had no candidates at all in
+/// most rounds; a busier round is real work, which the guard must bound.
+const QUIET_ROUND_RATIO: usize = 4;
+
+/// The floor of the next round after one with `candidates` candidates among
+/// `open` open vertices: doubled after a quiet round (up to [`MAX_FLOOR`]),
+/// else halved (down to [`MIN_RELATIVE_STEP`]).
+///
+/// Why: the guard counts every pair in neighbouring cells, including pairs
+/// shorter than the last threshold and pairs no edge can join. Where those
+/// dominate (a regular polygon's chords come in lengths a spacing apart)
+/// a fixed floor made thousands of rounds with no candidate at relative
+/// steps of 10⁻³ (issue 15: 2400 rounds for two concentric circles of 1000
+/// points each). Growing the floor geometrically makes such a stretch
+/// O(log) rounds, and a busy round brings the guard back. Only the running
+/// time depends on it.
+pub(super) fn next_floor(floor: f64, candidates: usize, open: usize) -> f64 {
+    if QUIET_ROUND_RATIO * candidates < open {
+        (2.0 * floor).min(MAX_FLOOR)
+    } else {
+        (0.5 * floor).max(MIN_RELATIVE_STEP)
+    }
+}
+
+/// The threshold of the next round, at most `proposed` and with a step above
+/// `lower` of at least about `floor` times the threshold, and the grid of the
 /// open vertices (indices into `open`) with cells a little wider than it,
 /// each cell sorted by `class` (the line classes of the parent module;
 /// pairs within one class are not counted).
@@ -88,6 +120,7 @@ pub(super) fn round_grid(
     class: &[u32],
     lower: f64,
     proposed: f64,
+    floor: f64,
 ) -> (f64, SparseGrid<u32>) {
     let any_line = class.iter().any(|&c| c != NO_LINE);
     let budget = PAIRS_PER_OPEN_VERTEX * open.len() + EXTRA_PAIRS;
@@ -123,12 +156,28 @@ pub(super) fn round_grid(
         // is tiny or the grid has reached its finest cells (points closer
         // than that stay together whatever the threshold).
         let finest = grid.inverse_cell() * threshold * CELL_WIDENING < FINEST_CELL;
-        if (pairs <= budget && worst <= MAX_CELL_PAIRS)
-            || step <= MIN_RELATIVE_STEP * threshold
-            || finest
-        {
+        if (pairs <= budget && worst <= MAX_CELL_PAIRS) || step <= floor * threshold || finest {
             return (threshold, grid);
         }
         threshold = lower + 0.5 * step;
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_floor_grows_after_quiet_rounds_and_shrinks_after_busy_ones() {
+        let mut floor = MIN_RELATIVE_STEP;
+        for _ in 0..7 {
+            floor = next_floor(floor, 249, 1000);
+        }
+        assert_eq!(floor, MIN_RELATIVE_STEP * 128.0);
+        floor = next_floor(floor, 0, 1000);
+        assert_eq!(floor, MAX_FLOOR);
+        assert_eq!(next_floor(floor, 249, 1000), MAX_FLOOR);
+        assert_eq!(next_floor(floor, 250, 1000), 0.5 * MAX_FLOOR);
+        assert_eq!(next_floor(MIN_RELATIVE_STEP, 5000, 1000), MIN_RELATIVE_STEP);
     }
 }

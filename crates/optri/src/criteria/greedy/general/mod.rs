@@ -95,7 +95,7 @@ use crate::kernel::{
 use crate::parallel::prelude::*;
 use crate::spatial::{bounding_box, convex_hull_cycle, fmax, fmin, morton_order};
 use crate::timing::{Phase, Stopwatch};
-use guard::{round_grid, NO_LINE};
+use guard::{next_floor, round_grid, MIN_RELATIVE_STEP, NO_LINE};
 use partial::Partial;
 use segment_index::{PointsNear, Query, SegmentIndex};
 use std::cmp::Ordering;
@@ -308,6 +308,7 @@ fn greedy_rounds(
     let mut near: Option<PointsNear> = None;
     let mut lower = 0.0;
     let mut round = 0;
+    let mut floor = MIN_RELATIVE_STEP;
     while g.edge_count() < target && !open.is_empty() {
         let proposed = if round == 0 {
             FIRST_THRESHOLD_SPACINGS * spacing
@@ -320,7 +321,7 @@ fn greedy_rounds(
             open.par_iter().map(|&v| g.open_gaps(v)).collect()
         };
         let class = line_classes(points, &open, &gaps);
-        let (threshold, grid) = round_grid(points, bbox, &open, &class, lower, proposed);
+        let (threshold, grid) = round_grid(points, bbox, &open, &class, lower, proposed, floor);
         // Once every pair is shorter than the threshold, take all the rest.
         let last = threshold > LAST_ROUND_MARGIN * diagonal;
         // The point grid answers "a point on this segment?"; a query costs
@@ -396,6 +397,7 @@ fn greedy_rounds(
             .collect();
         let accepted = decide_round(points, bbox, &candidates, &rank, &active, near, round == 0);
         g.add(&accepted);
+        floor = next_floor(floor, candidates.len(), open.len());
         open = open.into_par_iter().filter(|&v| !g.closed(v)).collect();
         if round == 0 {
             stopwatch.lap("round 0");
@@ -485,7 +487,7 @@ fn line_classes(points: &[Point], open: &[u32], gaps: &[Option<Vec<[u32; 2]>>]) 
             }
         }
     }
-    (0..open.len())
+    let chain: Vec<u32> = (0..open.len())
         .map(|i| {
             if line_neighbour[i] == NO_LINE {
                 NO_LINE
@@ -493,7 +495,64 @@ fn line_classes(points: &[Point], open: &[u32], gaps: &[Option<Vec<[u32; 2]>>]) 
                 root(&mut parent, i as u32)
             }
         })
-        .collect()
+        .collect();
+    merge_chains_on_one_line(points, open, &line_neighbour, chain)
+}
+
+/// Joins the chains of [`line_classes`] that lie on one line into one class.
+///
+/// A closed vertex or a vertex with a non-straight open gap (the end of an
+/// apex's fan) cuts a run into several chains, and the pairs between them
+/// would fill the guard's cells (issue 15: a run of 1000 points with two
+/// apexes crawled through 3000 rounds). They are as hopeless as pairs within
+/// a chain: a straight-angle vertex of a line `L` can only be left strictly
+/// off `L`, whichever chain holds the other point of `L`. Chains are sorted
+/// by a rounded key of their line (direction angle, then offset) and a
+/// chain joins the previous one when both of its defining points lie on the
+/// previous chain's line — an exact test, so only the running time depends
+/// on the rounding (a missed join leaves two classes).
+fn merge_chains_on_one_line(
+    points: &[Point],
+    open: &[u32],
+    line_neighbour: &[u32],
+    mut class: Vec<u32>,
+) -> Vec<u32> {
+    let p = |v: u32| points[v as usize];
+    // The chains' roots (each is its own class), by the rounded line key.
+    let mut roots: Vec<(f64, f64, u32)> = (0..open.len() as u32)
+        .filter(|&i| class[i as usize] == i)
+        .map(|i| {
+            let (a, b) = (p(open[i as usize]), p(line_neighbour[i as usize]));
+            let (mut dx, mut dy) = (b[0] - a[0], b[1] - a[1]);
+            if dx < 0.0 || (dx == 0.0 && dy < 0.0) {
+                (dx, dy) = (-dx, -dy);
+            }
+            let angle = dy.atan2(dx);
+            let offset = (dx * a[1] - dy * a[0]) / dx.hypot(dy);
+            (angle, offset, i)
+        })
+        .collect();
+    if roots.len() < 2 {
+        return class;
+    }
+    roots.sort_unstable_by(|x, y| x.0.total_cmp(&y.0).then(x.1.total_cmp(&y.1)));
+    let mut joined_to = vec![NO_LINE; open.len()];
+    let mut leader = roots[0].2;
+    for &(_, _, r) in &roots[1..] {
+        let (la, lb) = (p(open[leader as usize]), p(line_neighbour[leader as usize]));
+        let (ra, rb) = (p(open[r as usize]), p(line_neighbour[r as usize]));
+        if orient_sign(la, lb, ra) == 0 && orient_sign(la, lb, rb) == 0 {
+            joined_to[r as usize] = leader;
+        } else {
+            leader = r;
+        }
+    }
+    for c in class.iter_mut() {
+        if *c != NO_LINE && joined_to[*c as usize] != NO_LINE {
+            *c = joined_to[*c as usize];
+        }
+    }
+    class
 }
 
 /// Pass 1 of [`decide_round`] on a chunk of candidates: the blocked ranks
@@ -629,4 +688,37 @@ fn decide_round(
         .filter(|(_, &r)| accepted[r as usize])
         .map(|(s, _)| *s)
         .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Chains on one line join; a chain on a parallel line, one on a line
+    /// whose rounded key equals the first line's but which is not it, and a
+    /// vertex off every line stay apart.
+    #[test]
+    fn chains_join_exactly_when_on_one_line() {
+        let points: Vec<Point> = vec![
+            [0.0, 0.0],
+            [1.0, 0.0],
+            [5.0, 0.0],
+            [6.0, 0.0],
+            [8.0, 0.0],
+            [9.0, 1e-300], // the line through 4 and 5 is not y = 0
+            [0.0, 1.0],
+            [1.0, 1.0],
+            [20.0, 0.0],
+        ];
+        let open: Vec<u32> = (0..9).collect();
+        let line_neighbour = [1, 0, 3, 2, 5, 4, 7, 6, NO_LINE];
+        let chains = vec![0, 0, 2, 2, 4, 4, 6, 6, NO_LINE];
+        let joined = merge_chains_on_one_line(&points, &open, &line_neighbour, chains);
+        assert_eq!(joined, vec![0, 0, 0, 0, 4, 4, 6, 6, NO_LINE]);
+        // Listed in the other order, the later chain joins the earlier one.
+        let chains = vec![0, 0, 2, 2, NO_LINE, NO_LINE, NO_LINE, NO_LINE, NO_LINE];
+        let line_neighbour = [1, 0, 3, 2, NO_LINE, NO_LINE, NO_LINE, NO_LINE, NO_LINE];
+        let joined = merge_chains_on_one_line(&points, &open, &line_neighbour, chains);
+        assert_eq!(joined[..4], [0, 0, 0, 0]);
+    }
 }
