@@ -17,6 +17,7 @@
 //! within a budget of fronts. The constrained Delaunay triangles of a region
 //! are its fallback when the budget runs out.
 
+use super::face_program::{FaceProgram, Prices};
 use super::skeleton::Skeleton;
 use super::TotalLength;
 use crate::kernel::{compare_length_sums, dot_sign, orient_sign, LengthInterval, Point};
@@ -49,6 +50,9 @@ pub(crate) enum Method {
     Triangle,
     Polygon,
     Search,
+    /// The search on the triangles the program's certificate keeps
+    /// ([`super::face_program`]).
+    Program,
     /// Not solved exactly: the constrained Delaunay triangles.
     Fallback,
 }
@@ -62,8 +66,20 @@ pub(crate) struct RegionResult {
     pub inner_points: usize,
     /// Fronts explored (search only).
     pub fronts: usize,
+    /// The triangle program, if one was set up: its triangles, those the
+    /// certificate kept, and the fronts of the search on those.
+    pub program: Option<ProgramStats>,
     /// Certified lower bound of the weight of the region's inner edges.
     pub lower: f64,
+}
+
+/// What the triangle program of a region did.
+#[derive(Clone, Copy, Debug, Default)]
+pub(crate) struct ProgramStats {
+    pub triangles: usize,
+    /// Triangles kept by the certificate (0 without one).
+    pub kept: usize,
+    pub fronts: usize,
 }
 
 /// A region: its boundary walks (vertex cycles, region on the left), its
@@ -271,6 +287,7 @@ fn solve_region(pts: &[Point], sk: &Skeleton, region: Region, budget: usize) -> 
         holes: region.cycles.len().saturating_sub(1),
         inner_points: region.inner.len(),
         fronts: 0,
+        program: None,
         lower: 0.0,
     };
     if region.cdt_triangles.len() == 1 {
@@ -292,6 +309,8 @@ fn solve_region(pts: &[Point], sk: &Skeleton, region: Region, budget: usize) -> 
         }
     }
     let inner: HashSet<u32> = region.inner.iter().copied().collect();
+    let mut incumbent = None;
+    let mut program_lower = 0.0f64;
     if region.cycles.len() == 1 && region.inner.is_empty() {
         if let Some(t) = solve_polygon(pts, sk, &region.cycles[0]) {
             result.triangles = t;
@@ -299,20 +318,142 @@ fn solve_region(pts: &[Point], sk: &Skeleton, region: Region, budget: usize) -> 
             return result;
         }
     } else {
-        let (solved, fronts) = search(pts, sk, &region, &corners_at, &inner, budget);
+        let face = face_triangles(pts, sk, &region, &corners_at, &inner);
+        // Most faces with holes are small: the plain search first, within
+        // a fraction of the budget.
+        let quick = budget.min(QUICK_FRONTS);
+        let (solved, fronts) = search(pts, sk, &region, &face, None, quick);
         result.fronts = fronts;
-        if let Some(t) = solved {
-            result.triangles = t;
+        if let Some(s) = solved {
+            result.triangles = s.triangles;
             result.method = Method::Search;
             return result;
+        }
+        let (outcome, stats) = solve_by_program(pts, sk, &region, &face, budget);
+        result.program = Some(stats);
+        match outcome {
+            ProgramOutcome::Solved(t) => {
+                result.triangles = t;
+                result.method = Method::Program;
+                return result;
+            }
+            ProgramOutcome::Unsolved {
+                incumbent: best,
+                lower,
+            } => {
+                incumbent = best;
+                program_lower = lower.unwrap_or(0.0);
+                if lower.is_none() && budget > quick {
+                    // No certificate: the plain search with the whole budget.
+                    let (solved, fronts) = search(pts, sk, &region, &face, None, budget);
+                    result.fronts = fronts;
+                    if let Some(s) = solved {
+                        result.triangles = s.triangles;
+                        result.method = Method::Search;
+                        return result;
+                    }
+                }
+            }
         }
     }
     // Fallback with a certified lower bound: the region's inner edges number
     // 3(V − 1 + h − b) + b_h (Euler), each at least as long as the shortest
-    // candidates inside.
-    result.lower = lower_bound(pts, sk, &region, &corners_at, &inner);
-    result.triangles = region.cdt_triangles;
+    // candidates inside; or the program's bound, if larger.
+    result.lower = lower_bound(pts, sk, &region, &corners_at, &inner).max(program_lower);
+    result.triangles = incumbent.unwrap_or(region.cdt_triangles);
     result
+}
+
+/// Fronts the plain search may memoise before the triangle program is set
+/// up (at most the budget).
+const QUICK_FRONTS: usize = 20_000;
+
+enum ProgramOutcome {
+    /// Proven optimal (module docs of [`super::face_program`]).
+    Solved(Vec<[u32; 3]>),
+    /// Not proven: the best triangulation of the region built (checked by
+    /// the search), if any, and the certified lower bound on its optimum,
+    /// if the certificate held.
+    Unsolved {
+        incumbent: Option<Vec<[u32; 3]>>,
+        lower: Option<f64>,
+    },
+}
+
+/// The triangle program of a region, its certificate, the triangles it
+/// fixes out and the exact search on the rest ([`super::face_program`]).
+fn solve_by_program(
+    pts: &[Point],
+    sk: &Skeleton,
+    region: &Region,
+    face: &FaceTriangles,
+    budget: usize,
+) -> (ProgramOutcome, ProgramStats) {
+    let program = FaceProgram::new(pts, &face.boundary, &face.tris, &face.tri_edges);
+    let mut stats = ProgramStats {
+        triangles: program.triangles(),
+        ..ProgramStats::default()
+    };
+    // The incumbent: the integer program's triangles, re-checked by the
+    // search restricted to them (which finds them only if they triangulate
+    // the region), else the constrained Delaunay triangles.
+    let checked = program.integer_solution().and_then(|chosen| {
+        let mut price = vec![f64::INFINITY; face.tris.len()];
+        for t in chosen {
+            price[t] = 0.0;
+        }
+        let only = Prices { price, slack: 0.0 };
+        search(pts, sk, region, face, Some(&only), face.tris.len() + 1).0
+    });
+    let (incumbent, incumbent_weight) = match checked {
+        Some(s) => (s.triangles, s.value),
+        None => {
+            let w = inner_edge_weight(pts, &face.boundary, &region.cdt_triangles);
+            (region.cdt_triangles.clone(), w)
+        }
+    };
+    let unsolved = |lower| ProgramOutcome::Unsolved {
+        incumbent: Some(incumbent.clone()),
+        lower,
+    };
+    let Some(certificate) = program.dual().and_then(|y| program.certify(&y)) else {
+        return (unsolved(None), stats);
+    };
+    let Some(prices) = certificate.prices(incumbent_weight.hi) else {
+        return (unsolved(None), stats);
+    };
+    stats.kept = prices
+        .price
+        .iter()
+        .filter(|&&p| p <= prices.slack)
+        .count();
+    let (solved, fronts) = search(pts, sk, region, face, Some(&prices), budget);
+    stats.fronts = fronts;
+    let Some(solved) = solved else {
+        return (unsolved(Some(certificate.lower)), stats);
+    };
+    // Consistency: the optimum found is no heavier than the incumbent
+    // (exactly); otherwise the incumbent was not a triangulation of that
+    // weight and nothing is proven.
+    if super::compare_weights(pts, &solved.triangles, &incumbent) == Ordering::Greater {
+        return (unsolved(None), stats);
+    }
+    (ProgramOutcome::Solved(solved.triangles), stats)
+}
+
+/// Certified weight of the edges of `triangles` that are not on the
+/// boundary (`boundary`: half-edges).
+fn inner_edge_weight(
+    pts: &[Point],
+    boundary: &HashSet<(u32, u32)>,
+    triangles: &[[u32; 3]],
+) -> LengthInterval {
+    super::edges_of(triangles)
+        .into_iter()
+        .filter(|&[a, b]| !boundary.contains(&(a, b)) && !boundary.contains(&(b, a)))
+        .fold(LengthInterval::ZERO, |s, [a, b]| {
+            s.plus(LengthInterval::of_segment(pts[a as usize], pts[b as usize]))
+        })
 }
 
 /// Is the candidate edge `u → w` inside the region at `u`?
@@ -417,17 +558,25 @@ fn solve_polygon(pts: &[Point], sk: &Skeleton, cycle: &[u32]) -> Option<Vec<[u32
     )
 }
 
-/// The exact search over fronts (module docs). `None` when the budget ran
-/// out (or no triangulation exists, which the skeleton's soundness rules
-/// out).
-fn search(
+/// A region's empty candidate triangles (counter-clockwise, in the
+/// skeleton's order) with their edge ids, and its boundary half-edges.
+/// Triangles with a half-edge on the outer side of the boundary (the
+/// reverse of a boundary half-edge that does not dangle) are left out: the
+/// search could never place them.
+pub(super) struct FaceTriangles {
+    pub tris: Vec<[u32; 3]>,
+    pub tri_edges: Vec<[u32; 3]>,
+    /// The boundary half-edges, the region on their left.
+    pub boundary: HashSet<(u32, u32)>,
+}
+
+fn face_triangles(
     pts: &[Point],
     sk: &Skeleton,
     region: &Region,
     corners_at: &HashMap<u32, Vec<Corner>>,
     inner: &HashSet<u32>,
-    budget: usize,
-) -> (Option<Vec<[u32; 3]>>, usize) {
+) -> FaceTriangles {
     let vertices: HashSet<u32> = region
         .cycles
         .iter()
@@ -435,10 +584,15 @@ fn search(
         .copied()
         .chain(region.inner.iter().copied())
         .collect();
-    // The region's empty candidate triangles, by their half-edges.
-    let mut by_half_edge: HashMap<(u32, u32), Vec<u32>> = HashMap::new();
-    let mut tris: Vec<[u32; 3]> = Vec::new();
-    let mut tri_edges: Vec<[u32; 3]> = Vec::new();
+    let boundary: HashSet<(u32, u32)> = region
+        .cycles
+        .iter()
+        .flat_map(|c| (0..c.len()).map(move |i| (c[i], c[(i + 1) % c.len()])))
+        .collect();
+    let outside = |h: (u32, u32)| {
+        let reverse = (h.1, h.0);
+        boundary.contains(&reverse) && !boundary.contains(&h)
+    };
     let in_region = |t: [u32; 3]| {
         let [a, b, c] = t;
         if inner.contains(&a) {
@@ -448,30 +602,78 @@ fn search(
             .get(&a)
             .is_some_and(|cs| cs.iter().any(|co| co.contains_sweep(pts, b, c)))
     };
+    let mut tris = Vec::new();
+    let mut tri_edges = Vec::new();
     for (corners, ids) in &sk.triangles {
         if !corners.iter().all(|v| vertices.contains(v))
             || !ids.iter().all(|&e| sk.alive[e as usize])
+            || !in_region(*corners)
+            || (0..3).any(|s| outside((corners[s], corners[(s + 1) % 3])))
         {
             continue;
-        }
-        if !in_region(*corners) {
-            continue;
-        }
-        let t = tris.len() as u32;
-        for s in 0..3 {
-            by_half_edge
-                .entry((corners[s], corners[(s + 1) % 3]))
-                .or_default()
-                .push(t);
         }
         tris.push(*corners);
         tri_edges.push(*ids);
     }
+    FaceTriangles {
+        tris,
+        tri_edges,
+        boundary,
+    }
+}
+
+/// A region solved by the search: its triangles and the certified weight
+/// of their inner edges.
+struct Searched {
+    triangles: Vec<[u32; 3]>,
+    value: LengthInterval,
+}
+
+/// The exact search over fronts (module docs), on the triangles of `face`,
+/// skipping every partial triangulation whose `prices` exceed their slack.
+/// `None` when the budget ran out (or no triangulation exists, which the
+/// skeleton's soundness rules out for the whole face, and which prices may
+/// cause). With the certificate's prices (excess reduced costs) and slack
+/// `W − L`, no triangulation of weight at most `W` is skipped
+/// ([`super::face_program`]).
+///
+/// With prices, a front's best completion depends on the slack left to it:
+/// each memoised front keeps the slack it was solved with (`+∞` if no
+/// completion was skipped for its price) and is solved again for a larger
+/// one. A completion found under slack `s` is the first lightest among
+/// those within `s`, so on the path of the first lightest triangulation
+/// within the root slack every front is answered as without prices: the
+/// search returns the same triangulation as the unpriced search whenever
+/// that one is within the slack (ties broken alike).
+fn search(
+    pts: &[Point],
+    sk: &Skeleton,
+    region: &Region,
+    face: &FaceTriangles,
+    prices: Option<&Prices>,
+    budget: usize,
+) -> (Option<Searched>, usize) {
+    let (tris, tri_edges) = (&face.tris, &face.tri_edges);
+    let slack = prices.map_or(f64::INFINITY, |p| p.slack);
+    let price = |t: usize| prices.map_or(0.0, |p| p.price[t]);
+    let mut by_half_edge: HashMap<(u32, u32), Vec<u32>> = HashMap::new();
+    for (t, corners) in tris.iter().enumerate() {
+        if price(t) > slack {
+            continue;
+        }
+        for s in 0..3 {
+            by_half_edge
+                .entry((corners[s], corners[(s + 1) % 3]))
+                .or_default()
+                .push(t as u32);
+        }
+    }
     let mut state = SearchState {
         pts,
         sk,
-        tris: &tris,
-        tri_edges: &tri_edges,
+        tris,
+        tri_edges,
+        price: prices.map(|p| p.price.as_slice()),
         by_half_edge: &by_half_edge,
         front: BTreeSet::new(),
         filled: HashSet::new(),
@@ -479,6 +681,7 @@ fn search(
         blocked: HashMap::new(),
         memo: HashMap::new(),
         over_budget: false,
+        computed: 0,
         budget,
     };
     let mut boundary_edges = BTreeSet::new();
@@ -504,8 +707,8 @@ fn search(
     for e in boundary_edges {
         state.place(e);
     }
-    let best = state.solve();
-    let fronts = state.memo.len();
+    let (best, _) = state.solve(slack);
+    let fronts = state.computed;
     if state.over_budget {
         return (None, fronts);
     }
@@ -519,10 +722,9 @@ fn search(
         .iter()
         .flat_map(|c| (0..c.len()).map(move |i| (c[i], c[(i + 1) % c.len()])))
         .collect();
-    let _ = best;
     while !front.is_empty() {
         let key: Vec<(u32, u32)> = front.iter().copied().collect();
-        let Some(Some(entry)) = state.memo.get(&key) else {
+        let Some((_, Some(entry))) = state.memo.get(&key) else {
             return (None, fronts);
         };
         let t = tris[entry.triangle as usize];
@@ -534,7 +736,13 @@ fn search(
             }
         }
     }
-    (Some(triangles), fronts)
+    (
+        Some(Searched {
+            triangles,
+            value: best.value,
+        }),
+        fronts,
+    )
 }
 
 #[derive(Clone)]
@@ -555,8 +763,13 @@ struct SearchState<'a> {
     filled: HashSet<(u32, u32)>,
     placed: HashMap<u32, ()>,
     blocked: HashMap<u32, u32>,
-    memo: HashMap<Vec<(u32, u32)>, Option<Best>>,
+    /// Per triangle, its price ([`Prices`]).
+    price: Option<&'a [f64]>,
+    /// Per front: the slack it was solved with and its best completion.
+    memo: HashMap<Vec<(u32, u32)>, (f64, Option<Best>)>,
     over_budget: bool,
+    /// Fronts solved (a front solved again for a larger slack counts again).
+    computed: usize,
     budget: usize,
 }
 
@@ -610,22 +823,32 @@ impl SearchState<'_> {
         }
     }
 
-    fn solve(&mut self) -> Option<Best> {
+    /// The first lightest completion of the front whose prices add up to at
+    /// most `slack`, and whether no completion was skipped for its price
+    /// (the answer then holds for every slack).
+    fn solve(&mut self, slack: f64) -> (Option<Best>, bool) {
         let Some(&first) = self.front.iter().next() else {
-            return Some(Best {
+            let done = Best {
                 value: LengthInterval::ZERO,
                 edges: Vec::new(),
                 triangle: u32::MAX,
-            });
+            };
+            return (Some(done), true);
         };
         let key: Vec<(u32, u32)> = self.front.iter().copied().collect();
-        if let Some(known) = self.memo.get(&key) {
-            return known.clone();
+        if let Some((solved_with, known)) = self.memo.get(&key) {
+            // Solved with at least this slack: every completion within it
+            // was considered.
+            if *solved_with >= slack {
+                return (known.clone(), *solved_with == f64::INFINITY);
+            }
         }
-        if self.memo.len() >= self.budget {
+        if self.computed >= self.budget {
             self.over_budget = true;
-            return None;
+            return (None, false);
         }
+        self.computed += 1;
+        let mut complete = true;
         let mut best: Option<Best> = None;
         let options: Vec<u32> = self.by_half_edge.get(&first).cloned().unwrap_or_default();
         'triangles: for t in options {
@@ -641,6 +864,17 @@ impl SearchState<'_> {
                     continue 'triangles;
                 }
             }
+            let price = self.price.map_or(0.0, |p| p[t as usize]);
+            if price > slack {
+                complete = false;
+                continue;
+            }
+            // Rounded up: the true slack left is never underestimated.
+            let rest = if slack == f64::INFINITY {
+                slack
+            } else {
+                (slack - price).next_up()
+            };
             // Apply.
             let mut new_edges = Vec::new();
             let mut removed = Vec::new();
@@ -659,7 +893,8 @@ impl SearchState<'_> {
                     added.push((h.1, h.0));
                 }
             }
-            let sub = self.solve();
+            let (sub, sub_complete) = self.solve(rest);
+            complete &= sub_complete;
             // Undo.
             for h in &added {
                 self.front.remove(h);
@@ -674,7 +909,7 @@ impl SearchState<'_> {
                 self.unplace(e);
             }
             if self.over_budget {
-                return None;
+                return (None, false);
             }
             if let Some(sub) = sub {
                 let mut value = sub.value;
@@ -693,7 +928,8 @@ impl SearchState<'_> {
                 }
             }
         }
-        self.memo.insert(key, best.clone());
-        best
+        let solved_with = if complete { f64::INFINITY } else { slack };
+        self.memo.insert(key, (solved_with, best.clone()));
+        (best, complete)
     }
 }

@@ -26,6 +26,7 @@
 //! Ties: the first best split corner (polygon program) or the first best
 //! triangle in the search's order wins, so the result is deterministic.
 
+mod face_program;
 mod faces;
 pub(crate) use faces::FRONT_BUDGET;
 mod skeleton;
@@ -245,12 +246,15 @@ pub(crate) fn general_min_weight(
     let (mut polygons, mut searched, mut unsolved, mut largest, mut holes) =
         (0u64, 0u64, 0u64, 0u64, 0u64);
     let mut fronts = 0u64;
+    let (mut programs, mut program_triangles, mut program_kept, mut program_fronts) =
+        (0u64, 0u64, 0u64, 0u64);
     let mut lower = LengthInterval::ZERO;
     for r in &regions {
         match r.method {
             Method::Triangle => {}
             Method::Polygon => polygons += 1,
             Method::Search => searched += 1,
+            Method::Program => programs += 1,
             Method::Fallback => {
                 unsolved += 1;
                 exact = false;
@@ -267,6 +271,11 @@ pub(crate) fn general_min_weight(
             holes += 1;
         }
         fronts += r.fronts as u64;
+        if let Some(p) = r.program {
+            program_triangles += p.triangles as u64;
+            program_kept += p.kept as u64;
+            program_fronts += p.fronts as u64;
+        }
         triangles.extend_from_slice(&r.triangles);
     }
     diagnostics.add("faces", regions.len() as u64);
@@ -276,6 +285,10 @@ pub(crate) fn general_min_weight(
     diagnostics.add("faces unsolved", unsolved);
     diagnostics.add("largest face", largest);
     diagnostics.add("search fronts", fronts);
+    diagnostics.add("faces by triangle program", programs);
+    diagnostics.add("program triangles", program_triangles);
+    diagnostics.add("program triangles kept", program_kept);
+    diagnostics.add("program search fronts", program_fronts);
     let mut triangulation = Triangulation::from_distinct(points, triangles);
     let mut algorithm = "diamond filter, LMT-skeleton, Klincsek program on simple faces, exact front search on the others".to_string();
     let lower_bound;
