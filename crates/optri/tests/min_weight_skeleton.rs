@@ -201,7 +201,10 @@ fn check(input: &[Point], what: &str) -> usize {
     let expected = candidates_reference(pts);
     assert_eq!(candidates, expected, "{what}: diamond candidates differ");
     let (expected_left, expected_certain) = skeleton_reference(pts, &expected);
-    assert_eq!(left, expected_left, "{what}: edges left by the LMT loop differ");
+    assert_eq!(
+        left, expected_left,
+        "{what}: edges left by the LMT loop differ"
+    );
     assert_eq!(certain, expected_certain, "{what}: certain edges differ");
     candidates.len()
 }
@@ -226,7 +229,10 @@ fn random_sets_match_the_brute_force_sets() {
         total += check(&pts, &format!("round {round}"));
         // The same set far from the origin, huge and tiny.
         for (scale, shift) in [(1e12, [-3e15, 7e14]), (1e-9, [-1.0, 0.5])] {
-            total += check(&scaled(&pts, scale, shift), &format!("round {round} scaled"));
+            total += check(
+                &scaled(&pts, scale, shift),
+                &format!("round {round} scaled"),
+            );
         }
     }
     assert!(total > 3000, "only {total} candidates in all");

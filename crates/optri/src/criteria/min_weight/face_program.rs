@@ -204,11 +204,7 @@ impl FaceProgram {
         }
         let outcome = problem.solve().ok()?;
         let solution = outcome.solution()?;
-        Some(
-            ys.iter()
-                .map(|&y| solution.var_value(y) * scale)
-                .collect(),
-        )
+        Some(ys.iter().map(|&y| solution.var_value(y) * scale).collect())
     }
 
     /// The triangles (indices) of the integer program's best solution within
@@ -223,7 +219,8 @@ impl FaceProgram {
             .iter()
             .map(|c| problem.add_binary_var(0.5 * (c.lo + c.hi) / scale))
             .collect();
-        let mut rows: Vec<Vec<(microlp::Variable, f64)>> = vec![Vec::new(); self.boundary_row.len()];
+        let mut rows: Vec<Vec<(microlp::Variable, f64)>> =
+            vec![Vec::new(); self.boundary_row.len()];
         for (t, row) in self.entries.iter().enumerate() {
             for &(r, s) in row {
                 rows[r as usize].push((xs[t], f64::from(s)));
@@ -294,7 +291,11 @@ impl Certificate {
     /// allows: the incumbent (or the certificate) is wrong and nothing may
     /// be pruned.
     pub(super) fn slack(&self, incumbent: f64) -> Option<f64> {
-        if !(self.lower <= incumbent) {
+        // NaN on either side compares as unordered: no certificate.
+        if !matches!(
+            self.lower.partial_cmp(&incumbent),
+            Some(std::cmp::Ordering::Less | std::cmp::Ordering::Equal)
+        ) {
             return None;
         }
         Some((incumbent - self.lower).next_up())

@@ -422,11 +422,7 @@ fn solve_by_program(
     let Some(prices) = certificate.prices(incumbent_weight.hi) else {
         return (unsolved(None), stats);
     };
-    stats.kept = prices
-        .price
-        .iter()
-        .filter(|&&p| p <= prices.slack)
-        .count();
+    stats.kept = prices.price.iter().filter(|&&p| p <= prices.slack).count();
     let (solved, fronts) = search(pts, sk, region, face, Some(&prices), budget);
     stats.fronts = fronts;
     let Some(solved) = solved else {
@@ -753,6 +749,10 @@ struct Best {
     triangle: u32,
 }
 
+/// A front's memo entry: the slack it was solved with and its best
+/// completion.
+type FrontMemo = (f64, Option<Best>);
+
 struct SearchState<'a> {
     pts: &'a [Point],
     sk: &'a Skeleton,
@@ -766,7 +766,7 @@ struct SearchState<'a> {
     /// Per triangle, its price ([`Prices`]).
     price: Option<&'a [f64]>,
     /// Per front: the slack it was solved with and its best completion.
-    memo: HashMap<Vec<(u32, u32)>, (f64, Option<Best>)>,
+    memo: HashMap<Vec<(u32, u32)>, FrontMemo>,
     over_budget: bool,
     /// Fronts solved (a front solved again for a larger slack counts again).
     computed: usize,
