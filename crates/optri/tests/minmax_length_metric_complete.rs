@@ -223,14 +223,38 @@ fn large_sets(rng: &mut StdRng) -> Vec<(String, Vec<Point>)> {
             "lens with collinear midpoints 60".into(),
             convex_by_construction(rng, 60, ConvexShape::Lens, true),
         ),
+        ("dented circle 240".into(), dented_circle(rng, 240)),
     ]
+}
+
+/// Random angles on a circle of radius 1000, every eighth point pulled in
+/// by a random fraction of the sagitta of its gap: complete regions with
+/// reflex corners whose RNG chords are not all Delaunay edges (the
+/// ear-clipped tiling of `RngPolygon::ear_clipped`).
+fn dented_circle(rng: &mut StdRng, n: usize) -> Vec<Point> {
+    let mut angles: Vec<f64> = (0..n)
+        .map(|_| rng.gen_range(0.0..std::f64::consts::TAU))
+        .collect();
+    angles.sort_by(f64::total_cmp);
+    (0..n)
+        .map(|i| {
+            let a = angles[i];
+            let r = if i % 8 == 3 {
+                let gap = angles[(i + 1) % n] - angles[(i + n - 1) % n];
+                1000.0 * (1.0 - rng.gen_range(0.0..3.0) * (1.0 - (gap.abs() / 2.0).cos()))
+            } else {
+                1000.0
+            };
+            [r * a.cos(), r * a.sin()]
+        })
+        .collect()
 }
 
 #[test]
 fn convex_sets_equal_the_cubic_program_without_fallback() {
     let mut rng = StdRng::seed_from_u64(SEED_LARGE);
     let sets = large_sets(&mut rng);
-    let (mut by_5_3, mut case_1, mut case_2) = (0, 0, 0);
+    let (mut by_5_3, mut case_1, mut case_2, mut ear_clipped) = (0, 0, 0, 0);
     for (metric, norm) in metrics() {
         for (name, pts) in &sets {
             let ps = PointSet::new(pts).unwrap();
@@ -244,11 +268,15 @@ fn convex_sets_equal_the_cubic_program_without_fallback() {
                 by_5_3 += assert_no_fallback(&d, &format!("{metric} on {name}"));
                 case_1 += d.get("case_1").unwrap();
                 case_2 += d.get("case_2").unwrap();
+                ear_clipped += d.get("complete_regions_outside_mesh").unwrap_or(0);
             }
         }
     }
-    eprintln!("{by_5_3} regions by §5.3, case 1: {case_1}, case 2: {case_2}");
+    eprintln!(
+        "{by_5_3} regions by §5.3, case 1: {case_1}, case 2: {case_2}, ear-clipped: {ear_clipped}"
+    );
     assert!(by_5_3 >= 2 * 4 * 8, "§5.3 ran on {by_5_3} regions");
+    assert!(ear_clipped > 0, "no region was ear-clipped");
     assert!(
         case_1 > 0 && case_2 > 0,
         "case 1: {case_1}, case 2: {case_2}"

@@ -62,7 +62,7 @@ pub fn compare_lengths(a: Point, b: Point, c: Point, d: Point) -> Ordering {
 
 /// `|pq|²` when `f64` arithmetic computes it exactly, else `None`: both
 /// coordinate differences, both squares and their sum are exact (their
-/// error terms by [`two_diff`], [`two_product`] and [`two_sum`] are zero).
+/// error terms by the error-free `two_diff`, `two_product` and `two_sum` are zero).
 /// Two such values compare as numbers exactly as [`compare_lengths`]
 /// compares the segments. Integer coordinates below 2²⁵ in magnitude always
 /// qualify: a file of six-decimal points is read as such integers, and its

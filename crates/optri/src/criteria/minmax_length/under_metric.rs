@@ -28,8 +28,11 @@
 //!      region is strictly convex (convex position), else the Euclidean
 //!      Delaunay triangles with the metric's RNG edges marked, which tile
 //!      the region only if its boundary edges are Delaunay edges; other
-//!      complete regions (`complete_regions_outside_mesh`) go to the cubic
-//!      program.
+//!      complete regions (`complete_regions_outside_mesh`: reflex corners
+//!      and an RNG chord that is not a Delaunay edge) are tiled by ear
+//!      clipping, O(k·r) for `r` reflex corners
+//!      ([`RngPolygon::ear_clipped`]); a failure of any step sends the
+//!      region to the cubic program (`fallbacks`).
 //!
 //!    Every other region goes to §3's exact cubic program with the metric's
 //!    chord order. **Not proven here:** §7 asserts that §5–§6 carry over to
@@ -98,6 +101,12 @@ pub(crate) enum MetricMethod {
 
 /// Regions of at least this many corners use §5.1 or §5.3/§6.
 pub(crate) const QUADRATIC_FROM: usize = 16;
+
+/// Does the face's boundary walk visit every corner once?
+fn distinct_corners(face: &[u32]) -> bool {
+    let mut seen = HashSet::with_capacity(face.len());
+    face.iter().all(|&w| seen.insert(w))
+}
 
 pub(crate) fn run_under(
     points: &PointSet,
@@ -190,22 +199,26 @@ pub(crate) fn run_under(
                         }
                         [] => {
                             let polygon = if region.is_strictly_convex() {
-                                Some(RngPolygon::convex_fan(pts, face, &counters, order))
+                                RngPolygon::convex_fan(pts, face, &counters, order)
                             } else {
-                                mesh.as_ref()
-                                    .filter(|m| m.tiles(face))
-                                    .map(|m| RngPolygon::with_order(pts, face, m, &counters, order))
-                            };
-                            match polygon {
-                                Some(polygon) => {
-                                    if let Ok(t) = polygon.and_then(|f| f.triangulate()) {
-                                        by_5_3.add(1);
-                                        return t;
+                                match mesh.as_ref().filter(|m| m.tiles(face)) {
+                                    Some(m) => {
+                                        RngPolygon::with_order(pts, face, m, &counters, order)
                                     }
-                                    counters.fallbacks.add(1);
+                                    // A dangling edge walked twice repeats a
+                                    // corner: no simple polygon to clip.
+                                    None if !distinct_corners(face) => return order.cubic(&region),
+                                    None => {
+                                        outside_mesh.add(1);
+                                        RngPolygon::ear_clipped(pts, face, &counters, order)
+                                    }
                                 }
-                                None => outside_mesh.add(1),
+                            };
+                            if let Ok(t) = polygon.and_then(|f| f.triangulate()) {
+                                by_5_3.add(1);
+                                return t;
                             }
+                            counters.fallbacks.add(1);
                         }
                         _ => {}
                     }

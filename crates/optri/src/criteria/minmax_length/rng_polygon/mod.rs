@@ -251,32 +251,154 @@ impl<'a, L: LengthOrder> RngPolygon<'a, L> {
         if k < 3 || !geo.is_strictly_convex() {
             return Err(Inconsistent("fan of a region that is not strictly convex"));
         }
-        let n = k - 2;
-        let corners: Vec<[u32; 3]> = (0..n).map(|t| [v[0], v[t + 1], v[t + 2]]).collect();
-        let positions: Vec<[u32; 3]> = (0..n).map(|t| [0, t as u32 + 1, t as u32 + 2]).collect();
-        // Side 0 (0 → t+1) borders t − 1, side 1 is the boundary, side 2
-        // (t+2 → 0) borders t + 1.
-        let neighbours: Vec<[u32; 3]> = (0..n)
-            .map(|t| {
-                let before = if t > 0 { t as u32 - 1 } else { NONE };
-                let after = if t + 1 < n { t as u32 + 1 } else { NONE };
-                [before, NONE, after]
+        let fan: Vec<[u32; 3]> = (0..k as u32 - 2).map(|t| [0, t + 1, t + 2]).collect();
+        Self::from_tiling(points, v, counters, order, fan, true)
+    }
+
+    /// A complete region with distinct corners that is simple in `S′`, tiled
+    /// by ear clipping (the Two Ears Theorem: a simple polygon of more than
+    /// three corners has two non-overlapping ears). For the regions that are
+    /// neither strictly convex nor tiled by the Delaunay mesh (a metric's RNG
+    /// chord that is not a Delaunay edge bounds a region with reflex
+    /// corners). Only reflex corners can lie in a candidate ear (a corner
+    /// inside an ear's triangle implies a reflex one inside it), so with the
+    /// ear status of the clipped corner's two neighbours recomputed, the
+    /// tiling costs O(k·r) orientation tests for `r` reflex corners: within
+    /// §6's O(k²). A non-simple boundary leaves no ear and is reported
+    /// [`Inconsistent`] (the caller's cubic program takes it).
+    pub fn ear_clipped(
+        points: &'a [Point],
+        v: &'a [u32],
+        counters: &'a Counters,
+        order: L,
+    ) -> Result<Self, Inconsistent> {
+        let k = v.len();
+        if k < 3 {
+            return Err(Inconsistent("region of fewer than three corners"));
+        }
+        let mut seen = std::collections::HashSet::with_capacity(k);
+        if !v.iter().all(|&w| seen.insert(w)) {
+            return Err(Inconsistent("repeated corner"));
+        }
+        let geo = Region {
+            points,
+            vertices: v,
+            symbolic: true,
+        };
+        let orient = |a: usize, b: usize, c: usize| geo.orient(v[a], v[b], v[c]);
+        let mut prev: Vec<usize> = (0..k).map(|a| (a + k - 1) % k).collect();
+        let mut next: Vec<usize> = (0..k).map(|a| (a + 1) % k).collect();
+        let mut removed = vec![false; k];
+        let mut reflex: Vec<bool> = (0..k).map(|a| orient(prev[a], a, next[a]) < 0).collect();
+        let mut reflex_list: Vec<usize> = (0..k).filter(|&a| reflex[a]).collect();
+        let is_ear = |a: usize, prev: &[usize], next: &[usize], reflex: &[bool], list: &[usize]| {
+            let (p, n) = (prev[a], next[a]);
+            !reflex[a]
+                && list.iter().all(|&r| {
+                    !reflex[r]
+                        || r == p
+                        || r == n
+                        || r == a
+                        || !(orient(p, a, r) > 0 && orient(a, n, r) > 0 && orient(n, p, r) > 0)
+                })
+        };
+        let mut tiles = Vec::with_capacity(k - 2);
+        let mut left = k;
+        let mut stack: Vec<usize> = (0..k).rev().collect();
+        let mut rescans = 0;
+        while left > 3 {
+            let Some(a) = stack.pop() else {
+                // A corner that became an ear because a blocking reflex
+                // corner turned convex was not queued: scan all again.
+                rescans += 1;
+                if rescans > 2 * k {
+                    return Err(Inconsistent("ear clipping stalls"));
+                }
+                let before = stack.len();
+                stack.extend((0..k).filter(|&a| !removed[a] && !reflex[a]));
+                if stack.len() == before {
+                    return Err(Inconsistent("no ear: region not simple"));
+                }
+                reflex_list.retain(|&r| !removed[r] && reflex[r]);
+                continue;
+            };
+            if removed[a] || !is_ear(a, &prev, &next, &reflex, &reflex_list) {
+                continue;
+            }
+            let (p, n) = (prev[a], next[a]);
+            tiles.push([p as u32, a as u32, n as u32]);
+            removed[a] = true;
+            next[p] = n;
+            prev[n] = p;
+            left -= 1;
+            for w in [p, n] {
+                reflex[w] = orient(prev[w], w, next[w]) < 0;
+                stack.push(w);
+            }
+        }
+        let a = (0..k).find(|&a| !removed[a]).ok_or(Inconsistent("ears"))?;
+        let (p, n) = (prev[a], next[a]);
+        if orient(p, a, n) <= 0 {
+            return Err(Inconsistent("last ear not a left turn"));
+        }
+        tiles.push([p as u32, a as u32, n as u32]);
+        let convex = L::CHOICE_IS_VISIBLE || geo.is_strictly_convex();
+        Self::from_tiling(points, v, counters, order, tiles, convex)
+    }
+
+    /// The local adjacency of a tiling of the region given by position
+    /// triples (counter-clockwise): neighbours across shared sides, and each
+    /// corner's fan starting at the triangle left of its boundary edge
+    /// `a → a+1`.
+    fn from_tiling(
+        points: &'a [Point],
+        v: &'a [u32],
+        counters: &'a Counters,
+        order: L,
+        positions: Vec<[u32; 3]>,
+        convex: bool,
+    ) -> Result<Self, Inconsistent> {
+        let k = v.len();
+        let mut side_of: HashMap<(u32, u32), (u32, u8)> =
+            HashMap::with_capacity(3 * positions.len());
+        for (t, c) in positions.iter().enumerate() {
+            for j in 0..3 {
+                if side_of
+                    .insert((c[j], c[(j + 1) % 3]), (t as u32, j as u8))
+                    .is_some()
+                {
+                    return Err(Inconsistent("side used twice"));
+                }
+            }
+        }
+        let neighbours: Vec<[u32; 3]> = positions
+            .iter()
+            .map(|c| {
+                std::array::from_fn(|j| {
+                    side_of
+                        .get(&(c[(j + 1) % 3], c[j]))
+                        .map_or(NONE, |&(t, _)| t)
+                })
             })
             .collect();
-        // Each corner's fan starts at the triangle left of its boundary edge
-        // a → a+1: triangle 0 for position 0, a − 1 (corner 1) for
-        // 1 ≤ a ≤ k − 2, and n − 1 (corner 2) for a = k − 1.
         let fan_start: Vec<(u32, u8)> = (0..k)
-            .map(|a| match a {
-                0 => (0, 0),
-                a if a + 1 < k => (a as u32 - 1, 1),
-                _ => (n as u32 - 1, 2),
+            .map(|a| {
+                side_of
+                    .get(&(a as u32, ((a + 1) % k) as u32))
+                    .copied()
+                    .ok_or(Inconsistent("boundary edge outside the tiling"))
             })
-            .collect();
+            .collect::<Result<_, _>>()?;
+        let corners: Vec<[u32; 3]> = positions.iter().map(|c| c.map(|a| v[a as usize])).collect();
+        let geo = Region {
+            points,
+            vertices: v,
+            symbolic: true,
+        };
         Ok(Self {
             points,
             order,
-            convex: true,
+            convex,
             v,
             k,
             mesh: None,
