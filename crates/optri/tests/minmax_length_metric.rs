@@ -11,25 +11,15 @@ use optri_oracle::inputs::{
     circle_r5_ccw, collinear_runs, convex_lens, grid, grid_subset, integer_circle_points,
     jittered_arc, lattice_points, parabola, uniform_unit_square,
 };
-use optri_oracle::norm::Norm;
+#[path = "common/metrics.rs"]
+mod metrics;
+use metrics::{longest_edge_key, metrics_with_oracle_norms};
 use rand::{rngs::StdRng, Rng, SeedableRng};
 
 const SEED_EXHAUSTIVE: u64 = 1111;
 const SEED_CUBIC: u64 = 1112;
 const SEED_CONVEX: u64 = 1113;
 const SEED_CERTIFICATE: u64 = 1114;
-
-fn metrics() -> Vec<(Metric, Norm)> {
-    let hexagon = Metric::parse("polygon:2,0,1,2,-1,2,-2,0,-1,-2,1,-2").unwrap();
-    let hex_norm = Norm::Polygon(hexagon.unit_polygon().unwrap().to_vec());
-    vec![
-        (Metric::l1(), Norm::L1),
-        (Metric::linf(), Norm::LInf),
-        (Metric::lp(3).unwrap(), Norm::Lp(3)),
-        (Metric::euclidean(), Norm::Lp(2)),
-        (hexagon, hex_norm),
-    ]
-}
 
 fn solve(pts: &[Point], metric: &Metric) -> optri::Triangulation {
     solution(&PointSet::new(pts).unwrap(), metric).triangulation
@@ -45,10 +35,6 @@ fn solution(ps: &PointSet, metric: &Metric) -> optri::Solution {
     .unwrap();
     s.triangulation.validate().unwrap();
     s
-}
-
-fn value(norm: &Norm, t: &optri::Triangulation) -> num_rational::BigRational {
-    norm.max_edge_key(t.points(), t.triangles())
 }
 
 fn small_sets(rng: &mut StdRng) -> Vec<(String, Vec<Point>)> {
@@ -92,7 +78,7 @@ fn equals_exhaustive_enumeration_under_every_metric() {
     let mut rng = StdRng::seed_from_u64(SEED_EXHAUSTIVE);
     let sets = small_sets(&mut rng);
     let mut cases = 0;
-    for (metric, norm) in metrics() {
+    for (metric, norm) in metrics_with_oracle_norms() {
         for (name, pts) in &sets {
             let ps = PointSet::new(pts).unwrap();
             let d = ps.points().to_vec();
@@ -103,14 +89,18 @@ fn equals_exhaustive_enumeration_under_every_metric() {
                 continue;
             }
             let want = norm.exhaustive_minmax(&d);
-            let got = value(&norm, &solve(pts, &metric));
+            let got = longest_edge_key(&norm, &solve(pts, &metric));
             assert_eq!(got, want, "{metric} on {name}: {pts:?}");
             // The cubic program on every region, and §5.1 on every convex
             // incomplete region, reach it too.
             for from in [None, Some(0)] {
                 let (t, _) = minmax_length_under_with(&ps, &metric, from).unwrap();
                 t.validate().unwrap();
-                assert_eq!(value(&norm, &t), want, "{metric} {from:?} on {name}");
+                assert_eq!(
+                    longest_edge_key(&norm, &t),
+                    want,
+                    "{metric} {from:?} on {name}"
+                );
             }
             cases += 1;
         }
@@ -142,20 +132,24 @@ fn equals_the_cubic_program_under_every_metric() {
     let mut rng = StdRng::seed_from_u64(SEED_CUBIC);
     let sets = larger_sets(&mut rng);
     let mut by_5_1 = 0;
-    for (metric, norm) in metrics() {
+    for (metric, norm) in metrics_with_oracle_norms() {
         for (name, pts) in &sets {
             let ps = PointSet::new(pts).unwrap();
             let (cubic, _) = minmax_length_under_with(&ps, &metric, None).unwrap();
             cubic.validate().unwrap();
-            let want = value(&norm, &cubic);
+            let want = longest_edge_key(&norm, &cubic);
             assert_eq!(
-                value(&norm, &solve(pts, &metric)),
+                longest_edge_key(&norm, &solve(pts, &metric)),
                 want,
                 "{metric} on {name}"
             );
             let (quad, d) = minmax_length_under_with(&ps, &metric, Some(0)).unwrap();
             quad.validate().unwrap();
-            assert_eq!(value(&norm, &quad), want, "{metric} §5.1 on {name}");
+            assert_eq!(
+                longest_edge_key(&norm, &quad),
+                want,
+                "{metric} §5.1 on {name}"
+            );
             assert_eq!(d.get("fallbacks"), Some(0), "{metric} on {name}");
             by_5_1 += d.get("regions_by_5_1").unwrap();
         }
@@ -213,7 +207,10 @@ fn hull_certificate_is_exact_and_both_ways_occur() {
         "lattice 200".to_string(),
         lattice_points(&mut rng, 200, 0..30, 0..9),
     ));
-    for (metric, norm) in metrics().into_iter().filter(|(m, _)| !m.is_euclidean()) {
+    for (metric, norm) in metrics_with_oracle_norms()
+        .into_iter()
+        .filter(|(m, _)| !m.is_euclidean())
+    {
         let (mut certified, mut solved) = (0, 0);
         for (exhaustive, (name, pts)) in small
             .iter()
@@ -231,10 +228,14 @@ fn hull_certificate_is_exact_and_both_ways_occur() {
                 norm.exhaustive_minmax(&d)
             } else {
                 let (cubic, _) = minmax_length_under_with(&ps, &metric, None).unwrap();
-                value(&norm, &cubic)
+                longest_edge_key(&norm, &cubic)
             };
             let s = solution(&ps, &metric);
-            assert_eq!(value(&norm, &s.triangulation), want, "{metric} on {name}");
+            assert_eq!(
+                longest_edge_key(&norm, &s.triangulation),
+                want,
+                "{metric} on {name}"
+            );
             if s.diagnostics.get("regions_certified_by_bound") == Some(1) {
                 certified += 1;
                 assert!(s.algorithm_detail.contains("hull lower bound"), "{metric}");
@@ -254,7 +255,7 @@ fn hull_certificate_is_exact_and_both_ways_occur() {
 #[ignore]
 fn equals_the_cubic_program_up_to_2000_points() {
     let mut rng = StdRng::seed_from_u64(SEED_CONVEX);
-    for (metric, norm) in metrics() {
+    for (metric, norm) in metrics_with_oracle_norms() {
         for pts in [
             uniform_unit_square(&mut rng, 2000),
             jittered_arc(&mut rng, 1000),
@@ -262,8 +263,12 @@ fn equals_the_cubic_program_up_to_2000_points() {
         ] {
             let ps = PointSet::new(&pts).unwrap();
             let (cubic, _) = minmax_length_under_with(&ps, &metric, None).unwrap();
-            let want = value(&norm, &cubic);
-            assert_eq!(value(&norm, &solve(&pts, &metric)), want, "{metric}");
+            let want = longest_edge_key(&norm, &cubic);
+            assert_eq!(
+                longest_edge_key(&norm, &solve(&pts, &metric)),
+                want,
+                "{metric}"
+            );
         }
     }
 }

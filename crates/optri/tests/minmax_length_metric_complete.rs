@@ -11,36 +11,20 @@
 //! (`regions_by_5_3`, `case_1`, `case_2`).
 
 use optri::internals::minmax_length_under_with;
-use optri::kernel::{Metric, Point};
-use optri::{triangulate_with, Criterion, Diagnostics, Options, PointSet, Triangulation};
+use optri::kernel::Point;
+use optri::{triangulate_with, Criterion, Diagnostics, Options, PointSet};
 use optri_oracle::inputs::{
     circle_at_random_angles, convex_by_construction, integer_circle_points, perturbed_circle,
     sampled_circle, ConvexShape,
 };
-use optri_oracle::norm::Norm;
+#[path = "common/metrics.rs"]
+mod metrics;
+use metrics::{longest_edge_key, metrics_with_oracle_norms};
 use rand::{rngs::StdRng, Rng, SeedableRng};
 
 const SEED_SMALL: u64 = 1121;
 const SEED_LARGE: u64 = 1122;
 const SEED_SWEEP: u64 = 1123;
-
-/// The non-Euclidean metrics of the issue (and the Euclidean one, whose
-/// path must not change), with the oracle's independent norm.
-fn metrics() -> Vec<(Metric, Norm)> {
-    let hexagon = Metric::parse("polygon:2,0,1,2,-1,2,-2,0,-1,-2,1,-2").unwrap();
-    let hex_norm = Norm::Polygon(hexagon.unit_polygon().unwrap().to_vec());
-    vec![
-        (Metric::l1(), Norm::L1),
-        (Metric::linf(), Norm::LInf),
-        (Metric::lp(3).unwrap(), Norm::Lp(3)),
-        (hexagon, hex_norm),
-        (Metric::euclidean(), Norm::Lp(2)),
-    ]
-}
-
-fn value(norm: &Norm, t: &Triangulation) -> num_rational::BigRational {
-    norm.max_edge_key(t.points(), t.triangles())
-}
 
 /// A strictly convex lattice polygon with many edges: the primitive vectors
 /// `(a, b)`, `|a|, |b| ≤ m`, sorted by angle and summed. Its edge vectors
@@ -159,7 +143,7 @@ fn convex_sets_equal_exhaustive_enumeration_without_fallback() {
     let mut rng = StdRng::seed_from_u64(SEED_SMALL);
     let sets = small_sets(&mut rng);
     let (mut cases, mut by_5_3) = (0, 0);
-    for (metric, norm) in metrics() {
+    for (metric, norm) in metrics_with_oracle_norms() {
         for (name, pts) in &sets {
             let ps = PointSet::new(pts).unwrap();
             let want = norm.exhaustive_minmax(ps.points());
@@ -171,14 +155,14 @@ fn convex_sets_equal_exhaustive_enumeration_without_fallback() {
             .unwrap();
             product.triangulation.validate().unwrap();
             assert_eq!(
-                value(&norm, &product.triangulation),
+                longest_edge_key(&norm, &product.triangulation),
                 want,
                 "{metric} on {name}"
             );
             let (t, d) = minmax_length_under_with(&ps, &metric, Some(0)).unwrap();
             t.validate().unwrap();
             assert_eq!(
-                value(&norm, &t),
+                longest_edge_key(&norm, &t),
                 want,
                 "{metric} quadratic on {name}: {pts:?}"
             );
@@ -255,16 +239,20 @@ fn convex_sets_equal_the_cubic_program_without_fallback() {
     let mut rng = StdRng::seed_from_u64(SEED_LARGE);
     let sets = large_sets(&mut rng);
     let (mut by_5_3, mut case_1, mut case_2, mut ear_clipped) = (0, 0, 0, 0);
-    for (metric, norm) in metrics() {
+    for (metric, norm) in metrics_with_oracle_norms() {
         for (name, pts) in &sets {
             let ps = PointSet::new(pts).unwrap();
             let (cubic, _) = minmax_length_under_with(&ps, &metric, None).unwrap();
             cubic.validate().unwrap();
-            let want = value(&norm, &cubic);
+            let want = longest_edge_key(&norm, &cubic);
             for from in [0, 16] {
                 let (t, d) = minmax_length_under_with(&ps, &metric, Some(from)).unwrap();
                 t.validate().unwrap();
-                assert_eq!(value(&norm, &t), want, "{metric} from {from} on {name}");
+                assert_eq!(
+                    longest_edge_key(&norm, &t),
+                    want,
+                    "{metric} from {from} on {name}"
+                );
                 by_5_3 += assert_no_fallback(&d, &format!("{metric} on {name}"));
                 case_1 += d.get("case_1").unwrap();
                 case_2 += d.get("case_2").unwrap();
@@ -303,14 +291,14 @@ fn convex_sets_equal_the_cubic_program_up_to_2000_points() {
         ("lattice polygon m=14".into(), lattice_polygon(14)),
         ("ellipse 1500".into(), random_ellipse(&mut rng, 1500)),
     ];
-    for (metric, norm) in metrics() {
+    for (metric, norm) in metrics_with_oracle_norms() {
         for (name, pts) in &sets {
             let ps = PointSet::new(pts).unwrap();
             let (cubic, _) = minmax_length_under_with(&ps, &metric, None).unwrap();
-            let want = value(&norm, &cubic);
+            let want = longest_edge_key(&norm, &cubic);
             let (t, d) = minmax_length_under_with(&ps, &metric, Some(16)).unwrap();
             t.validate().unwrap();
-            assert_eq!(value(&norm, &t), want, "{metric} on {name}");
+            assert_eq!(longest_edge_key(&norm, &t), want, "{metric} on {name}");
             let by_5_3 = assert_no_fallback(&d, &format!("{metric} on {name}"));
             eprintln!(
                 "{metric} on {name} ({} points): {by_5_3} regions by §5.3",
