@@ -156,8 +156,10 @@ pub(crate) fn run(args: DemoArgs) -> CliResult<()> {
     let svg = io::panels_to_svg(&panels);
     std::fs::write(&args.output, svg)
         .map_err(|e| format!("cannot write '{}': {e}", args.output.display()))?;
+    // The label column fits the longest label ("maxmin-area (uncertified)").
+    let width = results.iter().map(|r| r.label.len()).max().unwrap_or(0).max(9);
     text.push_str(&format!(
-        "\n{:<24} {:<7} {:>10} {:>12} {:>10} {:>10} {:>10} {:>10}\n",
+        "\n{:<width$} {:<7} {:>10} {:>12} {:>10} {:>10} {:>10} {:>10}\n",
         "criterion",
         "set",
         "max edge",
@@ -170,7 +172,7 @@ pub(crate) fn run(args: DemoArgs) -> CliResult<()> {
     for r in &results {
         let s = r.triangulation.stats();
         text.push_str(&format!(
-            "{:<24} {:<7} {:>10.4} {:>12.4} {:>10.4} {:>10.4} {:>10.4} {:>10.3}\n",
+            "{:<width$} {:<7} {:>10.4} {:>12.4} {:>10.4} {:>10.4} {:>10.4} {:>10.3}\n",
             r.label,
             r.set,
             s.max_edge_length,
