@@ -26,7 +26,8 @@ use crate::polygon_program::optimal_triangulation;
 use spade::handles::{FixedDirectedEdgeHandle, FixedFaceHandle, InnerTag};
 use spade::{ConstrainedDelaunayTriangulation, HasPosition, Point2, Triangulation as _};
 use std::cmp::Ordering;
-use std::collections::{BTreeSet, HashMap, HashSet};
+use std::cmp::Reverse;
+use std::collections::{BTreeSet, BinaryHeap, HashMap, HashSet};
 
 /// Largest number of fronts the exact search memoises per region (by
 /// default).
@@ -79,7 +80,10 @@ pub(crate) struct ProgramStats {
     pub triangles: usize,
     /// Triangles kept by the certificate (0 without one).
     pub kept: usize,
+    /// Fronts of the priced searches (root and nodes).
     pub fronts: usize,
+    /// Branch-and-bound nodes evaluated (0: decided at the root).
+    pub nodes: usize,
 }
 
 /// A region: its boundary walks (vertex cycles, region on the left), its
@@ -323,6 +327,7 @@ fn solve_region(pts: &[Point], sk: &Skeleton, region: Region, budget: usize) -> 
         // a fraction of the budget.
         let quick = budget.min(QUICK_FRONTS);
         let (solved, fronts) = search(pts, sk, &region, &face, None, quick);
+        let solved = solved.found();
         result.fronts = fronts;
         if let Some(s) = solved {
             result.triangles = s.triangles;
@@ -346,6 +351,7 @@ fn solve_region(pts: &[Point], sk: &Skeleton, region: Region, budget: usize) -> 
                 if lower.is_none() && budget > quick {
                     // No certificate: the plain search with the whole budget.
                     let (solved, fronts) = search(pts, sk, &region, &face, None, budget);
+                    let solved = solved.found();
                     result.fronts = fronts;
                     if let Some(s) = solved {
                         result.triangles = s.triangles;
@@ -403,7 +409,9 @@ fn solve_by_program(
             price[t] = 0.0;
         }
         let only = Prices { price, slack: 0.0 };
-        search(pts, sk, region, face, Some(&only), face.tris.len() + 1).0
+        search(pts, sk, region, face, Some(&only), face.tris.len() + 1)
+            .0
+            .found()
     });
     let (incumbent, incumbent_weight) = match checked {
         Some(s) => (s.triangles, s.value),
@@ -423,19 +431,338 @@ fn solve_by_program(
         return (unsolved(None), stats);
     };
     stats.kept = prices.price.iter().filter(|&&p| p <= prices.slack).count();
-    let (solved, fronts) = search(pts, sk, region, face, Some(&prices), budget);
+    let (solved, fronts) = search(
+        pts,
+        sk,
+        region,
+        face,
+        Some(&prices),
+        budget.min(ROOT_FRONTS),
+    );
     stats.fronts = fronts;
-    let Some(solved) = solved else {
-        return (unsolved(Some(certificate.lower)), stats);
-    };
-    // Consistency: the optimum found is no heavier than the incumbent
-    // (exactly); otherwise the incumbent was not a triangulation of that
-    // weight and nothing is proven.
-    if super::compare_weights(pts, &solved.triangles, &incumbent) == Ordering::Greater {
-        return (unsolved(None), stats);
+    match solved {
+        SearchOutcome::Found(solved) => {
+            // Consistency: the optimum found is no heavier than the
+            // incumbent (exactly); otherwise the incumbent was not a
+            // triangulation of that weight and nothing is proven.
+            if super::compare_weights(pts, &solved.triangles, &incumbent) == Ordering::Greater {
+                return (unsolved(None), stats);
+            }
+            (ProgramOutcome::Solved(solved.triangles), stats)
+        }
+        // No triangulation within the slack of a true incumbent: a wrong
+        // certificate or incumbent; nothing is proven.
+        SearchOutcome::NoTriangulation => (unsolved(None), stats),
+        SearchOutcome::OverBudget => {
+            let root = Node {
+                bound: certificate.lower,
+                kept: prices.price.iter().map(|&p| p <= prices.slack).collect(),
+                forced: Vec::new(),
+                searched: true,
+            };
+            let best = Incumbent {
+                triangles: incumbent,
+                weight: incumbent_weight,
+            };
+            branch_and_bound(pts, sk, region, face, root, best, budget, &mut stats)
+        }
     }
-    (ProgramOutcome::Solved(solved.triangles), stats)
 }
+
+/// Fronts the priced search at the root may memoise before the program
+/// branches (at most the budget).
+const ROOT_FRONTS: usize = 100_000;
+
+/// Fronts the priced search at a branch-and-bound node may memoise.
+const NODE_FRONTS: usize = 20_000;
+
+/// A branch-and-bound node is charged as this many fronts of the budget:
+/// the default budget allows 2000 nodes, a budget of one front none (the
+/// work is counted, not timed, so the result is deterministic).
+const FRONTS_PER_NODE: usize = 200;
+
+/// A node of the branch and bound: the triangulations of the face by its
+/// kept triangles that contain every forced edge.
+struct Node {
+    /// Certified lower bound on the inner-edge weight of those
+    /// triangulations (the parent's, until the node's own program is
+    /// solved).
+    bound: f64,
+    /// Per triangle of the face: still allowed?
+    kept: Vec<bool>,
+    /// Edge ids fixed into the triangulation.
+    forced: Vec<u32>,
+    /// The priced search was already run on it (the root).
+    searched: bool,
+}
+
+/// The lightest triangulation of the face built so far and its certified
+/// inner-edge weight.
+struct Incumbent {
+    triangles: Vec<[u32; 3]>,
+    weight: LengthInterval,
+}
+
+/// Branch and bound over the face program, on edges (Kyoda et al. 1997, §3:
+/// an edge is in or out; here the triangles crossing an edge that is in,
+/// or using an edge that is out, are dropped from the node).
+///
+/// Each node's bound is the certificate of [`super::face_program`] for the
+/// node's program: the face with its forced edges as extra boundary (both
+/// half-edges covered once, their lengths a constant added to the bound)
+/// over the node's triangles, so it bounds every triangulation of the node,
+/// whatever the solver returned. A node is pruned when its certified bound
+/// is at least the incumbent's weight (upper end): it holds no strictly
+/// lighter triangulation, and on ties the incumbent is kept (the integer
+/// program's answer, then the first strictly lighter one found, nodes taken
+/// in order of bound, then creation). Otherwise its triangles priced above
+/// the slack are dropped (reduced-cost fixing, inherited by the children),
+/// the priced exact search runs on the rest within [`NODE_FRONTS`]: when it
+/// finishes, the node is decided (its first lightest triangulation within
+/// the slack, compared exactly with the incumbent, or none); else the node
+/// branches on the inner edge whose LP usage is most fractional, weighted
+/// by its length. The face is solved when no node is left; when the node
+/// budget runs out, the certified lower bound is the least bound of the
+/// open nodes (or the incumbent's).
+#[allow(clippy::too_many_arguments)]
+fn branch_and_bound(
+    pts: &[Point],
+    sk: &Skeleton,
+    region: &Region,
+    face: &FaceTriangles,
+    root: Node,
+    mut best: Incumbent,
+    budget: usize,
+    stats: &mut ProgramStats,
+) -> (ProgramOutcome, ProgramStats) {
+    let max_nodes = budget / FRONTS_PER_NODE;
+    let mut nodes: Vec<Node> = vec![root];
+    // Open nodes by bound, then creation (a min-heap on both).
+    let mut open: BinaryHeap<Reverse<(BoundKey, usize)>> = BinaryHeap::new();
+    open.push(Reverse((BoundKey(nodes[0].bound), 0)));
+    // Least bound of the nodes given up on (no certificate or no branch).
+    let mut abandoned = f64::INFINITY;
+    while let Some(Reverse((_, id))) = open.pop() {
+        let node = std::mem::replace(
+            &mut nodes[id],
+            Node {
+                bound: 0.0,
+                kept: Vec::new(),
+                forced: Vec::new(),
+                searched: false,
+            },
+        );
+        if node.bound >= best.weight.hi {
+            continue; // pruned by a lighter incumbent found since
+        }
+        if stats.nodes >= max_nodes {
+            abandoned = abandoned.min(node.bound);
+            continue;
+        }
+        stats.nodes += 1;
+        match evaluate(pts, sk, region, face, node, &mut best, stats) {
+            Evaluated::Closed => {}
+            Evaluated::Abandoned(bound) => abandoned = abandoned.min(bound),
+            Evaluated::Branch([a, b]) => {
+                for child in [a, b] {
+                    open.push(Reverse((BoundKey(child.bound), nodes.len())));
+                    nodes.push(child);
+                }
+            }
+        }
+    }
+    let Incumbent { triangles, weight } = best;
+    if abandoned == f64::INFINITY {
+        return (ProgramOutcome::Solved(triangles), *stats);
+    }
+    let lower = abandoned.min(weight.lo);
+    (
+        ProgramOutcome::Unsolved {
+            incumbent: Some(triangles),
+            lower: Some(lower),
+        },
+        *stats,
+    )
+}
+
+/// A certified bound, ordered totally (bounds are finite).
+#[derive(Clone, Copy, PartialEq)]
+struct BoundKey(f64);
+
+impl Eq for BoundKey {}
+
+impl PartialOrd for BoundKey {
+    fn partial_cmp(&self, other: &Self) -> Option<Ordering> {
+        Some(self.cmp(other))
+    }
+}
+
+impl Ord for BoundKey {
+    fn cmp(&self, other: &Self) -> Ordering {
+        self.0.total_cmp(&other.0)
+    }
+}
+
+enum Evaluated {
+    /// Pruned or decided.
+    Closed,
+    /// Neither decided nor split: its certified bound stays open.
+    Abandoned(f64),
+    Branch([Node; 2]),
+}
+
+/// One node of [`branch_and_bound`]: its program, certificate, pruning,
+/// priced search, and else its two children.
+fn evaluate(
+    pts: &[Point],
+    sk: &Skeleton,
+    region: &Region,
+    face: &FaceTriangles,
+    node: Node,
+    best: &mut Incumbent,
+    stats: &mut ProgramStats,
+) -> Evaluated {
+    let members: Vec<usize> = (0..face.tris.len()).filter(|&t| node.kept[t]).collect();
+    let mut boundary = face.boundary.clone();
+    let mut forced_length = LengthInterval::ZERO;
+    for &e in &node.forced {
+        let [u, v] = sk.edges[e as usize];
+        boundary.insert((u, v));
+        boundary.insert((v, u));
+        forced_length =
+            forced_length.plus(LengthInterval::of_segment(pts[u as usize], pts[v as usize]));
+    }
+    let tris: Vec<[u32; 3]> = members.iter().map(|&t| face.tris[t]).collect();
+    let tri_edges: Vec<[u32; 3]> = members.iter().map(|&t| face.tri_edges[t]).collect();
+    let program = FaceProgram::new(pts, &boundary, &tris, &tri_edges);
+    let Some(certificate) = program.dual().and_then(|y| program.certify(&y)) else {
+        return Evaluated::Abandoned(node.bound);
+    };
+    // The forced edges are in every triangulation of the node: their
+    // length is a constant of its program's objective.
+    let own = (certificate.lower + forced_length.lo).next_down();
+    let bound = own.max(node.bound);
+    if bound >= best.weight.hi {
+        return Evaluated::Closed;
+    }
+    // Slack W − L rounded up, with the node's own bound (its prices).
+    let slack = (best.weight.hi - own).next_up();
+    let mut price = vec![f64::INFINITY; face.tris.len()];
+    let mut kept = vec![false; face.tris.len()];
+    for (i, &t) in members.iter().enumerate() {
+        let p = certificate.reduced()[i].max(0.0);
+        if p <= slack {
+            price[t] = p;
+            kept[t] = true;
+        }
+    }
+    if !node.searched {
+        let prices = Prices { price, slack };
+        let (outcome, fronts) = search(pts, sk, region, face, Some(&prices), NODE_FRONTS);
+        stats.fronts += fronts;
+        match outcome {
+            SearchOutcome::Found(found) => {
+                if super::compare_weights(pts, &found.triangles, &best.triangles) == Ordering::Less
+                {
+                    *best = Incumbent {
+                        triangles: found.triangles,
+                        weight: found.value,
+                    };
+                }
+                return Evaluated::Closed;
+            }
+            SearchOutcome::NoTriangulation => return Evaluated::Closed,
+            SearchOutcome::OverBudget => {}
+        }
+    }
+    let Some(e) = program
+        .primal()
+        .and_then(|x| branching_edge(pts, sk, &boundary, &members, face, &x))
+    else {
+        return Evaluated::Abandoned(bound);
+    };
+    let crossing: HashSet<u32> = sk.crossing(e).iter().copied().collect();
+    let mut with = Node {
+        bound,
+        kept: kept.clone(),
+        forced: node.forced.clone(),
+        searched: false,
+    };
+    with.forced.push(e);
+    let mut without = Node {
+        bound,
+        kept,
+        forced: node.forced,
+        searched: false,
+    };
+    for (t, ids) in face.tri_edges.iter().enumerate() {
+        if ids.iter().any(|f| crossing.contains(f)) {
+            with.kept[t] = false;
+        }
+        if ids.contains(&e) {
+            without.kept[t] = false;
+        }
+    }
+    Evaluated::Branch([with, without])
+}
+
+/// The inner edge (not boundary, not forced) of the node whose usage in the
+/// LP solution `x` (over the node's triangles `members`) is fractional,
+/// with the largest `length · min(u, 1 − u)`; ties to the smallest id.
+fn branching_edge(
+    pts: &[Point],
+    sk: &Skeleton,
+    boundary: &HashSet<(u32, u32)>,
+    members: &[usize],
+    face: &FaceTriangles,
+    x: &[f64],
+) -> Option<u32> {
+    let mut usage: HashMap<u32, f64> = HashMap::new();
+    for (i, &t) in members.iter().enumerate() {
+        let (corners, ids) = (face.tris[t], face.tri_edges[t]);
+        for s in 0..3 {
+            let (a, b) = (corners[s], corners[(s + 1) % 3]);
+            // Each edge counted on one side (left of the lower index).
+            if a < b && !boundary.contains(&(a, b)) {
+                *usage.entry(ids[s]).or_insert(0.0) += x[i];
+            }
+        }
+    }
+    // An integral usage (the relaxation's optimum is a triangulation, the
+    // bound short of the incumbent only by rounding or ties): branch on its
+    // longest edge instead; the node with the edge forced loses every
+    // triangle crossing it, the other loses the edge.
+    let integral = usage.values().all(|&u| u.min(1.0 - u) <= FRACTIONAL);
+    let mut choice: Option<(f64, u32)> = None;
+    for (&e, &u) in &usage {
+        let fraction = if integral {
+            if u <= 0.5 {
+                continue;
+            }
+            1.0
+        } else {
+            u.min(1.0 - u)
+        };
+        if fraction <= FRACTIONAL {
+            continue;
+        }
+        let [a, b] = sk.edges[e as usize];
+        let l = LengthInterval::of_segment(pts[a as usize], pts[b as usize]);
+        let score = fraction * l.hi;
+        let better = match choice {
+            None => true,
+            Some((s, f)) => score > s || (score == s && e < f),
+        };
+        if better {
+            choice = Some((score, e));
+        }
+    }
+    choice.map(|(_, e)| e)
+}
+
+/// LP usages closer than this to 0 or 1 count as integral when choosing a
+/// branching edge (a heuristic choice only: any edge is a sound branch).
+const FRACTIONAL: f64 = 1e-6;
 
 /// Certified weight of the edges of `triangles` that are not on the
 /// boundary (`boundary`: half-edges).
@@ -625,6 +952,26 @@ struct Searched {
     value: LengthInterval,
 }
 
+/// What the search decided.
+enum SearchOutcome {
+    /// The first lightest triangulation within the slack.
+    Found(Searched),
+    /// Every completion was explored: none within the slack (or none at
+    /// all).
+    NoTriangulation,
+    /// The budget ran out: nothing is known.
+    OverBudget,
+}
+
+impl SearchOutcome {
+    fn found(self) -> Option<Searched> {
+        match self {
+            SearchOutcome::Found(s) => Some(s),
+            _ => None,
+        }
+    }
+}
+
 /// The exact search over fronts (module docs), on the triangles of `face`,
 /// skipping every partial triangulation whose `prices` exceed their slack.
 /// `None` when the budget ran out (or no triangulation exists, which the
@@ -648,7 +995,7 @@ fn search(
     face: &FaceTriangles,
     prices: Option<&Prices>,
     budget: usize,
-) -> (Option<Searched>, usize) {
+) -> (SearchOutcome, usize) {
     let (tris, tri_edges) = (&face.tris, &face.tri_edges);
     let slack = prices.map_or(f64::INFINITY, |p| p.slack);
     let price = |t: usize| prices.map_or(0.0, |p| p.price[t]);
@@ -706,10 +1053,10 @@ fn search(
     let (best, _) = state.solve(slack);
     let fronts = state.computed;
     if state.over_budget {
-        return (None, fronts);
+        return (SearchOutcome::OverBudget, fronts);
     }
     let Some(best) = best else {
-        return (None, fronts);
+        return (SearchOutcome::NoTriangulation, fronts);
     };
     // Rebuild the triangles by replaying the memoised choices.
     let mut triangles = Vec::new();
@@ -721,7 +1068,8 @@ fn search(
     while !front.is_empty() {
         let key: Vec<(u32, u32)> = front.iter().copied().collect();
         let Some((_, Some(entry))) = state.memo.get(&key) else {
-            return (None, fronts);
+            // Unreachable: every front on the best path was memoised.
+            return (SearchOutcome::OverBudget, fronts);
         };
         let t = tris[entry.triangle as usize];
         triangles.push(t);
@@ -733,7 +1081,7 @@ fn search(
         }
     }
     (
-        Some(Searched {
+        SearchOutcome::Found(Searched {
             triangles,
             value: best.value,
         }),

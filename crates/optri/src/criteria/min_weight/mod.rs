@@ -248,6 +248,7 @@ pub(crate) fn general_min_weight(
     let mut fronts = 0u64;
     let (mut programs, mut program_triangles, mut program_kept, mut program_fronts) =
         (0u64, 0u64, 0u64, 0u64);
+    let mut program_nodes = 0u64;
     let mut lower = LengthInterval::ZERO;
     for r in &regions {
         match r.method {
@@ -275,6 +276,7 @@ pub(crate) fn general_min_weight(
             program_triangles += p.triangles as u64;
             program_kept += p.kept as u64;
             program_fronts += p.fronts as u64;
+            program_nodes += p.nodes as u64;
         }
         triangles.extend_from_slice(&r.triangles);
     }
@@ -289,6 +291,7 @@ pub(crate) fn general_min_weight(
     diagnostics.add("program triangles", program_triangles);
     diagnostics.add("program triangles kept", program_kept);
     diagnostics.add("program search fronts", program_fronts);
+    diagnostics.add("program branch nodes", program_nodes);
     let mut triangulation = Triangulation::from_distinct(points, triangles);
     let mut algorithm = "diamond filter, LMT-skeleton, Klincsek program on simple faces, exact front search on the others".to_string();
     let lower_bound;
