@@ -282,6 +282,23 @@ impl Corner {
     }
 }
 
+/// The corners of a region, per vertex.
+fn corners_of(region: &Region) -> HashMap<u32, Vec<Corner>> {
+    let mut corners_at: HashMap<u32, Vec<Corner>> = HashMap::new();
+    for cycle in &region.cycles {
+        let k = cycle.len();
+        for i in 0..k {
+            let c = Corner {
+                prev: cycle[(i + k - 1) % k],
+                v: cycle[i],
+                next: cycle[(i + 1) % k],
+            };
+            corners_at.entry(c.v).or_default().push(c);
+        }
+    }
+    corners_at
+}
+
 fn solve_region(pts: &[Point], sk: &Skeleton, region: Region, budget: usize) -> RegionResult {
     let corners: usize = region.cycles.iter().map(Vec::len).sum();
     let mut result = RegionResult {
@@ -299,19 +316,7 @@ fn solve_region(pts: &[Point], sk: &Skeleton, region: Region, budget: usize) -> 
         result.method = Method::Triangle;
         return result;
     }
-    // Corners per vertex.
-    let mut corners_at: HashMap<u32, Vec<Corner>> = HashMap::new();
-    for cycle in &region.cycles {
-        let k = cycle.len();
-        for i in 0..k {
-            let c = Corner {
-                prev: cycle[(i + k - 1) % k],
-                v: cycle[i],
-                next: cycle[(i + 1) % k],
-            };
-            corners_at.entry(c.v).or_default().push(c);
-        }
-    }
+    let corners_at = corners_of(&region);
     let inner: HashSet<u32> = region.inner.iter().copied().collect();
     let mut incumbent = None;
     let mut program_lower = 0.0f64;
@@ -464,7 +469,11 @@ fn solve_by_program(
                 triangles: incumbent,
                 weight: incumbent_weight,
             };
-            branch_and_bound(pts, sk, region, face, root, best, budget, &mut stats)
+            let limits = Limits {
+                nodes: budget / FRONTS_PER_NODE,
+                node_fronts: NODE_FRONTS,
+            };
+            branch_and_bound(pts, sk, region, face, root, best, limits, &mut stats)
         }
     }
 }
@@ -480,6 +489,15 @@ const NODE_FRONTS: usize = 20_000;
 /// the default budget allows 2000 nodes, a budget of one front none (the
 /// work is counted, not timed, so the result is deterministic).
 const FRONTS_PER_NODE: usize = 200;
+
+/// The work the branch and bound may do.
+#[derive(Clone, Copy)]
+struct Limits {
+    /// Nodes evaluated.
+    nodes: usize,
+    /// Fronts per node's priced search.
+    node_fronts: usize,
+}
 
 /// A node of the branch and bound: the triangulations of the face by its
 /// kept triangles that contain every forced edge.
@@ -532,10 +550,9 @@ fn branch_and_bound(
     face: &FaceTriangles,
     root: Node,
     mut best: Incumbent,
-    budget: usize,
+    limits: Limits,
     stats: &mut ProgramStats,
 ) -> (ProgramOutcome, ProgramStats) {
-    let max_nodes = budget / FRONTS_PER_NODE;
     let mut nodes: Vec<Node> = vec![root];
     // Open nodes by bound, then creation (a min-heap on both).
     let mut open: BinaryHeap<Reverse<(BoundKey, usize)>> = BinaryHeap::new();
@@ -555,12 +572,12 @@ fn branch_and_bound(
         if node.bound >= best.weight.hi {
             continue; // pruned by a lighter incumbent found since
         }
-        if stats.nodes >= max_nodes {
+        if stats.nodes >= limits.nodes {
             abandoned = abandoned.min(node.bound);
             continue;
         }
         stats.nodes += 1;
-        match evaluate(pts, sk, region, face, node, &mut best, stats) {
+        match evaluate(pts, sk, region, face, node, &mut best, limits, stats) {
             Evaluated::Closed => {}
             Evaluated::Abandoned(bound) => abandoned = abandoned.min(bound),
             Evaluated::Branch([a, b]) => {
@@ -611,6 +628,7 @@ enum Evaluated {
     Branch([Node; 2]),
 }
 
+#[allow(clippy::too_many_arguments)]
 /// One node of [`branch_and_bound`]: its program, certificate, pruning,
 /// priced search, and else its two children.
 fn evaluate(
@@ -620,6 +638,7 @@ fn evaluate(
     face: &FaceTriangles,
     node: Node,
     best: &mut Incumbent,
+    limits: Limits,
     stats: &mut ProgramStats,
 ) -> Evaluated {
     let members: Vec<usize> = (0..face.tris.len()).filter(|&t| node.kept[t]).collect();
@@ -658,7 +677,7 @@ fn evaluate(
     }
     if !node.searched {
         let prices = Prices { price, slack };
-        let (outcome, fronts) = search(pts, sk, region, face, Some(&prices), NODE_FRONTS);
+        let (outcome, fronts) = search(pts, sk, region, face, Some(&prices), limits.node_fronts);
         stats.fronts += fronts;
         match outcome {
             SearchOutcome::Found(found) => {
@@ -1279,5 +1298,84 @@ impl SearchState<'_> {
         let solved_with = if complete { f64::INFINITY } else { slack };
         self.memo.insert(key, (solved_with, best.clone()));
         (best, complete)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn ring_with(k: usize, centre: Point) -> Vec<Point> {
+        let mut pts: Vec<Point> = (0..k)
+            .map(|i| {
+                let a = std::f64::consts::TAU * i as f64 / k as f64;
+                [1000.0 * a.cos(), 1000.0 * a.sin()]
+            })
+            .collect();
+        pts.push(centre);
+        pts
+    }
+
+    /// The branch and bound started from a poor incumbent (the constrained
+    /// Delaunay triangles), with node searches too small to finish until
+    /// enough edges are fixed, must branch and still return a triangulation
+    /// exactly as light as the plain search's optimum. A bound rounded the
+    /// wrong way or pruning on a bound below the incumbent (a strictly
+    /// lighter triangulation discarded) breaks this.
+    #[test]
+    fn branch_and_bound_from_a_poor_incumbent_reaches_the_optimum() {
+        let mut branched = 0;
+        let mut faces = 0;
+        for (k, centre) in [(13, [0.0, 0.0]), (15, [3.0, -7.0]), (17, [0.0, 0.0])] {
+            let pts = ring_with(k, centre);
+            let candidates = super::super::skeleton::diamond_candidates(&pts);
+            let grid = super::super::point_grid(&pts);
+            let sk = super::super::skeleton::lmt_skeleton(&pts, &grid, candidates);
+            for region in regions(&pts, &sk).unwrap() {
+                if region.inner.is_empty() {
+                    continue;
+                }
+                let corners_at = corners_of(&region);
+                let inner: HashSet<u32> = region.inner.iter().copied().collect();
+                let face = face_triangles(&pts, &sk, &region, &corners_at, &inner);
+                let reference = search(&pts, &sk, &region, &face, None, FRONT_BUDGET)
+                    .0
+                    .found()
+                    .expect("the plain search decides small wheels");
+                let program = FaceProgram::new(&pts, &face.boundary, &face.tris, &face.tri_edges);
+                let weight = inner_edge_weight(&pts, &face.boundary, &region.cdt_triangles);
+                let certificate = program.dual().and_then(|y| program.certify(&y)).unwrap();
+                let prices = certificate.prices(weight.hi).unwrap();
+                let root = Node {
+                    bound: certificate.lower,
+                    kept: prices.price.iter().map(|&p| p <= prices.slack).collect(),
+                    forced: Vec::new(),
+                    searched: false,
+                };
+                let best = Incumbent {
+                    triangles: region.cdt_triangles.clone(),
+                    weight,
+                };
+                let limits = Limits {
+                    nodes: 5_000,
+                    node_fronts: 40,
+                };
+                let mut stats = ProgramStats::default();
+                let (outcome, _) =
+                    branch_and_bound(&pts, &sk, &region, &face, root, best, limits, &mut stats);
+                let ProgramOutcome::Solved(t) = outcome else {
+                    panic!("wheel {k}: not solved in {} nodes", stats.nodes);
+                };
+                assert_eq!(
+                    super::super::compare_weights(&pts, &t, &reference.triangles),
+                    Ordering::Equal,
+                    "wheel {k}: branch and bound and plain search differ"
+                );
+                faces += 1;
+                branched += usize::from(stats.nodes > 1);
+            }
+        }
+        assert!(faces >= 3, "only {faces} faces with an inner point");
+        assert!(branched >= 2, "only {branched} faces branched");
     }
 }
