@@ -14,8 +14,14 @@
 //! completion of each front is memoised (the untriangulated part is exactly
 //! the part left of the front, so the best completion depends on the front
 //! alone) — a dynamic program over fronts, exact by the same comparisons,
-//! within a budget of fronts. The constrained Delaunay triangles of a region
-//! are its fallback when the budget runs out.
+//! within a budget of fronts. Faces the plain search cannot finish go to
+//! the triangle program ([`super::face_program`]): its certified dual bound
+//! prices the search; when the priced search still runs out, a certified
+//! branch and bound on edges over the program (Kyoda, Imai, Takeuchi and
+//! Tajima 1997, §3; [`branch_and_bound`]) decides the face, each node's
+//! bound certified the same way. The constrained Delaunay triangles (or the
+//! best triangulation built) are a region's fallback when the budget runs
+//! out, with the least open node bound as its certified lower bound.
 
 use super::face_program::{FaceProgram, Prices};
 use super::skeleton::Skeleton;

@@ -13,7 +13,9 @@
 //!   LMT-skeleton ([`skeleton`]), then the faces the skeleton leaves
 //!   ([`faces`]): simple faces by the polygon program over candidate
 //!   diagonals, faces with holes or inner points by an exact search over
-//!   empty candidate triangles. The result is `exact` only when every face
+//!   empty candidate triangles, priced by the certified dual of the face's
+//!   triangle program and, when that is not enough, by a certified branch
+//!   and bound over the program ([`faces`]). The result is `exact` only when every face
 //!   was solved; otherwise the lightest of the assembled triangulation (its
 //!   unsolved faces completed by constrained Delaunay triangles), the
 //!   Delaunay and the greedy triangulation, compared exactly, with a
