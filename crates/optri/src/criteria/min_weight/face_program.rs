@@ -185,15 +185,18 @@ impl FaceProgram {
         use microlp::{ComparisonOp, OptimizationDirection, Problem};
         let scale = self.scale();
         let mut problem = Problem::new(OptimizationDirection::Maximize);
+        // A box on the multipliers keeps the program bounded when no
+        // triangulation uses only these triangles (a branch-and-bound node
+        // of [`super::faces`]): its optimum then grows with the box, above
+        // any incumbent. The certificate holds for every `y`, so the box
+        // costs nothing in soundness; it is wide enough (each multiplier of
+        // an optimum is a sum of at most one cost per row, costs scaled to
+        // at most 1) not to cut the bound of a feasible node.
+        let width = 2.0 * self.boundary_row.len() as f64 + 2.0;
         let ys: Vec<microlp::Variable> = self
             .boundary_row
             .iter()
-            .map(|&b| {
-                problem.add_var(
-                    if b { 1.0 } else { 0.0 },
-                    (f64::NEG_INFINITY, f64::INFINITY),
-                )
-            })
+            .map(|&b| problem.add_var(if b { 1.0 } else { 0.0 }, (-width, width)))
             .collect();
         for (row, c) in self.entries.iter().zip(&self.cost) {
             let expr: Vec<(microlp::Variable, f64)> = row
@@ -205,6 +208,40 @@ impl FaceProgram {
         let outcome = problem.solve().ok()?;
         let solution = outcome.solution()?;
         Some(ys.iter().map(|&y| solution.var_value(y) * scale).collect())
+    }
+
+    /// A floating-point optimum `x` of the LP relaxation (`min c·x`, `A x =
+    /// b`, `0 ≤ x ≤ 1`) by `microlp`, `None` if the solver fails. Untrusted:
+    /// it only chooses the branching edge of [`super::faces`]' branch and
+    /// bound, which is sound whatever it is.
+    pub(super) fn primal(&self) -> Option<Vec<f64>> {
+        use microlp::{ComparisonOp, OptimizationDirection, Problem};
+        let scale = self.scale();
+        let mut problem = Problem::new(OptimizationDirection::Minimize);
+        let xs: Vec<microlp::Variable> = self
+            .cost
+            .iter()
+            .map(|c| problem.add_var(0.5 * (c.lo + c.hi) / scale, (0.0, 1.0)))
+            .collect();
+        for (r, row) in self.rows(&xs).into_iter().enumerate() {
+            let rhs = if self.boundary_row[r] { 1.0 } else { 0.0 };
+            problem.add_constraint(row, ComparisonOp::Eq, rhs);
+        }
+        let outcome = problem.solve().ok()?;
+        let solution = outcome.solution()?;
+        Some(xs.iter().map(|&x| solution.var_value(x)).collect())
+    }
+
+    /// The rows of the program over the variables `xs` (one per triangle).
+    fn rows(&self, xs: &[microlp::Variable]) -> Vec<Vec<(microlp::Variable, f64)>> {
+        let mut rows: Vec<Vec<(microlp::Variable, f64)>> =
+            vec![Vec::new(); self.boundary_row.len()];
+        for (t, row) in self.entries.iter().enumerate() {
+            for &(r, s) in row {
+                rows[r as usize].push((xs[t], f64::from(s)));
+            }
+        }
+        rows
     }
 
     /// The triangles (indices) of the integer program's best solution within
@@ -219,14 +256,7 @@ impl FaceProgram {
             .iter()
             .map(|c| problem.add_binary_var(0.5 * (c.lo + c.hi) / scale))
             .collect();
-        let mut rows: Vec<Vec<(microlp::Variable, f64)>> =
-            vec![Vec::new(); self.boundary_row.len()];
-        for (t, row) in self.entries.iter().enumerate() {
-            for &(r, s) in row {
-                rows[r as usize].push((xs[t], f64::from(s)));
-            }
-        }
-        for (r, row) in rows.into_iter().enumerate() {
+        for (r, row) in self.rows(&xs).into_iter().enumerate() {
             let rhs = if self.boundary_row[r] { 1.0 } else { 0.0 };
             problem.add_constraint(row, ComparisonOp::Eq, rhs);
         }
@@ -299,6 +329,11 @@ impl Certificate {
             return None;
         }
         Some((incumbent - self.lower).next_up())
+    }
+
+    /// `r_t` rounded down, per triangle of the program.
+    pub(super) fn reduced(&self) -> &[f64] {
+        &self.reduced
     }
 
     /// Prices for the pruned search ([`super::faces`]): each triangle's

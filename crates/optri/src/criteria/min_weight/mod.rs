@@ -13,7 +13,9 @@
 //!   LMT-skeleton ([`skeleton`]), then the faces the skeleton leaves
 //!   ([`faces`]): simple faces by the polygon program over candidate
 //!   diagonals, faces with holes or inner points by an exact search over
-//!   empty candidate triangles. The result is `exact` only when every face
+//!   empty candidate triangles, priced by the certified dual of the face's
+//!   triangle program and, when that is not enough, by a certified branch
+//!   and bound over the program ([`faces`]). The result is `exact` only when every face
 //!   was solved; otherwise the lightest of the assembled triangulation (its
 //!   unsolved faces completed by constrained Delaunay triangles), the
 //!   Delaunay and the greedy triangulation, compared exactly, with a
@@ -248,6 +250,7 @@ pub(crate) fn general_min_weight(
     let mut fronts = 0u64;
     let (mut programs, mut program_triangles, mut program_kept, mut program_fronts) =
         (0u64, 0u64, 0u64, 0u64);
+    let mut program_nodes = 0u64;
     let mut lower = LengthInterval::ZERO;
     for r in &regions {
         match r.method {
@@ -275,6 +278,7 @@ pub(crate) fn general_min_weight(
             program_triangles += p.triangles as u64;
             program_kept += p.kept as u64;
             program_fronts += p.fronts as u64;
+            program_nodes += p.nodes as u64;
         }
         triangles.extend_from_slice(&r.triangles);
     }
@@ -289,6 +293,7 @@ pub(crate) fn general_min_weight(
     diagnostics.add("program triangles", program_triangles);
     diagnostics.add("program triangles kept", program_kept);
     diagnostics.add("program search fronts", program_fronts);
+    diagnostics.add("program branch nodes", program_nodes);
     let mut triangulation = Triangulation::from_distinct(points, triangles);
     let mut algorithm = "diamond filter, LMT-skeleton, Klincsek program on simple faces, exact front search on the others".to_string();
     let lower_bound;
