@@ -383,8 +383,88 @@ pub(crate) fn fmax(a: f64, b: f64) -> f64 {
 mod tests {
     use super::*;
 
+    use rand::{rngs::StdRng, Rng, SeedableRng};
+
     #[test]
     fn the_smallest_cell_fraction_is_two_to_the_minus_sixty_two() {
         assert_eq!(MIN_CELL_FRACTION, 2f64.powi(-62));
+    }
+
+    /// A cluster 10⁻⁹ wide in a unit box (below the former 2⁻³⁰ cells)
+    /// spreads over many cells of 10⁻¹¹.
+    #[test]
+    fn cells_follow_a_cluster_far_below_the_box() {
+        let mut points: Vec<Point> = vec![[0.0, 0.0], [1.0, 1.0]];
+        for i in 0..20 {
+            for j in 0..20 {
+                points.push([0.5 + 5e-11 * i as f64, 0.5 + 5e-11 * j as f64]);
+            }
+        }
+        let grid = SparseGrid::new(
+            [0.0, 0.0, 1.0, 1.0],
+            1e-11,
+            points.len(),
+            |i| points[i],
+            |i| i as u32,
+            |i| i as u32,
+        );
+        assert_eq!(grid.occupied(), 402);
+    }
+
+    /// Every item within `pad` of a query box is in a cell the lookup
+    /// visits, against brute force, for clusters at several scales (down to
+    /// below the finest cells), at offsets up to 10¹⁵ and near the origin,
+    /// in dense and sparse mode, with items that are computed midpoints.
+    #[test]
+    fn lookups_find_every_item_within_the_pad() {
+        let mut rng = StdRng::seed_from_u64(31);
+        let mut checked = 0;
+        for case in 0..120 {
+            let offset = [0.0, 1.0, -3e7, 1e15][case % 4];
+            let box_side = [1.0, 1e3, 1e11][case / 4 % 3];
+            let cluster = box_side * [1e-3, 1e-9, 1e-17, 1e-25][case / 12 % 4];
+            let mut points: Vec<Point> = vec![
+                [offset, offset],
+                [offset + box_side, offset + 0.3 * box_side],
+            ];
+            let centre = [offset + 0.4 * box_side, offset + 0.2 * box_side];
+            for _ in 0..200 {
+                points.push([
+                    centre[0] + cluster * rng.gen_range(-1.0..1.0),
+                    centre[1] + cluster * rng.gen_range(-1.0..1.0),
+                ]);
+            }
+            let bbox = crate::spatial::bounding_box(&points);
+            // Items are midpoints of consecutive points (computed, rounded).
+            let m = points.len() - 1;
+            let midpoint = |i: usize| {
+                let (a, b) = (points[i], points[i + 1]);
+                [0.5 * a[0] + 0.5 * b[0], 0.5 * a[1] + 0.5 * b[1]]
+            };
+            let cell = cluster * [0.01, 0.1, 1.0][case % 3];
+            let grid = SparseGrid::new(bbox, cell, m, midpoint, |i| i as u32, |i| i as u32);
+            for _ in 0..50 {
+                let a = points[rng.gen_range(0..points.len())];
+                let b = points[rng.gen_range(0..points.len())];
+                let pad = cluster * rng.gen_range(0.0..0.2);
+                let mut found = vec![false; m];
+                grid.any_cell_near(a, b, pad, |items| {
+                    for &i in items {
+                        found[i as usize] = true;
+                    }
+                    false
+                });
+                for (i, &seen) in found.iter().enumerate() {
+                    let p = midpoint(i);
+                    let inside = p[0] >= fmin(a[0], b[0]) - pad
+                        && p[0] <= fmax(a[0], b[0]) + pad
+                        && p[1] >= fmin(a[1], b[1]) - pad
+                        && p[1] <= fmax(a[1], b[1]) + pad;
+                    assert!(seen || !inside, "case {case}: item {i} missed");
+                    checked += usize::from(inside);
+                }
+            }
+        }
+        assert!(checked > 100_000, "{checked}");
     }
 }
