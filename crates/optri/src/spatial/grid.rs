@@ -141,14 +141,20 @@ impl<T: Copy + Send + Sync> SparseGrid<T> {
                 fill[k as usize] += 1;
             }
             grid.table = vec![EMPTY; cells];
+            // Cell `c` is row `c / columns`, column `c % columns`, counted
+            // along (no division per cell).
+            let (mut row, mut column) = (0, 0);
             for c in 0..cells {
                 let (a, b) = (count[c] as usize, count[c + 1] as usize);
                 if a < b {
                     slots[a..b].sort_unstable_by_key(|&i| order(i as usize));
                     grid.table[c] = grid.keys.len() as u32;
-                    let c = c as u64;
-                    grid.keys.push((c / columns, c % columns));
+                    grid.keys.push((row, column));
                     grid.start.push(a as u32);
+                }
+                column += 1;
+                if column == columns {
+                    (row, column) = (row + 1, 0);
                 }
             }
             grid.start.push(len as u32);
