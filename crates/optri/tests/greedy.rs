@@ -823,7 +823,7 @@ fn degenerate_families_of_issue_15_match_the_oracle() {
     let distinct = uniform_in_square(&mut rng, 20, 1.0);
     let pts: Vec<Point> = (0..3000).map(|i| distinct[(i * 7) % 20]).collect();
     check(&pts, "3000 points, 20 distinct", &mut tally);
-    // A cluster in a 2·10⁻⁹ box (the grids' finest cells) plus two far points.
+    // A cluster in a 2·10⁻⁹ box (the former 2⁻³⁰ grids' finest cells) plus two far points.
     let mut pts = uniform_in_square(&mut rng, 300, 1e-9);
     pts.extend([[-0.5, -0.5], [0.5, -0.2]]);
     check(&pts, "300 points in a 1e-9 box plus two", &mut tally);
