@@ -37,6 +37,7 @@ const SEED_REGISTRY: u64 = 9;
 const SEED_CONVEX_10000: u64 = 12;
 const SEED_CLIFF_FAMILIES: u64 = 17;
 const SEED_DEGENERATE_FAMILIES: u64 = 18;
+const SEED_CLUSTER_SCALES: u64 = 19;
 
 /// Distinct-index `[min, max]` edges of a triangulation, sorted.
 fn distinct_edges(ps: &PointSet, t: &optri::Triangulation) -> Vec<[u32; 2]> {
@@ -822,10 +823,92 @@ fn degenerate_families_of_issue_15_match_the_oracle() {
     let distinct = uniform_in_square(&mut rng, 20, 1.0);
     let pts: Vec<Point> = (0..3000).map(|i| distinct[(i * 7) % 20]).collect();
     check(&pts, "3000 points, 20 distinct", &mut tally);
-    // A cluster in a 2·10⁻⁹ box (the grids' finest cells) plus two far points.
+    // A cluster in a 2·10⁻⁹ box (the former 2⁻³⁰ grids' finest cells) plus two far points.
     let mut pts = uniform_in_square(&mut rng, 300, 1e-9);
     pts.extend([[-0.5, -0.5], [0.5, -0.2]]);
     check(&pts, "300 points in a 1e-9 box plus two", &mut tally);
     assert!(tally.sets >= 300, "{tally:?}");
     assert!(tally.dispatched[0] >= 280, "{tally:?}");
+}
+
+/// Issue 15's clusters far below the bounding box's resolution, small, edge
+/// for edge against the oracle: a tiny cluster plus two far points at
+/// several scales (below the grids' former 2⁻³⁰ cells, near and below their
+/// 2⁻⁶² cells, next to the origin), nested clusters at three scales,
+/// clusters at a 10¹⁵ offset (a lattice of the doubles' spacing there) and
+/// heavy duplicates of three points plus a few others.
+#[test]
+fn clusters_far_below_the_box_resolution_match_the_oracle() {
+    let mut rng = StdRng::seed_from_u64(SEED_CLUSTER_SCALES);
+    let mut tally = Tally::default();
+    fn in_box(rng: &mut StdRng, n: usize, centre: Point, side: f64) -> Vec<Point> {
+        (0..n)
+            .map(|_| {
+                [
+                    centre[0] + side * rng.gen_range(-0.5..0.5),
+                    centre[1] + side * rng.gen_range(-0.5..0.5),
+                ]
+            })
+            .collect()
+    }
+    for (case, side) in [1e-6, 1e-9, 1e-12, 1e-15, 1e-18].into_iter().enumerate() {
+        for n in [30, 120, 298] {
+            let mut pts = in_box(&mut rng, n, [0.5, 0.5], side);
+            pts.extend([[0.0, 0.0], [1.0, 0.3]]);
+            check(&pts, &format!("{n} in a {side:e} box plus two"), &mut tally);
+            // The same next to the origin (doubles far finer than the cells).
+            let mut pts = in_box(&mut rng, n, [side, -side], side);
+            pts.extend([[-1.0, -1.0], [1.0, 0.3]]);
+            check(
+                &pts,
+                &format!("{n} in a {side:e} box at 0, case {case}"),
+                &mut tally,
+            );
+        }
+    }
+    // Nested: a cluster inside a cluster inside a big box.
+    for case in 0..6 {
+        let centre = [0.3, 0.7];
+        let mut pts = in_box(&mut rng, 60, centre, 1.0);
+        pts.extend(in_box(&mut rng, 100, centre, [1e-4, 1e-6][case % 2]));
+        pts.extend(in_box(
+            &mut rng,
+            100,
+            centre,
+            [1e-9, 1e-12, 1e-14][case % 3],
+        ));
+        check(&pts, &format!("nested clusters, case {case}"), &mut tally);
+    }
+    // At a 10¹⁵ offset: doubles there are 1/8 apart; a lattice of 1/8 (and
+    // ties of every kind) in a box 10¹¹ wide, and a coarser cluster.
+    for case in 0..6 {
+        let o = 1e15;
+        let mut pts: Vec<Point> = (0..200)
+            .map(|_| {
+                [
+                    o + 0.125 * rng.gen_range(0..40) as f64,
+                    o + 0.125 * rng.gen_range(0..40) as f64,
+                ]
+            })
+            .collect();
+        if case % 2 == 1 {
+            pts.extend(in_box(&mut rng, 60, [o + 1e6, o - 1e6], 1e4));
+        }
+        pts.extend([[o - 1e11, o - 3e10], [o + 1e11, o + 2e10], [o, o + 1e11]]);
+        check(&pts, &format!("cluster at 1e15, case {case}"), &mut tally);
+    }
+    // Heavy duplicates of three points plus a few others.
+    for case in 0..4 {
+        let three = in_box(&mut rng, 3, [0.0, 0.0], 1.0);
+        let copies = [300, 3000, 30_000, 100_000][case];
+        let mut pts: Vec<Point> = (0..copies).map(|i| three[i % 3]).collect();
+        pts.extend(in_box(&mut rng, 2 + case, [0.0, 0.0], 2.0));
+        check(
+            &pts,
+            &format!("{copies} copies of 3 points, case {case}"),
+            &mut tally,
+        );
+    }
+    assert!(tally.sets >= 40, "{tally:?}");
+    assert!(tally.general >= 40, "{tally:?}");
 }

@@ -20,7 +20,11 @@
 //! of a square, N/4 integer points a side), `tiny-cluster N` (N points in a
 //! 10⁻⁹ box plus two far points), `duplicates N` (N points, 100 distinct),
 //! `grid N` (the ⌊√N⌋² integer grid), `two-circles N` (N/2 on each of two
-//! concentric sampled circles).
+//! concentric sampled circles), `nested-cluster N` (N/3 points in each of a
+//! unit box, a 10⁻⁵ box and a 10⁻¹¹ box around one centre), `offset-cluster N`
+//! (N points on the lattice of step 1/8, the doubles' spacing, near 10¹⁵, plus
+//! three points 10¹¹ away), `duplicates3 N` (N copies of 3 points plus 5
+//! others).
 //! `cocircular N`: in one process, GT of `circle N`, `random-circle N` and
 //! `2N`, `convex N` and `2N`, with the issue-15 ratios.
 //! With `WRITE_POINTS=FILE` the points are written to `FILE` with six
@@ -35,7 +39,7 @@ use optri_oracle::inputs::{
     uniform_in_box,
 };
 use rand::rngs::StdRng;
-use rand::SeedableRng;
+use rand::{Rng, SeedableRng};
 use std::time::Instant;
 
 const SEED: u64 = 2024;
@@ -115,7 +119,7 @@ fn main() {
         other => panic!(
             "unknown mode {other} (uniform | uniform-integer | clustered | convex | semicircular | fan \
              | circle | random-circle | cocircular | run2apex | square | tiny-cluster | duplicates \
-             | grid | two-circles)"
+             | grid | two-circles | nested-cluster | offset-cluster | duplicates3)"
         ),
     };
     if let Ok(path) = std::env::var("WRITE_POINTS") {
@@ -200,6 +204,38 @@ fn cliff_family(mode: &str, n: usize) -> Option<Vec<[f64; 2]>> {
         "tiny-cluster" => {
             let mut pts = uniform_in_box(&mut rng, n, [0.5, 0.5], [0.5 + 1e-9, 0.5 + 1e-9]);
             pts.extend([[0.0, 0.0], [1.0, 0.3]]);
+            pts
+        }
+        "nested-cluster" => {
+            let c = [0.3, 0.7];
+            let mut pts = Vec::with_capacity(n);
+            for side in [1.0, 1e-5, 1e-11] {
+                let h = 0.5 * side;
+                pts.extend(uniform_in_box(
+                    &mut rng,
+                    n / 3,
+                    [c[0] - h, c[1] - h],
+                    [c[0] + h, c[1] + h],
+                ));
+            }
+            pts
+        }
+        "offset-cluster" => {
+            let o = 1e15;
+            let side = (n as f64).sqrt() as i64 * 2;
+            let mut pts: Vec<[f64; 2]> = (0..n)
+                .map(|_| {
+                    let mut lattice = || o + 0.125 * rng.gen_range(0..side) as f64;
+                    [lattice(), lattice()]
+                })
+                .collect();
+            pts.extend([[o - 1e11, o - 3e10], [o + 1e11, o + 2e10], [o, o + 1e11]]);
+            pts
+        }
+        "duplicates3" => {
+            let three = uniform_in_box(&mut rng, 3, [0.0, 0.0], [1.0, 1.0]);
+            let mut pts: Vec<[f64; 2]> = (0..n).map(|i| three[i % 3]).collect();
+            pts.extend(uniform_in_box(&mut rng, 5, [-1.0, -1.0], [2.0, 2.0]));
             pts
         }
         "duplicates" => {

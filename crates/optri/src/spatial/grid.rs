@@ -11,25 +11,41 @@
 use crate::kernel::Point;
 use crate::parallel::prelude::*;
 
+/// A cell: its row and column.
+type Key = (u64, u64);
+
 /// An empty cell in the dense table.
 const EMPTY: u32 = u32::MAX;
 
-/// Smallest cell, as a fraction of the bounding box's longer side: 2⁻³⁰.
-/// Derived bound: with it there are at most 2³⁰ + 1 columns and rows, so a
-/// key `row * columns + column` stays below 2⁶¹ and fits in a `u64` (any
-/// fraction down to 2⁻³¹ would).
-const MIN_CELL_FRACTION: f64 = 1.0 / (1u64 << 30) as f64;
+/// Smallest cell, as a fraction of the bounding box's longer side: 2⁻⁶².
+/// Derived bound: a cell's row and column are kept apart (no product key),
+/// each below 2⁶² + 1, which `f64 → u64` conversion represents exactly. Why
+/// so fine: a cluster's cells must follow its spacing however small it is
+/// against the box (issue 15: 10⁵ points in a 10⁻⁹ box inside a unit box put
+/// the whole cluster in a few cells of the former 2⁻³⁰ grid, and the greedy
+/// rounds went quadratic). Doubles of magnitude `m` are `m·2⁻⁵²` apart, so
+/// cells of 2⁻⁶² of the box separate every cluster whose coordinates are at
+/// least 2⁻¹⁰ of the box's side in magnitude; only clusters closer still to
+/// the origin (or below 2⁻⁶² of the box) share cells, which costs time, never
+/// correctness.
+const MIN_CELL_FRACTION: f64 = 1.0 / (1u64 << 62) as f64;
 
-/// The lookup slack per unit of cell size, 10⁻⁹, and per unit of coordinate
-/// magnitude, 10⁻¹³. Chosen margins, not tight bounds. The column of a
-/// coordinate is monotone in its rounded argument, so the slack only has to
-/// cover rounding: of the query's padded box and of item positions the
-/// callers compute (midpoints), a few units of 2⁻⁵³ relative to the
-/// coordinates' magnitude, and of the padding lengths (half-lengths,
-/// thresholds), a few units of 2⁻⁵³ relative to a pad of about one cell (or
-/// more than the whole grid). The margins are about 10³ and 10⁶ times that.
+/// The lookup slack: `SLACK_PER_CELL` (10⁻⁹) per unit of cell size plus
+/// `SLACK_RELATIVE` (2·10⁻¹⁵) per unit of coordinate magnitude and of pad.
+/// Derived need, chosen margins: the column of a coordinate is monotone in
+/// its rounded argument, so the slack only has to cover rounding. An item
+/// position the callers compute (a midpoint) is within 2⁻⁵³ of the exact one
+/// relative to the magnitude `m` of the box's coordinates; the query's padded
+/// box `x ± (pad + slack)` takes two roundings, each within 2⁻⁵³ relative to
+/// `m + pad + slack`. That is below `4·2⁻⁵³·(m + pad)` ≈ 4.4·10⁻¹⁶·(m + pad)
+/// (the slack's own share being negligible), a quarter of `SLACK_RELATIVE`.
+/// The pad lengths the callers compute (half-lengths, thresholds) are within a
+/// few units of 2⁻⁵³ of a pad of about one cell; `SLACK_PER_CELL` is about
+/// 10⁶ times that. (The relative part was 10⁻¹³ of the magnitude alone; at
+/// 10¹⁵ that slack spanned 800 units in the last place, so a cluster a few
+/// hundred units wide there was one lookup for each of its points.)
 const SLACK_PER_CELL: f64 = 1e-9;
-const SLACK_PER_MAGNITUDE: f64 = 1e-13;
+const SLACK_RELATIVE: f64 = 2e-15;
 
 /// A table over all cells (dense mode) is used while there are at most
 /// `DENSE_CELLS_PER_ITEM` cells per item plus `DENSE_EXTRA_CELLS`; beyond
@@ -51,13 +67,14 @@ pub(crate) struct SparseGrid<T> {
     x0: f64,
     y0: f64,
     inv: f64,
-    /// Columns; a cell's key is `row * columns + column`.
+    /// Columns; a cell's key is `(row, column)`, and its index in the dense
+    /// table `row * columns + column`.
     columns: u64,
     rows: u64,
     slack_x: f64,
     slack_y: f64,
     /// The occupied cells' keys, ascending, and their items' ranges.
-    keys: Vec<u64>,
+    keys: Vec<Key>,
     start: Vec<u32>,
     /// Dense mode: the position in `keys` of every cell's key (`EMPTY` if
     /// empty). Empty in sparse mode.
@@ -67,7 +84,8 @@ pub(crate) struct SparseGrid<T> {
 
 impl<T: Copy + Send + Sync> SparseGrid<T> {
     /// Buckets items `0..len` (`item(i)`, at `point(i)`) by cell, cells of
-    /// about `cell` (never so small that keys overflow); within a cell, by
+    /// about `cell` (never below [`MIN_CELL_FRACTION`] of the box); within a
+    /// cell, by
     /// ascending `order`.
     pub(crate) fn new(
         bbox: [f64; 4],
@@ -91,21 +109,24 @@ impl<T: Copy + Send + Sync> SparseGrid<T> {
             inv: 1.0 / cell,
             columns,
             rows,
-            slack_x: SLACK_PER_CELL * cell + SLACK_PER_MAGNITUDE * mag_x,
-            slack_y: SLACK_PER_CELL * cell + SLACK_PER_MAGNITUDE * mag_y,
+            slack_x: SLACK_PER_CELL * cell + SLACK_RELATIVE * mag_x,
+            slack_y: SLACK_PER_CELL * cell + SLACK_RELATIVE * mag_y,
             keys: Vec::new(),
             start: Vec::new(),
             table: Vec::new(),
             items: Vec::new(),
         };
-        let keys: Vec<u64> = (0..len)
-            .into_par_iter()
-            .map(|i| grid.key(point(i)))
-            .collect();
         let cells = columns.saturating_mul(rows);
         if cells <= DENSE_CELLS_PER_ITEM * len as u64 + DENSE_EXTRA_CELLS {
             // Counting sort over all cells, then each cell by `order`.
             let cells = cells as usize;
+            let keys: Vec<u64> = (0..len)
+                .into_par_iter()
+                .map(|i| {
+                    let (r, c) = grid.key(point(i));
+                    r * columns + c
+                })
+                .collect();
             let mut count = vec![0u32; cells + 1];
             for &k in &keys {
                 count[k as usize + 1] += 1;
@@ -120,22 +141,28 @@ impl<T: Copy + Send + Sync> SparseGrid<T> {
                 fill[k as usize] += 1;
             }
             grid.table = vec![EMPTY; cells];
+            // Cell `c` is row `c / columns`, column `c % columns`, counted
+            // along (no division per cell).
+            let (mut row, mut column) = (0, 0);
             for c in 0..cells {
                 let (a, b) = (count[c] as usize, count[c + 1] as usize);
                 if a < b {
                     slots[a..b].sort_unstable_by_key(|&i| order(i as usize));
                     grid.table[c] = grid.keys.len() as u32;
-                    grid.keys.push(c as u64);
+                    grid.keys.push((row, column));
                     grid.start.push(a as u32);
+                }
+                column += 1;
+                if column == columns {
+                    (row, column) = (row + 1, 0);
                 }
             }
             grid.start.push(len as u32);
             grid.items = slots.par_iter().map(|&i| item(i as usize)).collect();
         } else {
-            let mut keyed: Vec<(u64, u32, u32)> = keys
-                .par_iter()
-                .enumerate()
-                .map(|(i, &k)| (k, order(i), i as u32))
+            let mut keyed: Vec<(Key, u32, u32)> = (0..len)
+                .into_par_iter()
+                .map(|i| (grid.key(point(i)), order(i), i as u32))
                 .collect();
             keyed.par_sort_unstable();
             grid.items = keyed
@@ -188,8 +215,16 @@ impl<T: Copy + Send + Sync> SparseGrid<T> {
     }
 
     #[inline]
-    fn key(&self, p: Point) -> u64 {
-        self.row(p[1]) * self.columns + self.column(p[0])
+    fn key(&self, p: Point) -> Key {
+        (self.row(p[1]), self.column(p[0]))
+    }
+
+    /// The half-widths of the box a lookup with `pad` scans around its
+    /// query: `pad` plus the slack (see [`SLACK_RELATIVE`]).
+    #[inline]
+    fn padding(&self, pad: f64) -> (f64, f64) {
+        let pad = pad + SLACK_RELATIVE * pad;
+        (pad + self.slack_x, pad + self.slack_y)
     }
 
     /// The items of the `k`-th occupied cell.
@@ -203,8 +238,8 @@ impl<T: Copy + Send + Sync> SparseGrid<T> {
     /// `f` does.
     #[inline]
     fn any_cell_in_row(&self, r: u64, c0: u64, c1: u64, mut f: impl FnMut(usize) -> bool) -> bool {
-        let (lo, hi) = (r * self.columns + c0, r * self.columns + c1);
         if self.table.is_empty() {
+            let (lo, hi) = ((r, c0), (r, c1));
             let mut k = self.keys.partition_point(|&key| key < lo);
             while k < self.keys.len() && self.keys[k] <= hi {
                 if f(k) {
@@ -213,6 +248,7 @@ impl<T: Copy + Send + Sync> SparseGrid<T> {
                 k += 1;
             }
         } else {
+            let (lo, hi) = (r * self.columns + c0, r * self.columns + c1);
             for &k in &self.table[lo as usize..=hi as usize] {
                 if k != EMPTY && f(k as usize) {
                     return true;
@@ -233,7 +269,7 @@ impl<T: Copy + Send + Sync> SparseGrid<T> {
         pad: f64,
         mut f: impl FnMut(&[T]) -> bool,
     ) -> bool {
-        let (px, py) = (pad + self.slack_x, pad + self.slack_y);
+        let (px, py) = self.padding(pad);
         let (c0, c1) = (
             self.column(fmin(a[0], b[0]) - px),
             self.column(fmax(a[0], b[0]) + px),
@@ -245,16 +281,13 @@ impl<T: Copy + Send + Sync> SparseGrid<T> {
         if self.table.is_empty() && r1 - r0 >= self.keys.len() as u64 {
             // More rows than occupied cells (a long query on a fine sparse
             // grid): scan the occupied cells in the key range instead.
-            let (lo, hi) = (r0 * self.columns + c0, r1 * self.columns + c1);
+            let (lo, hi) = ((r0, c0), (r1, c1));
             let first = self.keys.partition_point(|&key| key < lo);
             return self.keys[first..]
                 .iter()
                 .take_while(|&&key| key <= hi)
                 .enumerate()
-                .any(|(i, &key)| {
-                    let column = key % self.columns;
-                    (c0..=c1).contains(&column) && f(self.cell(first + i))
-                });
+                .any(|(i, &(_, column))| (c0..=c1).contains(&column) && f(self.cell(first + i)));
         }
         (r0..=r1).any(|r| self.any_cell_in_row(r, c0, c1, |k| f(self.cell(k))))
     }
@@ -263,7 +296,7 @@ impl<T: Copy + Send + Sync> SparseGrid<T> {
     /// [`any_cell_near`](Self::any_cell_near)`(a, a, pad, ..)` scans.
     #[inline]
     pub(crate) fn block_around(&self, a: Point, pad: f64) -> [u64; 4] {
-        let (px, py) = (pad + self.slack_x, pad + self.slack_y);
+        let (px, py) = self.padding(pad);
         [
             self.column(a[0] - px),
             self.column(a[0] + px),
@@ -306,8 +339,7 @@ impl<T: Copy + Send + Sync> SparseGrid<T> {
     /// Calls `f` on the items of the occupied cell `k` and of each of its
     /// occupied neighbours.
     pub(crate) fn for_block(&self, k: usize, mut f: impl FnMut(&[T])) {
-        let key = self.keys[k];
-        let (row, column) = (key / self.columns, key % self.columns);
+        let (row, column) = self.keys[k];
         let (c0, c1) = (column.saturating_sub(1), (column + 1).min(self.columns - 1));
         for r in row.saturating_sub(1)..=(row + 1).min(self.rows - 1) {
             self.any_cell_in_row(r, c0, c1, |m| {
@@ -320,8 +352,7 @@ impl<T: Copy + Send + Sync> SparseGrid<T> {
     /// The number of items in the occupied cell `k` and its eight
     /// neighbours.
     pub(crate) fn block_len(&self, k: usize) -> usize {
-        let key = self.keys[k];
-        let (row, column) = (key / self.columns, key % self.columns);
+        let (row, column) = self.keys[k];
         let (c0, c1) = (column.saturating_sub(1), (column + 1).min(self.columns - 1));
         let mut len = 0;
         for r in row.saturating_sub(1)..=(row + 1).min(self.rows - 1) {
@@ -358,8 +389,88 @@ pub(crate) fn fmax(a: f64, b: f64) -> f64 {
 mod tests {
     use super::*;
 
+    use rand::{rngs::StdRng, Rng, SeedableRng};
+
     #[test]
-    fn the_smallest_cell_fraction_is_two_to_the_minus_thirty() {
-        assert_eq!(MIN_CELL_FRACTION, 2f64.powi(-30));
+    fn the_smallest_cell_fraction_is_two_to_the_minus_sixty_two() {
+        assert_eq!(MIN_CELL_FRACTION, 2f64.powi(-62));
+    }
+
+    /// A cluster 10⁻⁹ wide in a unit box (below the former 2⁻³⁰ cells)
+    /// spreads over many cells of 10⁻¹¹.
+    #[test]
+    fn cells_follow_a_cluster_far_below_the_box() {
+        let mut points: Vec<Point> = vec![[0.0, 0.0], [1.0, 1.0]];
+        for i in 0..20 {
+            for j in 0..20 {
+                points.push([0.5 + 5e-11 * i as f64, 0.5 + 5e-11 * j as f64]);
+            }
+        }
+        let grid = SparseGrid::new(
+            [0.0, 0.0, 1.0, 1.0],
+            1e-11,
+            points.len(),
+            |i| points[i],
+            |i| i as u32,
+            |i| i as u32,
+        );
+        assert_eq!(grid.occupied(), 402);
+    }
+
+    /// Every item within `pad` of a query box is in a cell the lookup
+    /// visits, against brute force, for clusters at several scales (down to
+    /// below the finest cells), at offsets up to 10¹⁵ and near the origin,
+    /// in dense and sparse mode, with items that are computed midpoints.
+    #[test]
+    fn lookups_find_every_item_within_the_pad() {
+        let mut rng = StdRng::seed_from_u64(31);
+        let mut checked = 0;
+        for case in 0..120 {
+            let offset = [0.0, 1.0, -3e7, 1e15][case % 4];
+            let box_side = [1.0, 1e3, 1e11][case / 4 % 3];
+            let cluster = box_side * [1e-3, 1e-9, 1e-17, 1e-25][case / 12 % 4];
+            let mut points: Vec<Point> = vec![
+                [offset, offset],
+                [offset + box_side, offset + 0.3 * box_side],
+            ];
+            let centre = [offset + 0.4 * box_side, offset + 0.2 * box_side];
+            for _ in 0..200 {
+                points.push([
+                    centre[0] + cluster * rng.gen_range(-1.0..1.0),
+                    centre[1] + cluster * rng.gen_range(-1.0..1.0),
+                ]);
+            }
+            let bbox = crate::spatial::bounding_box(&points);
+            // Items are midpoints of consecutive points (computed, rounded).
+            let m = points.len() - 1;
+            let midpoint = |i: usize| {
+                let (a, b) = (points[i], points[i + 1]);
+                [0.5 * a[0] + 0.5 * b[0], 0.5 * a[1] + 0.5 * b[1]]
+            };
+            let cell = cluster * [0.01, 0.1, 1.0][case % 3];
+            let grid = SparseGrid::new(bbox, cell, m, midpoint, |i| i as u32, |i| i as u32);
+            for _ in 0..50 {
+                let a = points[rng.gen_range(0..points.len())];
+                let b = points[rng.gen_range(0..points.len())];
+                let pad = cluster * rng.gen_range(0.0..0.2);
+                let mut found = vec![false; m];
+                grid.any_cell_near(a, b, pad, |items| {
+                    for &i in items {
+                        found[i as usize] = true;
+                    }
+                    false
+                });
+                for (i, &seen) in found.iter().enumerate() {
+                    let p = midpoint(i);
+                    let inside = p[0] >= fmin(a[0], b[0]) - pad
+                        && p[0] <= fmax(a[0], b[0]) + pad
+                        && p[1] >= fmin(a[1], b[1]) - pad
+                        && p[1] <= fmax(a[1], b[1]) + pad;
+                    assert!(seen || !inside, "case {case}: item {i} missed");
+                    checked += usize::from(inside);
+                }
+            }
+        }
+        assert!(checked > 100_000, "{checked}");
     }
 }

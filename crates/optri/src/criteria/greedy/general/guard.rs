@@ -100,6 +100,33 @@ pub(super) fn next_floor(floor: f64, candidates: usize, open: usize) -> f64 {
     }
 }
 
+/// `T_k = growth · T_{k-1}` before the guard (module docs), with `growth`
+/// from [`next_growth`]: `THRESHOLD_GROWTH` after a busy round.
+pub(super) const THRESHOLD_GROWTH: f64 = 2.0;
+
+/// The largest growth of the threshold from one round to the next. A chosen
+/// cap: when it overshoots, the guard halves back in at most 8 grids.
+const MAX_GROWTH: f64 = 256.0;
+
+/// The growth of the next round's proposed threshold after one with
+/// `candidates` candidates among `open` open vertices: squared after a quiet
+/// round (up to [`MAX_GROWTH`]), else [`THRESHOLD_GROWTH`].
+///
+/// Why: points at several length scales (a tiny cluster inside a cluster
+/// inside a box, issue 15) leave most vertices open and without candidates
+/// while the threshold doubles from one scale to the next, a round over all
+/// of them for each doubling (2¹⁹ between scales 10⁻¹⁴ and 10⁻⁸: 19 rounds).
+/// Squaring the growth crosses such a gap in O(log log) rounds; the guard
+/// still bounds a round's pairs, and a busy round brings the growth back.
+/// Only the running time depends on it.
+pub(super) fn next_growth(growth: f64, candidates: usize, open: usize) -> f64 {
+    if QUIET_ROUND_RATIO * candidates < open {
+        (growth * growth).min(MAX_GROWTH)
+    } else {
+        THRESHOLD_GROWTH
+    }
+}
+
 /// The threshold of the next round, at most `proposed` and with a step above
 /// `lower` of at least about `floor` times the threshold, and the grid of the
 /// open vertices (indices into `open`) with cells a little wider than it,
@@ -179,5 +206,15 @@ mod tests {
         assert_eq!(next_floor(floor, 249, 1000), MAX_FLOOR);
         assert_eq!(next_floor(floor, 250, 1000), 0.5 * MAX_FLOOR);
         assert_eq!(next_floor(MIN_RELATIVE_STEP, 5000, 1000), MIN_RELATIVE_STEP);
+    }
+
+    #[test]
+    fn the_growth_squares_after_quiet_rounds_and_resets_after_busy_ones() {
+        let mut growth = THRESHOLD_GROWTH;
+        for expected in [4.0, 16.0, 256.0, MAX_GROWTH] {
+            growth = next_growth(growth, 249, 1000);
+            assert_eq!(growth, expected);
+        }
+        assert_eq!(next_growth(growth, 250, 1000), THRESHOLD_GROWTH);
     }
 }

@@ -8,8 +8,9 @@
 //! `[T_{k-1}, T_k)`: in round 0 every pair shorter than `T_0`, later only
 //! pairs of still-open vertices (below). Rounds are disjoint length ranges,
 //! so every pair shorter than `T_{k-1}` has been decided when round `k`
-//! starts. `T_0` is about 1.6 mean point spacings and `T_k = 2 T_{k-1}`,
-//! unless a guard (`round_grid`) finds that the pairs within the proposed
+//! starts. `T_0` is about 1.6 mean point spacings and `T_k = 2 T_{k-1}`
+//! (more after rounds with few candidates: `guard::next_growth`, for points
+//! at several length scales), unless a guard (`round_grid`) finds that the pairs within the proposed
 //! threshold are too many — in total, or in one cell and its neighbours, as
 //! in a dense cluster — and halves the step until they are not; the grids
 //! store only occupied cells, so their cells can follow the threshold
@@ -95,7 +96,7 @@ use crate::kernel::{
 use crate::parallel::prelude::*;
 use crate::spatial::{bounding_box, convex_hull_cycle, fmax, fmin, morton_order};
 use crate::timing::{Phase, Stopwatch};
-use guard::{next_floor, round_grid, MIN_RELATIVE_STEP, NO_LINE};
+use guard::{next_floor, next_growth, round_grid, MIN_RELATIVE_STEP, NO_LINE, THRESHOLD_GROWTH};
 use partial::Partial;
 use segment_index::{PointsNear, Query, SegmentIndex};
 use std::cmp::Ordering;
@@ -107,9 +108,6 @@ const NO_RANK: u32 = u32::MAX;
 /// choice (only the running time depends on it): uniform points then have
 /// about 2.6 points a cell.
 const FIRST_THRESHOLD_SPACINGS: f64 = 1.6;
-
-/// `T_k = THRESHOLD_GROWTH · T_{k-1}` before the guard (module docs).
-const THRESHOLD_GROWTH: f64 = 2.0;
 
 /// For the mean spacing, each side of the bounding box counts as at least
 /// this fraction of the other, so that a nearly flat box does not get a
@@ -309,11 +307,12 @@ fn greedy_rounds(
     let mut lower = 0.0;
     let mut round = 0;
     let mut floor = MIN_RELATIVE_STEP;
+    let mut growth = THRESHOLD_GROWTH;
     while g.edge_count() < target && !open.is_empty() {
         let proposed = if round == 0 {
             FIRST_THRESHOLD_SPACINGS * spacing
         } else {
-            THRESHOLD_GROWTH * lower
+            growth * lower
         };
         let gaps: Vec<Option<Vec<[u32; 2]>>> = if round == 0 {
             vec![None; n]
@@ -398,6 +397,7 @@ fn greedy_rounds(
         let accepted = decide_round(points, bbox, &candidates, &rank, &active, near, round == 0);
         g.add(&accepted);
         floor = next_floor(floor, candidates.len(), open.len());
+        growth = next_growth(growth, candidates.len(), open.len());
         open = open.into_par_iter().filter(|&v| !g.closed(v)).collect();
         if round == 0 {
             stopwatch.lap("round 0");
