@@ -713,7 +713,7 @@ fn cliff_families_match_the_oracle() {
 }
 
 /// The boundary of the square `[0, k]²` with `k` integer points a side
-/// (corners once): convex but not strictly, so the general algorithm.
+/// (corners once): convex but not strictly (the convex algorithm).
 fn square_boundary(k: usize) -> Vec<Point> {
     let side = k as f64;
     (0..k)
@@ -827,5 +827,7 @@ fn degenerate_families_of_issue_15_match_the_oracle() {
     pts.extend([[-0.5, -0.5], [0.5, -0.2]]);
     check(&pts, "300 points in a 1e-9 box plus two", &mut tally);
     assert!(tally.sets >= 300, "{tally:?}");
-    assert!(tally.dispatched[0] >= 280, "{tally:?}");
+    // Squares and rectangles without inner points go to the convex algorithm.
+    assert!(tally.dispatched[0] >= 180, "{tally:?}");
+    assert!(tally.dispatched[1] >= 110, "{tally:?}");
 }
