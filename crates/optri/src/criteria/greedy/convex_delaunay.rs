@@ -552,6 +552,58 @@ mod tests {
         }
     }
 
+    /// Weakly convex polygons (points on the sides of an integer polygon,
+    /// exactly collinear, many cocircular quadruples): a triangulation
+    /// with every circumcircle empty, no flat triangle (`check` asserts
+    /// ccw triangles), for every seed of the deletion order; also one
+    /// strict corner with every other vertex on one side.
+    #[test]
+    fn straight_angles_give_a_delaunay_triangulation() {
+        let mut rng = StdRng::seed_from_u64(6);
+        let mut dt = ConvexDelaunay::new();
+        let shapes: [&[Point]; 3] = [
+            &[[0.0, 0.0], [12.0, 0.0], [3.0, 12.0]],
+            &[[0.0, 0.0], [12.0, 0.0], [12.0, 12.0], [0.0, 12.0]],
+            &[
+                [0.0, 0.0],
+                [60.0, 0.0],
+                [60.0, 24.0],
+                [36.0, 48.0],
+                [0.0, 12.0],
+            ],
+        ];
+        for corners in shapes {
+            let k = corners.len();
+            for _ in 0..200 {
+                let mut pts = Vec::new();
+                for i in 0..k {
+                    let (a, b) = (corners[i], corners[(i + 1) % k]);
+                    // Scaled by 12: the side points are exact integers.
+                    pts.push([12.0 * a[0], 12.0 * a[1]]);
+                    for t in 1..12 {
+                        if rng.gen_bool(0.5) {
+                            let t = t as f64;
+                            pts.push([
+                                12.0 * a[0] + t * (b[0] - a[0]),
+                                12.0 * a[1] + t * (b[1] - a[1]),
+                            ]);
+                        }
+                    }
+                }
+                let polygon: Vec<u32> = (0..pts.len() as u32).collect();
+                dt.triangulate(&pts, &polygon, true);
+                check(&pts, &dt, true);
+            }
+        }
+        let mut pts: Vec<Point> = (0..500).map(|i| [i as f64, 0.0]).collect();
+        pts.push([7.0, 3.0]);
+        let polygon: Vec<u32> = (0..pts.len() as u32).collect();
+        for _ in 0..5 {
+            dt.triangulate(&pts, &polygon, true);
+            check(&pts, &dt, true);
+        }
+    }
+
     #[test]
     fn flips_are_expected_linear() {
         // Backward analysis: the expected number of flips per insertion is

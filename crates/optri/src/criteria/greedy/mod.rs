@@ -124,10 +124,7 @@ pub(crate) fn greedy_triangulation_timed(
                     GreedyAlgorithm::Semicircular,
                 ),
                 None => (
-                    triangles_of(
-                        pts,
-                        &convex::greedy_convex(pts, &polygon, straight_angles),
-                    ),
+                    triangles_of(pts, &convex::greedy_convex(pts, &polygon, straight_angles)),
                     GreedyAlgorithm::Convex,
                 ),
             }
