@@ -41,14 +41,16 @@
 //!   lies on the segment `uz`, hence in the disc, and is not adjacent to
 //!   `v` (`z ≠ z'` is on its side), and `z'v` is a diagonal (`z'` has a
 //!   straight angle, so its only edge line is the one through `u`, which
-//!   does not hold `v`: `e` is a diagonal), shorter than `e`. Either way `e` was not
-//!   the shortest. An edge with an empty closed diametral disc
+//!   does not hold `v`: `e` is a diagonal), shorter than `e`. Either way
+//!   `e` was not the shortest. An edge with an empty closed diametral disc
 //!   belongs to *every* Delaunay triangulation of `Q`'s vertices, so `e` is a
 //!   diagonal of the Delaunay triangulation of `Q`, whatever completion it
 //!   picks for cocircular points.
 //!
 //! So the heap holds every ear diagonal and every Delaunay diagonal of every
 //! current subpolygon (stale entries are skipped when popped).
+//! With straight angles the Delaunay triangulation of `Q`'s vertices has no
+//! flat triangle, so each of its edges is a side or a diagonal of `Q`.
 //!
 //! # One Delaunay triangulation, maintained
 //! The previous version rebuilt the Delaunay triangulation of every
