@@ -5,7 +5,7 @@
 
 pub use crate::criteria::greedy::{
     greedy_edges_by, greedy_naive_edges, greedy_triangulation, is_convex_position, is_semicircular,
-    GreedyAlgorithm,
+    is_weakly_convex_position, GreedyAlgorithm,
 };
 pub use crate::criteria::min_weight::MAX_POINTS as MIN_WEIGHT_MAX_POINTS;
 pub use crate::criteria::minmax_length::{

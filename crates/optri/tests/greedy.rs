@@ -38,6 +38,7 @@ const SEED_CONVEX_10000: u64 = 12;
 const SEED_CLIFF_FAMILIES: u64 = 17;
 const SEED_DEGENERATE_FAMILIES: u64 = 18;
 const SEED_CLUSTER_SCALES: u64 = 19;
+const SEED_WEAKLY_CONVEX: u64 = 20;
 
 /// Distinct-index `[min, max]` edges of a triangulation, sorted.
 fn distinct_edges(ps: &PointSet, t: &optri::Triangulation) -> Vec<[u32; 2]> {
@@ -714,7 +715,7 @@ fn cliff_families_match_the_oracle() {
 }
 
 /// The boundary of the square `[0, k]²` with `k` integer points a side
-/// (corners once): convex but not strictly, so the general algorithm.
+/// (corners once): convex but not strictly (the convex algorithm).
 fn square_boundary(k: usize) -> Vec<Point> {
     let side = k as f64;
     (0..k)
@@ -828,7 +829,209 @@ fn degenerate_families_of_issue_15_match_the_oracle() {
     pts.extend([[-0.5, -0.5], [0.5, -0.2]]);
     check(&pts, "300 points in a 1e-9 box plus two", &mut tally);
     assert!(tally.sets >= 300, "{tally:?}");
-    assert!(tally.dispatched[0] >= 280, "{tally:?}");
+    // Squares and rectangles without inner points go to the convex algorithm.
+    assert!(tally.dispatched[0] >= 180, "{tally:?}");
+    assert!(tally.dispatched[1] >= 110, "{tally:?}");
+}
+
+/// The convex polygon with integer corners `corners` (ccw, strictly convex),
+/// scaled by `m + 1` so that `per_side[i]` points on side `i` (`0 ≤
+/// per_side[i] ≤ m`, evenly spaced) have exact integer coordinates.
+fn subdivided_polygon(corners: &[Point], per_side: &[usize], m: usize) -> Vec<Point> {
+    let s = (m + 1) as f64;
+    let k = corners.len();
+    let mut pts = Vec::new();
+    for i in 0..k {
+        let (a, b) = (corners[i], corners[(i + 1) % k]);
+        pts.push([a[0] * s, a[1] * s]);
+        let c = per_side[i];
+        for t in 1..=c {
+            // At integer multiples u < m + 1 of (b - a): exact, strictly
+            // between the scaled corners.
+            let step = ((m + 1) / (c + 1)) as f64;
+            let u = t as f64 * step;
+            pts.push([a[0] * s + u * (b[0] - a[0]), a[1] * s + u * (b[1] - a[1])]);
+        }
+    }
+    pts
+}
+
+/// Issue 15's weakly convex inputs (all points on the hull boundary, some on
+/// hull edges), edge for edge against the oracle, asserting that the
+/// dispatcher ran the convex algorithm: triangles, squares, rectangles and
+/// random lattice polygons with 1–50 points per side, regular integer
+/// polygons and integer circles with their edge midpoints, huge, tiny and
+/// negative coordinates, shuffled, with duplicates. Sampled circles with
+/// rounded midpoints are checked too (convex or not as rounding decides).
+#[test]
+fn weakly_convex_inputs_run_the_convex_algorithm() {
+    let mut rng = StdRng::seed_from_u64(SEED_WEAKLY_CONVEX);
+    let mut tally = Tally::default();
+    let maps: [(&str, PointMap); 4] = [
+        ("plain", |p| p),
+        ("huge", |p| {
+            [
+                p[0] * 2f64.powi(150) - 2f64.powi(160),
+                -p[1] * 2f64.powi(150),
+            ]
+        }),
+        ("tiny", |p| [p[1] * 2f64.powi(-100), p[0] * 2f64.powi(-100)]),
+        ("negative", |p| [-3.0 * p[0] - 1e6, -5.0 * p[1] - 7.0]),
+    ];
+    let shapes: [(&str, Vec<Point>); 5] = [
+        ("triangle", vec![[0.0, 0.0], [7.0, 0.0], [2.0, 5.0]]),
+        ("thin triangle", vec![[0.0, 0.0], [40.0, 1.0], [1.0, 1.0]]),
+        (
+            "square",
+            vec![[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]],
+        ),
+        (
+            "rectangle",
+            vec![[0.0, 0.0], [9.0, 0.0], [9.0, 2.0], [0.0, 2.0]],
+        ),
+        (
+            "octagon",
+            vec![
+                [2.0, 0.0],
+                [4.0, 0.0],
+                [6.0, 2.0],
+                [6.0, 4.0],
+                [4.0, 6.0],
+                [2.0, 6.0],
+                [0.0, 4.0],
+                [0.0, 2.0],
+            ],
+        ),
+    ];
+    let convex_run = |pts: &[Point], what: &str, tally: &mut Tally| {
+        assert_eq!(
+            check(pts, what, tally),
+            Some(GreedyAlgorithm::Convex),
+            "{what}"
+        );
+    };
+    for (name, corners) in &shapes {
+        let k = corners.len();
+        for case in 0..12 {
+            let m = [1, 2, 3, 5, 50][case % 5];
+            let per_side: Vec<usize> = (0..k)
+                .map(|i| match case {
+                    0..=4 => m,
+                    5 => usize::from(i == 0),
+                    _ => rng.gen_range(0..=m.min(20 + case)),
+                })
+                .collect();
+            if per_side.iter().all(|&c| c == 0) {
+                continue;
+            }
+            let base = subdivided_polygon(corners, &per_side, m);
+            for (how, map) in maps {
+                let mut pts: Vec<Point> = base.iter().map(|&p| map(p)).collect();
+                let what = format!("{name} {per_side:?} {how}");
+                convex_run(&pts, &what, &mut tally);
+                // Shuffled, with duplicates: the same distinct set.
+                for i in (1..pts.len()).rev() {
+                    pts.swap(i, rng.gen_range(0..=i));
+                }
+                for _ in 0..3 {
+                    pts.push(pts[rng.gen_range(0..pts.len())]);
+                }
+                convex_run(&pts, &format!("{what} shuffled"), &mut tally);
+            }
+        }
+    }
+    // Random lattice polygons: the strict corners of the hull of random
+    // integer points, every side subdivided.
+    for case in 0..120 {
+        let n = rng.gen_range(3..25);
+        let pts = lattice_points(&mut rng, n, -20..20, -20..20);
+        let ps = PointSet::new(&pts).unwrap();
+        let corners = strict_hull_corners(ps.points());
+        if corners.len() < 3 {
+            continue;
+        }
+        let m = [1, 4, 10][case % 3];
+        let per_side: Vec<usize> = (0..corners.len()).map(|_| rng.gen_range(0..=m)).collect();
+        let pts = subdivided_polygon(&corners, &per_side, m);
+        let (how, map) = maps[case % 4];
+        let pts: Vec<Point> = pts.into_iter().map(map).collect();
+        let what = format!("lattice polygon case {case} {how}");
+        if per_side.iter().all(|&c| c == 0) {
+            check(&pts, &what, &mut tally);
+        } else {
+            convex_run(&pts, &what, &mut tally);
+        }
+    }
+    // Integer circles with the midpoints of (some of) their sides: exactly
+    // cocircular corners, straight angles at the midpoints.
+    for r in [5i64, 25, 65, 325] {
+        let c = strict_hull_corners(&circle(r));
+        let k = c.len();
+        for every in [1, 2, 3] {
+            let mut pts = Vec::new();
+            for i in 0..k {
+                let (a, b) = (c[i], c[(i + 1) % k]);
+                pts.push([2.0 * a[0], 2.0 * a[1]]);
+                if i % every == 0 {
+                    pts.push([a[0] + b[0], a[1] + b[1]]);
+                }
+            }
+            convex_run(
+                &pts,
+                &format!("circle r={r} midpoints every {every}"),
+                &mut tally,
+            );
+        }
+    }
+    // Sampled regular polygons with rounded midpoints: the dispatcher may
+    // pick any algorithm; the edges must still be the oracle's.
+    for n in [3, 4, 5, 6, 8, 12, 30, 100] {
+        let c = sampled_circle(n, 1000.0);
+        let mut pts = Vec::new();
+        for i in 0..n {
+            let (a, b) = (c[i], c[(i + 1) % n]);
+            pts.push(a);
+            pts.push([(a[0] + b[0]) / 2.0, (a[1] + b[1]) / 2.0]);
+        }
+        check(&pts, &format!("sampled {n}-gon with midpoints"), &mut tally);
+    }
+    // Larger: a square with 100 points a side, a triangle with 300 on one.
+    convex_run(&square_boundary(100), "square boundary 100", &mut tally);
+    let mut pts: Vec<Point> = (0..300).map(|i| [i as f64, 0.0]).collect();
+    pts.push([150.0, 1.0]);
+    convex_run(&pts, "run of 300 with one apex", &mut tally);
+    assert!(tally.sets >= 500, "{tally:?}");
+    assert!(tally.dispatched[1] >= 480, "{tally:?}");
+}
+
+/// The strict corners of the convex hull of distinct points, ccw.
+fn strict_hull_corners(points: &[Point]) -> Vec<Point> {
+    let mut pts = points.to_vec();
+    pts.sort_unstable_by(|p, q| p[0].total_cmp(&q[0]).then(p[1].total_cmp(&q[1])));
+    pts.dedup();
+    let cross = |o: Point, a: Point, b: Point| {
+        (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0])
+    };
+    let mut hull: Vec<Point> = Vec::new();
+    for pass in 0..2 {
+        let start = hull.len();
+        let iter: Box<dyn Iterator<Item = &Point>> = if pass == 0 {
+            Box::new(pts.iter())
+        } else {
+            Box::new(pts.iter().rev())
+        };
+        for &p in iter {
+            // Small integers: the cross product is exact.
+            while hull.len() >= start + 2
+                && cross(hull[hull.len() - 2], hull[hull.len() - 1], p) <= 0.0
+            {
+                hull.pop();
+            }
+            hull.push(p);
+        }
+        hull.pop();
+    }
+    hull
 }
 
 /// Issue 15's clusters far below the bounding box's resolution, small, edge

@@ -1,7 +1,25 @@
-//! GT of a strictly convex polygon by shortest-diagonal splitting: Thm 4.2
+//! GT of points in convex position by shortest-diagonal splitting: Thm 4.2
 //! (and Corollary 4.1 for convex point sets) of C. Levcopoulos & A. Lingas,
 //! *On approximation behavior of the greedy triangulation for convex
-//! polygons*, Algorithmica 2 (1987).
+//! polygons*, Algorithmica 2 (1987), extended to *weakly* convex position.
+//!
+//! # Weakly convex position
+//! The points are all on the boundary of their convex hull, some possibly on
+//! the interior of a hull edge; `P` is the polygon of all of them in hull
+//! order, with straight angles at those. A segment `uv` between two points
+//! on one hull edge passes through the points between them (or is a side of
+//! `P`), so GT never adds it; any other segment between two points has its
+//! open interior inside the open polygon (a point of it on the boundary lies
+//! on a supporting line through an edge, which then holds `u` and `v`), so
+//! it contains no point and is a *diagonal* of `P`. GT therefore adds every
+//! side of `P` and, among diagonals, runs the greedy process on `P`: the
+//! first diagonal it adds is the shortest one, `d`; every later segment
+//! crossing `d` is rejected, the others lie in one of the two parts, and two
+//! segments of different parts never cross. So GT is the recursive splitting
+//! below; a part is again weakly convex (its angles at `d`'s ends are
+//! smaller than in `P`), and a pair of its vertices on one of its edges was
+//! already on one edge of `P`. Levcopoulos & Lingas's argument needs nothing
+//! else: only that every candidate is a diagonal inside the polygon.
 //!
 //! `Greedy(P)`: find a shortest diagonal of `P`, split along it, recurse.
 //! The subpolygons are independent, so the recursion can take them in any
@@ -12,16 +30,27 @@
 //! Let `e = uv` be the shortest diagonal of a convex polygon `Q`.
 //! * If one side of `e` holds a single vertex, `e` cuts off an ear: it is one
 //!   of the `|Q|` ear diagonals `v_{i-1} v_{i+1}`.
+//!   It is a diagonal unless the ear vertex has a straight angle or every
+//!   other vertex lies on the segment `v_{i-1} v_{i+1}`; both are tested
+//!   when the ear is popped.
 //! * Otherwise no vertex `z` lies in the closed disc with diameter `uv`: such
 //!   a `z` has `|uz|, |zv| < |uv|` (angle `uzv ≥ 90°`), and since its side has
-//!   two or more vertices, `z` is not adjacent to both `u` and `v`, so `uz` or
-//!   `zv` is a shorter diagonal. An edge with an empty closed diametral disc
+//!   two or more vertices, `z` is not adjacent to both `u` and `v`, say not
+//!   to `u`. If `uz` is a diagonal it is shorter than `e`. If not, `u` and
+//!   `z` are on one edge of `Q`; the neighbour `z'` of `u` on the way to `z`
+//!   lies on the segment `uz`, hence in the disc, and is not adjacent to
+//!   `v` (`z ≠ z'` is on its side), and `z'v` is a diagonal (`z'` has a
+//!   straight angle, so its only edge line is the one through `u`, which
+//!   does not hold `v`: `e` is a diagonal), shorter than `e`. Either way
+//!   `e` was not the shortest. An edge with an empty closed diametral disc
 //!   belongs to *every* Delaunay triangulation of `Q`'s vertices, so `e` is a
 //!   diagonal of the Delaunay triangulation of `Q`, whatever completion it
 //!   picks for cocircular points.
 //!
 //! So the heap holds every ear diagonal and every Delaunay diagonal of every
 //! current subpolygon (stale entries are skipped when popped).
+//! With straight angles the Delaunay triangulation of `Q`'s vertices has no
+//! flat triangle, so each of its edges is a side or a diagonal of `Q`.
 //!
 //! # One Delaunay triangulation, maintained
 //! The previous version rebuilt the Delaunay triangulation of every
@@ -57,7 +86,7 @@
 
 use super::convex_delaunay::ConvexDelaunay;
 use super::rounded_squared_length;
-use crate::kernel::{compare_lengths_symbolic, Point};
+use crate::kernel::{compare_lengths_symbolic, orient_sign, Point};
 use std::cmp::Ordering;
 
 /// Two rounded squared lengths closer than this relative gap are compared
@@ -72,15 +101,21 @@ const HEAP_KEY_GAP: f64 = 1e-14;
 /// The apex of a heap entry that is a `D`-edge, not an ear diagonal.
 const NO_APEX: u32 = u32::MAX;
 
-/// GT edges (hull edges and diagonals) of the strictly convex polygon
-/// `polygon` (ccw indices into `points`).
-pub(super) fn greedy_convex(points: &[Point], polygon: &[u32]) -> Vec<[u32; 2]> {
+/// GT edges (hull edges and diagonals) of the convex polygon `polygon` (ccw
+/// indices into `points`, not all collinear). With `straight_angles`, some
+/// vertices may lie on the segment between their neighbours (weakly convex
+/// position); without, the polygon must be strictly convex.
+pub(super) fn greedy_convex(
+    points: &[Point],
+    polygon: &[u32],
+    straight_angles: bool,
+) -> Vec<[u32; 2]> {
     let k = polygon.len();
     let mut edges: Vec<[u32; 2]> = (0..k).map(|i| [polygon[i], polygon[(i + 1) % k]]).collect();
     if k <= 3 {
         return edges;
     }
-    let mut state = Splitting::new(points, polygon);
+    let mut state = Splitting::new(points, polygon, straight_angles);
     while edges.len() < 2 * k - 3 {
         let Some(c) = state.pop() else {
             break;
@@ -126,13 +161,15 @@ struct Splitting<'a> {
     heap: Vec<Candidate>,
     scratch: ConvexDelaunay,
     hole: Vec<u32>,
+    /// May the polygon have straight-angle vertices (weakly convex)?
+    straight_angles: bool,
 }
 
 impl<'a> Splitting<'a> {
-    fn new(points: &'a [Point], polygon: &'a [u32]) -> Self {
+    fn new(points: &'a [Point], polygon: &'a [u32], straight_angles: bool) -> Self {
         let k = polygon.len();
         let mut scratch = ConvexDelaunay::new();
-        scratch.triangulate(points, polygon);
+        scratch.triangulate(points, polygon, straight_angles);
         let mut adjacency: Vec<Vec<Neighbour>> = (0..k)
             .map(|v| {
                 vec![
@@ -163,6 +200,7 @@ impl<'a> Splitting<'a> {
             heap: Vec::new(),
             scratch,
             hole: Vec::new(),
+            straight_angles,
         };
         for v in 0..k as u32 {
             let mut list = std::mem::take(&mut state.adjacency[v as usize]);
@@ -314,6 +352,18 @@ impl<'a> Splitting<'a> {
         {
             return None; // the sector was split or its ear already cut
         }
+        if self.straight_angles {
+            // `ab` passes through `v` (straight angle), or through all of
+            // `w_1..w_m` if `w_1` is on it: then the subpolygon is a
+            // triangle `a v b` with points on its side `ab`, where the only
+            // diagonals are the `D`-edges at `v`. Neither changes later, so
+            // the entry is dropped for good.
+            let p = |i: u32| self.points[self.polygon[i as usize] as usize];
+            let w1 = list[ia + 1].at;
+            if orient_sign(p(a), p(v), p(b)) == 0 || orient_sign(p(a), p(w1), p(b)) == 0 {
+                return None;
+            }
+        }
         // Cut the ear: delete v's D-edges to w_1..w_m, add the side ab,
         // re-triangulate the hole a, w_1, …, w_m, b (ccw).
         self.hole.clear();
@@ -329,7 +379,8 @@ impl<'a> Splitting<'a> {
         self.insert(b, a, true);
         if hole.len() >= 4 {
             let vertices: Vec<u32> = hole.iter().map(|&h| self.polygon[h as usize]).collect();
-            self.scratch.triangulate(self.points, &vertices);
+            self.scratch
+                .triangulate(self.points, &vertices, self.straight_angles);
             let diagonals: Vec<[u32; 2]> = self.scratch.diagonals().collect();
             for [x, y] in diagonals {
                 let (x, y) = (hole[x as usize], hole[y as usize]);

@@ -1,5 +1,9 @@
-//! Delaunay triangulation of a strictly convex polygon in expected O(k) time:
-//! Chew's randomised algorithm (literature.md §e).
+//! Delaunay triangulation of a convex polygon in expected O(k) time:
+//! Chew's randomised algorithm (literature.md §e). The polygon may have
+//! straight-angle vertices (points in weakly convex position: all on the hull
+//! boundary, some on the interior of hull edges); its Delaunay triangulation
+//! is then the Delaunay triangulation of its vertex set, which has no flat
+//! triangles.
 //!
 //! 1. Delete the `k` vertices in random order from the cyclic vertex list
 //!    until three remain. Each deleted vertex keeps its `prev`/`next` links
@@ -7,13 +11,27 @@
 //! 2. Start from the triangle of the three survivors and re-insert the
 //!    deleted vertices in reverse order. When `p` returns, its remembered
 //!    neighbours `a`, `b` are consecutive on the current polygon, so `p` lies
-//!    outside it, beyond the hull edge `ab`: add the triangle `a p b`.
+//!    outside it, beyond the hull edge `ab`: add the triangle `a p b`. If
+//!    `p` is a straight-angle vertex of the current polygon it lies *on*
+//!    the side `ab` (the polygon is weakly convex, so `a, p, b` collinear
+//!    means `p` between them): split the triangle `a b c` on that side into
+//!    `a p c` and `p b c` instead, the usual insertion of a point on an edge.
 //! 3. Restore the Delaunay property by Lawson flips of the edges opposite `p`
 //!    (exact [`incircle_sign`]). Only the triangles containing `p` changed,
 //!    so only the edges of `p`'s link can be illegal; a flip replaces one by
 //!    an edge incident to `p` and queues the two new link edges.
 //!
 //! # Degeneracies
+//! Any subset of a weakly convex polygon's vertices, in cyclic order, is a
+//! weakly convex polygon, so step 2 only needs three survivors that are not
+//! collinear; if the random ones are, one of them is exchanged with the last
+//! deleted vertex off their line (there is one: the polygon is not flat).
+//! A flip never makes a flat triangle: if `c` is strictly inside the
+//! circumcircle of `p x y` across `xy`, the quadrilateral `p x c y` is strictly
+//! convex. The point `p` on an edge `ab` lies strictly inside the
+//! circumcircle of `a b c`, so the argument below for the edges at `p`
+//! applies to the edge split too.
+//!
 //! An edge is flipped only when the opposite vertex is *strictly* inside the
 //! circumcircle. Edges incident to `p` are never flipped, so each insertion
 //! does at most `k` flips and the algorithm terminates. The result is a
@@ -39,7 +57,7 @@
 //! The random order comes from a splitmix64 generator with a fixed seed whose
 //! state carries over between calls, so every run is reproducible.
 
-use crate::kernel::{incircle_sign, Point};
+use crate::kernel::{incircle_sign, orient_sign, Point};
 
 /// No triangle: marks a side on the current polygon boundary.
 const NONE: u32 = u32::MAX;
@@ -93,10 +111,18 @@ impl ConvexDelaunay {
         ((u128::from(self.next_u64()) * n as u128) >> 64) as usize
     }
 
-    /// Delaunay triangulation of the strictly convex polygon `polygon`
-    /// (counter-clockwise indices into `points`, at least 3 of them).
-    /// Expected O(k) time. Returns the number of flips.
-    pub(super) fn triangulate(&mut self, points: &[Point], polygon: &[u32]) -> usize {
+    /// Delaunay triangulation of the convex polygon `polygon`
+    /// (counter-clockwise indices into `points`, at least 3 of them, not all
+    /// collinear). With `straight_angles`, vertices with a straight angle
+    /// are allowed (weakly convex position); without, the polygon must be
+    /// strictly convex, and the collinearity tests are skipped. Expected O(k)
+    /// time. Returns the number of flips.
+    pub(super) fn triangulate(
+        &mut self,
+        points: &[Point],
+        polygon: &[u32],
+        straight_angles: bool,
+    ) -> usize {
         let k = polygon.len();
         assert!(k >= 3, "a polygon has at least 3 vertices");
         assert!(k < NONE as usize, "too many vertices");
@@ -122,6 +148,16 @@ impl ConvexDelaunay {
             pending,
             ..
         } = self;
+        if straight_angles {
+            let [s0, s1, s2] = [order[k - 3], order[k - 2], order[k - 1]];
+            if orient_sign(pt(s0), pt(s1), pt(s2)) == 0 {
+                let off = order[..k - 3]
+                    .iter()
+                    .rposition(|&v| orient_sign(pt(s1), pt(s2), pt(v)) != 0)
+                    .expect("a polygon that is not flat");
+                order.swap(off, k - 3);
+            }
+        }
         for &v in &order[..k - 3] {
             let (a, b) = (prev[v as usize], next[v as usize]);
             next[a as usize] = b;
@@ -146,18 +182,40 @@ impl ConvexDelaunay {
             let (a, b) = (prev[p as usize], next[p as usize]);
             next[a as usize] = p;
             prev[b as usize] = p;
-            // `p` lies beyond the boundary edge a → b of triangle `s`.
             let s = boundary[a as usize];
             let t = triangles.len() as u32;
-            triangles.push([p, b, a]);
-            neighbours.push([NONE, s, NONE]);
-            let j = corner(&triangles[s as usize], a);
-            debug_assert_eq!(triangles[s as usize][(j + 1) % 3], b);
-            neighbours[s as usize][j] = t;
-            boundary[a as usize] = t;
-            boundary[p as usize] = t;
-
-            pending.push(t);
+            if straight_angles && orient_sign(pt(p), pt(b), pt(a)) == 0 {
+                // `p` lies on the side a → b of `s` = [a, b, c]: `s` becomes
+                // [p, b, c], the new `t` is [p, c, a].
+                let j = corner(&triangles[s as usize], a);
+                let c = triangles[s as usize][(j + 2) % 3];
+                let n_bc = neighbours[s as usize][(j + 1) % 3];
+                let n_ca = neighbours[s as usize][(j + 2) % 3];
+                triangles[s as usize] = [p, b, c];
+                neighbours[s as usize] = [NONE, n_bc, t];
+                triangles.push([p, c, a]);
+                neighbours.push([s, n_ca, NONE]);
+                if n_ca == NONE {
+                    boundary[c as usize] = t;
+                } else {
+                    let i = side_towards(&neighbours[n_ca as usize], s);
+                    neighbours[n_ca as usize][i] = t;
+                }
+                boundary[a as usize] = t;
+                boundary[p as usize] = s;
+                pending.push(s);
+                pending.push(t);
+            } else {
+                // `p` lies beyond the boundary edge a → b of triangle `s`.
+                triangles.push([p, b, a]);
+                neighbours.push([NONE, s, NONE]);
+                let j = corner(&triangles[s as usize], a);
+                debug_assert_eq!(triangles[s as usize][(j + 1) % 3], b);
+                neighbours[s as usize][j] = t;
+                boundary[a as usize] = t;
+                boundary[p as usize] = t;
+                pending.push(t);
+            }
             while let Some(t) = pending.pop() {
                 let [q, x, y] = triangles[t as usize];
                 debug_assert_eq!(q, p);
@@ -334,7 +392,7 @@ mod tests {
     /// triangulation (unique for vertices in general position).
     fn check_against_spade(pts: &[Point], dt: &mut ConvexDelaunay, what: &str) {
         let polygon: Vec<u32> = (0..pts.len() as u32).collect();
-        dt.triangulate(pts, &polygon);
+        dt.triangulate(pts, &polygon, false);
         let ours = check(pts, dt, pts.len() <= 300);
         let k = pts.len() as u32;
         let mut spade: Vec<[u32; 2]> = DelaunayGraph::new(pts)
@@ -384,12 +442,12 @@ mod tests {
     fn triangle_and_small_polygons() {
         let mut dt = ConvexDelaunay::new();
         let tri = [[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]];
-        dt.triangulate(&tri, &[0, 1, 2]);
+        dt.triangulate(&tri, &[0, 1, 2], false);
         assert_eq!(dt.triangles(), &[[0, 1, 2]]);
         assert_eq!(dt.diagonals().count(), 0);
         // Indices into a larger array, not starting at 0.
         let pts = [[9.0, 9.0], [0.0, 0.0], [4.0, 0.0], [5.0, 2.0], [0.0, 3.0]];
-        dt.triangulate(&pts, &[1, 2, 3, 4]);
+        dt.triangulate(&pts, &[1, 2, 3, 4], false);
         let local = [pts[1], pts[2], pts[3], pts[4]];
         check(&local, &dt, true);
     }
@@ -455,7 +513,7 @@ mod tests {
             assert!(pts.len() >= 12, "r = {r}: {} points", pts.len());
             let polygon: Vec<u32> = (0..pts.len() as u32).collect();
             for _ in 0..5 {
-                dt.triangulate(&pts, &polygon);
+                dt.triangulate(&pts, &polygon, false);
                 check(&pts, &dt, true);
             }
             // Random subsets, in a larger array with unused points.
@@ -466,7 +524,7 @@ mod tests {
                     .filter(|_| rng.gen_bool(0.5))
                     .collect();
                 if sub.len() >= 3 {
-                    dt.triangulate(&pts, &sub);
+                    dt.triangulate(&pts, &sub, false);
                     let local: Vec<Point> = sub.iter().map(|&v| pts[v as usize]).collect();
                     check(&local, &dt, true);
                 }
@@ -488,9 +546,61 @@ mod tests {
             assert!(pts.len() >= 12, "{m} {n}: {} points", pts.len());
             let polygon: Vec<u32> = (0..pts.len() as u32).collect();
             for _ in 0..5 {
-                dt.triangulate(&pts, &polygon);
+                dt.triangulate(&pts, &polygon, false);
                 check(&pts, &dt, true);
             }
+        }
+    }
+
+    /// Weakly convex polygons (points on the sides of an integer polygon,
+    /// exactly collinear, many cocircular quadruples): a triangulation
+    /// with every circumcircle empty, no flat triangle (`check` asserts
+    /// ccw triangles), for every seed of the deletion order; also one
+    /// strict corner with every other vertex on one side.
+    #[test]
+    fn straight_angles_give_a_delaunay_triangulation() {
+        let mut rng = StdRng::seed_from_u64(6);
+        let mut dt = ConvexDelaunay::new();
+        let shapes: [&[Point]; 3] = [
+            &[[0.0, 0.0], [12.0, 0.0], [3.0, 12.0]],
+            &[[0.0, 0.0], [12.0, 0.0], [12.0, 12.0], [0.0, 12.0]],
+            &[
+                [0.0, 0.0],
+                [60.0, 0.0],
+                [60.0, 24.0],
+                [36.0, 48.0],
+                [0.0, 12.0],
+            ],
+        ];
+        for corners in shapes {
+            let k = corners.len();
+            for _ in 0..200 {
+                let mut pts = Vec::new();
+                for i in 0..k {
+                    let (a, b) = (corners[i], corners[(i + 1) % k]);
+                    // Scaled by 12: the side points are exact integers.
+                    pts.push([12.0 * a[0], 12.0 * a[1]]);
+                    for t in 1..12 {
+                        if rng.gen_bool(0.5) {
+                            let t = t as f64;
+                            pts.push([
+                                12.0 * a[0] + t * (b[0] - a[0]),
+                                12.0 * a[1] + t * (b[1] - a[1]),
+                            ]);
+                        }
+                    }
+                }
+                let polygon: Vec<u32> = (0..pts.len() as u32).collect();
+                dt.triangulate(&pts, &polygon, true);
+                check(&pts, &dt, true);
+            }
+        }
+        let mut pts: Vec<Point> = (0..500).map(|i| [i as f64, 0.0]).collect();
+        pts.push([7.0, 3.0]);
+        let polygon: Vec<u32> = (0..pts.len() as u32).collect();
+        for _ in 0..5 {
+            dt.triangulate(&pts, &polygon, true);
+            check(&pts, &dt, true);
         }
     }
 
@@ -506,7 +616,7 @@ mod tests {
             let polygon: Vec<u32> = (0..k as u32).collect();
             let mut total = 0;
             for _ in 0..3 {
-                let flips = dt.triangulate(&pts, &polygon);
+                let flips = dt.triangulate(&pts, &polygon, false);
                 assert_eq!(dt.triangles().len(), k - 2);
                 assert_eq!(dt.diagonals().count(), k - 3);
                 total += flips;

@@ -17,7 +17,7 @@
 //! | input | algorithm | module |
 //! |---|---|---|
 //! | semicircular convex polygon (§1 conditions (i), (ii)) | ear heap, Thm 4.3, O(n log n) | [`semicircular`](self) |
-//! | strictly convex position | recursive splitting, Thm 4.2, O(n) space | [`convex`](self) |
+//! | convex position, strictly or weakly (points on hull edges) | recursive splitting, Thm 4.2, O(n) space | [`convex`](self) |
 //! | anything else | length rounds with closed-vertex retirement | [`general`](self) |
 //!
 //! The result is the same in every case; the tests check that edge for edge.
@@ -33,9 +33,9 @@ mod semicircular;
 
 use super::{CriterionInfo, Diagnostics, Optimality, Options, Requirement, Solved};
 use crate::error::Result;
-use crate::kernel::Point;
+use crate::kernel::{orient_sign, Point};
 use crate::parallel::prelude::*;
-use crate::spatial::{convex_hull_cycle, is_strictly_convex_cycle};
+use crate::spatial::convex_hull_cycle;
 use crate::structures::{PlanarGraph, PointSet, Triangulation};
 use crate::timing::{Phase, Stopwatch};
 
@@ -112,17 +112,23 @@ pub(crate) fn greedy_triangulation_timed(
 ) -> Result<(Triangulation, GreedyAlgorithm)> {
     let mut stopwatch = Stopwatch::new(phases);
     let pts = points.points();
-    let (triangles, algorithm) = match convex_polygon(pts) {
-        Some(polygon) => match semicircular::base_rotation(pts, &polygon) {
-            Some(rotated) => (
-                triangles_of(pts, &semicircular::greedy_semicircular(pts, &rotated)),
-                GreedyAlgorithm::Semicircular,
-            ),
-            None => (
-                triangles_of(pts, &convex::greedy_convex(pts, &polygon)),
-                GreedyAlgorithm::Convex,
-            ),
-        },
+    let (triangles, algorithm) = match weakly_convex_polygon(pts) {
+        Some((polygon, straight_angles)) => {
+            // Thm 4.3's ear heap assumes a strictly convex polygon.
+            let rotated = (!straight_angles)
+                .then(|| semicircular::base_rotation(pts, &polygon))
+                .flatten();
+            match rotated {
+                Some(rotated) => (
+                    triangles_of(pts, &semicircular::greedy_semicircular(pts, &rotated)),
+                    GreedyAlgorithm::Semicircular,
+                ),
+                None => (
+                    triangles_of(pts, &convex::greedy_convex(pts, &polygon, straight_angles)),
+                    GreedyAlgorithm::Convex,
+                ),
+            }
+        }
         None => {
             stopwatch.lap("shape test");
             let triangles = stopwatch.nested(|phases| general::greedy_general(pts, phases))?;
@@ -143,8 +149,9 @@ pub fn greedy(points: &PointSet) -> Result<Triangulation> {
 }
 
 /// GT by one named algorithm, as distinct-index edges `[min, max]`, sorted.
-/// `Convex` and `Semicircular` return `None` when the input is not in
-/// strictly convex position / not semicircular. For tests and benchmarks.
+/// `Convex` returns `None` when the input is not in (weakly) convex
+/// position, `Semicircular` when it is not a semicircular strictly convex
+/// polygon. For tests and benchmarks.
 #[cfg(any(test, feature = "internals"))]
 pub fn greedy_edges_by(points: &PointSet, algorithm: GreedyAlgorithm) -> Option<Vec<[u32; 2]>> {
     let pts = points.points();
@@ -158,7 +165,10 @@ pub fn greedy_edges_by(points: &PointSet, algorithm: GreedyAlgorithm) -> Option<
                 .map(|e| e.map(|i| points.distinct_index(i)))
                 .collect()
         }
-        GreedyAlgorithm::Convex => convex::greedy_convex(pts, &convex_polygon(pts)?),
+        GreedyAlgorithm::Convex => {
+            let (polygon, straight_angles) = weakly_convex_polygon(pts)?;
+            convex::greedy_convex(pts, &polygon, straight_angles)
+        }
         GreedyAlgorithm::Semicircular => {
             let rotated = semicircular::base_rotation(pts, &convex_polygon(pts)?)?;
             semicircular::greedy_semicircular(pts, &rotated)
@@ -326,17 +336,48 @@ pub(crate) fn triangles_of(points: &[Point], edges: &[[u32; 2]]) -> Vec<[u32; 3]
 }
 
 /// The hull as a strictly convex polygon (ccw), or `None` if some point is
-/// not a hull vertex or three hull vertices are collinear.
-///
-/// Collinear boundary points make a degenerate convex polygon; those inputs go
-/// to the general algorithm, since Fact 3.1 and the splitting arguments of
-/// §4 (Levcopoulos & Lingas) assume no three vertices are collinear.
+/// not a hull vertex or three hull vertices are collinear (the inputs of the
+/// semicircular algorithm, Levcopoulos & Lingas §1).
+#[cfg(any(test, feature = "internals"))]
 pub(crate) fn convex_polygon(points: &[Point]) -> Option<Vec<u32>> {
     let hull = convex_hull_cycle(points);
     if hull.len() != points.len() {
         return None;
     }
-    is_strictly_convex_cycle(points, &hull).then_some(hull)
+    crate::spatial::is_strictly_convex_cycle(points, &hull).then_some(hull)
+}
+
+/// The hull cycle (ccw, points on hull edges included) when every point is
+/// on it and they are not all collinear, with whether some vertex has a
+/// straight angle (weakly, not strictly, convex position). The convex
+/// algorithm's module docs explain why GT is then still the splitting of
+/// this polygon.
+fn weakly_convex_polygon(points: &[Point]) -> Option<(Vec<u32>, bool)> {
+    let hull = convex_hull_cycle(points);
+    let k = hull.len();
+    if k < 3 || k != points.len() {
+        return None;
+    }
+    let p = |c: usize| points[hull[c % k] as usize];
+    let (mut left, mut straight) = (false, false);
+    for c in 0..k {
+        match orient_sign(p(c), p(c + 1), p(c + 2)) {
+            1.. => left = true,
+            0 => straight = true,
+            // A hull cycle never turns right; keep the general algorithm
+            // if it ever did.
+            _ => return None,
+        }
+    }
+    left.then_some((hull, straight))
+}
+
+/// Are all points on the boundary of their convex hull, not all on one line
+/// (weakly convex position: [`greedy_triangulation`] runs the convex
+/// algorithm)?
+#[cfg(any(test, feature = "internals"))]
+pub fn is_weakly_convex_position(points: &PointSet) -> bool {
+    weakly_convex_polygon(points.points()).is_some()
 }
 
 /// Is every point a vertex of a strictly convex polygon (no three collinear)?
