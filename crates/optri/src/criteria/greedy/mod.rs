@@ -112,20 +112,23 @@ pub(crate) fn greedy_triangulation_timed(
 ) -> Result<(Triangulation, GreedyAlgorithm)> {
     let mut stopwatch = Stopwatch::new(phases);
     let pts = points.points();
-    let (triangles, algorithm) = match convex_polygon(pts) {
-        Some(polygon) => match semicircular::base_rotation(pts, &polygon) {
+    // One hull for the shape test and the general algorithm's boundary.
+    let hull = convex_hull_cycle(pts);
+    let (triangles, algorithm) = match is_convex_polygon(pts, &hull).then_some(hull.as_slice()) {
+        Some(polygon) => match semicircular::base_rotation(pts, polygon) {
             Some(rotated) => (
                 triangles_of(pts, &semicircular::greedy_semicircular(pts, &rotated)),
                 GreedyAlgorithm::Semicircular,
             ),
             None => (
-                triangles_of(pts, &convex::greedy_convex(pts, &polygon)),
+                triangles_of(pts, &convex::greedy_convex(pts, polygon)),
                 GreedyAlgorithm::Convex,
             ),
         },
         None => {
             stopwatch.lap("shape test");
-            let triangles = stopwatch.nested(|phases| general::greedy_general(pts, phases))?;
+            let triangles =
+                stopwatch.nested(|phases| general::greedy_general(pts, &hull, phases))?;
             (triangles, GreedyAlgorithm::General)
         }
     };
@@ -150,7 +153,8 @@ pub fn greedy_edges_by(points: &PointSet, algorithm: GreedyAlgorithm) -> Option<
     let pts = points.points();
     let edges = match algorithm {
         GreedyAlgorithm::General => {
-            let triangles = general::greedy_general(pts, &mut Vec::new()).ok()?;
+            let triangles =
+                general::greedy_general(pts, &convex_hull_cycle(pts), &mut Vec::new()).ok()?;
             // `Triangulation::edges` works on input indices; map them back.
             Triangulation::from_distinct(points, triangles)
                 .edges()
@@ -331,12 +335,16 @@ pub(crate) fn triangles_of(points: &[Point], edges: &[[u32; 2]]) -> Vec<[u32; 3]
 /// Collinear boundary points make a degenerate convex polygon; those inputs go
 /// to the general algorithm, since Fact 3.1 and the splitting arguments of
 /// §4 (Levcopoulos & Lingas) assume no three vertices are collinear.
+#[cfg(any(test, feature = "internals"))]
 pub(crate) fn convex_polygon(points: &[Point]) -> Option<Vec<u32>> {
     let hull = convex_hull_cycle(points);
-    if hull.len() != points.len() {
-        return None;
-    }
-    is_strictly_convex_cycle(points, &hull).then_some(hull)
+    is_convex_polygon(points, &hull).then_some(hull)
+}
+
+/// Is `hull` (the [`convex_hull_cycle`] of `points`) a strictly convex
+/// polygon through every point (the test of `convex_polygon`)?
+fn is_convex_polygon(points: &[Point], hull: &[u32]) -> bool {
+    hull.len() == points.len() && is_strictly_convex_cycle(points, hull)
 }
 
 /// Is every point a vertex of a strictly convex polygon (no three collinear)?
