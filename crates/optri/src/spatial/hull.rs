@@ -6,20 +6,14 @@
 //! convex hulls in two dimensions*, 1979) with exact orientation, O(n log n).
 
 use crate::kernel::{orient_sign, Point};
-use crate::parallel::prelude::*;
 
 /// Distinct-point indices of the hull in counter-clockwise order, starting at
 /// the lexicographically smallest point; points on hull edges are included.
 pub(crate) fn convex_hull_cycle(points: &[Point]) -> Vec<u32> {
     let mut order: Vec<u32> = (0..points.len() as u32).collect();
-    // Lexicographic, then by index: a total order, so the parallel sort's
-    // result does not depend on the thread count (the sort is most of the
-    // hull's time at 10⁶ points).
-    order.par_sort_unstable_by(|&a, &b| {
+    order.sort_unstable_by(|&a, &b| {
         let (p, q) = (points[a as usize], points[b as usize]);
-        p[0].total_cmp(&q[0])
-            .then(p[1].total_cmp(&q[1]))
-            .then(a.cmp(&b))
+        p[0].total_cmp(&q[0]).then(p[1].total_cmp(&q[1]))
     });
     let mut hull: Vec<u32> = Vec::with_capacity(points.len());
     let chain = |hull: &mut Vec<u32>, idx: &mut dyn Iterator<Item = u32>, floor: usize| {
