@@ -157,7 +157,12 @@ pub(crate) fn run(args: DemoArgs) -> CliResult<()> {
     std::fs::write(&args.output, svg)
         .map_err(|e| format!("cannot write '{}': {e}", args.output.display()))?;
     // The label column fits the longest label ("maxmin-area (uncertified)").
-    let width = results.iter().map(|r| r.label.len()).max().unwrap_or(0).max(9);
+    let width = results
+        .iter()
+        .map(|r| r.label.len())
+        .max()
+        .unwrap_or(0)
+        .max(9);
     text.push_str(&format!(
         "\n{:<width$} {:<7} {:>10} {:>12} {:>10} {:>10} {:>10} {:>10}\n",
         "criterion",

@@ -112,11 +112,13 @@ pub(crate) fn greedy_triangulation_timed(
 ) -> Result<(Triangulation, GreedyAlgorithm)> {
     let mut stopwatch = Stopwatch::new(phases);
     let pts = points.points();
-    let (triangles, algorithm) = match weakly_convex_polygon(pts) {
-        Some((polygon, straight_angles)) => {
+    // One hull for the shape test and the general algorithm's boundary.
+    let hull = convex_hull_cycle(pts);
+    let (triangles, algorithm) = match weakly_convex_polygon(pts, &hull) {
+        Some(straight_angles) => {
             // Thm 4.3's ear heap assumes a strictly convex polygon.
             let rotated = (!straight_angles)
-                .then(|| semicircular::base_rotation(pts, &polygon))
+                .then(|| semicircular::base_rotation(pts, &hull))
                 .flatten();
             match rotated {
                 Some(rotated) => (
@@ -124,14 +126,15 @@ pub(crate) fn greedy_triangulation_timed(
                     GreedyAlgorithm::Semicircular,
                 ),
                 None => (
-                    triangles_of(pts, &convex::greedy_convex(pts, &polygon, straight_angles)),
+                    triangles_of(pts, &convex::greedy_convex(pts, &hull, straight_angles)),
                     GreedyAlgorithm::Convex,
                 ),
             }
         }
         None => {
             stopwatch.lap("shape test");
-            let triangles = stopwatch.nested(|phases| general::greedy_general(pts, phases))?;
+            let triangles =
+                stopwatch.nested(|phases| general::greedy_general(pts, &hull, phases))?;
             (triangles, GreedyAlgorithm::General)
         }
     };
@@ -157,7 +160,8 @@ pub fn greedy_edges_by(points: &PointSet, algorithm: GreedyAlgorithm) -> Option<
     let pts = points.points();
     let edges = match algorithm {
         GreedyAlgorithm::General => {
-            let triangles = general::greedy_general(pts, &mut Vec::new()).ok()?;
+            let triangles =
+                general::greedy_general(pts, &convex_hull_cycle(pts), &mut Vec::new()).ok()?;
             // `Triangulation::edges` works on input indices; map them back.
             Triangulation::from_distinct(points, triangles)
                 .edges()
@@ -166,7 +170,8 @@ pub fn greedy_edges_by(points: &PointSet, algorithm: GreedyAlgorithm) -> Option<
                 .collect()
         }
         GreedyAlgorithm::Convex => {
-            let (polygon, straight_angles) = weakly_convex_polygon(pts)?;
+            let polygon = convex_hull_cycle(pts);
+            let straight_angles = weakly_convex_polygon(pts, &polygon)?;
             convex::greedy_convex(pts, &polygon, straight_angles)
         }
         GreedyAlgorithm::Semicircular => {
@@ -347,13 +352,12 @@ pub(crate) fn convex_polygon(points: &[Point]) -> Option<Vec<u32>> {
     crate::spatial::is_strictly_convex_cycle(points, &hull).then_some(hull)
 }
 
-/// The hull cycle (ccw, points on hull edges included) when every point is
-/// on it and they are not all collinear, with whether some vertex has a
-/// straight angle (weakly, not strictly, convex position). The convex
-/// algorithm's module docs explain why GT is then still the splitting of
-/// this polygon.
-fn weakly_convex_polygon(points: &[Point]) -> Option<(Vec<u32>, bool)> {
-    let hull = convex_hull_cycle(points);
+/// Given `hull`, the [`convex_hull_cycle`] of `points` (ccw, points on hull
+/// edges included): when every point is on it and they are not all
+/// collinear, whether some vertex has a straight angle (weakly, not
+/// strictly, convex position). The convex algorithm's module docs explain
+/// why GT is then still the splitting of this polygon.
+fn weakly_convex_polygon(points: &[Point], hull: &[u32]) -> Option<bool> {
     let k = hull.len();
     if k < 3 || k != points.len() {
         return None;
@@ -369,7 +373,7 @@ fn weakly_convex_polygon(points: &[Point]) -> Option<(Vec<u32>, bool)> {
             _ => return None,
         }
     }
-    left.then_some((hull, straight))
+    left.then_some(straight)
 }
 
 /// Are all points on the boundary of their convex hull, not all on one line
@@ -377,7 +381,8 @@ fn weakly_convex_polygon(points: &[Point]) -> Option<(Vec<u32>, bool)> {
 /// algorithm)?
 #[cfg(any(test, feature = "internals"))]
 pub fn is_weakly_convex_position(points: &PointSet) -> bool {
-    weakly_convex_polygon(points.points()).is_some()
+    let points = points.points();
+    weakly_convex_polygon(points, &convex_hull_cycle(points)).is_some()
 }
 
 /// Is every point a vertex of a strictly convex polygon (no three collinear)?

@@ -94,7 +94,7 @@ use crate::kernel::{
     compare_equal_lengths_symbolic, compare_lengths, exact_squared_length, orient_sign, Point,
 };
 use crate::parallel::prelude::*;
-use crate::spatial::{bounding_box, convex_hull_cycle, fmax, fmin, morton_order};
+use crate::spatial::{bounding_box, fmax, fmin, morton_order};
 use crate::timing::{Phase, Stopwatch};
 use guard::{next_floor, next_growth, round_grid, MIN_RELATIVE_STEP, NO_LINE, THRESHOLD_GROWTH};
 use partial::Partial;
@@ -159,22 +159,37 @@ fn shorter_than(p: Point, q: Point, t: f64) -> bool {
     compare_lengths(p, q, [0.0, 0.0], [t, 0.0]) == Ordering::Less
 }
 
-/// GT triangles of `points` (distinct, not all collinear), counter-clockwise.
+/// GT triangles of `points` (distinct, not all collinear), counter-clockwise;
+/// `hull` is their [`convex_hull_cycle`](crate::spatial::convex_hull_cycle) (computed once, by the caller's
+/// shape test).
 ///
 /// Works on a copy renumbered in Z-order, so that neighbouring vertices sit
 /// close in memory; ties are broken on the original indices, because the
 /// symbolic perturbation depends on them: the renumbered copy is only used
 /// where an index never decides a tie.
-pub(super) fn greedy_general(original: &[Point], phases: &mut Vec<Phase>) -> Result<Vec<[u32; 3]>> {
+pub(super) fn greedy_general(
+    original: &[Point],
+    hull: &[u32],
+    phases: &mut Vec<Phase>,
+) -> Result<Vec<[u32; 3]>> {
     if let Some(fan) = single_fan(original) {
         return Ok(fan);
     }
     let to_original = morton_order(original);
     let local: Vec<Point> = to_original.iter().map(|&v| original[v as usize]).collect();
+    // The hull in local indices: the same cycle `convex_hull_cycle(&local)`
+    // returns, as it depends only on the coordinates (distinct points,
+    // lexicographic start).
+    let mut to_local = vec![0u32; original.len()];
+    for (l, &v) in to_original.iter().enumerate() {
+        to_local[v as usize] = l as u32;
+    }
+    let hull: Vec<u32> = hull.iter().map(|&v| to_local[v as usize]).collect();
+    drop(to_local);
     let renumbering = Renumbering {
         to_original: &to_original,
     };
-    let mut triangles: Vec<[u32; 3]> = greedy_rounds(&local, &renumbering, phases)?
+    let mut triangles: Vec<[u32; 3]> = greedy_rounds(&local, &hull, &renumbering, phases)?
         .into_par_iter()
         .map(|t| smallest_corner_first(t.map(|v| to_original[v as usize])))
         .collect();
@@ -288,6 +303,7 @@ impl Renumbering<'_> {
 /// through `renumbering`): the GT's triangles, each by its smallest corner.
 fn greedy_rounds(
     points: &[Point],
+    hull: &[u32],
     renumbering: &Renumbering,
     phases: &mut Vec<Phase>,
 ) -> Result<Vec<[u32; 3]>> {
@@ -295,8 +311,7 @@ fn greedy_rounds(
     let n = points.len();
     let bbox = bounding_box(points);
     let (w, h) = (bbox[2] - bbox[0], bbox[3] - bbox[1]);
-    let hull = convex_hull_cycle(points);
-    let mut g = Partial::new(points, &hull);
+    let mut g = Partial::new(points, hull);
     let target = 3 * n - 3 - hull.len();
     let diagonal = (w * w + h * h).sqrt();
     // `T_0` is about 1.6 mean spacings (a flat box still gets a sensible
