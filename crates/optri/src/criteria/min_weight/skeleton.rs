@@ -89,12 +89,16 @@ pub(crate) fn diamond_candidates(pts: &[Point]) -> Vec<[u32; 2]> {
         })
         .collect();
     let hull = convex_hull_cycle(pts);
+    // Exact reservation: pushing onto the full collected vector would
+    // double its capacity, and the candidates live through every phase.
+    edges.reserve_exact(hull.len());
     for i in 0..hull.len() {
         let (a, b) = (hull[i], hull[(i + 1) % hull.len()]);
         edges.push([a.min(b), a.max(b)]);
     }
     edges.par_sort_unstable();
     edges.dedup();
+    edges.shrink_to_fit();
     edges
 }
 
@@ -569,8 +573,13 @@ pub(crate) fn lmt_skeleton(
     // The loop needs no crossings; certainty does, among the survivors only
     // (far fewer and shorter than the filter's candidates).
     let state = run_lmt_loop(pts, grid, &mut skeleton);
+    // The per-edge triangle lists served the loop alone: freed before the
+    // kept triangles are collected (the phase's peak).
+    skeleton.tri_offsets = Vec::new();
+    skeleton.tri_list = Vec::new();
+    skeleton.tri_left_len = Vec::new();
     // Keep the empty triangles whose edges are all left (the faces' only
-    // use); the per-edge triangle lists served the loop alone.
+    // use).
     let sk = &skeleton;
     let kept: Vec<([u32; 3], [u32; 3])> = (0..sk.loop_triangles.len() as u32)
         .into_par_iter()
@@ -590,9 +599,6 @@ pub(crate) fn lmt_skeleton(
     drop(state);
     skeleton.triangles = kept;
     skeleton.loop_triangles = Vec::new();
-    skeleton.tri_offsets = Vec::new();
-    skeleton.tri_list = Vec::new();
-    skeleton.tri_left_len = Vec::new();
     // Crossings: edges in length classes of powers of two, each class in a
     // grid of its midpoints; an edge of class k (length < 2^(k+1)·base)
     // meeting segment e has its midpoint within 2^k·base of e.
