@@ -89,12 +89,16 @@ pub(crate) fn diamond_candidates(pts: &[Point]) -> Vec<[u32; 2]> {
         })
         .collect();
     let hull = convex_hull_cycle(pts);
+    // Exact reservation: pushing onto the full collected vector would
+    // double its capacity, and the candidates live through every phase.
+    edges.reserve_exact(hull.len());
     for i in 0..hull.len() {
         let (a, b) = (hull[i], hull[(i + 1) % hull.len()]);
         edges.push([a.min(b), a.max(b)]);
     }
     edges.par_sort_unstable();
     edges.dedup();
+    edges.shrink_to_fit();
     edges
 }
 
@@ -331,9 +335,13 @@ pub(crate) struct Skeleton {
     /// Convex-hull edge (between consecutive hull points).
     pub hull: Vec<bool>,
     /// The empty triangles (counter-clockwise) whose three edges are left
-    /// by the LMT loop, with their edge ids. During the loop: every
-    /// non-flat triangle of three candidate edges.
+    /// by the LMT loop, with their edge ids (filled after the loop).
     pub triangles: Vec<([u32; 3], [u32; 3])>,
+    /// During the loop: every non-flat triangle of three candidate edges, as
+    /// its edge ids `[c0c1, c1c2, c2c0]` for its counter-clockwise corners
+    /// (the corners follow from the edges: 12 bytes a triangle instead of
+    /// 24, the loop's largest array); emptied after the loop.
+    loop_triangles: Vec<[u32; 3]>,
     /// CSR per edge: its triangles on the left of `u → v` (u < v), then
     /// right; emptied after the loop.
     tri_offsets: Vec<u32>,
@@ -360,6 +368,17 @@ impl Skeleton {
     /// The neighbours of `u` with edge ids.
     pub fn neighbours(&self, u: u32) -> &[(u32, u32)] {
         &self.adj[self.adj_offsets[u as usize] as usize..self.adj_offsets[u as usize + 1] as usize]
+    }
+
+    /// The counter-clockwise corners of loop triangle `t`: `c1` is the
+    /// endpoint its first two edges share.
+    fn corners(&self, t: u32) -> [u32; 3] {
+        let [a, b, _] = self.loop_triangles[t as usize];
+        let ([x, y], [z, w]) = (self.edges[a as usize], self.edges[b as usize]);
+        let c1 = if x == z || x == w { x } else { y };
+        let c0 = if x == c1 { y } else { x };
+        let c2 = if z == c1 { w } else { z };
+        [c0, c1, c2]
     }
 
     /// Triangles of edge `e` on its left (`u → v`) and right.
@@ -458,6 +477,7 @@ pub(crate) fn lmt_skeleton(
         certain: vec![false; m],
         hull: vec![false; m],
         triangles: Vec::new(),
+        loop_triangles: Vec::new(),
         tri_offsets: Vec::new(),
         tri_list: Vec::new(),
         tri_left_len: vec![0; m],
@@ -477,47 +497,48 @@ pub(crate) fn lmt_skeleton(
     // (u, v): the common neighbours w > v of u and v, by merging their
     // sorted lists. Whether one is empty is decided only when the loop needs
     // it (most are never asked: their edge fails the length test first).
+    // Counted first, then written in place: collecting them in one pass
+    // (rayon's list of growing vectors) held about twice the final array at
+    // the phase's peak.
     let sk = &skeleton;
-    let triangles: Vec<([u32; 3], [u32; 3])> = (0..m as u32)
+    let counts: Vec<u32> = (0..m as u32)
         .into_par_iter()
         .with_min_len(256)
-        .flat_map_iter(|e| {
-            let [u, v] = sk.edges[e as usize];
-            let mut found = Vec::new();
-            let (nu, nv) = (sk.neighbours(u), sk.neighbours(v));
-            let (mut i, mut j) = (
-                nu.partition_point(|x| x.0 <= v),
-                nv.partition_point(|x| x.0 <= v),
-            );
-            while i < nu.len() && j < nv.len() {
-                let ((w, uw), (x, vw)) = (nu[i], nv[j]);
-                match w.cmp(&x) {
-                    Ordering::Less => i += 1,
-                    Ordering::Greater => j += 1,
-                    Ordering::Equal => {
-                        i += 1;
-                        j += 1;
-                        let o = orient_sign(pts[u as usize], pts[v as usize], pts[w as usize]);
-                        if o == 0 {
-                            continue;
-                        }
-                        // Emptiness is decided lazily, in the loop.
-                        found.push(if o > 0 {
-                            ([u, v, w], [e, vw, uw])
-                        } else {
-                            ([u, w, v], [uw, vw, e])
-                        });
-                    }
-                }
-            }
-            found
+        .map(|e| {
+            let mut count = 0;
+            triangles_of_edge(pts, sk, e, |_| count += 1);
+            count
         })
         .collect();
+    let total: usize = counts.iter().map(|&c| c as usize).sum();
+    let mut triangles = vec![[0u32; 3]; total];
+    const BLOCK: usize = 1024;
+    let mut pieces = Vec::with_capacity(m.div_ceil(BLOCK));
+    let mut rest: &mut [[u32; 3]] = &mut triangles;
+    for start in (0..m).step_by(BLOCK) {
+        let end = (start + BLOCK).min(m);
+        let len: usize = counts[start..end].iter().map(|&c| c as usize).sum();
+        let (head, tail) = std::mem::take(&mut rest).split_at_mut(len);
+        pieces.push((start..end, head));
+        rest = tail;
+    }
+    drop(counts);
+    pieces.into_par_iter().for_each(|(range, out)| {
+        let mut k = 0;
+        for e in range {
+            triangles_of_edge(pts, sk, e as u32, |ids| {
+                out[k] = ids;
+                k += 1;
+            });
+        }
+    });
     // Per edge (CSR): its triangles on the left of u → v, then on the right.
-    let side_of = |corners: &[u32; 3], s: usize| corners[s] < corners[(s + 1) % 3];
+    skeleton.loop_triangles = triangles;
+    let side_of = |corners: [u32; 3], s: usize| corners[s] < corners[(s + 1) % 3];
     let mut left_len = vec![0u32; m];
     let mut tri_offsets = vec![0u32; m + 1];
-    for (corners, ids) in &triangles {
+    for (t, ids) in skeleton.loop_triangles.iter().enumerate() {
+        let corners = skeleton.corners(t as u32);
         for (s, &e) in ids.iter().enumerate() {
             let e = e as usize;
             tri_offsets[e + 1] += 1;
@@ -531,7 +552,8 @@ pub(crate) fn lmt_skeleton(
     let (mut next_left, mut next_right): (Vec<u32>, Vec<u32>) = (0..m)
         .map(|e| (tri_offsets[e], tri_offsets[e] + left_len[e]))
         .unzip();
-    for (t, (corners, ids)) in triangles.iter().enumerate() {
+    for (t, ids) in skeleton.loop_triangles.iter().enumerate() {
+        let corners = skeleton.corners(t as u32);
         for (s, &e) in ids.iter().enumerate() {
             let e = e as usize;
             // The triangle is on the left of corners[s] → corners[s + 1].
@@ -546,34 +568,37 @@ pub(crate) fn lmt_skeleton(
     }
     drop((next_left, next_right));
     skeleton.tri_left_len = left_len;
-    skeleton.triangles = triangles;
     skeleton.tri_offsets = tri_offsets;
     skeleton.tri_list = tri_list;
     // The loop needs no crossings; certainty does, among the survivors only
     // (far fewer and shorter than the filter's candidates).
     let state = run_lmt_loop(pts, grid, &mut skeleton);
-    // Keep the empty triangles whose edges are all left (the faces' only
-    // use); the per-edge triangle lists served the loop alone.
-    let sk = &skeleton;
-    let kept: Vec<([u32; 3], [u32; 3])> = (0..sk.triangles.len())
-        .into_par_iter()
-        .with_min_len(1024)
-        .filter(|&t| {
-            let (corners, ids) = sk.triangles[t];
-            ids.iter().all(|&f| sk.alive[f as usize])
-                && match state[t] {
-                    TriangleState::Empty => true,
-                    TriangleState::Dead => false,
-                    TriangleState::Unknown => !triangle_has_point(pts, grid, corners),
-                }
-        })
-        .map(|t| sk.triangles[t])
-        .collect();
-    drop(state);
-    skeleton.triangles = kept;
+    // The per-edge triangle lists served the loop alone: freed before the
+    // kept triangles are collected (the phase's peak).
     skeleton.tri_offsets = Vec::new();
     skeleton.tri_list = Vec::new();
     skeleton.tri_left_len = Vec::new();
+    // Keep the empty triangles whose edges are all left (the faces' only
+    // use).
+    let sk = &skeleton;
+    let kept: Vec<([u32; 3], [u32; 3])> = (0..sk.loop_triangles.len() as u32)
+        .into_par_iter()
+        .with_min_len(1024)
+        .filter_map(|t| {
+            let ids = sk.loop_triangles[t as usize];
+            let corners = sk.corners(t);
+            let keep = ids.iter().all(|&f| sk.alive[f as usize])
+                && match state[t as usize] {
+                    TriangleState::Empty => true,
+                    TriangleState::Dead => false,
+                    TriangleState::Unknown => !triangle_has_point(pts, grid, corners),
+                };
+            keep.then_some((corners, ids))
+        })
+        .collect();
+    drop(state);
+    skeleton.triangles = kept;
+    skeleton.loop_triangles = Vec::new();
     // Crossings: edges in length classes of powers of two, each class in a
     // grid of its midpoints; an edge of class k (length < 2^(k+1)·base)
     // meeting segment e has its midpoint within 2^k·base of e.
@@ -636,13 +661,12 @@ pub(crate) fn lmt_skeleton(
         })
         .collect();
     let sk = &skeleton;
-    let crossings: Vec<Vec<u32>> = (0..m as u32)
-        .into_par_iter()
+    // Per surviving edge only (a list header for every filter candidate
+    // cost 24 bytes each, about a third of them survive).
+    let crossings: Vec<Vec<u32>> = alive_ids
+        .par_iter()
         .with_min_len(256)
-        .map(|e| {
-            if !sk.alive[e as usize] {
-                return Vec::new();
-            }
+        .map(|&e| {
             let ends = sk.edges[e as usize];
             let (a, b) = (pts[ends[0] as usize], pts[ends[1] as usize]);
             // Each conflicting pair once, from its smaller id (the relation
@@ -664,7 +688,8 @@ pub(crate) fn lmt_skeleton(
         })
         .collect();
     let mut cross_offsets = vec![0u32; m + 1];
-    for (e, list) in crossings.iter().enumerate() {
+    for (&e, list) in alive_ids.iter().zip(&crossings) {
+        let e = e as usize;
         cross_offsets[e + 1] += list.len() as u32;
         for &f in list {
             cross_offsets[f as usize + 1] += 1;
@@ -677,7 +702,8 @@ pub(crate) fn lmt_skeleton(
     // its smaller partners (in increasing order), then its own larger ones.
     let mut cross_list = vec![0u32; cross_offsets[m] as usize];
     let mut next: Vec<u32> = cross_offsets[..m].to_vec();
-    for (e, list) in crossings.into_iter().enumerate() {
+    for (&e, list) in alive_ids.iter().zip(crossings) {
+        let e = e as usize;
         for f in list {
             cross_list[next[e] as usize] = f;
             next[e] += 1;
@@ -692,6 +718,36 @@ pub(crate) fn lmt_skeleton(
             skeleton.alive[e] && (skeleton.hull[e] || skeleton.crossing(e as u32).is_empty());
     }
     skeleton
+}
+
+/// Visits the non-flat triangles `u < v < w` of candidate edges found from
+/// edge `e = (u, v)` (the common neighbours `w > v` of `u` and `v`, by
+/// merging their sorted lists), as edge ids in counter-clockwise order of
+/// the corners. Emptiness is decided lazily, in the loop.
+fn triangles_of_edge(pts: &[Point], sk: &Skeleton, e: u32, mut visit: impl FnMut([u32; 3])) {
+    let [u, v] = sk.edges[e as usize];
+    let (nu, nv) = (sk.neighbours(u), sk.neighbours(v));
+    let (mut i, mut j) = (
+        nu.partition_point(|x| x.0 <= v),
+        nv.partition_point(|x| x.0 <= v),
+    );
+    while i < nu.len() && j < nv.len() {
+        let ((w, uw), (x, vw)) = (nu[i], nv[j]);
+        match w.cmp(&x) {
+            Ordering::Less => i += 1,
+            Ordering::Greater => j += 1,
+            Ordering::Equal => {
+                i += 1;
+                j += 1;
+                let o = orient_sign(pts[u as usize], pts[v as usize], pts[w as usize]);
+                if o > 0 {
+                    visit([e, vw, uw]); // corners u, v, w
+                } else if o < 0 {
+                    visit([uw, vw, e]); // corners u, w, v
+                }
+            }
+        }
+    }
 }
 
 /// What the LMT loop knows of a candidate triangle.
@@ -716,7 +772,7 @@ fn valid_triangle(
 ) -> bool {
     let slot = &mut state[t as usize];
     if *slot == TriangleState::Unknown {
-        *slot = if triangle_has_point(pts, grid, sk.triangles[t as usize].0) {
+        *slot = if triangle_has_point(pts, grid, sk.corners(t)) {
             TriangleState::Dead
         } else {
             TriangleState::Empty
@@ -738,8 +794,11 @@ fn locally_minimal(
     let [u, v] = sk.edges[e as usize];
     let (left, right) = sk.sides(e);
     let apex = |t: u32| {
-        let (c, _) = sk.triangles[t as usize];
-        pts[*c.iter().find(|&&x| x != u && x != v).unwrap() as usize]
+        // The endpoint off `uv` of one of the triangle's other edges.
+        let ids = sk.loop_triangles[t as usize];
+        let f = if ids[0] == e { ids[1] } else { ids[0] };
+        let [x, y] = sk.edges[f as usize];
+        pts[if x == u || x == v { y } else { x } as usize]
     };
     let (a, b) = (pts[u as usize], pts[v as usize]);
     for &tl in left {
@@ -772,7 +831,7 @@ fn locally_minimal(
 /// such a triangle are queued again (an untested triangle supported none).
 fn run_lmt_loop(pts: &[Point], grid: &SparseGrid<u32>, sk: &mut Skeleton) -> Vec<TriangleState> {
     let m = sk.edges.len();
-    let mut state = vec![TriangleState::Unknown; sk.triangles.len()];
+    let mut state = vec![TriangleState::Unknown; sk.loop_triangles.len()];
     let mut queued = vec![true; m];
     let mut work: Vec<u32> = (0..m as u32).rev().collect();
     while let Some(e) = work.pop() {
@@ -790,7 +849,7 @@ fn run_lmt_loop(pts: &[Point], grid: &SparseGrid<u32>, sk: &mut Skeleton) -> Vec
             if before != TriangleState::Empty {
                 continue;
             }
-            for f in sk.triangles[t as usize].1 {
+            for f in sk.loop_triangles[t as usize] {
                 if f != e && sk.alive[f as usize] && !queued[f as usize] {
                     queued[f as usize] = true;
                     work.push(f);
