@@ -215,21 +215,36 @@ impl FaceProgram {
     /// it only chooses the branching edge of [`super::faces`]' branch and
     /// bound, which is sound whatever it is.
     pub(super) fn primal(&self) -> Option<Vec<f64>> {
+        let (problem, xs) = self.problem(false);
+        let outcome = problem.solve().ok()?;
+        let solution = outcome.solution()?;
+        Some(xs.iter().map(|&x| solution.var_value(x)).collect())
+    }
+
+    /// The program for `microlp` (`min c·x`, `A x = b`, one variable per
+    /// triangle, binary or in `[0, 1]`), with the rounded midpoints of the
+    /// certified costs, scaled: the solver's answer is only a candidate.
+    fn problem(&self, binary: bool) -> (microlp::Problem, Vec<microlp::Variable>) {
         use microlp::{ComparisonOp, OptimizationDirection, Problem};
         let scale = self.scale();
         let mut problem = Problem::new(OptimizationDirection::Minimize);
         let xs: Vec<microlp::Variable> = self
             .cost
             .iter()
-            .map(|c| problem.add_var(0.5 * (c.lo + c.hi) / scale, (0.0, 1.0)))
+            .map(|c| {
+                let cost = 0.5 * (c.lo + c.hi) / scale;
+                if binary {
+                    problem.add_binary_var(cost)
+                } else {
+                    problem.add_var(cost, (0.0, 1.0))
+                }
+            })
             .collect();
         for (r, row) in self.rows(&xs).into_iter().enumerate() {
             let rhs = if self.boundary_row[r] { 1.0 } else { 0.0 };
             problem.add_constraint(row, ComparisonOp::Eq, rhs);
         }
-        let outcome = problem.solve().ok()?;
-        let solution = outcome.solution()?;
-        Some(xs.iter().map(|&x| solution.var_value(x)).collect())
+        (problem, xs)
     }
 
     /// The rows of the program over the variables `xs` (one per triangle).
@@ -248,19 +263,8 @@ impl FaceProgram {
     /// [`INCUMBENT_NODES`] nodes, `None` if it has none. Untrusted: the
     /// caller re-checks it as a triangulation.
     pub(super) fn integer_solution(&self) -> Option<Vec<usize>> {
-        use microlp::{ComparisonOp, OptimizationDirection, Problem, SolveOptions};
-        let scale = self.scale();
-        let mut problem = Problem::new(OptimizationDirection::Minimize);
-        let xs: Vec<microlp::Variable> = self
-            .cost
-            .iter()
-            .map(|c| problem.add_binary_var(0.5 * (c.lo + c.hi) / scale))
-            .collect();
-        for (r, row) in self.rows(&xs).into_iter().enumerate() {
-            let rhs = if self.boundary_row[r] { 1.0 } else { 0.0 };
-            problem.add_constraint(row, ComparisonOp::Eq, rhs);
-        }
-        let mut options = SolveOptions::default();
+        let (problem, xs) = self.problem(true);
+        let mut options = microlp::SolveOptions::default();
         options.node_limit = Some(INCUMBENT_NODES);
         let outcome = problem.solve_with(options).ok()?;
         let solution = outcome.solution()?;
