@@ -1384,4 +1384,86 @@ mod tests {
         assert!(faces >= 3, "only {faces} faces with an inner point");
         assert!(branched >= 2, "only {branched} faces branched");
     }
+
+    /// A node with every inner edge of an optimum forced has only the
+    /// optimum's triangles left, so its certified bound must enclose the
+    /// optimum's inner weight from below, tightly: the forced edges' length
+    /// is counted exactly once (counting it twice or not at all fails).
+    #[test]
+    fn a_node_with_the_optimum_forced_is_bounded_by_its_weight() {
+        let mut checked = 0;
+        for (k, centre) in [(13, [0.0, 0.0]), (15, [3.0, -7.0]), (17, [0.0, 0.0])] {
+            let pts = ring_with(k, centre);
+            let candidates = super::super::skeleton::diamond_candidates(&pts);
+            let grid = super::super::point_grid(&pts);
+            let sk = super::super::skeleton::lmt_skeleton(&pts, &grid, candidates);
+            for region in regions(&pts, &sk).unwrap() {
+                if region.inner.is_empty() {
+                    continue;
+                }
+                let corners_at = corners_of(&region);
+                let inner: HashSet<u32> = region.inner.iter().copied().collect();
+                let face = face_triangles(&pts, &sk, &region, &corners_at, &inner);
+                let reference = search(&pts, &sk, &region, &face, None, FRONT_BUDGET)
+                    .0
+                    .found()
+                    .expect("the plain search decides small wheels");
+                let optimum = inner_edge_weight(&pts, &face.boundary, &reference.triangles);
+                let forced: Vec<u32> = super::super::edges_of(&reference.triangles)
+                    .into_iter()
+                    .filter(|&[a, b]| {
+                        !face.boundary.contains(&(a, b)) && !face.boundary.contains(&(b, a))
+                    })
+                    .map(|[a, b]| sk.edge_id(a, b).expect("an optimum edge is a candidate"))
+                    .collect();
+                assert!(!forced.is_empty(), "wheel {k}: no inner edge");
+                let crossing: HashSet<u32> = forced
+                    .iter()
+                    .flat_map(|&e| sk.crossing(e).iter().copied())
+                    .collect();
+                let node = Node {
+                    bound: 0.0,
+                    kept: face
+                        .tri_edges
+                        .iter()
+                        .map(|ids| !ids.iter().any(|f| crossing.contains(f)))
+                        .collect(),
+                    forced,
+                    searched: true,
+                };
+                // An incumbent a little heavier than the optimum: a correct
+                // bound stays below it, so the node is neither pruned nor
+                // split (every inner edge is forced) and returns its bound.
+                let heavier = optimum.hi * (1.0 + 1e-6);
+                let mut best = Incumbent {
+                    triangles: region.cdt_triangles.clone(),
+                    weight: LengthInterval {
+                        lo: heavier,
+                        hi: heavier,
+                    },
+                };
+                let limits = Limits {
+                    nodes: 10,
+                    node_fronts: 40,
+                };
+                let mut stats = ProgramStats::default();
+                let outcome = evaluate(
+                    &pts, &sk, &region, &face, node, &mut best, limits, &mut stats,
+                );
+                let Evaluated::Abandoned(bound) = outcome else {
+                    panic!("wheel {k}: the node was pruned or split");
+                };
+                assert!(
+                    bound <= optimum.hi,
+                    "wheel {k}: bound {bound} above {optimum:?}"
+                );
+                assert!(
+                    bound >= optimum.lo * (1.0 - 1e-9),
+                    "wheel {k}: bound {bound} far below {optimum:?}"
+                );
+                checked += 1;
+            }
+        }
+        assert!(checked >= 3, "only {checked} faces checked");
+    }
 }
