@@ -226,8 +226,11 @@ fn direction_alive(phi: f64, killers: &[f64]) -> bool {
 /// Are all directions dead beyond `radius`: killed on both sides by the
 /// killers, or leaving the bounding box?
 fn all_directions_dead(a: Point, bbox: [f64; 4], radius: f64, killers: &[f64]) -> bool {
-    // Arcs of directions whose point at `radius` lies outside the box.
-    let mut arcs: Vec<[f64; 2]> = Vec::new();
+    // Arcs of directions whose point at `radius` lies outside the box (at
+    // most four sides times three shifts: fixed arrays, as this runs once
+    // per ring of every point's search).
+    let mut arcs = [[0.0f64; 2]; 12];
+    let mut arc_count = 0;
     let slack = 1e-9 * radius;
     for (distance, centre) in [
         (bbox[2] - a[0], 0.0),
@@ -240,19 +243,26 @@ fn all_directions_dead(a: Point, bbox: [f64; 4], radius: f64, killers: &[f64]) -
             let half = c.acos() - ANGLE_MARGIN;
             if half > 0.0 {
                 for shift in [-TAU, 0.0, TAU] {
-                    arcs.push([centre - half + shift, centre + half + shift]);
+                    arcs[arc_count] = [centre - half + shift, centre + half + shift];
+                    arc_count += 1;
                 }
             }
         }
     }
+    let arcs = &mut arcs[..arc_count];
     arcs.sort_unstable_by(|x, y| x[0].total_cmp(&y[0]));
-    let mut merged: Vec<[f64; 2]> = Vec::new();
-    for arc in arcs {
-        match merged.last_mut() {
-            Some(last) if arc[0] <= last[1] => last[1] = last[1].max(arc[1]),
-            _ => merged.push(arc),
+    let mut merged = [[0.0f64; 2]; 12];
+    let mut merged_count = 0;
+    for &arc in arcs.iter() {
+        if merged_count > 0 && arc[0] <= merged[merged_count - 1][1] {
+            let last = &mut merged[merged_count - 1];
+            last[1] = last[1].max(arc[1]);
+        } else {
+            merged[merged_count] = arc;
+            merged_count += 1;
         }
     }
+    let merged = &merged[..merged_count];
     let covered = |lo: f64, hi: f64| merged.iter().any(|m| m[0] < lo && hi < m[1]);
     let k = killers.len();
     if k == 0 {
@@ -273,10 +283,10 @@ fn all_directions_dead(a: Point, bbox: [f64; 4], radius: f64, killers: &[f64]) -
         // far) or on the right (predecessor `lo` too far), widened.
         let first = [lo - 4.0 * m, hi - DIAMOND_ANGLE + 4.0 * m];
         let second = [lo + DIAMOND_ANGLE - 4.0 * m, hi + 4.0 * m];
-        let parts: Vec<[f64; 2]> = if first[1] >= second[0] {
-            vec![[first[0], second[1]]]
+        let parts = if first[1] >= second[0] {
+            [[first[0], second[1]], [first[0], second[1]]]
         } else {
-            vec![first, second]
+            [first, second]
         };
         for [x, y] in parts {
             if !covered(x, y) {
