@@ -81,6 +81,30 @@ pub fn clustered(rng: &mut StdRng, n: usize, clusters: usize) -> Vec<Point> {
     pts
 }
 
+/// `n` points in `clusters` Gaussian clusters (sizes differ by at most one,
+/// the first clusters take the remainder) with centres uniform in the unit
+/// square and standard deviation `sigma` in each coordinate, drawn by the
+/// Box–Muller transform (two uniforms give the x and y offsets; the first
+/// uniform is taken from `(0, 1]` so that its logarithm is finite). Dense
+/// cores thinning out into sparse tails: the density varies within every
+/// cluster, not only between clusters. Practically no degeneracies.
+pub fn gaussian_clusters(rng: &mut StdRng, n: usize, clusters: usize, sigma: f64) -> Vec<Point> {
+    let mut pts = Vec::with_capacity(n);
+    for c in 0..clusters {
+        let centre = [rng.gen::<f64>(), rng.gen::<f64>()];
+        let count = n / clusters + usize::from(c < n % clusters);
+        for _ in 0..count {
+            let radius = sigma * (-2.0 * (1.0 - rng.gen::<f64>()).ln()).sqrt();
+            let angle = TAU * rng.gen::<f64>();
+            pts.push([
+                centre[0] + radius * angle.cos(),
+                centre[1] + radius * angle.sin(),
+            ]);
+        }
+    }
+    pts
+}
+
 // ---- integer lattices ----
 
 /// `n` integer points drawn independently from `xs × ys` (x first): on a
