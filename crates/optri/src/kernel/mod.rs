@@ -40,6 +40,7 @@
 //! consistent: perturbed lengths are pairwise distinct and perturbed
 //! orientations are never zero, for *distinct* input points.
 
+mod certified_incircle;
 pub(crate) mod expansion;
 mod length_sums;
 mod lune;
