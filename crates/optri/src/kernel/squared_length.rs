@@ -43,11 +43,11 @@ pub struct SquaredLength {
 impl SquaredLength {
     /// The key of the segment `pq`.
     ///
-    /// Error bound. `dx = px − qx = hx + lx` exactly ([`two_diff`], `|lx| ≤
+    /// Error bound. `dx = px − qx = hx + lx` exactly (`two_diff`, `|lx| ≤
     /// u|hx|`), likewise `dy`; so with `Q = hx² + hy²`,
     /// `|pq|² = Q + 2(hx·lx + hy·ly) + lx² + ly²` and `|hx·lx + hy·ly| ≤ uQ`.
-    /// [`two_product`] gives `hx² = xx + exx` exactly (`|exx| ≤ u·xx`), and
-    /// [`two_sum`] `xx + yy = hi + t` exactly (`|t| ≤ u·hi`), so
+    /// `two_product` gives `hx² = xx + exx` exactly (`|exx| ≤ u·xx`), and
+    /// `two_sum` `xx + yy = hi + t` exactly (`|t| ≤ u·hi`), so
     /// `|pq|² = hi + t + exx + eyy + 2(hx·lx + hy·ly) + lx² + ly²`, and `lo`
     /// evaluates the middle terms in `f64`. Since `xx ≥ (1 − u)hx²`, `Q ≤ (1 + 3u)hi`.
     /// Rounding errors, each at most `u` times the rounded result:
@@ -86,11 +86,11 @@ impl SquaredLength {
     /// `B = fl(x.lo − y.lo) = x.lo − y.lo + e_B`, `|e_B| ≤ 4.01u²(x.hi + y.hi)`,
     /// the exact difference is `(x.hi − y.hi) + B − e_B + e_x − e_y`, where
     /// `e_x`, `e_y` are the keys' errors (`≤ 12.02u²·hi` each). The computed
-    /// `gap = fl((x.hi − y.hi) + B)` has the sign of the exact `(x.hi − y.hi)
-    /// + B` and at most `1 + u` times its magnitude; so `|gap| >`
-    /// [`UNDECIDED_GAP`]`·(x.hi + y.hi)` makes that sum exceed `16.03u²(x.hi
-    /// + y.hi) ≥ |e_B| + |e_x| + |e_y|`, and the sign of `gap` is the exact
-    /// sign.
+    /// `gap = fl((x.hi − y.hi) + B)` has the sign of the exact sum
+    /// `(x.hi − y.hi) + B` and at most `1 + u` times its magnitude; so
+    /// `|gap| > UNDECIDED_GAP·(x.hi + y.hi)` makes that sum exceed
+    /// `16.03u²·(x.hi + y.hi) ≥ |e_B| + |e_x| + |e_y|`, and the sign of
+    /// `gap` is the exact sign.
     #[inline]
     pub fn certainly_compare(self, other: Self) -> Option<Ordering> {
         let (x, y) = (self, other);
