@@ -1,5 +1,6 @@
-//! The exact geometry kernel: predicates, the symbolic tie-break, lunes and
-//! reporting metrics. Layer 0: it imports nothing else of the crate.
+//! The exact geometry kernel: predicates, the symbolic tie-break, lunes,
+//! certified squared-length keys and reporting metrics. Layer 0: it imports
+//! nothing else of the crate.
 //!
 //! Every combinatorial decision in optri (orientation, in-circle, which of two
 //! lengths, areas or angles is larger, lune membership, segment crossings) is
@@ -39,12 +40,14 @@
 //! consistent: perturbed lengths are pairwise distinct and perturbed
 //! orientations are never zero, for *distinct* input points.
 
+mod certified_incircle;
 pub(crate) mod expansion;
 mod length_sums;
 mod lune;
 pub mod metrics;
 mod norm;
 mod predicates;
+mod squared_length;
 mod symbolic;
 
 /// A point in the plane, `[x, y]`.
@@ -64,6 +67,7 @@ pub use predicates::{
     dot_sign, exact_squared_length, incircle_sign, on_open_segment, orient_sign, properly_cross,
     segments_intersect,
 };
+pub use squared_length::SquaredLength;
 pub use symbolic::{
     compare_equal_lengths_symbolic, compare_lengths_symbolic, height_sign, orient_symbolic,
     segment_order,

@@ -5,6 +5,7 @@
 //! comparisons use a floating-point filter and fall back to exact
 //! [`Expansion`] arithmetic when the filter cannot decide.
 
+use super::certified_incircle::certified_incircle_sign;
 use super::expansion::{sign_of_sum, two_diff, two_product, two_sum, Expansion};
 use super::Point;
 use std::cmp::Ordering;
@@ -27,8 +28,15 @@ pub fn orient_sign(a: Point, b: Point, c: Point) -> i32 {
 
 /// Exact in-circle test: `1` if `d` lies strictly inside the circle through
 /// the counter-clockwise triangle `a, b, c`, `-1` if strictly outside, `0` if on it.
+///
+/// Certified `f64` and double-double filters first
+/// (the kernel's `certified_incircle` module), then the `robust` crate's adaptive exact
+/// evaluation for what they leave undecided.
 #[inline]
 pub fn incircle_sign(a: Point, b: Point, c: Point, d: Point) -> i32 {
+    if let Some(s) = certified_incircle_sign(a, b, c, d) {
+        return s;
+    }
     let v = robust::incircle(coord(a), coord(b), coord(c), coord(d));
     if v > 0.0 {
         1

@@ -85,18 +85,8 @@
 //! vertices sum to O(n²). Space is O(n) plus the heap.
 
 use super::convex_delaunay::ConvexDelaunay;
-use super::rounded_squared_length;
-use crate::kernel::{compare_lengths_symbolic, orient_sign, Point};
+use crate::kernel::{compare_lengths_symbolic, orient_sign, Point, SquaredLength};
 use std::cmp::Ordering;
-
-/// Two rounded squared lengths closer than this relative gap are compared
-/// exactly. Derived need, chosen value: as for [`super::KEY_RUN_GAP`], a
-/// rounded key is within 4·2⁻⁵³ of the exact squared length, so keys in the
-/// wrong order differ by less than 8·2⁻⁵³ ≈ 8.9·10⁻¹⁶ relative; 10⁻¹⁴ is
-/// eleven times that. Tighter than `KEY_RUN_GAP` because a regular polygon
-/// sampled with cos/sin has ear lengths equal to about 10⁻¹³, and every heap
-/// comparison among them would otherwise be exact (issue 15).
-const HEAP_KEY_GAP: f64 = 1e-14;
 
 /// The apex of a heap entry that is a `D`-edge, not an ear diagonal.
 const NO_APEX: u32 = u32::MAX;
@@ -137,12 +127,12 @@ struct Neighbour {
     constraint: bool,
 }
 
-/// A heap entry: the segment `ab` (polygon positions) with its rounded
-/// squared length; `apex` is the ear vertex for an ear diagonal, else
-/// [`NO_APEX`].
+/// A heap entry: the segment `ab` (polygon positions) with its certified
+/// double-double squared length; `apex` is the ear vertex for an ear
+/// diagonal, else [`NO_APEX`].
 #[derive(Clone, Copy, Debug)]
 struct Candidate {
-    key: f64,
+    key: SquaredLength,
     a: u32,
     b: u32,
     apex: u32,
@@ -265,12 +255,17 @@ impl<'a> Splitting<'a> {
         }
     }
 
-    /// Is `x` before `y` in the exact segment order? Rounded keys decide
-    /// when they differ by more than [`HEAP_KEY_GAP`] relative.
+    /// Is `x` before `y` in the exact segment order? The double-double keys
+    /// decide unless the squared lengths agree to about 10⁻³⁰ relative
+    /// ([`SquaredLength::certainly_compare`]). A rounded `f64` key could not
+    /// decide the chords of one offset of a regular polygon sampled with
+    /// cos/sin, equal up to rounding (issue 15); with these keys only exact
+    /// ties such as mirror-image chords reach the exact comparison and the
+    /// symbolic tie-break.
     #[inline]
     fn before(&self, x: &Candidate, y: &Candidate) -> bool {
-        if (x.key - y.key).abs() > HEAP_KEY_GAP * x.key.max(y.key) {
-            return x.key < y.key;
+        if let Some(order) = x.key.certainly_compare(y.key) {
+            return order == Ordering::Less;
         }
         let p = self.polygon;
         compare_lengths_symbolic(
@@ -285,7 +280,7 @@ impl<'a> Splitting<'a> {
             self.points[self.polygon[a as usize] as usize],
             self.points[self.polygon[b as usize] as usize],
         );
-        let key = rounded_squared_length(pa, pb);
+        let key = SquaredLength::of_segment(pa, pb);
         self.heap.push(Candidate { key, a, b, apex });
         let mut i = self.heap.len() - 1;
         while i > 0 {
