@@ -158,7 +158,8 @@ impl<P: Fn(usize) -> Point> Objective for TotalLength<'_, P> {
 pub(crate) fn skeleton_edge_sets(points: &PointSet) -> [Vec<[u32; 2]>; 3] {
     let pts = points.points();
     let candidates = skeleton::diamond_candidates(pts);
-    let sk = skeleton::lmt_skeleton(pts, candidates.clone());
+    let sk =
+        skeleton::lmt_skeleton(pts, candidates.clone()).expect("the tests' point sets are small");
     let pick = |flags: &[bool]| -> Vec<[u32; 2]> {
         sk.edges
             .iter()
@@ -233,7 +234,7 @@ pub(crate) fn general_min_weight(
     diagnostics.add("diamond candidates", candidates.len() as u64);
     watch.lap("diamond filter");
     let n = pts.len();
-    let sk = skeleton::lmt_skeleton(pts, candidates);
+    let sk = skeleton::lmt_skeleton(pts, candidates)?;
     let alive = sk.alive.iter().filter(|&&a| a).count();
     let certain = sk.certain.iter().filter(|&&a| a).count();
     diagnostics.add("skeleton candidates left", alive as u64);

@@ -47,7 +47,7 @@ use crate::kernel::{
     properly_cross, segments_intersect, Point,
 };
 use crate::parallel::prelude::*;
-use crate::spatial::{bounding_box, convex_hull_cycle, morton_order, SparseGrid};
+use crate::spatial::{bounding_box, convex_hull_cycle, SparseGrid};
 use std::cmp::Ordering;
 use std::f64::consts::PI;
 
@@ -447,9 +447,9 @@ fn edges_conflict(pts: &[Point], e: [u32; 2], f: [u32; 2]) -> bool {
 /// since the LMT-skeleton is the greatest fixed point of the removal rule
 /// (removing an edge only removes triangles), whatever the numbering and
 /// the work list's order.
-pub(crate) fn lmt_skeleton(pts: &[Point], edges: Vec<[u32; 2]>) -> Skeleton {
+pub(crate) fn lmt_skeleton(pts: &[Point], edges: Vec<[u32; 2]>) -> crate::error::Result<Skeleton> {
     let n = pts.len();
-    let order = morton_order(pts);
+    let order = crate::spatial::morton_order(pts);
     let mut rank = vec![0u32; n];
     for (z, &v) in order.iter().enumerate() {
         rank[v as usize] = z as u32;
@@ -468,7 +468,7 @@ pub(crate) fn lmt_skeleton(pts: &[Point], edges: Vec<[u32; 2]>) -> Skeleton {
     let (z_edges, original): (Vec<[u32; 2]>, Vec<u32>) = renumbered.into_iter().unzip();
     let z = {
         let grid = super::point_grid(&z_pts);
-        z_order_skeleton(&z_pts, &grid, z_edges)
+        z_order_skeleton(&z_pts, &grid, z_edges)?
     };
     drop(z_pts);
     let m = edges.len();
@@ -531,7 +531,7 @@ pub(crate) fn lmt_skeleton(pts: &[Point], edges: Vec<[u32; 2]>) -> Skeleton {
         key
     });
     skeleton.triangles = triangles;
-    skeleton
+    Ok(skeleton)
 }
 
 /// CSR adjacency of `n` vertices: per vertex its neighbours (sorted) with
@@ -561,7 +561,11 @@ fn adjacency(n: usize, edges: &[[u32; 2]]) -> (Vec<u32>, Vec<(u32, u32)>) {
 }
 
 /// [`lmt_skeleton`] on points in Z-order.
-fn z_order_skeleton(pts: &[Point], grid: &SparseGrid<u32>, edges: Vec<[u32; 2]>) -> Skeleton {
+fn z_order_skeleton(
+    pts: &[Point],
+    grid: &SparseGrid<u32>,
+    edges: Vec<[u32; 2]>,
+) -> crate::error::Result<Skeleton> {
     let n = pts.len();
     let m = edges.len();
     let (adj_offsets, adj) = adjacency(n, &edges);
@@ -605,6 +609,21 @@ fn z_order_skeleton(pts: &[Point], grid: &SparseGrid<u32>, edges: Vec<[u32; 2]>)
         })
         .collect();
     let total: usize = counts.iter().map(|&c| c as usize).sum();
+    // Triangle ids and the per-edge lists' offsets (three entries a
+    // triangle) are `u32`.
+    let limit = u32::MAX as usize / 3;
+    if total > limit {
+        use crate::error::{Error, UnsupportedReason};
+        return Err(Error::Unsupported {
+            criterion: "min-weight",
+            reason: UnsupportedReason::TooManyPoints {
+                // At this input's density of candidate triangles.
+                limit: (n as f64 * limit as f64 / total as f64) as usize,
+                distinct: n,
+                because: "the LMT-skeleton's u32 ids of candidate triangles",
+            },
+        });
+    }
     let mut triangles = vec![[0u32; 3]; total];
     const BLOCK: usize = 1024;
     let mut pieces = Vec::with_capacity(m.div_ceil(BLOCK));
@@ -818,7 +837,7 @@ fn z_order_skeleton(pts: &[Point], grid: &SparseGrid<u32>, edges: Vec<[u32; 2]>)
         skeleton.certain[e] =
             skeleton.alive[e] && (skeleton.hull[e] || skeleton.crossing(e as u32).is_empty());
     }
-    skeleton
+    Ok(skeleton)
 }
 
 /// The counter-clockwise corners of a triangle given by its edge ids
@@ -895,15 +914,14 @@ fn valid_triangle(
 /// Is `e` locally minimal for some pair of valid triangles? The pair's
 /// shape (not a strictly convex quadrilateral, or `e` not longer than the
 /// other diagonal) is tested first, emptiness only for a pair that passes.
-/// `apexes` is scratch space: each side's live triangles with their apex,
-/// gathered once (not once per pair).
+/// `apexes` is scratch space for the right side's apexes.
 fn locally_minimal(
     pts: &[Point],
     grid: &SparseGrid<u32>,
     sk: &Skeleton,
     state: &mut [TriangleState],
     e: u32,
-    apexes: &mut Vec<(u32, Point)>,
+    apexes: &mut Vec<Option<Point>>,
 ) -> bool {
     let [u, v] = sk.edges[e as usize];
     let (left, right) = sk.sides(e);
@@ -917,24 +935,21 @@ fn locally_minimal(
             c2
         } as usize]
     };
+    // The right apexes are found once each, when first needed (the first
+    // pairs usually decide).
     apexes.clear();
-    let mut lefts = 0;
-    for (k, &t) in left.iter().chain(right).enumerate() {
-        if state[t as usize] != TriangleState::Dead {
-            apexes.push((t, apex(t)));
-            lefts += (k < left.len()) as usize;
-        }
-    }
-    let (lefts, rights) = apexes.split_at(lefts);
+    apexes.resize(right.len(), None);
     let (a, b) = (pts[u as usize], pts[v as usize]);
-    for &(tl, r) in lefts {
+    for &tl in left {
         if state[tl as usize] == TriangleState::Dead {
             continue;
         }
-        for &(tr, s) in rights {
+        let r = apex(tl);
+        for (&tr, slot) in right.iter().zip(apexes.iter_mut()) {
             if state[tr as usize] == TriangleState::Dead {
                 continue;
             }
+            let s = *slot.get_or_insert_with(|| apex(tr));
             // The length first: when `e` is not longer, the pair passes
             // without the convexity test (the conjunction is unchanged).
             if compare_lengths(a, b, r, s) == Ordering::Greater && properly_cross(a, b, r, s) {
