@@ -440,8 +440,10 @@ fn edges_conflict(pts: &[Point], e: [u32; 2], f: [u32; 2]) -> bool {
     }
 }
 
-/// Builds the triangles and crossings of the candidate edges and runs the
-/// LMT loop. The work runs on the points renumbered in Z-order (the loop's
+use crate::error::{Error, UnsupportedReason};
+
+/// Builds the triangles and crossings of the candidate edges (sorted pairs
+/// `u < v`) and runs the LMT loop. The work runs on the points renumbered in Z-order (the loop's
 /// accesses to triangles, edges and points then stay mostly within cache:
 /// in input order each is a miss); the result is mapped back, identical,
 /// since the LMT-skeleton is the greatest fixed point of the removal rule
@@ -449,6 +451,16 @@ fn edges_conflict(pts: &[Point], e: [u32; 2], f: [u32; 2]) -> bool {
 /// the work list's order.
 pub(crate) fn lmt_skeleton(pts: &[Point], edges: Vec<[u32; 2]>) -> crate::error::Result<Skeleton> {
     let n = pts.len();
+    let m = edges.len();
+    // Edge ids are `u32`, the adjacency's offsets count `2m`.
+    if m > u32::MAX as usize / 2 {
+        return Err(too_many_points(
+            n,
+            m,
+            u32::MAX as usize / 2,
+            "u32 ids of candidate edges",
+        ));
+    }
     let order = crate::spatial::morton_order(pts);
     let mut rank = vec![0u32; n];
     for (z, &v) in order.iter().enumerate() {
@@ -464,6 +476,9 @@ pub(crate) fn lmt_skeleton(pts: &[Point], edges: Vec<[u32; 2]>) -> crate::error:
         })
         .collect();
     drop(rank);
+    // Not held during the loop: rebuilt below from the renumbering (the
+    // candidates are sorted pairs `u < v`).
+    drop(edges);
     renumbered.par_sort_unstable();
     let (z_edges, original): (Vec<[u32; 2]>, Vec<u32>) = renumbered.into_iter().unzip();
     let z = {
@@ -471,7 +486,11 @@ pub(crate) fn lmt_skeleton(pts: &[Point], edges: Vec<[u32; 2]>) -> crate::error:
         z_order_skeleton(&z_pts, &grid, z_edges)?
     };
     drop(z_pts);
-    let m = edges.len();
+    let mut edges = vec![[0u32; 2]; m];
+    for (k, &[a, b]) in z.edges.iter().enumerate() {
+        let (u, v) = (order[a as usize], order[b as usize]);
+        edges[original[k] as usize] = [u.min(v), u.max(v)];
+    }
     let (adj_offsets, adj) = adjacency(n, &edges);
     let mut skeleton = Skeleton {
         alive: vec![false; m],
@@ -532,6 +551,19 @@ pub(crate) fn lmt_skeleton(pts: &[Point], edges: Vec<[u32; 2]>) -> crate::error:
     });
     skeleton.triangles = triangles;
     Ok(skeleton)
+}
+
+/// The error for `count` ids (of edges or triangles) above `limit` on `n`
+/// points: the limit on points is estimated at this input's density.
+fn too_many_points(n: usize, count: usize, limit: usize, because: &'static str) -> Error {
+    Error::Unsupported {
+        criterion: "min-weight",
+        reason: UnsupportedReason::TooManyPoints {
+            limit: (n as f64 * limit as f64 / count as f64) as usize,
+            distinct: n,
+            because,
+        },
+    }
 }
 
 /// CSR adjacency of `n` vertices: per vertex its neighbours (sorted) with
@@ -611,18 +643,9 @@ fn z_order_skeleton(
     let total: usize = counts.iter().map(|&c| c as usize).sum();
     // Triangle ids and the per-edge lists' offsets (three entries a
     // triangle) are `u32`.
-    let limit = u32::MAX as usize / 3;
-    if total > limit {
-        use crate::error::{Error, UnsupportedReason};
-        return Err(Error::Unsupported {
-            criterion: "min-weight",
-            reason: UnsupportedReason::TooManyPoints {
-                // At this input's density of candidate triangles.
-                limit: (n as f64 * limit as f64 / total as f64) as usize,
-                distinct: n,
-                because: "the LMT-skeleton's u32 ids of candidate triangles",
-            },
-        });
+    if total > u32::MAX as usize / 3 {
+        let because = "u32 ids of the LMT-skeleton's candidate triangles";
+        return Err(too_many_points(n, total, u32::MAX as usize / 3, because));
     }
     let mut triangles = vec![[0u32; 3]; total];
     const BLOCK: usize = 1024;
