@@ -442,14 +442,19 @@ fn edges_conflict(pts: &[Point], e: [u32; 2], f: [u32; 2]) -> bool {
 
 use crate::error::{Error, UnsupportedReason};
 
-/// Builds the triangles and crossings of the candidate edges (sorted pairs
-/// `u < v`) and runs the LMT loop. The work runs on the points renumbered in Z-order (the loop's
+/// Builds the triangles and crossings of the candidate edges (sorted
+/// distinct pairs `u < v`, as [`diamond_candidates`] gives them) and runs
+/// the LMT loop. The work runs on the points renumbered in Z-order (the loop's
 /// accesses to triangles, edges and points then stay mostly within cache:
 /// in input order each is a miss); the result is mapped back, identical,
 /// since the LMT-skeleton is the greatest fixed point of the removal rule
 /// (removing an edge only removes triangles), whatever the numbering and
 /// the work list's order.
 pub(crate) fn lmt_skeleton(pts: &[Point], edges: Vec<[u32; 2]>) -> crate::error::Result<Skeleton> {
+    debug_assert!(
+        edges.windows(2).all(|w| w[0] < w[1]) && edges.iter().all(|&[u, v]| u < v),
+        "candidates: sorted distinct pairs u < v"
+    );
     let n = pts.len();
     let m = edges.len();
     // Edge ids are `u32`, the adjacency's offsets count `2m`.
@@ -467,30 +472,40 @@ pub(crate) fn lmt_skeleton(pts: &[Point], edges: Vec<[u32; 2]>) -> crate::error:
         rank[v as usize] = z as u32;
     }
     let z_pts: Vec<Point> = order.iter().map(|&v| pts[v as usize]).collect();
-    let mut renumbered: Vec<([u32; 2], u32)> = edges
+    let mut z_edges: Vec<[u32; 2]> = edges
         .par_iter()
-        .enumerate()
-        .map(|(e, &[u, v])| {
+        .map(|&[u, v]| {
             let (a, b) = (rank[u as usize], rank[v as usize]);
-            ([a.min(b), a.max(b)], e as u32)
+            [a.min(b), a.max(b)]
         })
         .collect();
     drop(rank);
-    // Not held during the loop: rebuilt below from the renumbering (the
-    // candidates are sorted pairs `u < v`).
+    // Neither the input edges nor their ids are held during the loop: the
+    // candidates are sorted distinct pairs `u < v`, so both follow from the
+    // renumbered edges mapped back and sorted again.
     drop(edges);
-    renumbered.par_sort_unstable();
-    let (z_edges, original): (Vec<[u32; 2]>, Vec<u32>) = renumbered.into_iter().unzip();
+    z_edges.par_sort_unstable();
     let z = {
         let grid = super::point_grid(&z_pts);
         z_order_skeleton(&z_pts, &grid, z_edges)?
     };
     drop(z_pts);
-    let mut edges = vec![[0u32; 2]; m];
-    for (k, &[a, b]) in z.edges.iter().enumerate() {
-        let (u, v) = (order[a as usize], order[b as usize]);
-        edges[original[k] as usize] = [u.min(v), u.max(v)];
+    let mut mapped: Vec<([u32; 2], u32)> = z
+        .edges
+        .par_iter()
+        .enumerate()
+        .map(|(k, &[a, b])| {
+            let (u, v) = (order[a as usize], order[b as usize]);
+            ([u.min(v), u.max(v)], k as u32)
+        })
+        .collect();
+    mapped.par_sort_unstable();
+    // The original id of each renumbered edge.
+    let mut original = vec![0u32; m];
+    for (e, &(_, k)) in mapped.iter().enumerate() {
+        original[k as usize] = e as u32;
     }
+    let edges: Vec<[u32; 2]> = mapped.into_iter().map(|(pair, _)| pair).collect();
     let (adj_offsets, adj) = adjacency(n, &edges);
     let mut skeleton = Skeleton {
         alive: vec![false; m],
@@ -604,13 +619,13 @@ fn z_order_skeleton(
     let hull_cycle = convex_hull_cycle(pts);
     let mut skeleton = Skeleton {
         alive: vec![true; m],
-        certain: vec![false; m],
+        certain: Vec::new(),
         hull: vec![false; m],
         triangles: Vec::new(),
         loop_triangles: Vec::new(),
         tri_offsets: Vec::new(),
         tri_list: Vec::new(),
-        tri_left_len: vec![0; m],
+        tri_left_len: Vec::new(),
         cross_offsets: Vec::new(),
         cross_list: Vec::new(),
         adj_offsets,
@@ -856,10 +871,9 @@ fn z_order_skeleton(
     }
     skeleton.cross_offsets = cross_offsets;
     skeleton.cross_list = cross_list;
-    for e in 0..m {
-        skeleton.certain[e] =
-            skeleton.alive[e] && (skeleton.hull[e] || skeleton.crossing(e as u32).is_empty());
-    }
+    skeleton.certain = (0..m)
+        .map(|e| skeleton.alive[e] && (skeleton.hull[e] || skeleton.crossing(e as u32).is_empty()))
+        .collect();
     Ok(skeleton)
 }
 
