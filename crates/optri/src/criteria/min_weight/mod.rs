@@ -158,8 +158,8 @@ impl<P: Fn(usize) -> Point> Objective for TotalLength<'_, P> {
 pub(crate) fn skeleton_edge_sets(points: &PointSet) -> [Vec<[u32; 2]>; 3] {
     let pts = points.points();
     let candidates = skeleton::diamond_candidates(pts);
-    let grid = point_grid(pts);
-    let sk = skeleton::lmt_skeleton(pts, &grid, candidates.clone());
+    let sk =
+        skeleton::lmt_skeleton(pts, candidates.clone()).expect("the tests' point sets are small");
     let pick = |flags: &[bool]| -> Vec<[u32; 2]> {
         sk.edges
             .iter()
@@ -172,7 +172,7 @@ pub(crate) fn skeleton_edge_sets(points: &PointSet) -> [Vec<[u32; 2]>; 3] {
 }
 
 /// A grid of the points with about one point per cell.
-fn point_grid(pts: &[Point]) -> SparseGrid<u32> {
+pub(super) fn point_grid(pts: &[Point]) -> SparseGrid<u32> {
     let bbox = bounding_box(pts);
     let (w, h) = (bbox[2] - bbox[0], bbox[3] - bbox[1]);
     let n = pts.len();
@@ -234,8 +234,7 @@ pub(crate) fn general_min_weight(
     diagnostics.add("diamond candidates", candidates.len() as u64);
     watch.lap("diamond filter");
     let n = pts.len();
-    let grid = point_grid(pts);
-    let sk = skeleton::lmt_skeleton(pts, &grid, candidates);
+    let sk = skeleton::lmt_skeleton(pts, candidates)?;
     let alive = sk.alive.iter().filter(|&&a| a).count();
     let certain = sk.certain.iter().filter(|&&a| a).count();
     diagnostics.add("skeleton candidates left", alive as u64);

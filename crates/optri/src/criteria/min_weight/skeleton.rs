@@ -348,9 +348,9 @@ pub(crate) struct Skeleton {
     /// by the LMT loop, with their edge ids (filled after the loop).
     pub triangles: Vec<([u32; 3], [u32; 3])>,
     /// During the loop: every non-flat triangle of three candidate edges, as
-    /// its edge ids `[c0c1, c1c2, c2c0]` for its counter-clockwise corners
-    /// (the corners follow from the edges: 12 bytes a triangle instead of
-    /// 24, the loop's largest array); emptied after the loop.
+    /// its counter-clockwise corners (12 bytes a triangle, the loop's largest
+    /// array; the loop reads corners, its edge ids are looked up only when
+    /// an empty triangle dies); emptied after the loop.
     loop_triangles: Vec<[u32; 3]>,
     /// CSR per edge: its triangles on the left of `u → v` (u < v), then
     /// right; emptied after the loop.
@@ -380,15 +380,14 @@ impl Skeleton {
         &self.adj[self.adj_offsets[u as usize] as usize..self.adj_offsets[u as usize + 1] as usize]
     }
 
-    /// The counter-clockwise corners of loop triangle `t`: `c1` is the
-    /// endpoint its first two edges share.
-    fn corners(&self, t: u32) -> [u32; 3] {
-        let [a, b, _] = self.loop_triangles[t as usize];
-        let ([x, y], [z, w]) = (self.edges[a as usize], self.edges[b as usize]);
-        let c1 = if x == z || x == w { x } else { y };
-        let c0 = if x == c1 { y } else { x };
-        let c2 = if z == c1 { w } else { z };
-        [c0, c1, c2]
+    /// The edge ids `[c0c1, c1c2, c2c0]` of a triangle of candidate edges
+    /// with corners `[c0, c1, c2]`.
+    fn triangle_edges(&self, [c0, c1, c2]: [u32; 3]) -> [u32; 3] {
+        let id = |a: u32, b: u32| {
+            self.edge_id(a, b)
+                .expect("a loop triangle's sides are candidate edges")
+        };
+        [id(c0, c1), id(c1, c2), id(c2, c0)]
     }
 
     /// Triangles of edge `e` on its left (`u → v`) and right.
@@ -451,18 +450,152 @@ fn edges_conflict(pts: &[Point], e: [u32; 2], f: [u32; 2]) -> bool {
     }
 }
 
-/// Builds the triangles and crossings of the candidate edges and runs the
-/// LMT loop; `counters` gets (name, value) pairs.
-pub(crate) fn lmt_skeleton(
-    pts: &[Point],
-    grid: &SparseGrid<u32>,
-    edges: Vec<[u32; 2]>,
-) -> Skeleton {
+use crate::error::{Error, UnsupportedReason};
+
+/// Builds the triangles and crossings of the candidate edges (sorted
+/// distinct pairs `u < v`, as [`diamond_candidates`] gives them) and runs
+/// the LMT loop. The work runs on the points renumbered in Z-order (the loop's
+/// accesses to triangles, edges and points then stay mostly within cache:
+/// in input order each is a miss); the result is mapped back, identical,
+/// since the LMT-skeleton is the greatest fixed point of the removal rule
+/// (removing an edge only removes triangles), whatever the numbering and
+/// the work list's order.
+pub(crate) fn lmt_skeleton(pts: &[Point], edges: Vec<[u32; 2]>) -> crate::error::Result<Skeleton> {
+    debug_assert!(
+        edges.windows(2).all(|w| w[0] < w[1]) && edges.iter().all(|&[u, v]| u < v),
+        "candidates: sorted distinct pairs u < v"
+    );
     let n = pts.len();
     let m = edges.len();
-    // Adjacency, sorted by neighbour.
+    // Edge ids are `u32`, the adjacency's offsets count `2m`.
+    if m > u32::MAX as usize / 2 {
+        return Err(too_many_points(
+            n,
+            m,
+            u32::MAX as usize / 2,
+            "u32 ids of candidate edges",
+        ));
+    }
+    let order = crate::spatial::morton_order(pts);
+    let mut rank = vec![0u32; n];
+    for (z, &v) in order.iter().enumerate() {
+        rank[v as usize] = z as u32;
+    }
+    let z_pts: Vec<Point> = order.iter().map(|&v| pts[v as usize]).collect();
+    let mut z_edges: Vec<[u32; 2]> = edges
+        .par_iter()
+        .map(|&[u, v]| {
+            let (a, b) = (rank[u as usize], rank[v as usize]);
+            [a.min(b), a.max(b)]
+        })
+        .collect();
+    drop(rank);
+    // Neither the input edges nor their ids are held during the loop: the
+    // candidates are sorted distinct pairs `u < v`, so both follow from the
+    // renumbered edges mapped back and sorted again.
+    drop(edges);
+    z_edges.par_sort_unstable();
+    let z = {
+        let grid = super::point_grid(&z_pts);
+        z_order_skeleton(&z_pts, &grid, z_edges)?
+    };
+    drop(z_pts);
+    let mut mapped: Vec<([u32; 2], u32)> = z
+        .edges
+        .par_iter()
+        .enumerate()
+        .map(|(k, &[a, b])| {
+            let (u, v) = (order[a as usize], order[b as usize]);
+            ([u.min(v), u.max(v)], k as u32)
+        })
+        .collect();
+    mapped.par_sort_unstable();
+    // The original id of each renumbered edge.
+    let mut original = vec![0u32; m];
+    for (e, &(_, k)) in mapped.iter().enumerate() {
+        original[k as usize] = e as u32;
+    }
+    let edges: Vec<[u32; 2]> = mapped.into_iter().map(|(pair, _)| pair).collect();
+    let (adj_offsets, adj) = adjacency(n, &edges);
+    let mut skeleton = Skeleton {
+        alive: vec![false; m],
+        certain: vec![false; m],
+        hull: vec![false; m],
+        triangles: Vec::new(),
+        loop_triangles: Vec::new(),
+        tri_offsets: Vec::new(),
+        tri_list: Vec::new(),
+        tri_left_len: Vec::new(),
+        cross_offsets: vec![0; m + 1],
+        cross_list: vec![0; z.cross_list.len()],
+        adj_offsets,
+        adj,
+        edges,
+    };
+    for (k, &e) in original.iter().enumerate() {
+        let e = e as usize;
+        skeleton.alive[e] = z.alive[k];
+        skeleton.certain[e] = z.certain[k];
+        skeleton.hull[e] = z.hull[k];
+        skeleton.cross_offsets[e + 1] = z.cross_offsets[k + 1] - z.cross_offsets[k];
+    }
+    for e in 0..m {
+        skeleton.cross_offsets[e + 1] += skeleton.cross_offsets[e];
+    }
+    // Each list sorted, as built in the original numbering.
+    for (k, &e) in original.iter().enumerate() {
+        let start = skeleton.cross_offsets[e as usize] as usize;
+        let list = z.crossing(k as u32);
+        let out = &mut skeleton.cross_list[start..start + list.len()];
+        for (slot, &f) in out.iter_mut().zip(list) {
+            *slot = original[f as usize];
+        }
+        out.sort_unstable();
+    }
+    // The kept triangles as built in the original numbering: corners
+    // counter-clockwise from the smallest index, edge ids `[c0c1, c1c2,
+    // c2c0]`, in lexicographic order of the sorted corners (the order of
+    // enumeration from each triangle's smallest edge).
+    let mut triangles: Vec<([u32; 3], [u32; 3])> = z
+        .triangles
+        .par_iter()
+        .map(|&(corners, ids)| {
+            let c = corners.map(|v| order[v as usize]);
+            let first = (0..3).min_by_key(|&i| c[i]).unwrap_or(0);
+            (
+                std::array::from_fn(|i| c[(i + first) % 3]),
+                std::array::from_fn(|i| original[ids[(i + first) % 3] as usize]),
+            )
+        })
+        .collect();
+    drop(z);
+    triangles.par_sort_unstable_by_key(|&(c, _)| {
+        let mut key = c;
+        key.sort_unstable();
+        key
+    });
+    skeleton.triangles = triangles;
+    Ok(skeleton)
+}
+
+/// The error for `count` ids (of edges or triangles) above `limit` on `n`
+/// points: the limit on points is estimated at this input's density.
+fn too_many_points(n: usize, count: usize, limit: usize, because: &'static str) -> Error {
+    Error::Unsupported {
+        criterion: "min-weight",
+        reason: UnsupportedReason::TooManyPoints {
+            limit: (n as f64 * limit as f64 / count as f64) as usize,
+            distinct: n,
+            because,
+        },
+    }
+}
+
+/// CSR adjacency of `n` vertices: per vertex its neighbours (sorted) with
+/// the edge ids.
+fn adjacency(n: usize, edges: &[[u32; 2]]) -> (Vec<u32>, Vec<(u32, u32)>) {
     let mut degree = vec![0u32; n + 1];
-    for &[u, v] in &edges {
+    for &[u, v] in edges {
         degree[u as usize] += 1;
         degree[v as usize] += 1;
     }
@@ -471,7 +604,7 @@ pub(crate) fn lmt_skeleton(
         adj_offsets[v + 1] = adj_offsets[v] + degree[v];
     }
     let mut fill = adj_offsets.clone();
-    let mut adj = vec![(0u32, 0u32); 2 * m];
+    let mut adj = vec![(0u32, 0u32); 2 * edges.len()];
     for (id, &[u, v]) in edges.iter().enumerate() {
         adj[fill[u as usize] as usize] = (v, id as u32);
         fill[u as usize] += 1;
@@ -481,16 +614,28 @@ pub(crate) fn lmt_skeleton(
     for v in 0..n {
         adj[adj_offsets[v] as usize..adj_offsets[v + 1] as usize].sort_unstable();
     }
+    (adj_offsets, adj)
+}
+
+/// [`lmt_skeleton`] on points in Z-order.
+fn z_order_skeleton(
+    pts: &[Point],
+    grid: &SparseGrid<u32>,
+    edges: Vec<[u32; 2]>,
+) -> crate::error::Result<Skeleton> {
+    let n = pts.len();
+    let m = edges.len();
+    let (adj_offsets, adj) = adjacency(n, &edges);
     let hull_cycle = convex_hull_cycle(pts);
     let mut skeleton = Skeleton {
         alive: vec![true; m],
-        certain: vec![false; m],
+        certain: Vec::new(),
         hull: vec![false; m],
         triangles: Vec::new(),
         loop_triangles: Vec::new(),
         tri_offsets: Vec::new(),
         tri_list: Vec::new(),
-        tri_left_len: vec![0; m],
+        tri_left_len: Vec::new(),
         cross_offsets: Vec::new(),
         cross_list: Vec::new(),
         adj_offsets,
@@ -521,6 +666,12 @@ pub(crate) fn lmt_skeleton(
         })
         .collect();
     let total: usize = counts.iter().map(|&c| c as usize).sum();
+    // Triangle ids and the per-edge lists' offsets (three entries a
+    // triangle) are `u32`.
+    if total > u32::MAX as usize / 3 {
+        let because = "u32 ids of the LMT-skeleton's candidate triangles";
+        return Err(too_many_points(n, total, u32::MAX as usize / 3, because));
+    }
     let mut triangles = vec![[0u32; 3]; total];
     const BLOCK: usize = 1024;
     let mut pieces = Vec::with_capacity(m.div_ceil(BLOCK));
@@ -543,12 +694,11 @@ pub(crate) fn lmt_skeleton(
         }
     });
     // Per edge (CSR): its triangles on the left of u → v, then on the right.
-    skeleton.loop_triangles = triangles;
     let side_of = |corners: [u32; 3], s: usize| corners[s] < corners[(s + 1) % 3];
     let mut left_len = vec![0u32; m];
     let mut tri_offsets = vec![0u32; m + 1];
-    for (t, ids) in skeleton.loop_triangles.iter().enumerate() {
-        let corners = skeleton.corners(t as u32);
+    for ids in &triangles {
+        let corners = corners_of(&skeleton.edges, *ids);
         for (s, &e) in ids.iter().enumerate() {
             let e = e as usize;
             tri_offsets[e + 1] += 1;
@@ -562,8 +712,8 @@ pub(crate) fn lmt_skeleton(
     let (mut next_left, mut next_right): (Vec<u32>, Vec<u32>) = (0..m)
         .map(|e| (tri_offsets[e], tri_offsets[e] + left_len[e]))
         .unzip();
-    for (t, ids) in skeleton.loop_triangles.iter().enumerate() {
-        let corners = skeleton.corners(t as u32);
+    for (t, ids) in triangles.iter().enumerate() {
+        let corners = corners_of(&skeleton.edges, *ids);
         for (s, &e) in ids.iter().enumerate() {
             let e = e as usize;
             // The triangle is on the left of corners[s] → corners[s + 1].
@@ -577,6 +727,14 @@ pub(crate) fn lmt_skeleton(
         }
     }
     drop((next_left, next_right));
+    // From here on the loop reads a triangle's corners (one access where the
+    // edge ids need three), converted in place.
+    let edges = &skeleton.edges;
+    triangles
+        .par_iter_mut()
+        .with_min_len(4096)
+        .for_each(|t| *t = corners_of(edges, *t));
+    skeleton.loop_triangles = triangles;
     skeleton.tri_left_len = left_len;
     skeleton.tri_offsets = tri_offsets;
     skeleton.tri_list = tri_list;
@@ -591,19 +749,19 @@ pub(crate) fn lmt_skeleton(
     // Keep the empty triangles whose edges are all left (the faces' only
     // use).
     let sk = &skeleton;
-    let kept: Vec<([u32; 3], [u32; 3])> = (0..sk.loop_triangles.len() as u32)
+    // A removed edge killed all its triangles, so a triangle not dead has
+    // its three edges left.
+    let kept: Vec<([u32; 3], [u32; 3])> = (0..sk.loop_triangles.len())
         .into_par_iter()
         .with_min_len(1024)
         .filter_map(|t| {
-            let ids = sk.loop_triangles[t as usize];
-            let corners = sk.corners(t);
-            let keep = ids.iter().all(|&f| sk.alive[f as usize])
-                && match state[t as usize] {
-                    TriangleState::Empty => true,
-                    TriangleState::Dead => false,
-                    TriangleState::Unknown => !triangle_has_point(pts, grid, corners),
-                };
-            keep.then_some((corners, ids))
+            let corners = sk.loop_triangles[t];
+            let keep = match state[t] {
+                TriangleState::Empty => true,
+                TriangleState::Dead => false,
+                TriangleState::Unknown => !triangle_has_point(pts, grid, corners),
+            };
+            keep.then(|| (corners, sk.triangle_edges(corners)))
         })
         .collect();
     drop(state);
@@ -723,11 +881,20 @@ pub(crate) fn lmt_skeleton(
     }
     skeleton.cross_offsets = cross_offsets;
     skeleton.cross_list = cross_list;
-    for e in 0..m {
-        skeleton.certain[e] =
-            skeleton.alive[e] && (skeleton.hull[e] || skeleton.crossing(e as u32).is_empty());
-    }
-    skeleton
+    skeleton.certain = (0..m)
+        .map(|e| skeleton.alive[e] && (skeleton.hull[e] || skeleton.crossing(e as u32).is_empty()))
+        .collect();
+    Ok(skeleton)
+}
+
+/// The counter-clockwise corners of a triangle given by its edge ids
+/// `[c0c1, c1c2, c2c0]`: `c1` is the endpoint its first two edges share.
+fn corners_of(edges: &[[u32; 2]], [a, b, _]: [u32; 3]) -> [u32; 3] {
+    let ([x, y], [z, w]) = (edges[a as usize], edges[b as usize]);
+    let c1 = if x == z || x == w { x } else { y };
+    let c0 = if x == c1 { y } else { x };
+    let c2 = if z == c1 { w } else { z };
+    [c0, c1, c2]
 }
 
 /// Visits the non-flat triangles `u < v < w` of candidate edges found from
@@ -782,7 +949,7 @@ fn valid_triangle(
 ) -> bool {
     let slot = &mut state[t as usize];
     if *slot == TriangleState::Unknown {
-        *slot = if triangle_has_point(pts, grid, sk.corners(t)) {
+        *slot = if triangle_has_point(pts, grid, sk.loop_triangles[t as usize]) {
             TriangleState::Dead
         } else {
             TriangleState::Empty
@@ -794,34 +961,45 @@ fn valid_triangle(
 /// Is `e` locally minimal for some pair of valid triangles? The pair's
 /// shape (not a strictly convex quadrilateral, or `e` not longer than the
 /// other diagonal) is tested first, emptiness only for a pair that passes.
+/// `apexes` is scratch space for the right side's apexes.
 fn locally_minimal(
     pts: &[Point],
     grid: &SparseGrid<u32>,
     sk: &Skeleton,
     state: &mut [TriangleState],
     e: u32,
+    apexes: &mut Vec<Option<Point>>,
 ) -> bool {
     let [u, v] = sk.edges[e as usize];
     let (left, right) = sk.sides(e);
     let apex = |t: u32| {
-        // The endpoint off `uv` of one of the triangle's other edges.
-        let ids = sk.loop_triangles[t as usize];
-        let f = if ids[0] == e { ids[1] } else { ids[0] };
-        let [x, y] = sk.edges[f as usize];
-        pts[if x == u || x == v { y } else { x } as usize]
+        let [c0, c1, c2] = sk.loop_triangles[t as usize];
+        pts[if c0 != u && c0 != v {
+            c0
+        } else if c1 != u && c1 != v {
+            c1
+        } else {
+            c2
+        } as usize]
     };
+    // The right apexes are found once each, when first needed (the first
+    // pairs usually decide).
+    apexes.clear();
+    apexes.resize(right.len(), None);
     let (a, b) = (pts[u as usize], pts[v as usize]);
     for &tl in left {
         if state[tl as usize] == TriangleState::Dead {
             continue;
         }
         let r = apex(tl);
-        for &tr in right {
+        for (&tr, slot) in right.iter().zip(apexes.iter_mut()) {
             if state[tr as usize] == TriangleState::Dead {
                 continue;
             }
-            let s = apex(tr);
-            if properly_cross(a, b, r, s) && compare_lengths(a, b, r, s) == Ordering::Greater {
+            let s = *slot.get_or_insert_with(|| apex(tr));
+            // The length first: when `e` is not longer, the pair passes
+            // without the convexity test (the conjunction is unchanged).
+            if compare_lengths(a, b, r, s) == Ordering::Greater && properly_cross(a, b, r, s) {
                 continue;
             }
             if !valid_triangle(pts, grid, sk, state, tl) {
@@ -844,12 +1022,13 @@ fn run_lmt_loop(pts: &[Point], grid: &SparseGrid<u32>, sk: &mut Skeleton) -> Vec
     let mut state = vec![TriangleState::Unknown; sk.loop_triangles.len()];
     let mut queued = vec![true; m];
     let mut work: Vec<u32> = (0..m as u32).rev().collect();
+    let mut apexes = Vec::new();
     while let Some(e) = work.pop() {
         queued[e as usize] = false;
         if !sk.alive[e as usize] || sk.hull[e as usize] {
             continue;
         }
-        if locally_minimal(pts, grid, sk, &mut state, e) {
+        if locally_minimal(pts, grid, sk, &mut state, e, &mut apexes) {
             continue;
         }
         sk.alive[e as usize] = false;
@@ -859,7 +1038,7 @@ fn run_lmt_loop(pts: &[Point], grid: &SparseGrid<u32>, sk: &mut Skeleton) -> Vec
             if before != TriangleState::Empty {
                 continue;
             }
-            for f in sk.loop_triangles[t as usize] {
+            for f in sk.triangle_edges(sk.loop_triangles[t as usize]) {
                 if f != e && sk.alive[f as usize] && !queued[f as usize] {
                     queued[f as usize] = true;
                     work.push(f);
