@@ -1394,8 +1394,7 @@ mod tests {
         for (k, centre) in [(13, [0.0, 0.0]), (15, [3.0, -7.0]), (17, [0.0, 0.0])] {
             let pts = ring_with(k, centre);
             let candidates = super::super::skeleton::diamond_candidates(&pts);
-            let grid = super::super::point_grid(&pts);
-            let sk = super::super::skeleton::lmt_skeleton(&pts, &grid, candidates);
+            let sk = super::super::skeleton::lmt_skeleton(&pts, candidates).unwrap();
             for region in regions(&pts, &sk).unwrap() {
                 if region.inner.is_empty() {
                     continue;
