@@ -157,6 +157,7 @@ mod sequential {
         where
             T: Ord;
         fn par_sort_unstable_by<F: FnMut(&T, &T) -> Ordering>(&mut self, compare: F);
+        fn par_sort_unstable_by_key<K: Ord, F: FnMut(&T) -> K>(&mut self, key: F);
     }
     impl<T> ParallelSliceMut<T> for [T] {
         #[inline]
@@ -177,6 +178,10 @@ mod sequential {
         #[inline]
         fn par_sort_unstable_by<F: FnMut(&T, &T) -> Ordering>(&mut self, compare: F) {
             self.sort_unstable_by(compare)
+        }
+        #[inline]
+        fn par_sort_unstable_by_key<K: Ord, F: FnMut(&T) -> K>(&mut self, key: F) {
+            self.sort_unstable_by_key(key)
         }
     }
 
