@@ -1322,16 +1322,12 @@ mod tests {
         pts
     }
 
-    /// The branch and bound started from a poor incumbent (the constrained
-    /// Delaunay triangles), with node searches too small to finish until
-    /// enough edges are fixed, must branch and still return a triangulation
-    /// exactly as light as the plain search's optimum. A bound rounded the
-    /// wrong way or pruning on a bound below the incumbent (a strictly
-    /// lighter triangulation discarded) breaks this.
-    #[test]
-    fn branch_and_bound_from_a_poor_incumbent_reaches_the_optimum() {
-        let mut branched = 0;
-        let mut faces = 0;
+    /// Every face with an inner point of three small wheels (13 and 17 rim
+    /// points around the origin, 15 around `(3, −7)`), with the plain
+    /// search's optimum of the face.
+    fn for_each_wheel_face(
+        mut visit: impl FnMut(usize, &[Point], &Skeleton, &Region, &FaceTriangles, Searched),
+    ) {
         for (k, centre) in [(13, [0.0, 0.0]), (15, [3.0, -7.0]), (17, [0.0, 0.0])] {
             let pts = ring_with(k, centre);
             let candidates = super::super::skeleton::diamond_candidates(&pts);
@@ -1347,39 +1343,54 @@ mod tests {
                     .0
                     .found()
                     .expect("the plain search decides small wheels");
-                let program = FaceProgram::new(&pts, &face.boundary, &face.tris, &face.tri_edges);
-                let weight = inner_edge_weight(&pts, &face.boundary, &region.cdt_triangles);
-                let certificate = program.dual().and_then(|y| program.certify(&y)).unwrap();
-                let prices = certificate.prices(weight.hi).unwrap();
-                let root = Node {
-                    bound: certificate.lower,
-                    kept: prices.price.iter().map(|&p| p <= prices.slack).collect(),
-                    forced: Vec::new(),
-                    searched: false,
-                };
-                let best = Incumbent {
-                    triangles: region.cdt_triangles.clone(),
-                    weight,
-                };
-                let limits = Limits {
-                    nodes: 5_000,
-                    node_fronts: 40,
-                };
-                let mut stats = ProgramStats::default();
-                let (outcome, _) =
-                    branch_and_bound(&pts, &sk, &region, &face, root, best, limits, &mut stats);
-                let ProgramOutcome::Solved(t) = outcome else {
-                    panic!("wheel {k}: not solved in {} nodes", stats.nodes);
-                };
-                assert_eq!(
-                    super::super::compare_weights(&pts, &t, &reference.triangles),
-                    Ordering::Equal,
-                    "wheel {k}: branch and bound and plain search differ"
-                );
-                faces += 1;
-                branched += usize::from(stats.nodes > 1);
+                visit(k, &pts, &sk, &region, &face, reference);
             }
         }
+    }
+
+    /// The branch and bound started from a poor incumbent (the constrained
+    /// Delaunay triangles), with node searches too small to finish until
+    /// enough edges are fixed, must branch and still return a triangulation
+    /// exactly as light as the plain search's optimum. A bound rounded the
+    /// wrong way or pruning on a bound below the incumbent (a strictly
+    /// lighter triangulation discarded) breaks this.
+    #[test]
+    fn branch_and_bound_from_a_poor_incumbent_reaches_the_optimum() {
+        let mut branched = 0;
+        let mut faces = 0;
+        for_each_wheel_face(|k, pts, sk, region, face, reference| {
+            let program = FaceProgram::new(pts, &face.boundary, &face.tris, &face.tri_edges);
+            let weight = inner_edge_weight(pts, &face.boundary, &region.cdt_triangles);
+            let certificate = program.dual().and_then(|y| program.certify(&y)).unwrap();
+            let prices = certificate.prices(weight.hi).unwrap();
+            let root = Node {
+                bound: certificate.lower,
+                kept: prices.price.iter().map(|&p| p <= prices.slack).collect(),
+                forced: Vec::new(),
+                searched: false,
+            };
+            let best = Incumbent {
+                triangles: region.cdt_triangles.clone(),
+                weight,
+            };
+            let limits = Limits {
+                nodes: 5_000,
+                node_fronts: 40,
+            };
+            let mut stats = ProgramStats::default();
+            let (outcome, _) =
+                branch_and_bound(pts, sk, region, face, root, best, limits, &mut stats);
+            let ProgramOutcome::Solved(t) = outcome else {
+                panic!("wheel {k}: not solved in {} nodes", stats.nodes);
+            };
+            assert_eq!(
+                super::super::compare_weights(pts, &t, &reference.triangles),
+                Ordering::Equal,
+                "wheel {k}: branch and bound and plain search differ"
+            );
+            faces += 1;
+            branched += usize::from(stats.nodes > 1);
+        });
         assert!(faces >= 3, "only {faces} faces with an inner point");
         assert!(branched >= 2, "only {branched} faces branched");
     }
@@ -1391,77 +1402,60 @@ mod tests {
     #[test]
     fn a_node_with_the_optimum_forced_is_bounded_by_its_weight() {
         let mut checked = 0;
-        for (k, centre) in [(13, [0.0, 0.0]), (15, [3.0, -7.0]), (17, [0.0, 0.0])] {
-            let pts = ring_with(k, centre);
-            let candidates = super::super::skeleton::diamond_candidates(&pts);
-            let sk = super::super::skeleton::lmt_skeleton(&pts, candidates).unwrap();
-            for region in regions(&pts, &sk).unwrap() {
-                if region.inner.is_empty() {
-                    continue;
-                }
-                let corners_at = corners_of(&region);
-                let inner: HashSet<u32> = region.inner.iter().copied().collect();
-                let face = face_triangles(&pts, &sk, &region, &corners_at, &inner);
-                let reference = search(&pts, &sk, &region, &face, None, FRONT_BUDGET)
-                    .0
-                    .found()
-                    .expect("the plain search decides small wheels");
-                let optimum = inner_edge_weight(&pts, &face.boundary, &reference.triangles);
-                let forced: Vec<u32> = super::super::edges_of(&reference.triangles)
-                    .into_iter()
-                    .filter(|&[a, b]| {
-                        !face.boundary.contains(&(a, b)) && !face.boundary.contains(&(b, a))
-                    })
-                    .map(|[a, b]| sk.edge_id(a, b).expect("an optimum edge is a candidate"))
-                    .collect();
-                assert!(!forced.is_empty(), "wheel {k}: no inner edge");
-                let crossing: HashSet<u32> = forced
+        for_each_wheel_face(|k, pts, sk, region, face, reference| {
+            let optimum = inner_edge_weight(pts, &face.boundary, &reference.triangles);
+            let forced: Vec<u32> = super::super::edges_of(&reference.triangles)
+                .into_iter()
+                .filter(|&[a, b]| {
+                    !face.boundary.contains(&(a, b)) && !face.boundary.contains(&(b, a))
+                })
+                .map(|[a, b]| sk.edge_id(a, b).expect("an optimum edge is a candidate"))
+                .collect();
+            assert!(!forced.is_empty(), "wheel {k}: no inner edge");
+            let crossing: HashSet<u32> = forced
+                .iter()
+                .flat_map(|&e| sk.crossing(e).iter().copied())
+                .collect();
+            let node = Node {
+                bound: 0.0,
+                kept: face
+                    .tri_edges
                     .iter()
-                    .flat_map(|&e| sk.crossing(e).iter().copied())
-                    .collect();
-                let node = Node {
-                    bound: 0.0,
-                    kept: face
-                        .tri_edges
-                        .iter()
-                        .map(|ids| !ids.iter().any(|f| crossing.contains(f)))
-                        .collect(),
-                    forced,
-                    searched: true,
-                };
-                // An incumbent a little heavier than the optimum: a correct
-                // bound stays below it, so the node is neither pruned nor
-                // split (every inner edge is forced) and returns its bound.
-                let heavier = optimum.hi * (1.0 + 1e-6);
-                let mut best = Incumbent {
-                    triangles: region.cdt_triangles.clone(),
-                    weight: LengthInterval {
-                        lo: heavier,
-                        hi: heavier,
-                    },
-                };
-                let limits = Limits {
-                    nodes: 10,
-                    node_fronts: 40,
-                };
-                let mut stats = ProgramStats::default();
-                let outcome = evaluate(
-                    &pts, &sk, &region, &face, node, &mut best, limits, &mut stats,
-                );
-                let Evaluated::Abandoned(bound) = outcome else {
-                    panic!("wheel {k}: the node was pruned or split");
-                };
-                assert!(
-                    bound <= optimum.hi,
-                    "wheel {k}: bound {bound} above {optimum:?}"
-                );
-                assert!(
-                    bound >= optimum.lo * (1.0 - 1e-9),
-                    "wheel {k}: bound {bound} far below {optimum:?}"
-                );
-                checked += 1;
-            }
-        }
+                    .map(|ids| !ids.iter().any(|f| crossing.contains(f)))
+                    .collect(),
+                forced,
+                searched: true,
+            };
+            // An incumbent a little heavier than the optimum: a correct
+            // bound stays below it, so the node is neither pruned nor
+            // split (every inner edge is forced) and returns its bound.
+            let heavier = optimum.hi * (1.0 + 1e-6);
+            let mut best = Incumbent {
+                triangles: region.cdt_triangles.clone(),
+                weight: LengthInterval {
+                    lo: heavier,
+                    hi: heavier,
+                },
+            };
+            let limits = Limits {
+                nodes: 10,
+                node_fronts: 40,
+            };
+            let mut stats = ProgramStats::default();
+            let outcome = evaluate(pts, sk, region, face, node, &mut best, limits, &mut stats);
+            let Evaluated::Abandoned(bound) = outcome else {
+                panic!("wheel {k}: the node was pruned or split");
+            };
+            assert!(
+                bound <= optimum.hi,
+                "wheel {k}: bound {bound} above {optimum:?}"
+            );
+            assert!(
+                bound >= optimum.lo * (1.0 - 1e-9),
+                "wheel {k}: bound {bound} far below {optimum:?}"
+            );
+            checked += 1;
+        });
         assert!(checked >= 3, "only {checked} faces checked");
     }
 }
