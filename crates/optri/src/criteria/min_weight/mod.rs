@@ -226,15 +226,26 @@ pub(crate) fn general_min_weight(
     phases: &mut Vec<Phase>,
     budget: usize,
 ) -> Result<General> {
-    let pts = points.points();
     // PointSet guarantees three distinct points not on one line.
     let mut watch = Stopwatch::new(phases);
     let mut diagnostics = Diagnostics::default();
-    let candidates = skeleton::diamond_candidates(pts);
+    // Every phase runs on the points renumbered once in Z-order (their
+    // searches then read nearby memory); only the triangles are mapped back.
+    // The filter's candidates and the skeleton are sets defined by the
+    // geometry alone, whatever the numbering; the faces break exact weight
+    // ties by their search order, so a tie may resolve to another, equally
+    // light triangulation, still deterministic.
+    let order = crate::spatial::morton_order(points.points());
+    let pts: Vec<Point> = order.iter().map(|&v| points.points()[v as usize]).collect();
+    let pts = &pts[..];
+    let grid = point_grid(pts);
+    watch.lap("z-order");
+    let candidates = skeleton::diamond_filter(pts, &grid);
     diagnostics.add("diamond candidates", candidates.len() as u64);
     watch.lap("diamond filter");
     let n = pts.len();
-    let sk = skeleton::lmt_skeleton(pts, candidates)?;
+    let sk = skeleton::z_order_skeleton(pts, &grid, candidates)?;
+    drop(grid);
     let alive = sk.alive.iter().filter(|&&a| a).count();
     let certain = sk.certain.iter().filter(|&&a| a).count();
     diagnostics.add("skeleton candidates left", alive as u64);
@@ -279,7 +290,7 @@ pub(crate) fn general_min_weight(
             program_fronts += p.fronts as u64;
             program_nodes += p.nodes as u64;
         }
-        triangles.extend_from_slice(&r.triangles);
+        triangles.extend(r.triangles.iter().map(|t| t.map(|v| order[v as usize])));
     }
     diagnostics.add("faces", regions.len() as u64);
     diagnostics.add("faces by polygon program", polygons);
@@ -314,7 +325,7 @@ pub(crate) fn general_min_weight(
                 .iter()
                 .map(|t| t.map(|i| points.distinct_index(i)))
                 .collect();
-            if compare_weights(pts, &tris, &best) == Ordering::Less {
+            if compare_weights(points.points(), &tris, &best) == Ordering::Less {
                 best = tris;
                 algorithm =
                     format!("{algorithm}; not proven optimal, the {name} triangulation is lighter");
@@ -322,7 +333,8 @@ pub(crate) fn general_min_weight(
         }
         triangulation = Triangulation::from_distinct(points, best);
         // Lower bound: the certain edges, the solved faces' inner edges
-        // (their optimum) and the unsolved faces' bounds.
+        // (their optimum) and the unsolved faces' bounds (in Z-order, as
+        // the skeleton and the regions).
         let mut solved_weight = LengthInterval::ZERO;
         for r in regions.iter().filter(|r| r.method != Method::Fallback) {
             for e in region_inner_edges(&r.triangles, &sk) {

@@ -67,14 +67,20 @@ const TAU: f64 = 2.0 * PI;
 /// instructions than √2 at 10⁴ uniform points, same candidates).
 const RING_GROWTH: f64 = 1.25;
 
-/// The candidate edges (pairs `u < v`, sorted) surviving the diamond filter,
-/// with every convex-hull edge among them.
+/// [`diamond_filter`] with its own grid of the points (for the tests).
+#[cfg(any(test, feature = "internals"))]
 pub(crate) fn diamond_candidates(pts: &[Point]) -> Vec<[u32; 2]> {
-    let n = pts.len();
+    diamond_filter(pts, &super::point_grid(pts))
+}
+
+/// The candidate edges (pairs `u < v`, sorted) surviving the diamond filter,
+/// with every convex-hull edge among them; `grid` is
+/// [`point_grid`](super::point_grid) of `pts`.
+pub(crate) fn diamond_filter(pts: &[Point], grid: &SparseGrid<u32>) -> Vec<[u32; 2]> {
     let bbox = bounding_box(pts);
     let (w, h) = (bbox[2] - bbox[0], bbox[3] - bbox[1]);
-    let cell = ((w * h) / n as f64).sqrt().max(w.max(h) / n as f64);
-    let grid = SparseGrid::new(bbox, cell, n, |i| pts[i], |i| i as u32, |i| i as u32);
+    // The cell size only sets the first ring's radius (the schedule).
+    let cell = 1.0 / grid.inverse_cell();
     let diagonal = w.hypot(h);
     // Points in cell order, so that consecutive searches read the same
     // cells (the result is sorted below, so the order does not matter).
@@ -82,7 +88,6 @@ pub(crate) fn diamond_candidates(pts: &[Point]) -> Vec<[u32; 2]> {
         .into_par_iter()
         .with_min_len(16)
         .flat_map_iter(|k| {
-            let grid = &grid;
             grid.cell(k)
                 .iter()
                 .flat_map(move |&p| search_from(pts, grid, bbox, cell, diagonal, p))
@@ -452,14 +457,12 @@ fn edges_conflict(pts: &[Point], e: [u32; 2], f: [u32; 2]) -> bool {
 
 use crate::error::{Error, UnsupportedReason};
 
-/// Builds the triangles and crossings of the candidate edges (sorted
-/// distinct pairs `u < v`, as [`diamond_candidates`] gives them) and runs
-/// the LMT loop. The work runs on the points renumbered in Z-order (the loop's
-/// accesses to triangles, edges and points then stay mostly within cache:
-/// in input order each is a miss); the result is mapped back, identical,
-/// since the LMT-skeleton is the greatest fixed point of the removal rule
-/// (removing an edge only removes triangles), whatever the numbering and
-/// the work list's order.
+/// [`z_order_skeleton`] for points in any order (for the tests): the work
+/// runs on the points renumbered in Z-order and the result is mapped back,
+/// identical, since the LMT-skeleton is the greatest fixed point of the
+/// removal rule (removing an edge only removes triangles), whatever the
+/// numbering and the work list's order.
+#[cfg(any(test, feature = "internals"))]
 pub(crate) fn lmt_skeleton(pts: &[Point], edges: Vec<[u32; 2]>) -> crate::error::Result<Skeleton> {
     debug_assert!(
         edges.windows(2).all(|w| w[0] < w[1]) && edges.iter().all(|&[u, v]| u < v),
@@ -467,15 +470,6 @@ pub(crate) fn lmt_skeleton(pts: &[Point], edges: Vec<[u32; 2]>) -> crate::error:
     );
     let n = pts.len();
     let m = edges.len();
-    // Edge ids are `u32`, the adjacency's offsets count `2m`.
-    if m > u32::MAX as usize / 2 {
-        return Err(too_many_points(
-            n,
-            m,
-            u32::MAX as usize / 2,
-            "u32 ids of candidate edges",
-        ));
-    }
     let order = crate::spatial::morton_order(pts);
     let mut rank = vec![0u32; n];
     for (z, &v) in order.iter().enumerate() {
@@ -617,14 +611,32 @@ fn adjacency(n: usize, edges: &[[u32; 2]]) -> (Vec<u32>, Vec<(u32, u32)>) {
     (adj_offsets, adj)
 }
 
-/// [`lmt_skeleton`] on points in Z-order.
-fn z_order_skeleton(
+/// Builds the triangles and crossings of the candidate edges (sorted
+/// distinct pairs `u < v`, as [`diamond_filter`] gives them) and runs the
+/// LMT loop; `grid` is [`point_grid`](super::point_grid) of `pts`. Correct in
+/// any numbering, meant for points in Z-order (the loop's accesses to
+/// triangles, edges and points then stay mostly within cache: in input
+/// order each is a miss).
+pub(crate) fn z_order_skeleton(
     pts: &[Point],
     grid: &SparseGrid<u32>,
     edges: Vec<[u32; 2]>,
 ) -> crate::error::Result<Skeleton> {
+    debug_assert!(
+        edges.windows(2).all(|w| w[0] < w[1]) && edges.iter().all(|&[u, v]| u < v),
+        "candidates: sorted distinct pairs u < v"
+    );
     let n = pts.len();
     let m = edges.len();
+    // Edge ids are `u32`, the adjacency's offsets count `2m`.
+    if m > u32::MAX as usize / 2 {
+        return Err(too_many_points(
+            n,
+            m,
+            u32::MAX as usize / 2,
+            "u32 ids of candidate edges",
+        ));
+    }
     let (adj_offsets, adj) = adjacency(n, &edges);
     let hull_cycle = convex_hull_cycle(pts);
     let mut skeleton = Skeleton {
