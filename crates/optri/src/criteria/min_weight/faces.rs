@@ -1,8 +1,12 @@
 //! The faces the LMT-skeleton leaves and their exact triangulation.
 //!
-//! The certain edges (with the hull) are inserted as constraints into a
-//! constrained Delaunay triangulation (spade); its triangles joined across
-//! unconstrained edges form the *regions*: the faces of the skeleton. A
+//! When the certain edges (with the hull) connect every point — the usual
+//! case — the faces of their plane graph are traced directly, by the exact
+//! angular order at each vertex ([`traced_faces`]); each is then one closed
+//! walk with no point inside. Otherwise the certain edges are inserted as
+//! constraints into a constrained Delaunay triangulation (spade); its
+//! triangles joined across unconstrained edges form the *regions*: the faces
+//! of the skeleton, with their holes and isolated points. A
 //! region is *simple* when its boundary is one closed walk (weakly simple:
 //! a dangling certain edge is walked twice) with no point inside; Klincsek's
 //! program ([`crate::polygon_program`]) then finds its minimum-weight
@@ -107,11 +111,198 @@ pub(crate) fn solve_regions(
     sk: &Skeleton,
     budget: usize,
 ) -> crate::error::Result<Vec<RegionResult>> {
+    solve_regions_within(pts, sk, budget, super::MAX_POINTS)
+}
+
+/// [`solve_regions`] with Klincsek's program on faces of at most
+/// `polygon_limit` corners (the tests lower it to reach the fallback).
+fn solve_regions_within(
+    pts: &[Point],
+    sk: &Skeleton,
+    budget: usize,
+    polygon_limit: usize,
+) -> crate::error::Result<Vec<RegionResult>> {
+    if let Some(cycles) = traced_faces(pts, sk) {
+        let solved: Vec<RegionResult> = cycles
+            .into_par_iter()
+            .map(|cycle| {
+                let region = Region {
+                    cycles: vec![cycle],
+                    inner: Vec::new(),
+                    cdt_triangles: Vec::new(),
+                };
+                solve_region(pts, sk, region, budget, polygon_limit)
+            })
+            .collect();
+        // A simple face falls back only when Klincsek's program cannot run
+        // on it (too many corners): that needs the constrained Delaunay
+        // triangles, so all faces go the general way (rare).
+        if solved.iter().all(|r| r.method != Method::Fallback) {
+            return Ok(solved);
+        }
+    }
     let regions = regions(pts, sk)?;
     Ok(regions
         .into_par_iter()
-        .map(|r| solve_region(pts, sk, r, budget))
+        .map(|r| solve_region(pts, sk, r, budget, polygon_limit))
         .collect())
+}
+
+/// The faces of the plane graph of the certain edges (the hull among them)
+/// when it connects every point, as boundary walks (the face on the left,
+/// each starting at its least half-edge `(from, to)`, as [`regions`] starts
+/// them), the outer face left out; `None` when some point is on no certain
+/// edge or the graph is not connected. A connected plane graph has faces
+/// bounded by one closed walk each (Euler), and a point inside a face would
+/// be a vertex of the graph, hence on its walk: every face is a simple
+/// region (weakly simple where an edge dangles), found without the
+/// constrained Delaunay triangulation by following, at each vertex, the
+/// next certain edge clockwise (exact angular order).
+fn traced_faces(pts: &[Point], sk: &Skeleton) -> Option<Vec<Vec<u32>>> {
+    let n = pts.len();
+    let certain: Vec<[u32; 2]> = sk
+        .edges
+        .iter()
+        .zip(&sk.certain)
+        .filter(|(_, &c)| c)
+        .map(|(&e, _)| e)
+        .collect();
+    if certain.len() + 1 < n {
+        return None; // a spanning connected graph has at least n − 1 edges
+    }
+    let mut parent: Vec<u32> = (0..n as u32).collect();
+    fn root(parent: &mut [u32], mut v: u32) -> u32 {
+        while parent[v as usize] != v {
+            let up = parent[parent[v as usize] as usize];
+            parent[v as usize] = up;
+            v = up;
+        }
+        v
+    }
+    let mut components = n;
+    for &[u, v] in &certain {
+        let (a, b) = (root(&mut parent, u), root(&mut parent, v));
+        if a != b {
+            parent[a.max(b) as usize] = a.min(b);
+            components -= 1;
+        }
+    }
+    drop(parent);
+    if components != 1 {
+        return None;
+    }
+    // Half-edges `v → w` grouped by `v`, counter-clockwise from east.
+    let mut offsets = vec![0u32; n + 1];
+    for &[u, v] in &certain {
+        offsets[u as usize + 1] += 1;
+        offsets[v as usize + 1] += 1;
+    }
+    for v in 0..n {
+        offsets[v + 1] += offsets[v];
+    }
+    let mut to = vec![0u32; offsets[n] as usize];
+    let mut fill = offsets.clone();
+    for &[u, v] in &certain {
+        to[fill[u as usize] as usize] = v;
+        fill[u as usize] += 1;
+        to[fill[v as usize] as usize] = u;
+        fill[v as usize] += 1;
+    }
+    drop(fill);
+    drop(certain);
+    let around = |v: usize| offsets[v] as usize..offsets[v + 1] as usize;
+    let mut slices: Vec<&mut [u32]> = Vec::with_capacity(n);
+    {
+        let mut rest = &mut to[..];
+        for v in 0..n {
+            let (head, tail) = rest.split_at_mut(around(v).len());
+            slices.push(head);
+            rest = tail;
+        }
+    }
+    // Two certain edges in one direction would overlap: not a plane graph
+    // (never expected; the general way then decides).
+    let plane = slices.par_iter_mut().enumerate().all(|(v, list)| {
+        let a = pts[v];
+        list.sort_unstable_by(|&x, &y| ccw_from_east(a, pts[x as usize], pts[y as usize]));
+        list.windows(2)
+            .all(|w| ccw_from_east(a, pts[w[0] as usize], pts[w[1] as usize]) == Ordering::Less)
+    });
+    drop(slices);
+    if !plane {
+        return None;
+    }
+    // next(u → v) = v → w, w the neighbour of v just clockwise of u: the
+    // face left of u → v continues along it.
+    let source: Vec<u32> = (0..n as u32)
+        .flat_map(|v| std::iter::repeat_n(v, around(v as usize).len()))
+        .collect();
+    let next: Vec<u32> = (0..to.len())
+        .into_par_iter()
+        .map(|h| {
+            let (u, v) = (source[h], to[h] as usize);
+            let range = around(v);
+            let list = &to[range.clone()];
+            let b = pts[v];
+            let i = list.partition_point(|&x| {
+                ccw_from_east(b, pts[x as usize], pts[u as usize]) == Ordering::Less
+            });
+            debug_assert_eq!(list[i], u);
+            (range.start + (i + list.len() - 1) % list.len()) as u32
+        })
+        .collect();
+    // The outer face holds the hull's edges reversed: `hull[1] → hull[0]`.
+    let hull = crate::spatial::convex_hull_cycle(pts);
+    let outer = around(hull[1] as usize)
+        .find(|&h| to[h] == hull[0])
+        .expect("hull edges are certain");
+    let mut seen = vec![false; to.len()];
+    let mut faces = Vec::with_capacity(to.len() / 3);
+    for start in 0..to.len() {
+        if seen[start] {
+            continue;
+        }
+        let mut cycle = Vec::new();
+        let mut is_outer = false;
+        let mut h = start;
+        while !seen[h] {
+            seen[h] = true;
+            is_outer |= h == outer;
+            cycle.push(source[h]);
+            h = next[h] as usize;
+        }
+        if is_outer {
+            continue;
+        }
+        let k = cycle.len();
+        let first = (0..k)
+            .min_by_key(|&i| (cycle[i], cycle[(i + 1) % k]))
+            .expect("a face has a boundary");
+        cycle.rotate_left(first);
+        faces.push(cycle);
+    }
+    Some(faces)
+}
+
+/// Exact counter-clockwise order of the directions `a → x`, `a → y` from
+/// east (the direction `+x` first).
+fn ccw_from_east(a: Point, x: Point, y: Point) -> Ordering {
+    // Upper half-plane, with east, first; the signs of f64 differences are
+    // exact.
+    let half = |w: Point| {
+        if w[1] > a[1] || (w[1] == a[1] && w[0] > a[0]) {
+            0
+        } else {
+            1
+        }
+    };
+    half(x)
+        .cmp(&half(y))
+        .then_with(|| match orient_sign(a, x, y) {
+            1 => Ordering::Less,
+            -1 => Ordering::Greater,
+            _ => Ordering::Equal,
+        })
 }
 
 fn regions(pts: &[Point], sk: &Skeleton) -> crate::error::Result<Vec<Region>> {
@@ -305,7 +496,13 @@ fn corners_of(region: &Region) -> HashMap<u32, Vec<Corner>> {
     corners_at
 }
 
-fn solve_region(pts: &[Point], sk: &Skeleton, region: Region, budget: usize) -> RegionResult {
+fn solve_region(
+    pts: &[Point],
+    sk: &Skeleton,
+    region: Region,
+    budget: usize,
+    polygon_limit: usize,
+) -> RegionResult {
     let corners: usize = region.cycles.iter().map(Vec::len).sum();
     let mut result = RegionResult {
         triangles: Vec::new(),
@@ -317,8 +514,10 @@ fn solve_region(pts: &[Point], sk: &Skeleton, region: Region, budget: usize) -> 
         program: None,
         lower: 0.0,
     };
-    if region.cdt_triangles.len() == 1 {
-        result.triangles = region.cdt_triangles;
+    if region.cycles.len() == 1 && region.inner.is_empty() && region.cycles[0].len() == 3 {
+        // One walk of three half-edges: a (counter-clockwise) empty triangle.
+        let c = &region.cycles[0];
+        result.triangles = vec![[c[0], c[1], c[2]]];
         result.method = Method::Triangle;
         return result;
     }
@@ -327,7 +526,7 @@ fn solve_region(pts: &[Point], sk: &Skeleton, region: Region, budget: usize) -> 
     let mut incumbent = None;
     let mut program_lower = 0.0f64;
     if region.cycles.len() == 1 && region.inner.is_empty() {
-        if let Some(t) = solve_polygon(pts, sk, &region.cycles[0]) {
+        if let Some(t) = solve_polygon(pts, sk, &region.cycles[0], polygon_limit) {
             result.triangles = t;
             result.method = Method::Polygon;
             return result;
@@ -867,9 +1066,14 @@ fn lower_bound(
 
 /// Klincsek's program on a simple region (one boundary walk, no inner
 /// point), over the candidate diagonals inside it.
-fn solve_polygon(pts: &[Point], sk: &Skeleton, cycle: &[u32]) -> Option<Vec<[u32; 3]>> {
+fn solve_polygon(
+    pts: &[Point],
+    sk: &Skeleton,
+    cycle: &[u32],
+    limit: usize,
+) -> Option<Vec<[u32; 3]>> {
     let k = cycle.len();
-    if k > super::MAX_POINTS {
+    if k > limit {
         return None; // O(k²) tables: the region keeps its fallback
     }
     let corner = |i: usize| Corner {
@@ -1320,6 +1524,98 @@ mod tests {
             .collect();
         pts.push(centre);
         pts
+    }
+
+    /// The faces traced from the certain edges are exactly the constrained
+    /// Delaunay regions (same walks, same starts), and they are traced
+    /// exactly when every region is simple: on random, clustered, grid,
+    /// lattice (collinear runs, cocircular quadruples) and wheel sets, with
+    /// both outcomes met.
+    #[test]
+    fn traced_faces_are_the_constrained_delaunay_regions() {
+        use optri_oracle::inputs;
+        use rand::{rngs::StdRng, SeedableRng};
+        let mut rng = StdRng::seed_from_u64(21);
+        let mut sets: Vec<Vec<Point>> = vec![
+            inputs::uniform_unit_square(&mut rng, 2000),
+            inputs::clustered(&mut rng, 1500, 12),
+            inputs::shuffled_grid(&mut rng, 30, 30, 1.0),
+            inputs::grid_subset(&mut rng, 40, 40, 0.5),
+            inputs::distinct_lattice_points(&mut rng, 600, -20i64..20, -20i64..20),
+            inputs::uniform_in_square(&mut rng, 1000, 1e12),
+        ];
+        for k in [13, 15, 17] {
+            sets.push(ring_with(k, [0.0, 0.0]));
+        }
+        let (mut traced, mut general) = (0, 0);
+        for pts in &sets {
+            let candidates = super::super::skeleton::diamond_candidates(pts);
+            let sk = super::super::skeleton::lmt_skeleton(pts, candidates).unwrap();
+            let regions = regions(pts, &sk).unwrap();
+            let simple = regions
+                .iter()
+                .all(|r| r.cycles.len() == 1 && r.inner.is_empty());
+            match traced_faces(pts, &sk) {
+                Some(mut faces) => {
+                    assert!(simple, "traced although a region has a hole or a point");
+                    let mut expected: Vec<Vec<u32>> =
+                        regions.into_iter().map(|r| r.cycles[0].clone()).collect();
+                    faces.sort();
+                    expected.sort();
+                    assert_eq!(faces, expected);
+                    traced += 1;
+                }
+                None => {
+                    assert!(!simple, "every region is simple, yet not traced");
+                    general += 1;
+                }
+            }
+        }
+        assert!(
+            traced >= 4 && general >= 3,
+            "traced {traced}, general {general}"
+        );
+    }
+
+    /// A simple face too large for Klincsek's program (the limit lowered to
+    /// five corners) sends every face the general way: its fallback is the
+    /// constrained Delaunay triangles, so the faces still triangulate the
+    /// hull, and the larger faces are reported unsolved.
+    #[test]
+    fn a_face_beyond_the_program_limit_takes_the_general_way() {
+        use optri_oracle::inputs;
+        use rand::{rngs::StdRng, SeedableRng};
+        let mut rng = StdRng::seed_from_u64(5);
+        let pts = inputs::uniform_unit_square(&mut rng, 400);
+        let candidates = super::super::skeleton::diamond_candidates(&pts);
+        let sk = super::super::skeleton::lmt_skeleton(&pts, candidates).unwrap();
+        assert!(traced_faces(&pts, &sk).is_some());
+        let results = solve_regions_within(&pts, &sk, FRONT_BUDGET, 5).unwrap();
+        let large = results.iter().filter(|r| r.corners > 5).count();
+        assert!(large > 0);
+        for r in &results {
+            let expected = if r.corners == 3 {
+                Method::Triangle
+            } else if r.corners <= 5 {
+                Method::Polygon
+            } else {
+                Method::Fallback
+            };
+            assert_eq!(r.method, expected);
+            assert_eq!(
+                r.triangles.len(),
+                r.corners - 2,
+                "a simple face's triangles"
+            );
+        }
+        let hull = crate::spatial::convex_hull_cycle(&pts).len();
+        let triangles: usize = results.iter().map(|r| r.triangles.len()).sum();
+        assert_eq!(triangles, 2 * pts.len() - hull - 2);
+        // The same as the traced way with the usual limit, face for face
+        // where both solved it.
+        let usual = solve_regions(&pts, &sk, FRONT_BUDGET).unwrap();
+        assert!(usual.iter().all(|r| r.method != Method::Fallback));
+        assert_eq!(usual.len(), results.len());
     }
 
     /// Every face with an inner point of three small wheels (13 and 17 rim
