@@ -157,6 +157,8 @@ mod sequential {
         where
             T: Ord;
         fn par_sort_unstable_by<F: FnMut(&T, &T) -> Ordering>(&mut self, compare: F);
+        // Only the LMT-skeleton's reference build (tests, `internals`) sorts by key.
+        #[cfg(any(test, feature = "internals"))]
         fn par_sort_unstable_by_key<K: Ord, F: FnMut(&T) -> K>(&mut self, key: F);
     }
     impl<T> ParallelSliceMut<T> for [T] {
@@ -179,6 +181,7 @@ mod sequential {
         fn par_sort_unstable_by<F: FnMut(&T, &T) -> Ordering>(&mut self, compare: F) {
             self.sort_unstable_by(compare)
         }
+        #[cfg(any(test, feature = "internals"))]
         #[inline]
         fn par_sort_unstable_by_key<K: Ord, F: FnMut(&T) -> K>(&mut self, key: F) {
             self.sort_unstable_by_key(key)
