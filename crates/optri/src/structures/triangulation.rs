@@ -4,10 +4,12 @@
 
 use crate::error::{Error, Result};
 use crate::kernel::{self, compare_areas, compare_lengths, orient_sign, Point};
+use crate::parallel::prelude::*;
 use crate::spatial::convex_hull_cycle;
 use crate::structures::{PointSet, SimplePolygon};
 #[cfg(feature = "io")]
 use serde::Serialize;
+use std::sync::OnceLock;
 
 /// The region a [`Triangulation`] covers.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -33,6 +35,10 @@ pub struct Triangulation {
     point_set: PointSet,
     triangles: Vec<[u32; 3]>,
     domain: Domain,
+    /// [`stats`](Self::stats), computed on first use: every front end
+    /// reports them more than once (the document, its weight gap, the CLI's
+    /// summary), and at 10⁶ points each computation sorts 6·10⁶ edges.
+    stats: OnceLock<Stats>,
 }
 
 /// Quality measures of a triangulation (rounded values for reporting).
@@ -90,6 +96,7 @@ impl Triangulation {
             point_set: point_set.clone(),
             triangles,
             domain: Domain::ConvexHull,
+            stats: OnceLock::new(),
         }
     }
 
@@ -99,11 +106,13 @@ impl Triangulation {
         polygon: &SimplePolygon,
         triangles: Vec<[u32; 3]>,
     ) -> Self {
-        let mut t = Self::from_distinct(polygon.point_set(), triangles);
-        t.domain = Domain::Polygon {
-            boundary: polygon.counter_clockwise().to_vec(),
-        };
-        t
+        let t = Self::from_distinct(polygon.point_set(), triangles);
+        Self {
+            domain: Domain::Polygon {
+                boundary: polygon.counter_clockwise().to_vec(),
+            },
+            ..t
+        }
     }
 
     /// The same triangles and domain over `point_set`, which holds the same
@@ -116,7 +125,11 @@ impl Triangulation {
             point_set.input_points().len(),
             self.point_set.input_points().len()
         );
-        Self { point_set, ..self }
+        Self {
+            point_set,
+            stats: OnceLock::new(),
+            ..self
+        }
     }
 
     /// Builds a triangulation from triangles given as input indices and
@@ -126,6 +139,7 @@ impl Triangulation {
             point_set: point_set.clone(),
             triangles,
             domain: Domain::ConvexHull,
+            stats: OnceLock::new(),
         };
         t.validate()?;
         Ok(t)
@@ -143,6 +157,7 @@ impl Triangulation {
             domain: Domain::Polygon {
                 boundary: polygon.counter_clockwise().to_vec(),
             },
+            stats: OnceLock::new(),
         };
         t.validate()?;
         Ok(t)
@@ -170,15 +185,19 @@ impl Triangulation {
 
     /// All edges as `[min, max]` input-index pairs, sorted.
     pub fn edges(&self) -> Vec<[u32; 2]> {
-        let mut e: Vec<[u32; 2]> = self
+        // Sorted as `min << 32 | max`: one integer comparison per step (the
+        // same order as the pairs').
+        let mut keys: Vec<u64> = self
             .triangles
-            .iter()
-            .flat_map(|t| [[t[0], t[1]], [t[1], t[2]], [t[2], t[0]]])
-            .map(|[a, b]| [a.min(b), a.max(b)])
+            .par_iter()
+            .flat_map_iter(|t| [[t[0], t[1]], [t[1], t[2]], [t[2], t[0]]])
+            .map(|[a, b]| (u64::from(a.min(b)) << 32) | u64::from(a.max(b)))
             .collect();
-        e.sort_unstable();
-        e.dedup();
-        e
+        keys.par_sort_unstable();
+        keys.dedup();
+        keys.into_iter()
+            .map(|k| [(k >> 32) as u32, k as u32])
+            .collect()
     }
 
     fn point(&self, i: u32) -> Point {
@@ -188,7 +207,11 @@ impl Triangulation {
     /// The longest edge, chosen by exact length comparison (ties: the
     /// smallest index pair).
     pub fn longest_edge(&self) -> [u32; 2] {
-        let edges = self.edges();
+        self.stats().longest_edge
+    }
+
+    /// The longest of `edges` (exact; ties: the first).
+    fn longest_of(&self, edges: &[[u32; 2]]) -> [u32; 2] {
         let mut best = edges[0];
         for &e in &edges[1..] {
             if compare_lengths(
@@ -206,8 +229,12 @@ impl Triangulation {
 
     /// Quality measures.
     pub fn stats(&self) -> Stats {
+        self.stats.get_or_init(|| self.compute_stats()).clone()
+    }
+
+    fn compute_stats(&self) -> Stats {
         let edges = self.edges();
-        let longest_edge = self.longest_edge();
+        let longest_edge = self.longest_of(&edges);
         let mut stats = Stats {
             max_edge_length: kernel::metrics::length(
                 self.point(longest_edge[0]),
@@ -467,6 +494,34 @@ mod tests {
         assert!((s.max_edge_length - 2.0).abs() < 1e-12);
         assert!((s.min_angle_deg - 45.0).abs() < 1e-9);
         assert!((s.max_angle_deg - 90.0).abs() < 1e-9);
+    }
+
+    /// The sorted-key edge list equals the plain pair set, and the cached
+    /// stats follow a change of coordinates (`with_point_set`).
+    #[test]
+    fn edges_are_the_distinct_sorted_pairs_and_stats_follow_the_points() {
+        let ps = square_with_center();
+        let t =
+            Triangulation::from_triangles(&ps, vec![[0, 1, 4], [1, 2, 4], [2, 3, 4], [3, 0, 4]])
+                .unwrap();
+        let pairs: std::collections::BTreeSet<[u32; 2]> = t
+            .triangles()
+            .iter()
+            .flat_map(|t| [[t[0], t[1]], [t[1], t[2]], [t[2], t[0]]])
+            .map(|[a, b]| [a.min(b), a.max(b)])
+            .collect();
+        assert_eq!(t.edges(), pairs.into_iter().collect::<Vec<_>>());
+        assert_eq!(t.stats().max_edge_length, 2.0);
+        assert_eq!(t.longest_edge(), [0, 1]);
+        #[cfg(feature = "io")]
+        {
+            let wider =
+                PointSet::new(&[[0.0, 0.0], [6.0, 0.0], [6.0, 2.0], [0.0, 2.0], [3.0, 1.0]])
+                    .unwrap();
+            let t = t.with_point_set(wider);
+            assert_eq!(t.stats().max_edge_length, 6.0);
+            assert!((t.stats().total_edge_length - (16.0 + 4.0 * 10f64.sqrt())).abs() < 1e-12);
+        }
     }
 
     #[test]
