@@ -138,6 +138,7 @@ fn search_from(
     let mut waiting: Vec<(f64, u32)> = Vec::new();
     let mut ring: Vec<(f64, f64, u32)> = Vec::new();
     let mut killers: Vec<f64> = Vec::new(); // sorted angles
+    let mut scratch: Vec<f64> = Vec::new();
     let mut read: Option<[u64; 4]> = None;
     let mut radius = 2.0 * cell;
     loop {
@@ -182,7 +183,8 @@ fn search_from(
         // a sort by distance (which was a fifth of the filter's time): their
         // order does not matter, as the killers are sorted by angle.
         let before = killers.len();
-        for i in promoted..seen.len() {
+        let first_farther = promoted;
+        for i in first_farther..seen.len() {
             if seen[i].0 * KILL_FACTOR2 < outer2 {
                 let entry = &mut seen[i];
                 if entry.1.is_nan() {
@@ -194,7 +196,11 @@ fn search_from(
             }
         }
         if killers.len() > before {
-            killers.sort_unstable_by(f64::total_cmp);
+            // The old killers are sorted: sort the new ones and merge.
+            killers[before..].sort_unstable_by(f64::total_cmp);
+            if before > 0 && killers[before - 1] > killers[before] {
+                merge_sorted_runs(&mut killers, before, &mut scratch);
+            }
         }
         if all_directions_dead(a, bbox, radius, &killers) {
             break;
@@ -202,6 +208,26 @@ fn search_from(
         radius *= RING_GROWTH;
     }
     out
+}
+
+/// Merges the sorted runs `v[..mid]` and `v[mid..]` (finite values) in
+/// place, through `scratch`.
+fn merge_sorted_runs(v: &mut [f64], mid: usize, scratch: &mut Vec<f64>) {
+    scratch.clear();
+    scratch.extend_from_slice(&v[..mid]);
+    let (mut i, mut j, mut k) = (0, mid, 0);
+    while i < scratch.len() && j < v.len() {
+        if v[j] < scratch[i] {
+            v[k] = v[j];
+            j += 1;
+        } else {
+            v[k] = scratch[i];
+            i += 1;
+        }
+        k += 1;
+    }
+    // What is left of the second run is already in place.
+    v[k..k + scratch.len() - i].copy_from_slice(&scratch[i..]);
 }
 
 fn angle_of(dx: f64, dy: f64) -> f64 {
@@ -1064,4 +1090,30 @@ fn run_lmt_loop(pts: &[Point], grid: &SparseGrid<u32>, sk: &mut Skeleton) -> Vec
         }
     }
     state
+}
+
+#[cfg(test)]
+mod tests {
+    use super::merge_sorted_runs;
+    use rand::{rngs::StdRng, Rng, SeedableRng};
+
+    #[test]
+    fn merging_two_sorted_runs_sorts_them() {
+        let mut rng = StdRng::seed_from_u64(7);
+        let mut scratch = Vec::new();
+        for _ in 0..2000 {
+            let len = rng.gen_range(0..40);
+            let mid = rng.gen_range(0..=len);
+            // Few distinct values, so that equal keys across the runs occur.
+            let mut v: Vec<f64> = (0..len)
+                .map(|_| f64::from(rng.gen_range(0..12u8)))
+                .collect();
+            v[..mid].sort_unstable_by(f64::total_cmp);
+            v[mid..].sort_unstable_by(f64::total_cmp);
+            let mut expected = v.clone();
+            expected.sort_unstable_by(f64::total_cmp);
+            merge_sorted_runs(&mut v, mid, &mut scratch);
+            assert_eq!(v, expected);
+        }
+    }
 }
