@@ -100,6 +100,7 @@ use guard::{next_floor, next_growth, round_grid, MIN_RELATIVE_STEP, NO_LINE, THR
 use partial::Partial;
 use segment_index::{PointsNear, Query, SegmentIndex};
 use std::cmp::Ordering;
+use std::sync::OnceLock;
 
 /// No candidate at a vertex yet (the lowest rank found so far).
 const NO_RANK: u32 = u32::MAX;
@@ -188,6 +189,7 @@ pub(super) fn greedy_general(
     drop(to_local);
     let renumbering = Renumbering {
         to_original: &to_original,
+        yx_rank: OnceLock::new(),
     };
     let mut triangles: Vec<[u32; 3]> = greedy_rounds(&local, &hull, &renumbering, phases)?
         .into_par_iter()
@@ -261,20 +263,109 @@ fn single_fan(points: &[Point]) -> Option<Vec<[u32; 3]>> {
 /// Local (memory-friendly) numbering versus the caller's, which decides ties.
 struct Renumbering<'a> {
     to_original: &'a [u32],
+    /// Each local point's position in `(y, x)` order, for [`Self::ranks`]'s
+    /// integer keys (computed on first use).
+    yx_rank: OnceLock<Vec<u32>>,
 }
+
+/// Original indices below this fit [`Renumbering::tie_key`]'s 31 bits.
+const TIE_KEY_INDEX_LIMIT: usize = 1 << 31;
 
 impl Renumbering<'_> {
     /// The position of each local-index segment in the global segment order
-    /// (exact; see [`super::sort_keyed_runs`]).
+    /// (exact).
     ///
     /// That order is [`crate::kernel::segment_order`] on the original
     /// indices; the local copy holds the same coordinates, so lengths are
     /// compared there and only ties look at the original indices
-    /// ([`compare_equal_lengths_symbolic`]). Squared lengths that `f64`
-    /// computes exactly (integer coordinates, where ties are common:
-    /// [`exact_squared_length`]) are compared as numbers, the others by
-    /// [`compare_lengths`].
+    /// ([`compare_equal_lengths_symbolic`]). When `f64` computes every
+    /// squared length exactly (integer coordinates, as from a file of
+    /// six-decimal points, where ties are common: [`exact_squared_length`]),
+    /// the order is that of one integer key per segment
+    /// ([`Self::tie_key`]); otherwise [`Self::ranks_by_comparison`].
     fn ranks(&self, points: &[Point], segments: &[[u32; 2]]) -> Vec<u32> {
+        self.ranks_by_key(points, segments)
+            .unwrap_or_else(|| self.ranks_by_comparison(points, segments))
+    }
+
+    /// [`Self::ranks`] by sorting `(exact squared length, tie key)` as one
+    /// `u128`, or `None` if a squared length is not exact in `f64` (or there
+    /// are too many points for the key). Each key is computed from the
+    /// segment's own endpoints, in the candidates' spatial order; the
+    /// comparison sort it replaces read every tied segment's endpoints at
+    /// random (a fifth of greedy's time on a 10⁶-point CLI run).
+    fn ranks_by_key(&self, points: &[Point], segments: &[[u32; 2]]) -> Option<Vec<u32>> {
+        if points.len() > TIE_KEY_INDEX_LIMIT {
+            return None;
+        }
+        let lengths: Option<Vec<f64>> = segments
+            .par_iter()
+            .map(|&[a, b]| exact_squared_length(points[a as usize], points[b as usize]))
+            .collect();
+        let lengths = lengths?;
+        let yx_rank = self.yx_rank.get_or_init(|| {
+            let mut by_yx: Vec<u32> = (0..points.len() as u32).collect();
+            by_yx.par_sort_unstable_by(|&u, &v| {
+                let (p, q) = (points[u as usize], points[v as usize]);
+                (p[1], p[0])
+                    .partial_cmp(&(q[1], q[0]))
+                    .expect("finite coordinates")
+            });
+            let mut rank = vec![0u32; points.len()];
+            for (position, &v) in by_yx.iter().enumerate() {
+                rank[v as usize] = position as u32;
+            }
+            rank
+        });
+        let mut keyed: Vec<(u128, u32)> = segments
+            .par_iter()
+            .zip(lengths)
+            .enumerate()
+            .map(|(i, (&s, length))| {
+                // Non-negative doubles order as their bit patterns.
+                let key = (u128::from(length.to_bits()) << 64)
+                    | u128::from(self.tie_key(points, yx_rank, s));
+                (key, i as u32)
+            })
+            .collect();
+        keyed.par_sort_unstable();
+        let mut rank = vec![0u32; segments.len()];
+        for (position, &(_, i)) in keyed.iter().enumerate() {
+            rank[i as usize] = position as u32;
+        }
+        Some(rank)
+    }
+
+    /// The order of [`compare_equal_lengths_symbolic`] among segments of
+    /// one exact length, as a key: with `m` a segment's lower original index
+    /// and `u` its other endpoint, a segment whose `m` lies strictly below
+    /// `u` is shorter than every segment of larger `m`, one whose `m` does
+    /// not is longer, and at equal `m` the segment with the higher `u` in
+    /// `(y, x)` order is shorter. So the shorter come first as: the first
+    /// kind by ascending `m`, then the second by descending `m`; within one
+    /// `m`, by descending `u`. Key: the kind (1 bit), `m` or its complement
+    /// (31 bits), the complement of `u`'s `(y, x)` position (32 bits).
+    fn tie_key(&self, points: &[Point], yx_rank: &[u32], [a, b]: [u32; 2]) -> u64 {
+        let (oa, ob) = (self.to_original[a as usize], self.to_original[b as usize]);
+        let ((m, pm), u) = if oa < ob {
+            ((oa, points[a as usize]), b)
+        } else {
+            ((ob, points[b as usize]), a)
+        };
+        let pu = points[u as usize];
+        let holder_longer = pm[1] >= pu[1];
+        let high = if holder_longer {
+            (1u64 << 31) | u64::from(TIE_KEY_INDEX_LIMIT as u32 - 1 - m)
+        } else {
+            u64::from(m)
+        };
+        (high << 32) | u64::from(u32::MAX - yx_rank[u as usize])
+    }
+
+    /// [`Self::ranks`] by the exact comparison (see
+    /// [`super::sort_keyed_runs`]): squared lengths that `f64` computes
+    /// exactly are compared as numbers, the others by [`compare_lengths`].
+    fn ranks_by_comparison(&self, points: &[Point], segments: &[[u32; 2]]) -> Vec<u32> {
         let mut keyed = keyed_by_length(points, segments, |i, _| i as u32);
         let gather = |i: u32| {
             let ends =
@@ -708,6 +799,51 @@ fn decide_round(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use rand::{rngs::StdRng, seq::SliceRandom, Rng, SeedableRng};
+
+    /// The integer keys give the comparison sort's order, with many ties
+    /// (points of a 7×7 grid, halved: exact dyadic lengths), under a random
+    /// renumbering; non-exact squared lengths fall back.
+    #[test]
+    fn integer_keys_order_segments_as_the_exact_comparison() {
+        let mut rng = StdRng::seed_from_u64(12);
+        for case in 0..200 {
+            let mut points: Vec<Point> = (0..49)
+                .map(|i| [f64::from(i % 7) * 0.5, f64::from(i / 7) * 0.5 - 1.0])
+                .collect();
+            points.shuffle(&mut rng);
+            points.truncate(rng.gen_range(3..=49));
+            let mut to_original: Vec<u32> = (0..points.len() as u32).collect();
+            to_original.shuffle(&mut rng);
+            let renumbering = Renumbering {
+                to_original: &to_original,
+                yx_rank: OnceLock::new(),
+            };
+            let n = points.len() as u32;
+            let mut segments: Vec<[u32; 2]> = Vec::new();
+            for a in 0..n {
+                for b in a + 1..n {
+                    if rng.gen_bool(0.5) {
+                        segments.push(if rng.gen_bool(0.5) { [a, b] } else { [b, a] });
+                    }
+                }
+            }
+            let by_key = renumbering.ranks_by_key(&points, &segments).expect("exact");
+            assert_eq!(
+                by_key,
+                renumbering.ranks_by_comparison(&points, &segments),
+                "case {case}"
+            );
+            if case % 10 == 0 && !segments.is_empty() {
+                points[0][0] += 0.1; // 0.1 is not dyadic: not exact
+                let touched = segments.iter().any(|s| s.contains(&0));
+                assert_eq!(
+                    renumbering.ranks_by_key(&points, &segments).is_none(),
+                    touched
+                );
+            }
+        }
+    }
 
     /// Chains on one line join; a chain on a parallel line, one on a line
     /// whose rounded key equals the first line's but which is not it, and a
