@@ -181,10 +181,7 @@ pub(super) fn greedy_general(
     // The hull in local indices: the same cycle `convex_hull_cycle(&local)`
     // returns, as it depends only on the coordinates (distinct points,
     // lexicographic start).
-    let mut to_local = vec![0u32; original.len()];
-    for (l, &v) in to_original.iter().enumerate() {
-        to_local[v as usize] = l as u32;
-    }
+    let to_local = positions(to_original.iter().copied(), original.len());
     let hull: Vec<u32> = hull.iter().map(|&v| to_local[v as usize]).collect();
     drop(to_local);
     let renumbering = Renumbering {
@@ -311,11 +308,7 @@ impl Renumbering<'_> {
                     .partial_cmp(&(q[1], q[0]))
                     .expect("finite coordinates")
             });
-            let mut rank = vec![0u32; points.len()];
-            for (position, &v) in by_yx.iter().enumerate() {
-                rank[v as usize] = position as u32;
-            }
-            rank
+            positions(by_yx.into_iter(), points.len())
         });
         let mut keyed: Vec<(u128, u32)> = segments
             .par_iter()
@@ -329,11 +322,7 @@ impl Renumbering<'_> {
             })
             .collect();
         keyed.par_sort_unstable();
-        let mut rank = vec![0u32; segments.len()];
-        for (position, &(_, i)) in keyed.iter().enumerate() {
-            rank[i as usize] = position as u32;
-        }
-        Some(rank)
+        Some(positions(keyed.into_iter().map(|(_, i)| i), segments.len()))
     }
 
     /// The order of [`compare_equal_lengths_symbolic`] among segments of
@@ -382,12 +371,18 @@ impl Renumbering<'_> {
             .then_with(|| compare_equal_lengths_symbolic(x.0, y.0))
         };
         sort_keyed_runs(&mut keyed, gather, exact);
-        let mut rank = vec![0u32; segments.len()];
-        for (position, &(_, i)) in keyed.iter().enumerate() {
-            rank[i as usize] = position as u32;
-        }
-        rank
+        positions(keyed.into_iter().map(|(_, i)| i), segments.len())
     }
+}
+
+/// The inverse of a permutation of `0..len` listed in `order`: each item's
+/// position in it.
+fn positions(order: impl Iterator<Item = u32>, len: usize) -> Vec<u32> {
+    let mut position = vec![0u32; len];
+    for (at, v) in order.enumerate() {
+        position[v as usize] = at as u32;
+    }
+    position
 }
 
 /// The length rounds of the module docs on `points` (local numbering; ties
