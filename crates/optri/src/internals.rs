@@ -39,9 +39,14 @@ pub fn min_weight_pipeline(
 
 /// The general min-weight pipeline's edge sets on `points`: the diamond
 /// filter's candidates, the edges left by the LMT loop and the certain
-/// edges (distinct indices, sorted pairs `u < v`, each list sorted).
-pub fn min_weight_skeleton_edges(points: &crate::PointSet) -> [Vec<[u32; 2]>; 3] {
-    crate::criteria::min_weight::skeleton_edge_sets(points)
+/// edges (distinct indices, sorted pairs `u < v`, each list sorted). The
+/// LMT loop runs `loop_chunk` edges per parallel task: 1 interleaves the
+/// threads the most, `usize::MAX` is the sequential loop.
+pub fn min_weight_skeleton_edges(
+    points: &crate::PointSet,
+    loop_chunk: usize,
+) -> [Vec<[u32; 2]>; 3] {
+    crate::criteria::min_weight::skeleton_edge_sets(points, loop_chunk)
 }
 
 /// [`min_weight_pipeline`] with the exact search on faces with holes

@@ -197,7 +197,9 @@ fn check(input: &[Point], what: &str) -> usize {
         return 0; // all collinear: not a min-weight input
     };
     let pts = ps.points();
-    let [candidates, left, certain] = min_weight_skeleton_edges(&ps);
+    // One edge per task of the parallel LMT loop: the threads interleave
+    // the most.
+    let [candidates, left, certain] = min_weight_skeleton_edges(&ps, 1);
     let expected = candidates_reference(pts);
     assert_eq!(candidates, expected, "{what}: diamond candidates differ");
     let (expected_left, expected_certain) = skeleton_reference(pts, &expected);
@@ -255,5 +257,36 @@ fn degenerate_sets_match_the_brute_force_sets() {
     for round in 0..30 {
         let pts = collinear_runs(&mut rng, 1..4, 2..9, 0..6);
         check(&pts, &format!("collinear runs {round}"));
+    }
+}
+
+/// The parallel LMT loop (tasks of 1 and 64 edges, threads sharing the
+/// triangle states) leaves exactly the sequential loop's edges, on sets far
+/// beyond the brute force's reach, where many removals cascade across tasks.
+#[test]
+fn the_parallel_loop_leaves_the_sequential_loops_edges() {
+    let mut rng = StdRng::seed_from_u64(122);
+    let mut circle = integer_circle_points(325);
+    circle.push([0.0, 0.0]);
+    let sets: Vec<(&str, Vec<Point>)> = vec![
+        ("uniform", uniform_in_square(&mut rng, 4000, 1.0)),
+        ("clustered", clustered(&mut rng, 4000, 12)),
+        ("grid subset", grid_subset(&mut rng, 60, 60, 0.8)),
+        ("lattice", lattice_points(&mut rng, 3000, -40..40, -40..40)),
+        ("circle with centre", circle),
+    ];
+    for (what, pts) in sets {
+        let ps = PointSet::new(&pts).unwrap();
+        let sequential = min_weight_skeleton_edges(&ps, usize::MAX);
+        let [candidates, left, _] = &sequential;
+        assert!(
+            candidates.len() > left.len() + 500,
+            "{what}: only {} candidates removed",
+            candidates.len() - left.len()
+        );
+        for chunk in [1, 1, 64] {
+            let parallel = min_weight_skeleton_edges(&ps, chunk);
+            assert_eq!(parallel, sequential, "{what}: chunk {chunk}");
+        }
     }
 }

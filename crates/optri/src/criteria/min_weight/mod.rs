@@ -155,11 +155,11 @@ impl<P: Fn(usize) -> Point> Objective for TotalLength<'_, P> {
 /// sorted pairs `u < v`), for the tests that compare them with brute-force
 /// references.
 #[cfg(feature = "internals")]
-pub(crate) fn skeleton_edge_sets(points: &PointSet) -> [Vec<[u32; 2]>; 3] {
+pub(crate) fn skeleton_edge_sets(points: &PointSet, loop_chunk: usize) -> [Vec<[u32; 2]>; 3] {
     let pts = points.points();
     let candidates = skeleton::diamond_candidates(pts);
-    let sk =
-        skeleton::lmt_skeleton(pts, candidates.clone()).expect("the tests' point sets are small");
+    let sk = skeleton::lmt_skeleton_in_chunks(pts, candidates.clone(), loop_chunk)
+        .expect("the tests' point sets are small");
     let pick = |flags: &[bool]| -> Vec<[u32; 2]> {
         sk.edges
             .iter()
@@ -244,7 +244,7 @@ pub(crate) fn general_min_weight(
     diagnostics.add("diamond candidates", candidates.len() as u64);
     watch.lap("diamond filter");
     let n = pts.len();
-    let sk = skeleton::z_order_skeleton(pts, &grid, candidates)?;
+    let sk = skeleton::z_order_skeleton(pts, &grid, candidates, skeleton::LOOP_CHUNK)?;
     drop(grid);
     let alive = sk.alive.iter().filter(|&&a| a).count();
     let certain = sk.certain.iter().filter(|&&a| a).count();

@@ -50,6 +50,10 @@ use crate::parallel::prelude::*;
 use crate::spatial::{bounding_box, convex_hull_cycle, SparseGrid};
 use std::cmp::Ordering;
 use std::f64::consts::PI;
+use std::sync::atomic::{
+    AtomicBool, AtomicU32, AtomicU8,
+    Ordering::{Relaxed, SeqCst},
+};
 
 /// The angle of the exact test, `α' = arctan(833/1024)` (just below π/4.6),
 /// for the search's stop: a killer is a point the exact test itself finds
@@ -391,7 +395,7 @@ pub(crate) struct Skeleton {
     /// CSR per edge: its triangles on the left of `u → v` (u < v), then
     /// right; emptied after the loop.
     tri_offsets: Vec<u32>,
-    tri_list: Vec<u32>,
+    tri_list: Vec<AtomicU32>,
     tri_left_len: Vec<u32>,
     /// CSR per edge: the candidate edges it intersects.
     cross_offsets: Vec<u32>,
@@ -427,7 +431,7 @@ impl Skeleton {
     }
 
     /// Triangles of edge `e` on its left (`u → v`) and right.
-    fn sides(&self, e: u32) -> (&[u32], &[u32]) {
+    fn sides(&self, e: u32) -> (&[AtomicU32], &[AtomicU32]) {
         let all = &self.tri_list
             [self.tri_offsets[e as usize] as usize..self.tri_offsets[e as usize + 1] as usize];
         all.split_at(self.tri_left_len[e as usize] as usize)
@@ -493,8 +497,19 @@ use crate::error::{Error, UnsupportedReason};
 /// identical, since the LMT-skeleton is the greatest fixed point of the
 /// removal rule (removing an edge only removes triangles), whatever the
 /// numbering and the work list's order.
-#[cfg(any(test, feature = "internals"))]
+#[cfg(test)]
 pub(crate) fn lmt_skeleton(pts: &[Point], edges: Vec<[u32; 2]>) -> crate::error::Result<Skeleton> {
+    lmt_skeleton_in_chunks(pts, edges, LOOP_CHUNK)
+}
+
+/// `lmt_skeleton` with `loop_chunk` edges per task of the parallel loop
+/// (1: the most interleaving; `usize::MAX`: one task, the sequential loop).
+#[cfg(any(test, feature = "internals"))]
+pub(crate) fn lmt_skeleton_in_chunks(
+    pts: &[Point],
+    edges: Vec<[u32; 2]>,
+    loop_chunk: usize,
+) -> crate::error::Result<Skeleton> {
     debug_assert!(
         edges.windows(2).all(|w| w[0] < w[1]) && edges.iter().all(|&[u, v]| u < v),
         "candidates: sorted distinct pairs u < v"
@@ -522,7 +537,7 @@ pub(crate) fn lmt_skeleton(pts: &[Point], edges: Vec<[u32; 2]>) -> crate::error:
     z_edges.par_sort_unstable();
     let z = {
         let grid = super::point_grid(&z_pts);
-        z_order_skeleton(&z_pts, &grid, z_edges)?
+        z_order_skeleton(&z_pts, &grid, z_edges, loop_chunk)?
     };
     drop(z_pts);
     let mut mapped: Vec<([u32; 2], u32)> = z
@@ -652,6 +667,7 @@ pub(crate) fn z_order_skeleton(
     pts: &[Point],
     grid: &SparseGrid<u32>,
     edges: Vec<[u32; 2]>,
+    loop_chunk: usize,
 ) -> crate::error::Result<Skeleton> {
     debug_assert!(
         edges.windows(2).all(|w| w[0] < w[1]) && edges.iter().all(|&[u, v]| u < v),
@@ -737,38 +753,51 @@ pub(crate) fn z_order_skeleton(
         }
     });
     // Per edge (CSR): its triangles on the left of u → v, then on the right.
+    // Counted and scattered in parallel (atomic counters): the order within
+    // a list depends on the threads, which no result does (the loop asks
+    // whether *some* pair of valid triangles makes an edge locally minimal,
+    // and its fixed point is unique).
     let side_of = |corners: [u32; 3], s: usize| corners[s] < corners[(s + 1) % 3];
-    let mut left_len = vec![0u32; m];
+    let atomic_zeros =
+        |len: usize| -> Vec<AtomicU32> { (0..len).map(|_| AtomicU32::new(0)).collect() };
+    let (left_count, all_count) = (atomic_zeros(m), atomic_zeros(m));
+    triangles.par_iter().with_min_len(4096).for_each(|ids| {
+        let corners = corners_of(&sk.edges, *ids);
+        for (s, &e) in ids.iter().enumerate() {
+            all_count[e as usize].fetch_add(1, Relaxed);
+            if side_of(corners, s) {
+                left_count[e as usize].fetch_add(1, Relaxed);
+            }
+        }
+    });
+    let left_len: Vec<u32> = left_count.into_iter().map(AtomicU32::into_inner).collect();
     let mut tri_offsets = vec![0u32; m + 1];
-    for ids in &triangles {
-        let corners = corners_of(&skeleton.edges, *ids);
-        for (s, &e) in ids.iter().enumerate() {
-            let e = e as usize;
-            tri_offsets[e + 1] += 1;
-            left_len[e] += side_of(corners, s) as u32;
-        }
+    for (e, count) in all_count.into_iter().enumerate() {
+        tri_offsets[e + 1] = tri_offsets[e] + count.into_inner();
     }
-    for e in 0..m {
-        tri_offsets[e + 1] += tri_offsets[e];
-    }
-    let mut tri_list = vec![0u32; tri_offsets[m] as usize];
-    let (mut next_left, mut next_right): (Vec<u32>, Vec<u32>) = (0..m)
-        .map(|e| (tri_offsets[e], tri_offsets[e] + left_len[e]))
+    let tri_list = atomic_zeros(tri_offsets[m] as usize);
+    let (next_left, next_right): (Vec<AtomicU32>, Vec<AtomicU32>) = (0..m)
+        .map(|e| {
+            let start = tri_offsets[e];
+            (AtomicU32::new(start), AtomicU32::new(start + left_len[e]))
+        })
         .unzip();
-    for (t, ids) in triangles.iter().enumerate() {
-        let corners = corners_of(&skeleton.edges, *ids);
-        for (s, &e) in ids.iter().enumerate() {
-            let e = e as usize;
-            // The triangle is on the left of corners[s] → corners[s + 1].
-            let slot = if side_of(corners, s) {
-                &mut next_left[e]
-            } else {
-                &mut next_right[e]
-            };
-            tri_list[*slot as usize] = t as u32;
-            *slot += 1;
-        }
-    }
+    triangles
+        .par_iter()
+        .enumerate()
+        .with_min_len(4096)
+        .for_each(|(t, ids)| {
+            let corners = corners_of(&sk.edges, *ids);
+            for (s, &e) in ids.iter().enumerate() {
+                // The triangle is on the left of corners[s] → corners[s + 1].
+                let next = if side_of(corners, s) {
+                    &next_left[e as usize]
+                } else {
+                    &next_right[e as usize]
+                };
+                tri_list[next.fetch_add(1, Relaxed) as usize].store(t as u32, Relaxed);
+            }
+        });
     drop((next_left, next_right));
     // From here on the loop reads a triangle's corners (one access where the
     // edge ids need three), converted in place.
@@ -783,7 +812,7 @@ pub(crate) fn z_order_skeleton(
     skeleton.tri_list = tri_list;
     // The loop needs no crossings; certainty does, among the survivors only
     // (far fewer and shorter than the filter's candidates).
-    let state = run_lmt_loop(pts, grid, &mut skeleton);
+    let state = run_lmt_loop(pts, grid, &mut skeleton, loop_chunk);
     // The per-edge triangle lists served the loop alone: freed before the
     // kept triangles are collected (the phase's peak).
     skeleton.tri_offsets = Vec::new();
@@ -799,10 +828,10 @@ pub(crate) fn z_order_skeleton(
         .with_min_len(1024)
         .filter_map(|t| {
             let corners = sk.loop_triangles[t];
-            let keep = match state[t] {
-                TriangleState::Empty => true,
-                TriangleState::Dead => false,
-                TriangleState::Unknown => !triangle_has_point(pts, grid, corners),
+            let keep = match state.get(t as u32) {
+                TriangleState::EMPTY => true,
+                TriangleState::UNKNOWN => !triangle_has_point(pts, grid, corners),
+                _ => false, // dead or holding a point
             };
             keep.then(|| (corners, sk.triangle_edges(corners)))
         })
@@ -970,15 +999,38 @@ fn triangles_of_edge(pts: &[Point], sk: &Skeleton, e: u32, mut visit: impl FnMut
     }
 }
 
-/// What the LMT loop knows of a candidate triangle.
-#[derive(Clone, Copy, PartialEq, Eq)]
-enum TriangleState {
+/// What the LMT loop knows of each candidate triangle, as bits that only
+/// get set (so the loop's threads may record emptiness concurrently:
+/// the value recorded is a fact about the points, whoever computes it).
+struct TriangleState(Vec<AtomicU8>);
+
+impl TriangleState {
     /// Not yet tested for emptiness, no edge removed.
-    Unknown,
-    /// Empty, no edge removed: some edge may rely on it.
-    Empty,
-    /// An edge removed, or a point inside: never valid again.
-    Dead,
+    const UNKNOWN: u8 = 0;
+    /// Tested: no point but its corners in the closed triangle.
+    const EMPTY: u8 = 1;
+    /// Tested: a point inside; never valid.
+    const HOLDS_POINT: u8 = 2;
+    /// An edge removed; never valid again.
+    const DEAD: u8 = 4;
+
+    fn new(len: usize) -> Self {
+        TriangleState((0..len).map(|_| AtomicU8::new(Self::UNKNOWN)).collect())
+    }
+
+    fn get(&self, t: u32) -> u8 {
+        self.0[t as usize].load(SeqCst)
+    }
+
+    /// Certainly not valid (an edge removed, or a point inside)?
+    fn invalid(&self, t: u32) -> bool {
+        self.get(t) & (Self::HOLDS_POINT | Self::DEAD) != 0
+    }
+
+    /// Marks `t` dead; returns its bits before.
+    fn kill(&self, t: u32) -> u8 {
+        self.0[t as usize].fetch_or(Self::DEAD, SeqCst)
+    }
 }
 
 /// Is triangle `t` valid (no edge removed and empty)? Decides emptiness on
@@ -987,18 +1039,19 @@ fn valid_triangle(
     pts: &[Point],
     grid: &SparseGrid<u32>,
     sk: &Skeleton,
-    state: &mut [TriangleState],
+    state: &TriangleState,
     t: u32,
 ) -> bool {
-    let slot = &mut state[t as usize];
-    if *slot == TriangleState::Unknown {
-        *slot = if triangle_has_point(pts, grid, sk.loop_triangles[t as usize]) {
-            TriangleState::Dead
+    let mut bits = state.get(t);
+    if bits & (TriangleState::EMPTY | TriangleState::HOLDS_POINT) == 0 {
+        let found = if triangle_has_point(pts, grid, sk.loop_triangles[t as usize]) {
+            TriangleState::HOLDS_POINT
         } else {
-            TriangleState::Empty
+            TriangleState::EMPTY
         };
+        bits = state.0[t as usize].fetch_or(found, SeqCst) | found;
     }
-    *slot == TriangleState::Empty
+    bits == TriangleState::EMPTY
 }
 
 /// Is `e` locally minimal for some pair of valid triangles? The pair's
@@ -1009,7 +1062,7 @@ fn locally_minimal(
     pts: &[Point],
     grid: &SparseGrid<u32>,
     sk: &Skeleton,
-    state: &mut [TriangleState],
+    state: &TriangleState,
     e: u32,
     apexes: &mut Vec<Option<Point>>,
 ) -> bool {
@@ -1030,13 +1083,15 @@ fn locally_minimal(
     apexes.clear();
     apexes.resize(right.len(), None);
     let (a, b) = (pts[u as usize], pts[v as usize]);
-    for &tl in left {
-        if state[tl as usize] == TriangleState::Dead {
+    for tl in left {
+        let tl = tl.load(Relaxed);
+        if state.invalid(tl) {
             continue;
         }
         let r = apex(tl);
-        for (&tr, slot) in right.iter().zip(apexes.iter_mut()) {
-            if state[tr as usize] == TriangleState::Dead {
+        for (tr, slot) in right.iter().zip(apexes.iter_mut()) {
+            let tr = tr.load(Relaxed);
+            if state.invalid(tr) {
                 continue;
             }
             let s = *slot.get_or_insert_with(|| apex(tr));
@@ -1056,38 +1111,78 @@ fn locally_minimal(
     false
 }
 
-/// The LMT loop; returns the triangles' final states. A triangle dies once
-/// one of its edges is removed; only an edge whose local minimality rested
-/// on a triangle known to be empty can lose it, so only the other edges of
-/// such a triangle are queued again (an untested triangle supported none).
-fn run_lmt_loop(pts: &[Point], grid: &SparseGrid<u32>, sk: &mut Skeleton) -> Vec<TriangleState> {
+/// Consecutive edges (in Z-order, so nearby) per parallel task of the loop.
+pub(crate) const LOOP_CHUNK: usize = 1024;
+
+/// The LMT loop, in parallel; returns the triangles' final states.
+///
+/// A triangle dies once one of its edges is removed; only an edge whose
+/// local minimality rested on a triangle known to be empty can lose it, so
+/// only the other edges of such a triangle are queued again (an untested
+/// triangle supported none). Each task takes a run of edges and works off
+/// the edges its removals queue again before the next, as the sequential
+/// loop would. The threads share the triangle states, the alive flags and
+/// the queued flags (sequentially consistent atomics), and the result is
+/// the sequential loop's:
+/// * an edge is removed only when every pair of its triangles was seen
+///   invalid, and a triangle seen dead or holding a point stays so, so no
+///   edge of the skeleton (the greatest fixed point of the rule; removing an
+///   edge only invalidates triangles) is ever removed;
+/// * when a triangle known to be empty dies, every edge that may have
+///   rested on it is tested again after the death: either its queued flag
+///   was clear and the killer queues it, or the flag was still set and the
+///   edge's pending test clears it after the death and reads the triangle
+///   dead. So when all tasks are done, every edge left is locally minimal.
+fn run_lmt_loop(
+    pts: &[Point],
+    grid: &SparseGrid<u32>,
+    sk: &mut Skeleton,
+    chunk: usize,
+) -> TriangleState {
+    let chunk = chunk.max(1);
     let m = sk.edges.len();
-    let mut state = vec![TriangleState::Unknown; sk.loop_triangles.len()];
-    let mut queued = vec![true; m];
-    let mut work: Vec<u32> = (0..m as u32).rev().collect();
-    let mut apexes = Vec::new();
-    while let Some(e) = work.pop() {
-        queued[e as usize] = false;
-        if !sk.alive[e as usize] || sk.hull[e as usize] {
-            continue;
+    let state = TriangleState::new(sk.loop_triangles.len());
+    let flags =
+        |value: bool| -> Vec<AtomicBool> { (0..m).map(|_| AtomicBool::new(value)).collect() };
+    let (alive, queued) = (flags(true), flags(true));
+    let skr = &*sk;
+    let process = |e: u32, apexes: &mut Vec<Option<Point>>, stack: &mut Vec<u32>| {
+        queued[e as usize].store(false, SeqCst);
+        if !alive[e as usize].load(SeqCst)
+            || skr.hull[e as usize]
+            || locally_minimal(pts, grid, skr, &state, e, apexes)
+        {
+            return;
         }
-        if locally_minimal(pts, grid, sk, &mut state, e, &mut apexes) {
-            continue;
-        }
-        sk.alive[e as usize] = false;
-        let (left, right) = sk.sides(e);
-        for &t in left.iter().chain(right) {
-            let before = std::mem::replace(&mut state[t as usize], TriangleState::Dead);
-            if before != TriangleState::Empty {
+        alive[e as usize].store(false, SeqCst);
+        let (left, right) = skr.sides(e);
+        for t in left.iter().chain(right) {
+            let t = t.load(Relaxed);
+            // Exactly one removal sees a supporting triangle die.
+            if state.kill(t) != TriangleState::EMPTY {
                 continue;
             }
-            for f in sk.triangle_edges(sk.loop_triangles[t as usize]) {
-                if f != e && sk.alive[f as usize] && !queued[f as usize] {
-                    queued[f as usize] = true;
-                    work.push(f);
+            for f in skr.triangle_edges(skr.loop_triangles[t as usize]) {
+                if alive[f as usize].load(SeqCst)
+                    && !skr.hull[f as usize]
+                    && !queued[f as usize].swap(true, SeqCst)
+                {
+                    stack.push(f);
                 }
             }
         }
+    };
+    (0..m.div_ceil(chunk)).into_par_iter().for_each(|k| {
+        let (mut apexes, mut stack) = (Vec::new(), Vec::new());
+        for e in k * chunk..m.min(k.saturating_add(1).saturating_mul(chunk)) {
+            process(e as u32, &mut apexes, &mut stack);
+            while let Some(f) = stack.pop() {
+                process(f, &mut apexes, &mut stack);
+            }
+        }
+    });
+    for (flag, a) in sk.alive.iter_mut().zip(alive) {
+        *flag = a.into_inner();
     }
     state
 }
