@@ -50,10 +50,7 @@ use crate::parallel::prelude::*;
 use crate::spatial::{bounding_box, convex_hull_cycle, SparseGrid};
 use std::cmp::Ordering;
 use std::f64::consts::PI;
-use std::sync::atomic::{
-    AtomicBool, AtomicU32, AtomicU8,
-    Ordering::{Relaxed, SeqCst},
-};
+use std::sync::atomic::{AtomicBool, AtomicU8, Ordering::SeqCst};
 
 /// The angle of the exact test, `α' = arctan(833/1024)` (just below π/4.6),
 /// for the search's stop: a killer is a point the exact test itself finds
@@ -395,7 +392,7 @@ pub(crate) struct Skeleton {
     /// CSR per edge: its triangles on the left of `u → v` (u < v), then
     /// right; emptied after the loop.
     tri_offsets: Vec<u32>,
-    tri_list: Vec<AtomicU32>,
+    tri_list: Vec<u32>,
     tri_left_len: Vec<u32>,
     /// CSR per edge: the candidate edges it intersects.
     cross_offsets: Vec<u32>,
@@ -431,7 +428,7 @@ impl Skeleton {
     }
 
     /// Triangles of edge `e` on its left (`u → v`) and right.
-    fn sides(&self, e: u32) -> (&[AtomicU32], &[AtomicU32]) {
+    fn sides(&self, e: u32) -> (&[u32], &[u32]) {
         let all = &self.tri_list
             [self.tri_offsets[e as usize] as usize..self.tri_offsets[e as usize + 1] as usize];
         all.split_at(self.tri_left_len[e as usize] as usize)
@@ -752,53 +749,69 @@ pub(crate) fn z_order_skeleton(
             });
         }
     });
-    // Per edge (CSR): its triangles on the left of u → v, then on the right.
-    // Counted and scattered in parallel (atomic counters): the order within
-    // a list depends on the threads, which no result does (the loop asks
-    // whether *some* pair of valid triangles makes an edge locally minimal,
-    // and its fixed point is unique).
-    let side_of = |corners: [u32; 3], s: usize| corners[s] < corners[(s + 1) % 3];
-    let atomic_zeros =
-        |len: usize| -> Vec<AtomicU32> { (0..len).map(|_| AtomicU32::new(0)).collect() };
-    let (left_count, all_count) = (atomic_zeros(m), atomic_zeros(m));
-    triangles.par_iter().with_min_len(4096).for_each(|ids| {
-        let corners = corners_of(&sk.edges, *ids);
-        for (s, &e) in ids.iter().enumerate() {
-            all_count[e as usize].fetch_add(1, Relaxed);
-            if side_of(corners, s) {
-                left_count[e as usize].fetch_add(1, Relaxed);
+    // Per edge (CSR): its triangles on the left of u → v, then on the right,
+    // each list in triangle order. The edges are cut into ranges, one task
+    // each; every task reads all triangles (a stream) and counts, then fills,
+    // only its own edges' lists: no atomics, the same lists on any number of
+    // threads.
+    let ranges: Vec<std::ops::Range<usize>> = (0..CSR_PARTS)
+        .map(|k| k * m / CSR_PARTS..(k + 1) * m / CSR_PARTS)
+        .collect();
+    let counted: Vec<(Vec<u32>, Vec<u32>)> = ranges
+        .par_iter()
+        .map(|range| {
+            let (mut left, mut all) = (vec![0u32; range.len()], vec![0u32; range.len()]);
+            for ids in &triangles {
+                for (s, &e) in ids.iter().enumerate() {
+                    if range.contains(&(e as usize)) {
+                        debug_assert_eq!(on_left(*ids, s), on_left_by_corners(&sk.edges, *ids, s));
+                        all[e as usize - range.start] += 1;
+                        left[e as usize - range.start] += on_left(*ids, s) as u32;
+                    }
+                }
+            }
+            (left, all)
+        })
+        .collect();
+    let mut left_len = Vec::with_capacity(m);
+    let mut tri_offsets = Vec::with_capacity(m + 1);
+    tri_offsets.push(0u32);
+    for (left, all) in counted {
+        left_len.extend(left);
+        for count in all {
+            tri_offsets.push(tri_offsets[tri_offsets.len() - 1] + count);
+        }
+    }
+    let mut tri_list = vec![0u32; tri_offsets[m] as usize];
+    let mut pieces = Vec::with_capacity(CSR_PARTS);
+    let mut rest: &mut [u32] = &mut tri_list;
+    for range in &ranges {
+        let len = (tri_offsets[range.end] - tri_offsets[range.start]) as usize;
+        let (head, tail) = std::mem::take(&mut rest).split_at_mut(len);
+        pieces.push((range.clone(), head));
+        rest = tail;
+    }
+    pieces.into_par_iter().for_each(|(range, out)| {
+        let base = tri_offsets[range.start];
+        let (mut next_left, mut next_right): (Vec<u32>, Vec<u32>) = range
+            .clone()
+            .map(|e| (tri_offsets[e] - base, tri_offsets[e] - base + left_len[e]))
+            .unzip();
+        for (t, ids) in triangles.iter().enumerate() {
+            for (s, &e) in ids.iter().enumerate() {
+                if range.contains(&(e as usize)) {
+                    let k = e as usize - range.start;
+                    let next = if on_left(*ids, s) {
+                        &mut next_left[k]
+                    } else {
+                        &mut next_right[k]
+                    };
+                    out[*next as usize] = t as u32;
+                    *next += 1;
+                }
             }
         }
     });
-    let left_len: Vec<u32> = left_count.into_iter().map(AtomicU32::into_inner).collect();
-    let mut tri_offsets = vec![0u32; m + 1];
-    for (e, count) in all_count.into_iter().enumerate() {
-        tri_offsets[e + 1] = tri_offsets[e] + count.into_inner();
-    }
-    let tri_list = atomic_zeros(tri_offsets[m] as usize);
-    let (next_left, next_right): (Vec<AtomicU32>, Vec<AtomicU32>) = (0..m)
-        .map(|e| {
-            let start = tri_offsets[e];
-            (AtomicU32::new(start), AtomicU32::new(start + left_len[e]))
-        })
-        .unzip();
-    triangles
-        .par_iter()
-        .enumerate()
-        .with_min_len(4096)
-        .for_each(|(t, ids)| {
-            let corners = corners_of(&sk.edges, *ids);
-            for (s, &e) in ids.iter().enumerate() {
-                // The triangle is on the left of corners[s] → corners[s + 1].
-                let next = if side_of(corners, s) {
-                    &next_left[e as usize]
-                } else {
-                    &next_right[e as usize]
-                };
-                tri_list[next.fetch_add(1, Relaxed) as usize].store(t as u32, Relaxed);
-            }
-        });
-    drop((next_left, next_right));
     // From here on the loop reads a triangle's corners (one access where the
     // edge ids need three), converted in place.
     let edges = &skeleton.edges;
@@ -959,6 +972,26 @@ pub(crate) fn z_order_skeleton(
     Ok(skeleton)
 }
 
+/// Edge ranges of the triangle lists' construction (a few per thread, for
+/// balance; each costs one read of all triangles).
+const CSR_PARTS: usize = 4;
+
+/// Is the triangle with edge ids `ids` (as [`triangles_of_edge`] gives
+/// them) on the left of its edge `ids[s]` directed from the smaller to the
+/// larger index? With corners `u < v < w` the ids are `[uv, vw, uw]` when
+/// `uvw` turns left (left of `u → v` and `v → w`, right of `u → w`) and
+/// `[uw, vw, uv]` otherwise (left of `u → w` only); edges are sorted pairs,
+/// so `uv` has the smaller id of `uv` and `uw`, which tells the two apart.
+fn on_left(ids: [u32; 3], s: usize) -> bool {
+    s == 0 || (s == 1 && ids[0] < ids[2])
+}
+
+/// [`on_left`] from the corners (the definition), for the debug checks.
+fn on_left_by_corners(edges: &[[u32; 2]], ids: [u32; 3], s: usize) -> bool {
+    let corners = corners_of(edges, ids);
+    corners[s] < corners[(s + 1) % 3]
+}
+
 /// The counter-clockwise corners of a triangle given by its edge ids
 /// `[c0c1, c1c2, c2c0]`: `c1` is the endpoint its first two edges share.
 fn corners_of(edges: &[[u32; 2]], [a, b, _]: [u32; 3]) -> [u32; 3] {
@@ -1083,14 +1116,12 @@ fn locally_minimal(
     apexes.clear();
     apexes.resize(right.len(), None);
     let (a, b) = (pts[u as usize], pts[v as usize]);
-    for tl in left {
-        let tl = tl.load(Relaxed);
+    for &tl in left {
         if state.invalid(tl) {
             continue;
         }
         let r = apex(tl);
-        for (tr, slot) in right.iter().zip(apexes.iter_mut()) {
-            let tr = tr.load(Relaxed);
+        for (&tr, slot) in right.iter().zip(apexes.iter_mut()) {
             if state.invalid(tr) {
                 continue;
             }
@@ -1156,8 +1187,7 @@ fn run_lmt_loop(
         }
         alive[e as usize].store(false, SeqCst);
         let (left, right) = skr.sides(e);
-        for t in left.iter().chain(right) {
-            let t = t.load(Relaxed);
+        for &t in left.iter().chain(right) {
             // Exactly one removal sees a supporting triangle die.
             if state.kill(t) != TriangleState::EMPTY {
                 continue;
