@@ -323,21 +323,21 @@ impl<T: Copy + Send + Sync> SparseGrid<T> {
         (r0..=r1).any(|r| self.any_cell_in_row(r, c0, c1, |k| f(self.cell(k))))
     }
 
-    /// The cell block `[c0, c1, r0, r1]` (inclusive) that
-    /// [`any_cell_near`](Self::any_cell_near)`(a, a, pad, ..)` scans.
+    /// The cell block `[c0, c1, r0, r1]` (inclusive) meeting the box
+    /// `[lo, hi]` widened by the slack; it grows with the box.
     #[inline]
-    pub(crate) fn block_around(&self, a: Point, pad: f64) -> [u64; 4] {
-        let (px, py) = self.padding(pad);
+    pub(crate) fn block_of_box(&self, lo: Point, hi: Point) -> [u64; 4] {
+        let (px, py) = self.padding(0.0);
         [
-            self.column(a[0] - px),
-            self.column(a[0] + px),
-            self.row(a[1] - py),
-            self.row(a[1] + py),
+            self.column(lo[0] - px),
+            self.column(hi[0] + px),
+            self.row(lo[1] - py),
+            self.row(hi[1] + py),
         ]
     }
 
     /// Calls `f` on the items of every occupied cell of block `outer` that
-    /// is not in block `inner` (blocks from [`block_around`](Self::block_around);
+    /// is not in block `inner` (blocks from [`block_of_box`](Self::block_of_box);
     /// `inner` inside `outer`, or `None`): growing blocks visit each cell once.
     pub(crate) fn for_cells_between(
         &self,

@@ -9,7 +9,13 @@
 //!    of [`angle_below_diamond`], so it removes only edges the theorem
 //!    removes. Candidates come from each point's neighbourhood in a grid,
 //!    searched in rings (radius ×1.25, each grid cell read once) until every
-//!    direction is *dead*: a point `r`
+//!    direction *ahead* is *dead*. A pair is tested from the endpoint the
+//!    other is ahead of (lexicographically greater `(x, y)`: directions in
+//!    `(−π/2, π/2]`), so a search needs killers for the half-plane ahead
+//!    only and skips the points too far behind to kill there (10⁵ uniform
+//!    points: 6 % fewer rings and 14 % fewer pairs looked at than searching
+//!    every direction; the rings hardly shrink, as the stop needs killers
+//!    dense enough around the whole half-plane). A point `r`
 //!    at distance `d` and angle `θ` from `p` lies strictly inside the left
 //!    triangle (base angle `α'`, the exact test's) of every `pq` whose
 //!    direction `φ` satisfies `0 < θ − φ < α'` once `|pq| > 2cos(α')·d ≈
@@ -62,6 +68,14 @@ const ANGLE_MARGIN: f64 = 1e-9;
 /// Distance factor of the stop: 1.6 > 2cos(π/4.6) ≈ 1.551.
 const KILL_FACTOR2: f64 = 1.6 * 1.6;
 const TAU: f64 = 2.0 * PI;
+/// A point at `(dx, dy)` from `p` with `dx < 0` and `|dy| < BEHIND_SLOPE·|dx|`
+/// lies more than `α'` behind the half-plane ahead of `p` (`atan 1.2 ≈
+/// 0.876 < π/2 − α' ≈ 0.888`), so it kills no direction ahead.
+const BEHIND_SLOPE: f64 = 1.2;
+/// A killer of a direction ahead of `p`, closer than the search radius `R`,
+/// has `dx ≥ −R·sin α' ≈ −0.631R`; the search reads no farther behind than
+/// `BEHIND_REACH·R`.
+const BEHIND_REACH: f64 = 0.66;
 /// Radius ratio of successive rings of the search: each cell is read once
 /// whatever the ratio, so a small one only costs stop tests and saves the
 /// exact tests of pairs beyond the stop radius (1.25 ran 5 % fewer
@@ -108,7 +122,8 @@ pub(crate) fn diamond_filter(pts: &[Point], grid: &SparseGrid<u32>) -> Vec<[u32;
     edges
 }
 
-/// The pairs `[p, q]`, `q > p`, from `p`'s search that survive the exact test.
+/// The pairs `{p, q}` (as `[min, max]`), `q` [`ahead`] of `p`, from `p`'s
+/// search that survive the exact test.
 ///
 /// Each grid cell is read once: the cells of each ring's block not in the
 /// previous block go to a waiting list, from which the ring takes the
@@ -145,7 +160,12 @@ fn search_from(
     loop {
         let outer2 = radius * radius;
         // Every point closer than `radius` lies in this block.
-        let block = grid.block_around(a, radius);
+        // Points farther behind than `BEHIND_REACH·radius` are neither
+        // ahead nor killers for a direction ahead.
+        let block = grid.block_of_box(
+            [a[0] - BEHIND_REACH * radius, a[1] - radius],
+            [a[0] + radius, a[1] + radius],
+        );
         grid.for_cells_between(block, read, |items| {
             for &q in items {
                 if q != p {
@@ -167,10 +187,10 @@ fn search_from(
         // ring: they are the previous stop test's.
         for entry in ring.iter_mut() {
             let q = entry.2;
-            if q > p {
+            if ahead(a, pts[q as usize]) {
                 entry.1 = angle_to(q);
                 if direction_alive(entry.1, &killers) && diamond_survives(pts, grid, p, q) {
-                    out.push([p, q]);
+                    out.push([p.min(q), p.max(q)]);
                 }
             }
         }
@@ -188,10 +208,17 @@ fn search_from(
         for i in first_farther..seen.len() {
             if seen[i].0 * KILL_FACTOR2 < outer2 {
                 let entry = &mut seen[i];
-                if entry.1.is_nan() {
-                    entry.1 = angle_to(entry.2);
+                let b = pts[entry.2 as usize];
+                let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
+                // A point more than α' behind the half-plane ahead (within
+                // atan(1.2) < π/2 − α' of the direction straight back)
+                // kills no direction ahead.
+                if !(dx < 0.0 && dy.abs() < -BEHIND_SLOPE * dx) {
+                    if entry.1.is_nan() {
+                        entry.1 = angle_to(entry.2);
+                    }
+                    killers.push(entry.1);
                 }
-                killers.push(entry.1);
                 seen.swap(promoted, i);
                 promoted += 1;
             }
@@ -209,6 +236,14 @@ fn search_from(
         radius *= RING_GROWTH;
     }
     out
+}
+
+/// Is `b` ahead of `a`: `(b.x, b.y) > (a.x, a.y)` lexicographically, so
+/// directions at angles in `(−π/2, π/2]`? Each pair of distinct points is
+/// tested from the endpoint the other is ahead of, so a search needs to
+/// kill only the directions ahead.
+fn ahead(a: Point, b: Point) -> bool {
+    b[0] > a[0] || (b[0] == a[0] && b[1] > a[1])
 }
 
 /// Merges the sorted runs `v[..mid]` and `v[mid..]` (finite values) in
@@ -260,14 +295,21 @@ fn direction_alive(phi: f64, killers: &[f64]) -> bool {
     !(left && right)
 }
 
-/// Are all directions dead beyond `radius`: killed on both sides by the
-/// killers, or leaving the bounding box?
+/// Are all directions ahead (the half-plane of [`ahead`]) dead beyond
+/// `radius`: killed on both sides by the killers, or leaving the bounding
+/// box?
 fn all_directions_dead(a: Point, bbox: [f64; 4], radius: f64, killers: &[f64]) -> bool {
-    // Arcs of directions whose point at `radius` lies outside the box (at
-    // most four sides times three shifts: fixed arrays, as this runs once
-    // per ring of every point's search).
-    let mut arcs = [[0.0f64; 2]; 12];
-    let mut arc_count = 0;
+    // Arcs of directions that need no killer: those behind (angles in
+    // (π/2, 3π/2), shrunk by margins far above atan2's rounding) and those
+    // whose point at `radius` lies outside the box (at most four sides),
+    // each with three shifts: fixed arrays, as this runs once per ring of
+    // every point's search.
+    let mut arcs = [[0.0f64; 2]; 15];
+    let behind = [0.5 * PI + 4.0 * ANGLE_MARGIN, 1.5 * PI - 4.0 * ANGLE_MARGIN];
+    for (k, shift) in [-TAU, 0.0, TAU].into_iter().enumerate() {
+        arcs[k] = [behind[0] + shift, behind[1] + shift];
+    }
+    let mut arc_count = 3;
     let slack = 1e-9 * radius;
     for (distance, centre) in [
         (bbox[2] - a[0], 0.0),
@@ -288,7 +330,7 @@ fn all_directions_dead(a: Point, bbox: [f64; 4], radius: f64, killers: &[f64]) -
     }
     let arcs = &mut arcs[..arc_count];
     arcs.sort_unstable_by(|x, y| x[0].total_cmp(&y[0]));
-    let mut merged = [[0.0f64; 2]; 12];
+    let mut merged = [[0.0f64; 2]; 15];
     let mut merged_count = 0;
     for &arc in arcs.iter() {
         if merged_count > 0 && arc[0] <= merged[merged_count - 1][1] {
