@@ -936,23 +936,27 @@ pub(crate) fn z_order_skeleton(
         [0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1])]
     };
     let bbox = bounding_box(pts);
-    let grids: Vec<(f64, SparseGrid<u32>)> = members
-        .iter()
+    // A crossing pair is looked for from its edge of the larger class, in
+    // the grid of the other's class (whose reach covers it), or from the
+    // smaller id within a class: each edge queries the grids of its own and
+    // the shorter classes only, not the sparse grids of the few long edges
+    // (2·10⁵ uniform points have 11 classes, and every query of a grid has
+    // its cost, whatever the grid holds).
+    let grids: Vec<(usize, f64, SparseGrid<u32>)> = members
+        .par_iter()
         .enumerate()
         .filter(|(_, list)| !list.is_empty())
         .map(|(k, list)| {
             let reach = 2f64.powi(k as i32) * base * 1.0000001;
-            (
-                reach,
-                SparseGrid::new(
-                    bbox,
-                    2.0 * reach,
-                    list.len(),
-                    |i| mid(list[i]),
-                    |i| list[i],
-                    |i| list[i],
-                ),
-            )
+            let grid = SparseGrid::new(
+                bbox,
+                2.0 * reach,
+                list.len(),
+                |i| mid(list[i]),
+                |i| list[i],
+                |i| list[i],
+            );
+            (k, reach, grid)
         })
         .collect();
     let sk = &skeleton;
@@ -964,13 +968,13 @@ pub(crate) fn z_order_skeleton(
         .map(|&e| {
             let ends = sk.edges[e as usize];
             let (a, b) = (pts[ends[0] as usize], pts[ends[1] as usize]);
-            // Each conflicting pair once, from its smaller id (the relation
-            // is symmetric); the lists are mirrored below.
+            let own = class_of(&ends);
+            // Each conflicting pair once; the lists are mirrored below.
             let mut out = Vec::new();
-            for (reach, g) in &grids {
+            for (k, reach, g) in grids.iter().take_while(|(k, _, _)| *k <= own) {
                 g.any_cell_near(a, b, *reach, |items| {
                     for &f in items {
-                        if f > e && edges_conflict(pts, ends, sk.edges[f as usize]) {
+                        if (*k < own || f > e) && edges_conflict(pts, ends, sk.edges[f as usize]) {
                             out.push(f);
                         }
                     }
@@ -993,8 +997,6 @@ pub(crate) fn z_order_skeleton(
     for e in 0..m {
         cross_offsets[e + 1] += cross_offsets[e];
     }
-    // Filling by increasing `e` keeps every list sorted: an edge first gets
-    // its smaller partners (in increasing order), then its own larger ones.
     let mut cross_list = vec![0u32; cross_offsets[m] as usize];
     let mut next: Vec<u32> = cross_offsets[..m].to_vec();
     for (&e, list) in alive_ids.iter().zip(crossings) {
@@ -1006,6 +1008,12 @@ pub(crate) fn z_order_skeleton(
             next[f as usize] += 1;
         }
     }
+    drop(next);
+    // Each list sorted (a pair is recorded from either end).
+    for &e in &alive_ids {
+        let (start, end) = (cross_offsets[e as usize], cross_offsets[e as usize + 1]);
+        cross_list[start as usize..end as usize].sort_unstable();
+    }
     skeleton.cross_offsets = cross_offsets;
     skeleton.cross_list = cross_list;
     skeleton.certain = (0..m)
@@ -1014,9 +1022,9 @@ pub(crate) fn z_order_skeleton(
     Ok(skeleton)
 }
 
-/// Edge ranges of the triangle lists' construction (a few per thread, for
-/// balance; each costs one read of all triangles).
-const CSR_PARTS: usize = 4;
+/// Edge ranges of the triangle lists' construction (one per core of the
+/// machines measured; each costs a read of all triangles per pass).
+const CSR_PARTS: usize = 2;
 
 /// Is the triangle with edge ids `ids` (as [`triangles_of_edge`] gives
 /// them) on the left of its edge `ids[s]` directed from the smaller to the
