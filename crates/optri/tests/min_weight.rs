@@ -262,21 +262,49 @@ fn min_weight_takes_non_convex_input() {
 }
 
 #[test]
-#[ignore = "slow: the diamond filter is quadratic on 4001 points in convex position"]
-fn convex_sets_beyond_the_program_limit_go_through_the_general_pipeline() {
-    // 4001 integer points on the parabola y = x²: convex position, past the
-    // cubic program's limit: the general pipeline answers, honestly.
-    let pts: Vec<[f64; 2]> = (0..=optri::internals::MIN_WEIGHT_MAX_POINTS as i64)
+fn convex_sets_beyond_the_program_limit_are_answered_with_a_certified_bound() {
+    // Integer points on the parabola y = x² and on a circle (cocircular as
+    // doubles only nearly): convex position, past the cubic program's
+    // limit. Not proven optimal: the lighter of greedy and Delaunay, with a
+    // lower bound between the perimeter and the result's weight.
+    let limit = optri::internals::MIN_WEIGHT_MAX_POINTS;
+    let parabola: Vec<[f64; 2]> = (0..=limit as i64)
         .map(|x| [x as f64, (x * x) as f64])
         .collect();
-    let ps = optri::PointSet::new(&pts).unwrap();
-    let s = triangulate(&ps, Criterion::MinWeight).unwrap();
-    s.triangulation.validate().unwrap();
-    assert_eq!(s.triangulation.triangles().len(), pts.len() - 2);
-    let greedy = triangulate(&ps, Criterion::Greedy).unwrap();
-    assert!(
-        s.triangulation.stats().total_edge_length
-            <= greedy.triangulation.stats().total_edge_length * (1.0 + TOLERANCE)
-    );
-    assert_eq!(s.exact, s.diagnostics.get("exact") == Some(1));
+    let k = limit + 300;
+    let circle: Vec<[f64; 2]> = (0..k)
+        .map(|i| {
+            let t = std::f64::consts::TAU * i as f64 / k as f64;
+            [1e3 * t.cos(), 1e3 * t.sin()]
+        })
+        .collect();
+    for (what, pts) in [("parabola", parabola), ("circle", circle)] {
+        let ps = optri::PointSet::new(&pts).unwrap();
+        let s = triangulate(&ps, Criterion::MinWeight).unwrap();
+        s.triangulation.validate().unwrap();
+        assert_eq!(s.triangulation.triangles().len(), pts.len() - 2, "{what}");
+        assert!(!s.exact, "{what}");
+        assert_eq!(s.diagnostics.get("exact"), Some(0), "{what}");
+        let weight = s.triangulation.stats().total_edge_length;
+        for other in [Criterion::Greedy, Criterion::Delaunay] {
+            let o = triangulate(&ps, other).unwrap();
+            assert!(
+                weight <= o.triangulation.stats().total_edge_length * (1.0 + TOLERANCE),
+                "{what}: heavier than {other:?}"
+            );
+        }
+        let bound = s.bound.expect("a certified lower bound").value;
+        let (hull, _) = optri::graph(&ps, optri::GraphKind::Hull).unwrap();
+        let perimeter: f64 = hull
+            .iter()
+            .map(|&[a, b]| {
+                let (p, q) = (pts[a as usize], pts[b as usize]);
+                (p[0] - q[0]).hypot(p[1] - q[1])
+            })
+            .sum();
+        assert!(
+            perimeter < bound && bound <= weight,
+            "{what}: perimeter {perimeter}, bound {bound}, weight {weight}"
+        );
+    }
 }

@@ -59,7 +59,16 @@ pub(crate) const INFO: CriterionInfo = CriterionInfo {
 pub(crate) fn solve(points: &PointSet, _: &Options, phases: &mut Vec<Phase>) -> Result<Solved> {
     let pts = points.points();
     let hull = convex_hull_cycle(pts);
-    if hull.len() == pts.len() && pts.len() <= MAX_POINTS {
+    if hull.len() == pts.len() && pts.len() > MAX_POINTS {
+        // Every pair of points in convex position passes the diamond filter
+        // (the triangle towards the inside is empty), so the general
+        // pipeline would hold n³ candidate triangles.
+        let mut watch = Stopwatch::new(phases);
+        let solved = convex_beyond_the_program(points, &hull)?;
+        watch.lap("min-weight");
+        return Ok(solved);
+    }
+    if hull.len() == pts.len() {
         let mut watch = Stopwatch::new(phases);
         let triangulation = convex_min_weight(points, &hull)?;
         watch.lap("min-weight");
@@ -78,7 +87,9 @@ pub(crate) fn solve(points: &PointSet, _: &Options, phases: &mut Vec<Phase>) -> 
 }
 
 /// Largest number of distinct points in convex position the polygon program
-/// takes (O(n²) memory); larger convex sets go through the general pipeline.
+/// takes (O(n²) memory, O(n³) time); larger convex sets get the lighter of
+/// the greedy and the Delaunay triangulation, not proven optimal, with a
+/// certified lower bound.
 pub const MAX_POINTS: usize = 4000;
 
 /// A minimum-weight triangulation of `points` (any point set with three
@@ -112,6 +123,87 @@ fn convex_min_weight(points: &PointSet, polygon: &[u32]) -> Result<Triangulation
         .map(|t| t.map(|c| polygon[c]))
         .collect();
     Ok(Triangulation::from_distinct(points, triangles))
+}
+
+/// Points in convex position beyond [`MAX_POINTS`]: not solved exactly.
+/// The lighter (compared exactly) of the greedy triangulation (within a
+/// constant factor of the optimum in convex position: C. Levcopoulos & A.
+/// Lingas, *On approximation behavior of the greedy triangulation for
+/// convex polygons*, Algorithmica 2, 1987) and the Delaunay triangulation,
+/// with a certified lower bound: every triangulation of `n` points in
+/// convex position has the `n` hull edges and `n − 3` inner edges, each at
+/// least the shortest pair of points not consecutive on the hull. That pair
+/// is a Delaunay edge or joins the two neighbours of a point: if its
+/// closed diametral disk held a third point, both segments to it would be
+/// shorter (the angle there is at least 90°), so both would join hull
+/// neighbours; otherwise it is a Gabriel edge, in every Delaunay
+/// triangulation.
+fn convex_beyond_the_program(points: &PointSet, hull: &[u32]) -> Result<Solved> {
+    let pts = points.points();
+    let n = hull.len();
+    let distinct = |t: &Triangulation| -> Vec<[u32; 3]> {
+        t.triangles()
+            .iter()
+            .map(|c| c.map(|i| points.distinct_index(i)))
+            .collect()
+    };
+    let delaunay = crate::graphs::delaunay(points)?;
+    let greedy = crate::criteria::greedy::greedy(points)?;
+    let (greedy_tris, delaunay_tris) = (distinct(&greedy), distinct(&delaunay));
+    let (best, name) = if compare_weights(pts, &delaunay_tris, &greedy_tris) == Ordering::Less {
+        (delaunay, "Delaunay")
+    } else {
+        (greedy, "greedy")
+    };
+    let mut position = vec![0usize; n];
+    for (k, &v) in hull.iter().enumerate() {
+        position[v as usize] = k;
+    }
+    let consecutive = |a: u32, b: u32| {
+        let d = position[a as usize].abs_diff(position[b as usize]);
+        d == 1 || d == n - 1
+    };
+    let ears = (0..n).map(|k| [hull[(k + n - 1) % n], hull[(k + 1) % n]]);
+    let shortest_inner = edges_of(&delaunay_tris)
+        .into_iter()
+        .filter(|&[a, b]| !consecutive(a, b))
+        .chain(ears)
+        .map(|[a, b]| LengthInterval::of_segment(pts[a as usize], pts[b as usize]).lo)
+        .fold(f64::INFINITY, f64::min);
+    let perimeter = (0..n).fold(LengthInterval::ZERO, |sum, k| {
+        sum.plus(LengthInterval::of_segment(
+            pts[hull[k] as usize],
+            pts[hull[(k + 1) % n] as usize],
+        ))
+    });
+    // n − 3 ≤ 2⁵³: the product is rounded once, widened by an ulp.
+    let inner = (shortest_inner * (n - 3) as f64).next_down().max(0.0);
+    let lower_bound = perimeter
+        .plus(LengthInterval {
+            lo: inner,
+            hi: inner,
+        })
+        .lo;
+    let mut diagnostics = Diagnostics::default();
+    diagnostics.add("exact", 0);
+    Ok(Solved {
+        triangulation: best,
+        algorithm: format!(
+            "{name} triangulation: {n} points in convex position exceed the exact program's \
+             {MAX_POINTS} (O(n^3)); the lighter of greedy and Delaunay, certified lower bound \
+             on the optimal weight: {lower_bound} (hull edges + (n - 3) x the shortest inner edge)"
+        ),
+        optimality: Optimality::Approximation {
+            bound: "not proven optimal: points in convex position beyond the exact program's size; the weight is at least the reported lower bound",
+        },
+        diagnostics,
+        bound: Some(CertifiedBound {
+            measure: BoundMeasure::TotalLength,
+            triangle: None,
+            value: lower_bound,
+            upper: false,
+        }),
+    })
 }
 
 /// Total length of the diagonals as a certified interval, decided exactly
