@@ -6,7 +6,9 @@
 //! are written once against `crate::parallel::prelude::*` and never mention
 //! the feature. Results are identical either way: every parallel step in
 //! optri is a map, a filter or an associative reduction whose order does not
-//! matter, or a sort by a total order.
+//! matter, a sort by a total order, or — the minimum-weight LMT loop — tasks
+//! sharing monotone atomic flags whose fixed point is unique (the argument
+//! is in that loop's docs).
 
 #[cfg(feature = "parallel")]
 pub(crate) mod prelude {
