@@ -10,7 +10,8 @@
 //! (a vertex repeated at several corners). The sub-problem `(i, j)`, `i < j`,
 //! is the sub-polygon of corners `i..=j` closed by the chord `ij`; its value
 //! combines the costs of the diagonals and triangles inside it, not of `ij`
-//! itself. A triangulation of `(i, j)` consists of a triangle `(i, m, j)` and
+//! itself (the table stores it with `ij`'s cost added, so that the O(k³)
+//! split loop never evaluates a chord). A triangulation of `(i, j)` consists of a triangle `(i, m, j)` and
 //! triangulations of `(i, m)` and `(m, j)`: allowed chords do not cross, so
 //! the recursion is exact for every objective whose [`combine`] is associative
 //! and monotone — sums (additive objectives: total length) and maxima or
@@ -213,14 +214,11 @@ pub(crate) fn optimal_triangulation<O: Objective>(
                 if left.1 == INFEASIBLE || right.1 == INFEASIBLE || !is_triangle(i, m, j) {
                     continue;
                 }
-                let mut v = objective.combine(left.0, right.0);
-                if m > i + 1 {
-                    v = with(v, objective.diagonal(i, m));
-                }
-                if j > m + 1 {
-                    v = with(v, objective.diagonal(m, j));
-                }
-                v = with(v, objective.triangle(i, m, j));
+                // The cells hold their chord's own cost already.
+                let v = with(
+                    objective.combine(left.0, right.0),
+                    objective.triangle(i, m, j),
+                );
                 let better = best_m == INFEASIBLE
                     || if objective.undecided(v, best) {
                         // Reconstruct both candidates' diagonals from the
@@ -240,8 +238,18 @@ pub(crate) fn optimal_triangulation<O: Objective>(
                     best_m = m as u32;
                 }
             }
-            cells[at(i, j)] = (best, best_m);
-            by_end[at(j, i)] = (best, best_m);
+            // Charged once here with the chord's own cost (as a diagonal of
+            // the parents), not in every parent's split loop: a sum or a
+            // maximum may be regrouped (`combine` is associative), and
+            // every decision is exact whatever the grouping (certified
+            // enclosures decide, or the exact comparison of the diagonals).
+            let charged = if closes_polygon || best_m == INFEASIBLE {
+                best
+            } else {
+                with(best, objective.diagonal(i, j))
+            };
+            cells[at(i, j)] = (charged, best_m);
+            by_end[at(j, i)] = (charged, best_m);
         }
     }
     let mut triangles = Vec::with_capacity(k - 2);
