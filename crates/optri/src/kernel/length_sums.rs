@@ -133,13 +133,45 @@ pub fn compare_length_sums_exactly(a: &[[Point; 2]], b: &[[Point; 2]]) -> Orderi
         let (dx, dy) = (d(s[0][0], s[1][0]), d(s[0][1], s[1][1]));
         (&dx * &dx + &dy * &dy).magnitude().clone()
     };
-    let mut terms: Vec<(BigUint, i32)> = a
-        .iter()
-        .map(|s| (squared(s), 1))
-        .chain(b.iter().map(|s| (squared(s), -1)))
-        .filter(|(d, _)| !d.is_zero())
+    let side = |s: &[[Point; 2]]| -> Vec<BigUint> {
+        let mut v: Vec<BigUint> = s.iter().map(squared).filter(|d| !d.is_zero()).collect();
+        v.sort_unstable();
+        v
+    };
+    let (plus, minus) = cancel_equal(side(a), side(b));
+    let mut terms: Vec<(BigUint, i32)> = plus
+        .into_iter()
+        .map(|d| (d, 1))
+        .chain(minus.into_iter().map(|d| (d, -1)))
         .collect();
+    if terms.is_empty() {
+        return Ordering::Equal;
+    }
     compare_signed_root_sum(&mut terms)
+}
+
+/// The sorted multisets `a` and `b` without the values they share: equal
+/// squared lengths on the two sides cancel exactly, before the root stages
+/// (ties between mirror-image candidates — the two sides of a symmetric
+/// polygon — otherwise cost one big-integer square root per term and class).
+fn cancel_equal(a: Vec<BigUint>, b: Vec<BigUint>) -> (Vec<BigUint>, Vec<BigUint>) {
+    let (mut x, mut y) = (Vec::new(), Vec::new());
+    let (mut a, mut b) = (a.into_iter().peekable(), b.into_iter().peekable());
+    loop {
+        match (a.peek(), b.peek()) {
+            (Some(p), Some(q)) => match p.cmp(q) {
+                Ordering::Less => x.extend(a.next()),
+                Ordering::Greater => y.extend(b.next()),
+                Ordering::Equal => {
+                    a.next();
+                    b.next();
+                }
+            },
+            (Some(_), None) => x.extend(a.next()),
+            (None, Some(_)) => y.extend(b.next()),
+            (None, None) => return (x, y),
+        }
+    }
 }
 
 /// The sign of `Σ sᵢ√Dᵢ` (as an ordering of the `+` part against the `−`
@@ -290,6 +322,33 @@ mod tests {
         );
         assert_eq!(both(&[seg(1.0)], &[seg(1.0)]), Ordering::Equal);
         assert_eq!(both(&[], &[]), Ordering::Equal);
+    }
+
+    #[test]
+    fn equal_terms_cancel_before_the_root_stages() {
+        // Mirror images (the two sides of a symmetric polygon): the same
+        // lengths in another order and position, with a duplicate.
+        let a = [s(3.0, 1.0), s(-2.0, 5.0), s(1.0, 1.0), s(1.0, 1.0)];
+        let b = [
+            [[7.0, 7.0], [8.0, 8.0]],
+            s(5.0, -2.0),
+            s(1.0, -1.0),
+            s(1.0, 3.0),
+        ];
+        assert_eq!(both(&a, &b), Ordering::Equal);
+        // What is left after cancelling decides: √2 + √2 against √5 + 1
+        // (2.828… < 3.236…), with shared terms around it.
+        let a2 = [s(3.0, 1.0), s(1.0, 1.0), s(1.0, 1.0), s(-2.0, 5.0)];
+        let b2 = [s(2.0, 1.0), s(1.0, 3.0), s(0.0, 1.0), s(5.0, 2.0)];
+        assert_eq!(both(&a2, &b2), Ordering::Less);
+        // The multiset difference itself: duplicates cancel one for one.
+        let big = |v: u32| BigUint::from(v);
+        let (x, y) = cancel_equal(
+            vec![big(1), big(2), big(2), big(7)],
+            vec![big(2), big(3), big(7), big(7)],
+        );
+        assert_eq!(x, vec![big(1), big(2)]);
+        assert_eq!(y, vec![big(3), big(7)]);
     }
 
     #[test]
