@@ -141,20 +141,15 @@ fn convex_min_weight(points: &PointSet, polygon: &[u32]) -> Result<Triangulation
 fn convex_beyond_the_program(points: &PointSet, hull: &[u32]) -> Result<Solved> {
     let pts = points.points();
     let n = hull.len();
-    let distinct = |t: &Triangulation| -> Vec<[u32; 3]> {
-        t.triangles()
-            .iter()
-            .map(|c| c.map(|i| points.distinct_index(i)))
-            .collect()
-    };
     let delaunay = crate::graphs::delaunay(points)?;
-    let greedy = crate::criteria::greedy::greedy(points)?;
-    let (greedy_tris, delaunay_tris) = (distinct(&greedy), distinct(&delaunay));
-    let (best, name) = if compare_weights(pts, &delaunay_tris, &greedy_tris) == Ordering::Less {
-        (delaunay, "Delaunay")
-    } else {
-        (greedy, "greedy")
-    };
+    let delaunay_tris = distinct_triangles(points, &delaunay);
+    let (name, best) = lightest(
+        points,
+        [
+            ("greedy", crate::criteria::greedy::greedy(points)?),
+            ("Delaunay", delaunay),
+        ],
+    );
     let mut position = vec![0usize; n];
     for (k, &v) in hull.iter().enumerate() {
         position[v as usize] = k;
@@ -187,7 +182,7 @@ fn convex_beyond_the_program(points: &PointSet, hull: &[u32]) -> Result<Solved> 
     let mut diagnostics = Diagnostics::default();
     diagnostics.add("exact", 0);
     Ok(Solved {
-        triangulation: best,
+        triangulation: Triangulation::from_distinct(points, best),
         algorithm: format!(
             "{name} triangulation: {n} points in convex position exceed the exact program's \
              {MAX_POINTS} (O(n^3)); the lighter of greedy and Delaunay, certified lower bound \
@@ -204,6 +199,34 @@ fn convex_beyond_the_program(points: &PointSet, hull: &[u32]) -> Result<Solved> 
             upper: false,
         }),
     })
+}
+
+/// A triangulation's triangles in distinct indices.
+fn distinct_triangles(points: &PointSet, t: &Triangulation) -> Vec<[u32; 3]> {
+    t.triangles()
+        .iter()
+        .map(|c| c.map(|i| points.distinct_index(i)))
+        .collect()
+}
+
+/// The lightest of named triangulations (weights compared exactly; the
+/// earlier one wins a tie), as its name and its triangles in distinct
+/// indices.
+fn lightest<const K: usize>(
+    points: &PointSet,
+    candidates: [(&'static str, Triangulation); K],
+) -> (&'static str, Vec<[u32; 3]>) {
+    let mut best: Option<(&'static str, Vec<[u32; 3]>)> = None;
+    for (name, t) in candidates {
+        let tris = distinct_triangles(points, &t);
+        if best
+            .as_ref()
+            .is_none_or(|(_, b)| compare_weights(points.points(), &tris, b) == Ordering::Less)
+        {
+            best = Some((name, tris));
+        }
+    }
+    best.expect("at least one candidate")
 }
 
 /// Total length of the diagonals as a certified interval, decided exactly
@@ -403,25 +426,17 @@ pub(crate) fn general_min_weight(
         lower_bound = 0.0; // replaced below by the result's weight
     } else {
         // Keep the lightest of the result, Delaunay and greedy (exactly).
-        let mut best = triangulation
-            .triangles()
-            .iter()
-            .map(|t| t.map(|i| points.distinct_index(i)))
-            .collect::<Vec<_>>();
-        for (name, other) in [
-            ("Delaunay", crate::graphs::delaunay(points)?),
-            ("greedy", crate::criteria::greedy::greedy(points)?),
-        ] {
-            let tris: Vec<[u32; 3]> = other
-                .triangles()
-                .iter()
-                .map(|t| t.map(|i| points.distinct_index(i)))
-                .collect();
-            if compare_weights(points.points(), &tris, &best) == Ordering::Less {
-                best = tris;
-                algorithm =
-                    format!("{algorithm}; not proven optimal, the {name} triangulation is lighter");
-            }
+        let (name, best) = lightest(
+            points,
+            [
+                ("result", triangulation),
+                ("Delaunay", crate::graphs::delaunay(points)?),
+                ("greedy", crate::criteria::greedy::greedy(points)?),
+            ],
+        );
+        if name != "result" {
+            algorithm =
+                format!("{algorithm}; not proven optimal, the {name} triangulation is lighter");
         }
         triangulation = Triangulation::from_distinct(points, best);
         // Lower bound: the certain edges, the solved faces' inner edges
