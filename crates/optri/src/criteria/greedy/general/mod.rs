@@ -269,8 +269,7 @@ struct Renumbering<'a> {
 const TIE_KEY_INDEX_LIMIT: usize = 1 << 31;
 
 impl Renumbering<'_> {
-    /// The position of each local-index segment in the global segment order
-    /// (exact).
+    /// The global segment order of local-index segments (exact), both ways.
     ///
     /// That order is [`crate::kernel::segment_order`] on the original
     /// indices; the local copy holds the same coordinates, so lengths are
@@ -279,19 +278,24 @@ impl Renumbering<'_> {
     /// squared length exactly (integer coordinates, as from a file of
     /// six-decimal points, where ties are common: [`exact_squared_length`]),
     /// the order is that of one integer key per segment
-    /// ([`Self::tie_key`]); otherwise [`Self::ranks_by_comparison`].
-    fn ranks(&self, points: &[Point], segments: &[[u32; 2]]) -> Vec<u32> {
-        self.ranks_by_key(points, segments)
-            .unwrap_or_else(|| self.ranks_by_comparison(points, segments))
+    /// ([`Self::tie_key`]); otherwise [`Self::order_by_comparison`].
+    fn ranking(&self, points: &[Point], segments: &[[u32; 2]]) -> Ranking {
+        let order = self
+            .order_by_key(points, segments)
+            .unwrap_or_else(|| self.order_by_comparison(points, segments));
+        Ranking {
+            rank: inverse_permutation(&order),
+            order,
+        }
     }
 
-    /// [`Self::ranks`] by sorting `(exact squared length, tie key)` as one
+    /// [`Self::ranking`]'s order by sorting `(exact squared length, tie key)` as one
     /// `u128`, or `None` if a squared length is not exact in `f64` (or there
     /// are too many points for the key). Each key is computed from the
     /// segment's own endpoints, in the candidates' spatial order; the
     /// comparison sort it replaces read every tied segment's endpoints at
     /// random (a fifth of greedy's time on a 10⁶-point CLI run).
-    fn ranks_by_key(&self, points: &[Point], segments: &[[u32; 2]]) -> Option<Vec<u32>> {
+    fn order_by_key(&self, points: &[Point], segments: &[[u32; 2]]) -> Option<Vec<u32>> {
         if points.len() > TIE_KEY_INDEX_LIMIT {
             return None;
         }
@@ -322,7 +326,7 @@ impl Renumbering<'_> {
             })
             .collect();
         keyed.par_sort_unstable();
-        Some(positions(keyed.into_iter().map(|(_, i)| i), segments.len()))
+        Some(keyed.into_par_iter().map(|(_, i)| i).collect())
     }
 
     /// The order of [`compare_equal_lengths_symbolic`] among segments of
@@ -354,7 +358,7 @@ impl Renumbering<'_> {
     /// [`Self::ranks`] by the exact comparison (see
     /// [`super::sort_keyed_runs`]): squared lengths that `f64` computes
     /// exactly are compared as numbers, the others by [`compare_lengths`].
-    fn ranks_by_comparison(&self, points: &[Point], segments: &[[u32; 2]]) -> Vec<u32> {
+    fn order_by_comparison(&self, points: &[Point], segments: &[[u32; 2]]) -> Vec<u32> {
         let mut keyed = keyed_by_length(points, segments, |i, _| i as u32);
         let gather = |i: u32| {
             let ends =
@@ -371,8 +375,29 @@ impl Renumbering<'_> {
             .then_with(|| compare_equal_lengths_symbolic(x.0, y.0))
         };
         sort_keyed_runs(&mut keyed, gather, exact);
-        positions(keyed.into_iter().map(|(_, i)| i), segments.len())
+        keyed.into_par_iter().map(|(_, i)| i).collect()
     }
+}
+
+/// The global segment order of a round's candidates (indices into the
+/// candidate list): `order[r]` is the candidate of rank `r`, `rank[i]` the
+/// rank of candidate `i`.
+struct Ranking {
+    order: Vec<u32>,
+    rank: Vec<u32>,
+}
+
+/// The inverse of the permutation `order` of `0..order.len()`, in parallel
+/// (each slot is written once; relaxed atomics only make the scattered
+/// writes safe).
+fn inverse_permutation(order: &[u32]) -> Vec<u32> {
+    use std::sync::atomic::{AtomicU32, Ordering::Relaxed};
+    let inverse: Vec<AtomicU32> = (0..order.len()).map(|_| AtomicU32::new(0)).collect();
+    order
+        .par_iter()
+        .enumerate()
+        .for_each(|(at, &v)| inverse[v as usize].store(at as u32, Relaxed));
+    inverse.into_iter().map(AtomicU32::into_inner).collect()
 }
 
 /// The inverse of a permutation of `0..len` listed in `order`: each item's
@@ -482,7 +507,7 @@ fn greedy_rounds(
             .collect::<Vec<Vec<[u32; 2]>>>()
             .concat();
         drop(grid);
-        let rank = renumbering.ranks(points, &candidates);
+        let ranking = renumbering.ranking(points, &candidates);
         let mut is_open = vec![false; n];
         for &v in &open {
             is_open[v as usize] = true;
@@ -495,7 +520,15 @@ fn greedy_rounds(
             })
             .flatten()
             .collect();
-        let accepted = decide_round(points, bbox, &candidates, &rank, &active, near, round == 0);
+        let accepted = decide_round(
+            points,
+            bbox,
+            &candidates,
+            &ranking,
+            &active,
+            near,
+            round == 0,
+        );
         g.add(&accepted);
         floor = next_floor(floor, candidates.len(), open.len());
         growth = next_growth(growth, candidates.len(), open.len());
@@ -656,9 +689,25 @@ fn merge_chains_on_one_line(
     class
 }
 
-/// Pass 1 of [`decide_round`] on a chunk of candidates: the blocked ranks
-/// and the (rank, dependency rank) pairs.
+/// What pass 1 of [`decide_round`] finds about a run of candidates: the
+/// ranks of the blocked ones, and for each candidate in turn the number of
+/// its dependencies, whose ranks follow each other in `dependencies`.
+#[derive(Default)]
+struct Scanned {
+    blocked: Vec<u32>,
+    dependency_counts: Vec<u32>,
+    dependencies: Vec<u32>,
+}
+
+/// Pass 1 of [`decide_round`] on a chunk of candidates (see [`Scanned`]).
+///
+/// With `points_by_scan` (round 0, where every pair shorter than the
+/// threshold is a candidate) the point test is part of the dependency scan:
+/// a point `z` on the open segment `ab` makes `az` a shorter candidate whose
+/// midpoint lies on `ab`, so the scan meets it, and sees that it shares `a`
+/// and ends on `ab`; no separate point grid query is needed.
 #[inline(never)]
+#[allow(clippy::too_many_arguments)]
 fn scan_chunk(
     points: &[Point],
     segments: &[[u32; 2]],
@@ -667,38 +716,58 @@ fn scan_chunk(
     earlier: Option<&SegmentIndex>,
     near: &PointsNear,
     shortest_at: &[u32],
-) -> (Vec<u32>, Vec<[u32; 2]>) {
-    let (mut blocked, mut deps) = (Vec::new(), Vec::new());
-    for (&[a, b], &r) in segments.iter().zip(ranks) {
+    points_by_scan: bool,
+) -> Scanned {
+    let mut out = Scanned {
+        dependency_counts: vec![0; segments.len()],
+        ..Scanned::default()
+    };
+    for (i, (&[a, b], &r)) in segments.iter().zip(ranks).enumerate() {
         if shortest_at.get(a as usize) == Some(&r) && shortest_at[b as usize] == r {
             continue; // accepted whatever the others do (see `decide_round`)
         }
         let q = Query::new(points[a as usize], points[b as usize]);
-        if earlier.is_some_and(|e| e.crossed_by(&q)) || near.on_segment(q.a, q.b) {
-            blocked.push(r);
+        if earlier.is_some_and(|e| e.crossed_by(&q))
+            || (!points_by_scan && near.on_segment(q.a, q.b))
+        {
+            out.blocked.push(r);
             continue;
         }
+        let listed = out.dependencies.len();
+        let mut point_on_segment = false;
         index.scan_near(q.a, q.b, |s| {
-            if s.id >= r {
+            if s.id >= r || point_on_segment {
                 return true;
             }
-            if s.crosses(&q) {
-                deps.push([r, s.id]);
+            if points_by_scan {
+                match s.crosses_or_rests_on(&q) {
+                    Some(true) => out.dependencies.push(s.id),
+                    Some(false) => point_on_segment = true,
+                    None => {}
+                }
+            } else if s.crosses(&q) {
+                out.dependencies.push(s.id);
             }
             false
         });
+        if point_on_segment {
+            out.dependencies.truncate(listed);
+            out.blocked.push(r);
+        } else {
+            out.dependency_counts[i] = (out.dependencies.len() - listed) as u32;
+        }
     }
-    (blocked, deps)
+    out
 }
 
-/// Decides one round: `candidates` in spatial order with `rank` their
+/// Decides one round: `candidates` in spatial order, `ranking` their
 /// positions in the global segment order, `active` the earlier edges they
 /// must not cross (module docs). Returns the accepted candidates.
 fn decide_round(
     points: &[Point],
     bbox: [f64; 4],
     candidates: &[[u32; 2]],
-    rank: &[u32],
+    ranking: &Ranking,
     active: &[[u32; 2]],
     near: &PointsNear,
     first_round: bool,
@@ -707,6 +776,7 @@ fn decide_round(
     if m == 0 {
         return Vec::new();
     }
+    let rank = &ranking.rank;
     // In the first round (no earlier edges) every segment shorter than the
     // threshold is a candidate, so the lowest rank at a vertex is the
     // shortest segment there. A segment shortest at both ends is a GT edge:
@@ -734,8 +804,9 @@ fn decide_round(
         SegmentIndex::new(points, bbox, active, &ids)
     });
 
-    // Pass 1, in spatial order: blocked candidates and (rank, dependency) pairs.
-    let (blocked, dependencies): (Vec<u32>, Vec<[u32; 2]>) = candidates
+    // Pass 1, in spatial order: blocked candidates and each candidate's
+    // dependencies, listed in candidate order.
+    let scanned: Vec<Scanned> = candidates
         .par_chunks(CANDIDATES_PER_TASK)
         .zip(rank.par_chunks(CANDIDATES_PER_TASK))
         .map(|(segments, ranks)| {
@@ -747,39 +818,38 @@ fn decide_round(
                 earlier.as_ref(),
                 near,
                 &shortest_at,
+                first_round,
             )
         })
-        .reduce(
-            || (Vec::new(), Vec::new()),
-            |(mut b1, mut d1), (b2, d2)| {
-                b1.extend(b2);
-                d1.extend(d2);
-                (b1, d1)
-            },
-        );
+        .collect();
+    drop(index);
+    let mut start = Vec::with_capacity(m + 1);
+    start.push(0u32);
+    let mut total = 0u32;
+    for chunk in &scanned {
+        for &c in &chunk.dependency_counts {
+            total += c;
+            start.push(total);
+        }
+    }
+    let dependencies: Vec<u32> = scanned
+        .iter()
+        .flat_map(|chunk| &chunk.dependencies)
+        .copied()
+        .collect();
 
-    // Pass 2, in the global order.
-    let mut start = vec![0u32; m + 1];
-    for &[r, _] in &dependencies {
-        start[r as usize + 1] += 1;
-    }
-    for r in 0..m {
-        start[r + 1] += start[r];
-    }
-    let mut fill = start.clone();
-    let mut flat = vec![0u32; dependencies.len()];
-    for &[r, s] in &dependencies {
-        flat[fill[r as usize] as usize] = s;
-        fill[r as usize] += 1;
-    }
-    drop(dependencies);
+    // Pass 2, in the global order: candidate `ranking.order[r]` has rank `r`,
+    // and its dependencies (ranks below `r`) are decided before it.
     let mut accepted = vec![true; m];
-    for r in blocked {
-        accepted[r as usize] = false;
+    for chunk in &scanned {
+        for &r in &chunk.blocked {
+            accepted[r as usize] = false;
+        }
     }
-    for r in 0..m {
+    drop(scanned);
+    for (r, &i) in ranking.order.iter().enumerate() {
         if accepted[r] {
-            let deps = &flat[start[r] as usize..start[r + 1] as usize];
+            let deps = &dependencies[start[i as usize] as usize..start[i as usize + 1] as usize];
             accepted[r] = deps.iter().all(|&s| !accepted[s as usize]);
         }
     }
@@ -823,17 +893,17 @@ mod tests {
                     }
                 }
             }
-            let by_key = renumbering.ranks_by_key(&points, &segments).expect("exact");
+            let by_key = renumbering.order_by_key(&points, &segments).expect("exact");
             assert_eq!(
                 by_key,
-                renumbering.ranks_by_comparison(&points, &segments),
+                renumbering.order_by_comparison(&points, &segments),
                 "case {case}"
             );
             if case % 10 == 0 && !segments.is_empty() {
                 points[0][0] += 0.1; // 0.1 is not dyadic: not exact
                 let touched = segments.iter().any(|s| s.contains(&0));
                 assert_eq!(
-                    renumbering.ranks_by_key(&points, &segments).is_none(),
+                    renumbering.order_by_key(&points, &segments).is_none(),
                     touched
                 );
             }

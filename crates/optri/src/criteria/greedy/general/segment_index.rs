@@ -39,17 +39,46 @@ impl Indexed {
         Self { id, a, b }
     }
 
-    /// Does this segment properly cross the query? (Exact; the box test
-    /// first, which needs no `min` in x because `a` is the left endpoint.)
+    /// Do the closed bounding boxes of this segment and the query meet? One
+    /// branch for the whole test (`&`, not `&&`): its outcome is
+    /// unpredictable, so fewer branches mispredict less; no `min` in x
+    /// because `a` is the left endpoint.
     #[inline]
-    pub(super) fn crosses(&self, q: &Query) -> bool {
-        // One branch for the whole box test (`&`, not `&&`): its outcome is
-        // unpredictable, so fewer branches mispredict less.
-        let boxes_meet = (self.a[0] <= q.hi[0])
+    fn box_meets(&self, q: &Query) -> bool {
+        (self.a[0] <= q.hi[0])
             & (self.b[0] >= q.lo[0])
             & (fmin(self.a[1], self.b[1]) <= q.hi[1])
-            & (fmax(self.a[1], self.b[1]) >= q.lo[1]);
-        boxes_meet && properly_cross(q.a, q.b, self.a, self.b)
+            & (fmax(self.a[1], self.b[1]) >= q.lo[1])
+    }
+
+    /// Does this segment properly cross the query? (Exact; the box test
+    /// first.)
+    #[inline]
+    pub(super) fn crosses(&self, q: &Query) -> bool {
+        self.box_meets(q) && properly_cross(q.a, q.b, self.a, self.b)
+    }
+
+    /// How this segment meets the query: `Some(true)` if it properly
+    /// crosses it, `Some(false)` if it shares an endpoint with it and its
+    /// other endpoint lies on the query's open segment, `None` otherwise.
+    /// (Exact; endpoints are compared by coordinates, which identify the
+    /// distinct points.)
+    #[inline]
+    pub(super) fn crosses_or_rests_on(&self, q: &Query) -> Option<bool> {
+        if !self.box_meets(q) {
+            return None;
+        }
+        if properly_cross(q.a, q.b, self.a, self.b) {
+            return Some(true);
+        }
+        let other = if self.a == q.a || self.a == q.b {
+            self.b
+        } else if self.b == q.a || self.b == q.b {
+            self.a
+        } else {
+            return None;
+        };
+        (other != q.a && other != q.b && on_open_segment(other, q.a, q.b)).then_some(false)
     }
 }
 
