@@ -98,7 +98,7 @@ use crate::spatial::{bounding_box, fmax, fmin, morton_order};
 use crate::timing::{Phase, Stopwatch};
 use guard::{next_floor, next_growth, round_grid, MIN_RELATIVE_STEP, NO_LINE, THRESHOLD_GROWTH};
 use partial::Partial;
-use segment_index::{PointsNear, Query, SegmentIndex};
+use segment_index::{PointsNear, Query, SegmentIndex, Step};
 use std::cmp::Ordering;
 use std::sync::OnceLock;
 
@@ -699,21 +699,30 @@ struct Scanned {
     dependencies: Vec<u32>,
 }
 
+/// The id of an earlier (active) edge in a round's segment index; the
+/// candidate of rank `r` has id `r + 1`, so that in every cell, sorted by
+/// id, the earlier edges come first and a scan stops at the candidates not
+/// shorter than its own.
+const EARLIER_EDGE: u32 = 0;
+
 /// Pass 1 of [`decide_round`] on a chunk of candidates (see [`Scanned`]).
 ///
+/// One scan of the round's index finds both the earlier edges a candidate
+/// crosses (it is then blocked) and its dependencies: every earlier edge is
+/// shorter than the candidate, so the dependency scan's cells hold every
+/// earlier edge that may cross it.
+///
 /// With `points_by_scan` (round 0, where every pair shorter than the
-/// threshold is a candidate) the point test is part of the dependency scan:
-/// a point `z` on the open segment `ab` makes `az` a shorter candidate whose
+/// threshold is a candidate) the point test is part of that scan too: a
+/// point `z` on the open segment `ab` makes `az` a shorter candidate whose
 /// midpoint lies on `ab`, so the scan meets it, and sees that it shares `a`
-/// and ends on `ab`; no separate point grid query is needed.
+/// and ends on `ab`; no point grid query is needed.
 #[inline(never)]
-#[allow(clippy::too_many_arguments)]
 fn scan_chunk(
     points: &[Point],
     segments: &[[u32; 2]],
     ranks: &[u32],
     index: &SegmentIndex,
-    earlier: Option<&SegmentIndex>,
     near: &PointsNear,
     shortest_at: &[u32],
     points_by_scan: bool,
@@ -727,30 +736,30 @@ fn scan_chunk(
             continue; // accepted whatever the others do (see `decide_round`)
         }
         let q = Query::new(points[a as usize], points[b as usize]);
-        if earlier.is_some_and(|e| e.crossed_by(&q))
-            || (!points_by_scan && near.on_segment(q.a, q.b))
-        {
-            out.blocked.push(r);
-            continue;
-        }
         let listed = out.dependencies.len();
-        let mut point_on_segment = false;
+        let mut blocked = false;
         index.scan_near(q.a, q.b, |s| {
-            if s.id >= r || point_on_segment {
-                return true;
+            if s.id > r {
+                return Step::NextCell;
             }
-            if points_by_scan {
+            if s.id == EARLIER_EDGE {
+                blocked = s.crosses(&q);
+            } else if points_by_scan {
                 match s.crosses_or_rests_on(&q) {
-                    Some(true) => out.dependencies.push(s.id),
-                    Some(false) => point_on_segment = true,
+                    Some(true) => out.dependencies.push(s.id - 1),
+                    Some(false) => blocked = true,
                     None => {}
                 }
             } else if s.crosses(&q) {
-                out.dependencies.push(s.id);
+                out.dependencies.push(s.id - 1);
             }
-            false
+            if blocked {
+                Step::Stop
+            } else {
+                Step::Next
+            }
         });
-        if point_on_segment {
+        if blocked || (!points_by_scan && near.on_segment(q.a, q.b)) {
             out.dependencies.truncate(listed);
             out.blocked.push(r);
         } else {
@@ -798,11 +807,16 @@ fn decide_round(
     } else {
         Vec::new()
     };
-    let index = SegmentIndex::new(points, bbox, candidates, rank);
-    let earlier = (!active.is_empty()).then(|| {
-        let ids: Vec<u32> = (0..active.len() as u32).collect();
-        SegmentIndex::new(points, bbox, active, &ids)
-    });
+    // One index of the candidates and the earlier edges (see `scan_chunk`).
+    let index = {
+        let segments: Vec<[u32; 2]> = candidates.iter().chain(active).copied().collect();
+        let ids: Vec<u32> = rank
+            .par_iter()
+            .map(|&r| r + 1)
+            .chain(active.par_iter().map(|_| EARLIER_EDGE))
+            .collect();
+        SegmentIndex::new(points, bbox, &segments, &ids)
+    };
 
     // Pass 1, in spatial order: blocked candidates and each candidate's
     // dependencies, listed in candidate order.
@@ -815,7 +829,6 @@ fn decide_round(
                 segments,
                 ranks,
                 &index,
-                earlier.as_ref(),
                 near,
                 &shortest_at,
                 first_round,

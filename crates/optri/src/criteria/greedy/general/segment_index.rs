@@ -1,8 +1,9 @@
 //! The two per-candidate tests of pass 1 (module docs, "Deciding a round
 //! without following the length order"), each over a [`SparseGrid`]:
 //! [`SegmentIndex`] lists the indexed segments a candidate may cross — the
-//! round's shorter candidates (its dependencies) or the active earlier edges
-//! (the Claim of "Earlier edges: only the *active* ones") — and
+//! round's shorter candidates (its dependencies) and the active earlier
+//! edges (the Claim of "Earlier edges: only the *active* ones"), in one
+//! index — and
 //! [`PointsNear`] answers whether a point lies on it. The grids only choose
 //! which exact tests run; the tests are the kernel's.
 
@@ -131,29 +132,32 @@ impl SegmentIndex {
     }
 
     /// Calls `f` on every segment *no longer than `ab`* that may meet `ab`
-    /// (and others), cell by cell, in ascending id within a cell; `f`
-    /// returns `true` to stop the scan of the current cell. (Their midpoints
-    /// lie within `|ab| / 2` of `ab`.)
+    /// (and others), cell by cell, in ascending id within a cell, until `f`
+    /// says [`Step::Stop`]. (Their midpoints lie within `|ab| / 2` of `ab`.)
     #[inline]
-    pub(super) fn scan_near(&self, a: Point, b: Point, mut f: impl FnMut(&Indexed) -> bool) {
+    pub(super) fn scan_near(&self, a: Point, b: Point, mut f: impl FnMut(&Indexed) -> Step) {
         let pad = fmin(self.reach, half_length(a, b) * HALF_LENGTH_PAD);
         self.grid.any_cell_near(a, b, pad, |cell| {
             for s in cell {
-                if f(s) {
-                    break;
+                match f(s) {
+                    Step::Next => {}
+                    Step::NextCell => return false,
+                    Step::Stop => return true,
                 }
             }
             false
         });
     }
+}
 
-    /// Does `ab` properly cross one of the segments, all shorter than `ab`?
-    /// (Exact.)
-    pub(super) fn crossed_by(&self, q: &Query) -> bool {
-        let pad = fmin(self.reach, half_length(q.a, q.b) * HALF_LENGTH_PAD);
-        self.grid
-            .any_cell_near(q.a, q.b, pad, |cell| cell.iter().any(|s| s.crosses(q)))
-    }
+/// What a [`SegmentIndex::scan_near`] does after a segment.
+pub(super) enum Step {
+    /// Go on with the next segment of the cell.
+    Next,
+    /// Skip the rest of the cell.
+    NextCell,
+    /// End the scan.
+    Stop,
 }
 
 /// Half the length of `ab`, rounded (only ever used, padded, to choose cells).
