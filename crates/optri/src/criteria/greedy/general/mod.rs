@@ -690,13 +690,27 @@ fn merge_chains_on_one_line(
 }
 
 /// What pass 1 of [`decide_round`] finds about a run of candidates: the
-/// ranks of the blocked ones, and for each candidate in turn the number of
-/// its dependencies, whose ranks follow each other in `dependencies`.
+/// ranks of the blocked ones, and the ranks of each candidate's
+/// dependencies, candidate after candidate in `dependencies`, the `k`-th
+/// candidate's ending at `dependency_ends[k]`.
 #[derive(Default)]
 struct Scanned {
     blocked: Vec<u32>,
-    dependency_counts: Vec<u32>,
+    dependency_ends: Vec<u32>,
     dependencies: Vec<u32>,
+}
+
+impl Scanned {
+    /// The dependencies of the `k`-th candidate of the run.
+    #[inline]
+    fn dependencies_of(&self, k: usize) -> &[u32] {
+        let begin = if k == 0 {
+            0
+        } else {
+            self.dependency_ends[k - 1]
+        };
+        &self.dependencies[begin as usize..self.dependency_ends[k] as usize]
+    }
 }
 
 /// The id of an earlier (active) edge in a round's segment index; the
@@ -728,12 +742,14 @@ fn scan_chunk(
     points_by_scan: bool,
 ) -> Scanned {
     let mut out = Scanned {
-        dependency_counts: vec![0; segments.len()],
+        dependency_ends: Vec::with_capacity(segments.len()),
         ..Scanned::default()
     };
-    for (i, (&[a, b], &r)) in segments.iter().zip(ranks).enumerate() {
+    for (&[a, b], &r) in segments.iter().zip(ranks) {
         if shortest_at.get(a as usize) == Some(&r) && shortest_at[b as usize] == r {
-            continue; // accepted whatever the others do (see `decide_round`)
+            // Accepted whatever the others do (see `decide_round`).
+            out.dependency_ends.push(out.dependencies.len() as u32);
+            continue;
         }
         let q = Query::new(points[a as usize], points[b as usize]);
         let listed = out.dependencies.len();
@@ -762,9 +778,8 @@ fn scan_chunk(
         if blocked || (!points_by_scan && near.on_segment(q.a, q.b)) {
             out.dependencies.truncate(listed);
             out.blocked.push(r);
-        } else {
-            out.dependency_counts[i] = (out.dependencies.len() - listed) as u32;
         }
+        out.dependency_ends.push(out.dependencies.len() as u32);
     }
     out
 }
@@ -836,23 +851,27 @@ fn decide_round(
         })
         .collect();
     drop(index);
-    let mut start = Vec::with_capacity(m + 1);
-    start.push(0u32);
-    let mut total = 0u32;
-    for chunk in &scanned {
-        for &c in &chunk.dependency_counts {
-            total += c;
-            start.push(total);
-        }
-    }
-    let dependencies: Vec<u32> = scanned
-        .iter()
-        .flat_map(|chunk| &chunk.dependencies)
-        .copied()
+
+    // The dependencies regrouped in rank order (in parallel, a scattered
+    // read per candidate), so that the sequential pass 2 reads them in turn.
+    let by_rank: Vec<(Vec<u32>, Vec<u32>)> = ranking
+        .order
+        .par_chunks(CANDIDATES_PER_TASK)
+        .map(|run| {
+            let mut ends = Vec::with_capacity(run.len());
+            let mut flat = Vec::new();
+            for &i in run {
+                let i = i as usize;
+                let chunk = &scanned[i / CANDIDATES_PER_TASK];
+                flat.extend_from_slice(chunk.dependencies_of(i % CANDIDATES_PER_TASK));
+                ends.push(flat.len() as u32);
+            }
+            (ends, flat)
+        })
         .collect();
 
-    // Pass 2, in the global order: candidate `ranking.order[r]` has rank `r`,
-    // and its dependencies (ranks below `r`) are decided before it.
+    // Pass 2, in the global order: the dependencies of rank `r` (ranks below
+    // `r`) are decided before it.
     let mut accepted = vec![true; m];
     for chunk in &scanned {
         for &r in &chunk.blocked {
@@ -860,10 +879,16 @@ fn decide_round(
         }
     }
     drop(scanned);
-    for (r, &i) in ranking.order.iter().enumerate() {
-        if accepted[r] {
-            let deps = &dependencies[start[i as usize] as usize..start[i as usize + 1] as usize];
-            accepted[r] = deps.iter().all(|&s| !accepted[s as usize]);
+    let mut r = 0;
+    for (ends, flat) in &by_rank {
+        let mut begin = 0;
+        for &end in ends {
+            if accepted[r] {
+                let deps = &flat[begin as usize..end as usize];
+                accepted[r] = deps.iter().all(|&s| !accepted[s as usize]);
+            }
+            begin = end;
+            r += 1;
         }
     }
     candidates
