@@ -18,6 +18,9 @@
 //! `circle N`: the regular N-gon of radius 1000 sampled with cos/sin.
 //! `random-circle N`: N points at random angles on that circle (rounded to
 //! `f64`, convex position as rounding decides).
+//! `perturbed-circle N`: the regular N-gon on the unit circle with radii
+//! jittered by up to 10⁻⁹ (issue 15's perturbed convex points: convex
+//! position while the jitter stays below the sagitta, 5·10⁻⁸ at N = 10⁴).
 //! Issue 15's degenerate families (`cliff_family`): `run2apex N` (a run of
 //! N − 2 integer points with apexes on both sides), `square N` (the boundary
 //! of a square, N/4 integer points a side), `tiny-cluster N` (N points in a
@@ -29,7 +32,8 @@
 //! three points 10¹¹ away), `duplicates3 N` (N copies of 3 points plus 5
 //! others).
 //! `cocircular N`: in one process, GT of `circle N`, `random-circle N` and
-//! `2N`, `convex N` and `2N`, with the issue-15 ratios.
+//! `2N`, `convex N` and `2N`, `perturbed-circle N` and `2N`, with the
+//! issue-15 ratios.
 //! With `WRITE_POINTS=FILE` the points are written to `FILE` with six
 //! decimals (the input of whole CLI runs) instead of timed.
 //! `uniform` reports GT time as a ratio to the Delaunay time of the same
@@ -38,14 +42,17 @@
 
 use optri::{delaunay, triangulate, Criterion, PointSet};
 use optri_oracle::inputs::{
-    circle_at_random_angles, clustered, convex_lens, fan, gaussian_clusters, random_parabola,
-    sampled_circle, uniform_in_box,
+    circle_at_random_angles, clustered, convex_lens, fan, gaussian_clusters, perturbed_circle,
+    random_parabola, sampled_circle, uniform_in_box,
 };
 use rand::rngs::StdRng;
 use rand::{Rng, SeedableRng};
 use std::time::Instant;
 
 const SEED: u64 = 2024;
+
+/// The radial jitter of `perturbed-circle` (see the module docs).
+const PERTURBATION: f64 = 1e-9;
 
 /// The standard deviation of `gaussian-clusters` (centres in the unit
 /// square), issue 15's example value: with 1000 clusters of 1000 points a
@@ -81,12 +88,16 @@ fn cocircular(n: usize) {
     let random_2n = circle_at_random_angles(&mut rng, 2 * n, 1000.0);
     let lens_n = convex_lens(&mut rng, n);
     let lens_2n = convex_lens(&mut rng, 2 * n);
+    let perturbed_n = perturbed_circle(&mut rng, n, PERTURBATION);
+    let perturbed_2n = perturbed_circle(&mut rng, 2 * n, PERTURBATION);
     let sets = [
         ("circle", sampled_circle(n, 1000.0)),
         ("random-circle", random_n),
         ("random-circle-2n", random_2n),
         ("convex", lens_n),
         ("convex-2n", lens_2n),
+        ("perturbed-circle", perturbed_n),
+        ("perturbed-circle-2n", perturbed_2n),
     ];
     let mut t = Vec::new();
     for (what, pts) in &sets {
@@ -95,11 +106,14 @@ fn cocircular(n: usize) {
         t.push(s);
     }
     println!(
-        "circle/random-circle={:.2} circle/convex={:.2} random-circle 2n/n={:.2} convex 2n/n={:.2}",
+        "circle/random-circle={:.2} circle/convex={:.2} circle/perturbed-circle={:.2} \
+         random-circle 2n/n={:.2} convex 2n/n={:.2} perturbed-circle 2n/n={:.2}",
         t[0] / t[1],
         t[0] / t[3],
+        t[0] / t[5],
         t[2] / t[1],
-        t[4] / t[3]
+        t[4] / t[3],
+        t[6] / t[5]
     );
 }
 
@@ -126,11 +140,12 @@ fn main() {
         "fan" => fan(n),
         "circle" => sampled_circle(n, 1000.0),
         "random-circle" => circle_at_random_angles(&mut rng, n, 1000.0),
+        "perturbed-circle" => perturbed_circle(&mut rng, n, PERTURBATION),
         other if cliff_family(other, n).is_some() => cliff_family(other, n).expect("checked"),
         other => panic!(
             "unknown mode {other} (uniform | uniform-integer | clustered \
              | gaussian-clusters (sigma 0.005) | convex | semicircular | fan \
-             | circle | random-circle | cocircular | run2apex | square | tiny-cluster | duplicates \
+             | circle | random-circle | perturbed-circle | cocircular | run2apex | square | tiny-cluster | duplicates \
              | grid | two-circles | nested-cluster | offset-cluster | duplicates3)"
         ),
     };
