@@ -5,8 +5,9 @@
 //! exact tests on fewer candidates; it never decides anything itself.
 //!
 //! The greedy triangulation's length rounds (`criteria::greedy::general`)
-//! build one per round: for the open vertices, the round's candidate
-//! segments, the earlier active edges and the points.
+//! build them per round: for the open vertices, for the round's candidate
+//! segments together with the earlier active edges, and (rebuilt only when
+//! the rounds outgrow its cells) for the points.
 
 use crate::kernel::Point;
 use crate::parallel::prelude::*;

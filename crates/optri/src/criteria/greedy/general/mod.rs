@@ -260,7 +260,7 @@ fn single_fan(points: &[Point]) -> Option<Vec<[u32; 3]>> {
 /// Local (memory-friendly) numbering versus the caller's, which decides ties.
 struct Renumbering<'a> {
     to_original: &'a [u32],
-    /// Each local point's position in `(y, x)` order, for [`Self::ranks`]'s
+    /// Each local point's position in `(y, x)` order, for [`Self::ranking`]'s
     /// integer keys (computed on first use).
     yx_rank: OnceLock<Vec<u32>>,
 }
@@ -355,7 +355,7 @@ impl Renumbering<'_> {
         (high << 32) | u64::from(u32::MAX - yx_rank[u as usize])
     }
 
-    /// [`Self::ranks`] by the exact comparison (see
+    /// [`Self::ranking`]'s order by the exact comparison (see
     /// [`super::sort_keyed_runs`]): squared lengths that `f64` computes
     /// exactly are compared as numbers, the others by [`compare_lengths`].
     fn order_by_comparison(&self, points: &[Point], segments: &[[u32; 2]]) -> Vec<u32> {
@@ -449,7 +449,8 @@ fn greedy_rounds(
         let (threshold, grid) = round_grid(points, bbox, &open, &class, lower, proposed, floor);
         // Once every pair is shorter than the threshold, take all the rest.
         let last = threshold > LAST_ROUND_MARGIN * diagonal;
-        // The point grid answers "a point on this segment?"; a query costs
+        // The point grid answers "a point on this segment?" from round 1 on
+        // (round 0 finds such points in its segment scan); a query costs
         // about (length / cell)² cells, so coarsen it when the round's
         // candidates would cost more than rebuilding it (O(n)).
         let cell = fmin(threshold, diagonal);
@@ -459,10 +460,9 @@ fn greedy_rounds(
                 > (REBUILD_COST_PER_POINT * n) as f64
                 && ratio > MIN_COARSENING
         });
-        if near.is_none() || coarsen {
+        if round > 0 && (near.is_none() || coarsen) {
             near = Some(PointsNear::new(points, bbox, cell));
         }
-        let near = near.as_ref().expect("just built");
         // Pairs `open[i], open[j]` in the length range that may leave both
         // endpoints.
         let keep = |i: usize, j: usize| {
@@ -526,7 +526,7 @@ fn greedy_rounds(
             &candidates,
             &ranking,
             &active,
-            near,
+            near.as_ref(),
             round == 0,
         );
         g.add(&accepted);
@@ -726,7 +726,7 @@ const EARLIER_EDGE: u32 = 0;
 /// shorter than the candidate, so the dependency scan's cells hold every
 /// earlier edge that may cross it.
 ///
-/// With `points_by_scan` (round 0, where every pair shorter than the
+/// Without a point grid `near` (round 0, where every pair shorter than the
 /// threshold is a candidate) the point test is part of that scan too: a
 /// point `z` on the open segment `ab` makes `az` a shorter candidate whose
 /// midpoint lies on `ab`, so the scan meets it, and sees that it shares `a`
@@ -737,10 +737,10 @@ fn scan_chunk(
     segments: &[[u32; 2]],
     ranks: &[u32],
     index: &SegmentIndex,
-    near: &PointsNear,
+    near: Option<&PointsNear>,
     shortest_at: &[u32],
-    points_by_scan: bool,
 ) -> Scanned {
+    let points_by_scan = near.is_none();
     let mut out = Scanned {
         dependency_ends: Vec::with_capacity(segments.len()),
         ..Scanned::default()
@@ -775,7 +775,7 @@ fn scan_chunk(
                 Step::Next
             }
         });
-        if blocked || (!points_by_scan && near.on_segment(q.a, q.b)) {
+        if blocked || near.is_some_and(|p| p.on_segment(q.a, q.b)) {
             out.dependencies.truncate(listed);
             out.blocked.push(r);
         }
@@ -786,14 +786,15 @@ fn scan_chunk(
 
 /// Decides one round: `candidates` in spatial order, `ranking` their
 /// positions in the global segment order, `active` the earlier edges they
-/// must not cross (module docs). Returns the accepted candidates.
+/// must not cross (module docs), `near` the point grid (none in round 0: see
+/// [`scan_chunk`]). Returns the accepted candidates.
 fn decide_round(
     points: &[Point],
     bbox: [f64; 4],
     candidates: &[[u32; 2]],
     ranking: &Ranking,
     active: &[[u32; 2]],
-    near: &PointsNear,
+    near: Option<&PointsNear>,
     first_round: bool,
 ) -> Vec<[u32; 2]> {
     let m = candidates.len();
@@ -838,17 +839,7 @@ fn decide_round(
     let scanned: Vec<Scanned> = candidates
         .par_chunks(CANDIDATES_PER_TASK)
         .zip(rank.par_chunks(CANDIDATES_PER_TASK))
-        .map(|(segments, ranks)| {
-            scan_chunk(
-                points,
-                segments,
-                ranks,
-                &index,
-                near,
-                &shortest_at,
-                first_round,
-            )
-        })
+        .map(|(segments, ranks)| scan_chunk(points, segments, ranks, &index, near, &shortest_at))
         .collect();
     drop(index);
 

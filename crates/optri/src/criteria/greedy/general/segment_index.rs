@@ -4,7 +4,8 @@
 //! round's shorter candidates (its dependencies) and the active earlier
 //! edges (the Claim of "Earlier edges: only the *active* ones"), in one
 //! index — and
-//! [`PointsNear`] answers whether a point lies on it. The grids only choose
+//! [`PointsNear`] answers whether a point lies on it (from round 1 on;
+//! round 0 finds such points in the segment scan). The grids only choose
 //! which exact tests run; the tests are the kernel's.
 
 use crate::kernel::{on_open_segment, properly_cross, Point};
