@@ -429,6 +429,9 @@ fn greedy_rounds(
     // one); the guard in `round_grid` shrinks it where the points are denser.
     let spacing = ((fmax(w, h * MIN_ASPECT) * fmax(h, w * MIN_ASPECT)) / n as f64).sqrt();
     let mut open: Vec<u32> = (0..n as u32).collect();
+    // The open gaps of each open vertex (`Partial::open_gaps`; none before
+    // the first edges).
+    let mut gaps: Vec<Option<Vec<[u32; 2]>>> = vec![None; n];
     let mut near: Option<PointsNear> = None;
     let mut lower = 0.0;
     let mut round = 0;
@@ -439,11 +442,6 @@ fn greedy_rounds(
             FIRST_THRESHOLD_SPACINGS * spacing
         } else {
             growth * lower
-        };
-        let gaps: Vec<Option<Vec<[u32; 2]>>> = if round == 0 {
-            vec![None; n]
-        } else {
-            open.par_iter().map(|&v| g.open_gaps(v)).collect()
         };
         let class = line_classes(points, &open, &gaps);
         let (threshold, grid) = round_grid(points, bbox, &open, &class, lower, proposed, floor);
@@ -514,8 +512,9 @@ fn greedy_rounds(
         }
         let active: Vec<[u32; 2]> = open
             .par_iter()
-            .fold(Vec::new, |mut out, &v| {
-                g.active_edges_at(v, &is_open, &mut out);
+            .zip(&gaps)
+            .fold(Vec::new, |mut out, (&v, gaps)| {
+                g.active_edges_at(v, gaps, &is_open, &mut out);
                 out
             })
             .flatten()
@@ -532,7 +531,14 @@ fn greedy_rounds(
         g.add(&accepted);
         floor = next_floor(floor, candidates.len(), open.len());
         growth = next_growth(growth, candidates.len(), open.len());
-        open = open.into_par_iter().filter(|&v| !g.closed(v)).collect();
+        // The vertices still open keep their gaps for the next round.
+        (open, gaps) = open
+            .into_par_iter()
+            .filter_map(|v| {
+                let gaps = g.open_gaps(v);
+                (!Partial::closed(&gaps)).then_some((v, gaps))
+            })
+            .unzip();
         if round == 0 {
             stopwatch.lap("round 0");
         }

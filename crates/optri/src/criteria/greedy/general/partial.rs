@@ -112,27 +112,33 @@ impl<'a> Partial<'a> {
         })
     }
 
-    /// No edge can be added at `v` any more (module docs).
-    pub(super) fn closed(&self, v: u32) -> bool {
-        let list = &self.adjacency[v as usize];
-        let len = list.len();
-        len >= 2 && (0..len).all(|i| self.gap_closed(v, list[i], list[(i + 1) % len]))
+    /// No edge can be added at a vertex any more (module docs), given its
+    /// open gaps from [`Self::open_gaps`]: it has two neighbours or more and
+    /// no open gap.
+    pub(super) fn closed(gaps: &Option<Vec<[u32; 2]>>) -> bool {
+        gaps.as_ref().is_some_and(|list| list.is_empty())
     }
 
     /// Edges at open `v` towards larger open vertices with a side that is not
-    /// a closed triangle.
-    pub(super) fn active_edges_at(&self, v: u32, is_open: &[bool], out: &mut Vec<[u32; 2]>) {
-        let list = &self.adjacency[v as usize];
-        let len = list.len();
-        for i in 0..len {
-            let u = list[i];
+    /// a closed triangle, given `v`'s open gaps (from [`Self::open_gaps`]):
+    /// the sides of the edge to `u` are the gaps on either side of `u` at
+    /// `v`, the only gaps `u` bounds, so a side is open iff `u` bounds an
+    /// open gap (every side is open when `v` has fewer than two neighbours).
+    pub(super) fn active_edges_at(
+        &self,
+        v: u32,
+        gaps: &Option<Vec<[u32; 2]>>,
+        is_open: &[bool],
+        out: &mut Vec<[u32; 2]>,
+    ) {
+        for &u in &self.adjacency[v as usize] {
             if u < v || !is_open[u as usize] {
                 continue;
             }
-            let both_closed = len >= 2
-                && self.gap_closed(v, list[(i + len - 1) % len], u)
-                && self.gap_closed(v, u, list[(i + 1) % len]);
-            if !both_closed {
+            let open_side = gaps
+                .as_ref()
+                .is_none_or(|list| list.iter().any(|&[x, y]| x == u || y == u));
+            if open_side {
                 out.push([v, u]);
             }
         }
