@@ -181,7 +181,7 @@ pub(super) fn greedy_general(
     // The hull in local indices: the same cycle `convex_hull_cycle(&local)`
     // returns, as it depends only on the coordinates (distinct points,
     // lexicographic start).
-    let to_local = positions(to_original.iter().copied(), original.len());
+    let to_local = inverse_permutation(&to_original);
     let hull: Vec<u32> = hull.iter().map(|&v| to_local[v as usize]).collect();
     drop(to_local);
     let renumbering = Renumbering {
@@ -312,7 +312,7 @@ impl Renumbering<'_> {
                     .partial_cmp(&(q[1], q[0]))
                     .expect("finite coordinates")
             });
-            positions(by_yx.into_iter(), points.len())
+            inverse_permutation(&by_yx)
         });
         let mut keyed: Vec<(u128, u32)> = segments
             .par_iter()
@@ -398,16 +398,6 @@ fn inverse_permutation(order: &[u32]) -> Vec<u32> {
         .enumerate()
         .for_each(|(at, &v)| inverse[v as usize].store(at as u32, Relaxed));
     inverse.into_iter().map(AtomicU32::into_inner).collect()
-}
-
-/// The inverse of a permutation of `0..len` listed in `order`: each item's
-/// position in it.
-fn positions(order: impl Iterator<Item = u32>, len: usize) -> Vec<u32> {
-    let mut position = vec![0u32; len];
-    for (at, v) in order.enumerate() {
-        position[v as usize] = at as u32;
-    }
-    position
 }
 
 /// The length rounds of the module docs on `points` (local numbering; ties
