@@ -953,6 +953,77 @@ fn certainly_outside_diamonds_never_rejects_an_inside_point() {
     assert!(far > 19_000, "the filter rejected only {far} far points");
 }
 
+/// `DiamondTriangles::position` is the exact decision (`orient_sign` and
+/// `angle_below_diamond` at both ends) on points on and within a few ulps of
+/// the triangles' sides and of the line, at huge and tiny scales and large
+/// offsets, and on random points; its filter answers most of them (it is
+/// exercised) and the exact path the rest.
+#[test]
+fn diamond_positions_are_the_exact_decisions() {
+    use optri::kernel::{angle_below_diamond, DiamondPosition, DiamondTriangles};
+    let mut rng = StdRng::seed_from_u64(SEED_DIAMOND_FILTER + 1);
+    let tan = 833.0 / 1024.0;
+    let mut seen = [0usize; 3];
+    for round in 0..40_000 {
+        let scale = [1.0, 2f64.powi(-100), 2f64.powi(150), 1.0][round % 4];
+        let offset = if round % 4 == 3 { 1e9 } else { 0.0 };
+        let p = |rng: &mut StdRng| {
+            [
+                offset + scale * rng.gen_range(-1.0..1.0),
+                offset + scale * rng.gen_range(-1.0..1.0),
+            ]
+        };
+        let (a, b) = (p(&mut rng), p(&mut rng));
+        if a == b {
+            continue;
+        }
+        let (wx, wy) = (b[0] - a[0], b[1] - a[1]);
+        let side = if rng.gen_bool(0.5) { 1.0 } else { -1.0 };
+        let apex = [
+            a[0] + 0.5 * wx - side * 0.5 * tan * wy,
+            a[1] + 0.5 * wy + side * 0.5 * tan * wx,
+        ];
+        let c = match rng.gen_range(0..4) {
+            0 => p(&mut rng),
+            k => {
+                let (u, v) = [(a, apex), (apex, b), (a, b)][k - 1];
+                let t: f64 = rng.gen_range(-0.05..1.05);
+                let c = [u[0] + t * (v[0] - u[0]), u[1] + t * (v[1] - u[1])];
+                if rng.gen_bool(0.5) {
+                    [
+                        next_up_or_down(c[0], &mut rng),
+                        next_up_or_down(c[1], &mut rng),
+                    ]
+                } else {
+                    // Towards the triangle's inside by a small relative amount.
+                    let e = scale * 10f64.powi(rng.gen_range(-14..-2));
+                    [c[0] - side * e * wy, c[1] + side * e * wx]
+                }
+            }
+        };
+        if c == a || c == b {
+            continue;
+        }
+        let o = orient_sign(a, b, c);
+        let expected = if o != 0 && angle_below_diamond(a, b, c) && angle_below_diamond(b, a, c) {
+            if o > 0 {
+                DiamondPosition::Left
+            } else {
+                DiamondPosition::Right
+            }
+        } else {
+            DiamondPosition::Outside
+        };
+        assert_eq!(
+            DiamondTriangles::new(a, b).position(c),
+            expected,
+            "a {a:?}, b {b:?}, c {c:?}"
+        );
+        seen[expected as usize] += 1;
+    }
+    assert!(seen.iter().all(|&k| k > 3000), "{seen:?}");
+}
+
 /// `exact_squared_length` claims exactness only when it holds: wherever it
 /// answers for both segments, the numbers compare as the exact rational
 /// lengths do (nearly degenerate samples at every scale, where it must

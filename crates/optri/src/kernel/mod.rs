@@ -65,7 +65,7 @@ pub use predicates::{
     angle_at_least_30_degrees, angle_below_diamond, certainly_outside_diamonds, compare_angles,
     compare_areas, compare_corner_angles, compare_doubled_area, compare_lengths, cross_sign,
     dot_sign, exact_squared_length, incircle_sign, on_open_segment, orient_sign, properly_cross,
-    segments_intersect,
+    segments_intersect, DiamondPosition, DiamondTriangles,
 };
 pub use squared_length::SquaredLength;
 pub use symbolic::{

@@ -362,6 +362,101 @@ pub fn certainly_outside_diamonds(a: Point, b: Point, c: Point) -> bool {
     cross.abs() > 0.814 * dot.min(l2 - dot) + 1e-10 * s
 }
 
+/// Where a point lies against the two diamond triangles on a segment `ab`
+/// (the isosceles triangles with base `ab` and base angle `α'` of
+/// [`angle_below_diamond`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum DiamondPosition {
+    /// In neither triangle (on the line `ab`, on or beyond a slanted side).
+    Outside,
+    /// Strictly inside the triangle on the left of `a → b`.
+    Left,
+    /// Strictly inside the triangle on the right of `a → b`.
+    Right,
+}
+
+/// The two diamond triangles on a segment `ab`, for many exact
+/// [`position`](Self::position) queries (the segment's terms computed
+/// once).
+#[derive(Clone, Copy, Debug)]
+pub struct DiamondTriangles {
+    a: Point,
+    b: Point,
+    w: [f64; 2],
+    l2: f64,
+    w1: f64,
+    w1_squared: f64,
+    /// Whether the filter may answer (no underflow or overflow near).
+    filtered: bool,
+}
+
+impl DiamondTriangles {
+    /// The triangles on `ab` (`a ≠ b`).
+    #[inline]
+    pub fn new(a: Point, b: Point) -> Self {
+        let w = [b[0] - a[0], b[1] - a[1]];
+        let w1 = w[0].abs() + w[1].abs();
+        DiamondTriangles {
+            a,
+            b,
+            w,
+            l2: w[0] * w[0] + w[1] * w[1],
+            w1,
+            w1_squared: w1 * w1,
+            filtered: w1 > 1e-140 && w1 < 1e140,
+        }
+    }
+
+    /// Exact: where `c` lies: `Left` or `Right` iff `c` is strictly on that
+    /// side of the line `ab` and both base angles (at `a` and at `b`) are
+    /// strictly below `α'` — the decision of [`orient_sign`] and
+    /// [`angle_below_diamond`] at both ends, which it makes when its filter
+    /// cannot.
+    ///
+    /// Filter: with `w = b − a`, `v = c − a`, `D = w·v`, `C = w×v`, `L = w·w`
+    /// and `m = min(D, L − D)`, a point is inside a triangle iff `|C| > 0`,
+    /// `|C| < tan α'·D` and `|C| < tan α'·(L − D)` (the angle at `b` has
+    /// dot product `L − D` and the same cross product). As in
+    /// [`certainly_outside_diamonds`], each computed `D`, `C`, `L` is within
+    /// `γ₄·s` (`< 5u·s`) of the exact value, `s = (|wₓ|+|w_y|)(|vₓ|+|v_y|) +
+    /// (|wₓ|+|w_y|)²`, and the products and the minimum add a few `u·s`:
+    /// the tolerance `10⁻¹⁰·s` is far above. So `|C| > 0.814·m + 10⁻¹⁰s`
+    /// proves outside (`0.814 > 833/1024`), and `10⁻¹⁰s < |C| < 0.8134·m −
+    /// 10⁻¹⁰s` proves inside on the side of `C`'s sign (`0.8134 <
+    /// 833/1024`). Near underflow or overflow, and in the thin bands
+    /// between, it decides exactly.
+    #[inline]
+    pub fn position(&self, c: Point) -> DiamondPosition {
+        let (vx, vy) = (c[0] - self.a[0], c[1] - self.a[1]);
+        let dot = self.w[0] * vx + self.w[1] * vy;
+        let cross = self.w[0] * vy - self.w[1] * vx;
+        let s = self.w1 * (vx.abs() + vy.abs()) + self.w1_squared;
+        if self.filtered && s > 1e-280 && s < 1e280 {
+            let m = dot.min(self.l2 - dot);
+            let tolerance = 1e-10 * s;
+            if cross.abs() > 0.814 * m + tolerance {
+                return DiamondPosition::Outside;
+            }
+            if cross.abs() > tolerance && cross.abs() < 0.8134 * m - tolerance {
+                return if cross > 0.0 {
+                    DiamondPosition::Left
+                } else {
+                    DiamondPosition::Right
+                };
+            }
+        }
+        let (a, b) = (self.a, self.b);
+        let side = orient_sign(a, b, c);
+        if side == 0 || !angle_below_diamond(a, b, c) || !angle_below_diamond(b, a, c) {
+            DiamondPosition::Outside
+        } else if side > 0 {
+            DiamondPosition::Left
+        } else {
+            DiamondPosition::Right
+        }
+    }
+}
+
 /// Exact comparison of two angles in `[0°, 180°]`: the angle at `p[0]`
 /// between the rays to `p[1]` and `p[2]` versus the angle at `q[0]` between
 /// the rays to `q[1]` and `q[2]`. The rays' points must differ from their

@@ -29,7 +29,7 @@ const EMPTY: u32 = u32::MAX;
 /// least 2⁻¹⁰ of the box's side in magnitude; only clusters closer still to
 /// the origin (or below 2⁻⁶² of the box) share cells, which costs time, never
 /// correctness.
-const MIN_CELL_FRACTION: f64 = 1.0 / (1u64 << 62) as f64;
+pub(super) const MIN_CELL_FRACTION: f64 = 1.0 / (1u64 << 62) as f64;
 
 /// The lookup slack: `SLACK_PER_CELL` (10⁻⁹) per unit of cell size plus
 /// `SLACK_RELATIVE` (2·10⁻¹⁵) per unit of coordinate magnitude and of pad.
@@ -45,8 +45,8 @@ const MIN_CELL_FRACTION: f64 = 1.0 / (1u64 << 62) as f64;
 /// 10⁶ times that. (The relative part was 10⁻¹³ of the magnitude alone; at
 /// 10¹⁵ that slack spanned 800 units in the last place, so a cluster a few
 /// hundred units wide there was one lookup for each of its points.)
-const SLACK_PER_CELL: f64 = 1e-9;
-const SLACK_RELATIVE: f64 = 2e-15;
+pub(super) const SLACK_PER_CELL: f64 = 1e-9;
+pub(super) const SLACK_RELATIVE: f64 = 2e-15;
 
 /// A table over all cells (dense mode) is used while there are at most
 /// `DENSE_CELLS_PER_ITEM` cells per item plus `DENSE_EXTRA_CELLS`; beyond
@@ -322,50 +322,6 @@ impl<T: Copy + Send + Sync> SparseGrid<T> {
                 .any(|(i, &(_, column))| (c0..=c1).contains(&column) && f(self.cell(first + i)));
         }
         (r0..=r1).any(|r| self.any_cell_in_row(r, c0, c1, |k| f(self.cell(k))))
-    }
-
-    /// The cell block `[c0, c1, r0, r1]` (inclusive) meeting the box
-    /// `[lo, hi]` widened by the slack; it grows with the box.
-    #[inline]
-    pub(crate) fn block_of_box(&self, lo: Point, hi: Point) -> [u64; 4] {
-        let (px, py) = self.padding(0.0);
-        [
-            self.column(lo[0] - px),
-            self.column(hi[0] + px),
-            self.row(lo[1] - py),
-            self.row(hi[1] + py),
-        ]
-    }
-
-    /// Calls `f` on the items of every occupied cell of block `outer` that
-    /// is not in block `inner` (blocks from [`block_of_box`](Self::block_of_box);
-    /// `inner` inside `outer`, or `None`): growing blocks visit each cell once.
-    pub(crate) fn for_cells_between(
-        &self,
-        outer: [u64; 4],
-        inner: Option<[u64; 4]>,
-        mut f: impl FnMut(&[T]),
-    ) {
-        let [c0, c1, r0, r1] = outer;
-        for r in r0..=r1 {
-            let mut visit = |from: u64, to: u64| {
-                if from <= to {
-                    self.any_cell_in_row(r, from, to, |k| {
-                        f(self.cell(k));
-                        false
-                    });
-                }
-            };
-            match inner {
-                Some([i0, i1, j0, j1]) if (j0..=j1).contains(&r) => {
-                    if i0 > c0 {
-                        visit(c0, i0 - 1);
-                    }
-                    visit(i1 + 1, c1);
-                }
-                _ => visit(c0, c1),
-            }
-        }
     }
 
     /// Calls `f` on the items of the occupied cell `k` and of each of its

@@ -6,8 +6,10 @@ mod bbox;
 mod grid;
 mod hull;
 mod morton;
+mod point_cells;
 
 pub(crate) use bbox::bounding_box;
 pub(crate) use grid::{fmax, fmin, SparseGrid};
 pub(crate) use hull::{convex_hull_cycle, is_strictly_convex_cycle};
 pub(crate) use morton::morton_order;
+pub(crate) use point_cells::{CellBlock, PointCells};

@@ -40,7 +40,7 @@ use super::{
 use crate::error::{Error, Result};
 use crate::kernel::{compare_length_sums, orient_sign, LengthInterval, Point};
 use crate::polygon_program::{optimal_triangulation, Objective};
-use crate::spatial::{bounding_box, convex_hull_cycle, SparseGrid};
+use crate::spatial::{bounding_box, convex_hull_cycle, PointCells};
 use crate::structures::PointSet;
 use crate::structures::Triangulation;
 use crate::timing::{Phase, Stopwatch};
@@ -287,12 +287,12 @@ pub(crate) fn skeleton_edge_sets(points: &PointSet, loop_chunk: usize) -> [Vec<[
 }
 
 /// A grid of the points with about one point per cell.
-pub(super) fn point_grid(pts: &[Point]) -> SparseGrid<u32> {
+pub(super) fn point_grid(pts: &[Point]) -> PointCells {
     let bbox = bounding_box(pts);
     let (w, h) = (bbox[2] - bbox[0], bbox[3] - bbox[1]);
     let n = pts.len();
     let cell = ((w * h) / n as f64).sqrt().max(w.max(h) / n as f64);
-    SparseGrid::new(bbox, cell, n, |i| pts[i], |i| i as u32, |i| i as u32)
+    PointCells::new(pts, bbox, cell)
 }
 
 /// The general pipeline's result with its certified lower bound.
