@@ -28,7 +28,7 @@
 //! out, with the least open node bound as its certified lower bound.
 
 use super::face_program::{FaceProgram, Prices};
-use super::skeleton::Skeleton;
+use super::skeleton::{ccw_from_east, Skeleton};
 use super::TotalLength;
 use crate::kernel::{compare_length_sums, dot_sign, orient_sign, LengthInterval, Point};
 use crate::parallel::prelude::*;
@@ -282,27 +282,6 @@ fn traced_faces(pts: &[Point], sk: &Skeleton) -> Option<Vec<Vec<u32>>> {
         faces.push(cycle);
     }
     Some(faces)
-}
-
-/// Exact counter-clockwise order of the directions `a → x`, `a → y` from
-/// east (the direction `+x` first).
-fn ccw_from_east(a: Point, x: Point, y: Point) -> Ordering {
-    // Upper half-plane, with east, first; the signs of f64 differences are
-    // exact.
-    let half = |w: Point| {
-        if w[1] > a[1] || (w[1] == a[1] && w[0] > a[0]) {
-            0
-        } else {
-            1
-        }
-    };
-    half(x)
-        .cmp(&half(y))
-        .then_with(|| match orient_sign(a, x, y) {
-            1 => Ordering::Less,
-            -1 => Ordering::Greater,
-            _ => Ordering::Equal,
-        })
 }
 
 fn regions(pts: &[Point], sk: &Skeleton) -> crate::error::Result<Vec<Region>> {
@@ -905,7 +884,7 @@ fn evaluate(
     else {
         return Evaluated::Abandoned(bound);
     };
-    let crossing: HashSet<u32> = sk.crossing(e).iter().copied().collect();
+    let crossing: HashSet<u32> = sk.crossing(pts, e).iter().copied().collect();
     let mut with = Node {
         bound,
         kept: kept.clone(),
@@ -1353,14 +1332,14 @@ struct SearchState<'a> {
 impl SearchState<'_> {
     fn place(&mut self, e: u32) {
         self.placed.insert(e, ());
-        for &f in self.sk.crossing(e) {
+        for &f in self.sk.crossing(self.pts, e) {
             *self.blocked.entry(f).or_insert(0) += 1;
         }
     }
 
     fn unplace(&mut self, e: u32) {
         self.placed.remove(&e);
-        for &f in self.sk.crossing(e) {
+        for &f in self.sk.crossing(self.pts, e) {
             *self.blocked.get_mut(&f).unwrap() -= 1;
         }
     }
@@ -1710,7 +1689,7 @@ mod tests {
             assert!(!forced.is_empty(), "wheel {k}: no inner edge");
             let crossing: HashSet<u32> = forced
                 .iter()
-                .flat_map(|&e| sk.crossing(e).iter().copied())
+                .flat_map(|&e| sk.crossing(pts, e).iter().copied())
                 .collect();
             let node = Node {
                 bound: 0.0,

@@ -529,9 +529,8 @@ pub(crate) struct Skeleton {
     tri_offsets: Vec<u32>,
     tri_list: Vec<u32>,
     tri_left_len: Vec<u32>,
-    /// CSR per edge: the candidate edges it intersects.
-    cross_offsets: Vec<u32>,
-    cross_list: Vec<u32>,
+    /// Per edge left: the edges left it intersects (computed on first use).
+    crossings: std::sync::OnceLock<CrossingLists>,
     /// CSR per vertex: neighbours (sorted) and edge ids.
     adj_offsets: Vec<u32>,
     adj: Vec<(u32, u32)>,
@@ -569,10 +568,11 @@ impl Skeleton {
         all.split_at(self.tri_left_len[e as usize] as usize)
     }
 
-    /// The candidate edges `e` intersects.
-    pub fn crossing(&self, e: u32) -> &[u32] {
-        &self.cross_list
-            [self.cross_offsets[e as usize] as usize..self.cross_offsets[e as usize + 1] as usize]
+    /// The edges left that `e` (left) intersects, sorted; `pts` are the
+    /// skeleton's points. The first call computes the lists of all edges.
+    pub fn crossing(&self, pts: &[Point], e: u32) -> &[u32] {
+        let lists = self.crossings.get_or_init(|| crossing_lists(pts, self));
+        &lists.list[lists.offsets[e as usize] as usize..lists.offsets[e as usize + 1] as usize]
     }
 }
 
@@ -694,8 +694,7 @@ pub(crate) fn lmt_skeleton_in_chunks(
         tri_offsets: Vec::new(),
         tri_list: Vec::new(),
         tri_left_len: Vec::new(),
-        cross_offsets: vec![0; m + 1],
-        cross_list: vec![0; z.cross_list.len()],
+        crossings: std::sync::OnceLock::new(),
         adj_offsets,
         adj,
         edges,
@@ -705,20 +704,6 @@ pub(crate) fn lmt_skeleton_in_chunks(
         skeleton.alive[e] = z.alive[k];
         skeleton.certain[e] = z.certain[k];
         skeleton.hull[e] = z.hull[k];
-        skeleton.cross_offsets[e + 1] = z.cross_offsets[k + 1] - z.cross_offsets[k];
-    }
-    for e in 0..m {
-        skeleton.cross_offsets[e + 1] += skeleton.cross_offsets[e];
-    }
-    // Each list sorted, as built in the original numbering.
-    for (k, &e) in original.iter().enumerate() {
-        let start = skeleton.cross_offsets[e as usize] as usize;
-        let list = z.crossing(k as u32);
-        let out = &mut skeleton.cross_list[start..start + list.len()];
-        for (slot, &f) in out.iter_mut().zip(list) {
-            *slot = original[f as usize];
-        }
-        out.sort_unstable();
     }
     // The kept triangles as built in the original numbering: corners
     // counter-clockwise from the smallest index, edge ids `[c0c1, c1c2,
@@ -823,8 +808,7 @@ pub(crate) fn z_order_skeleton(
         tri_offsets: Vec::new(),
         tri_list: Vec::new(),
         tri_left_len: Vec::new(),
-        cross_offsets: Vec::new(),
-        cross_list: Vec::new(),
+        crossings: std::sync::OnceLock::new(),
         adj_offsets,
         adj,
         edges,
@@ -983,7 +967,141 @@ pub(crate) fn z_order_skeleton(
     drop(state);
     skeleton.triangles = kept;
     skeleton.loop_triangles = Vec::new();
-    // Crossings: edges in length classes of powers of two, each class in a
+    skeleton.certain = certain_edges(pts, &skeleton);
+    Ok(skeleton)
+}
+
+/// The certain edges: those left by the loop that are hull edges or that no
+/// other edge left crosses, by a local test.
+///
+/// **Lemma.** After the loop, an edge `pq` left (not a hull edge) is crossed
+/// by another edge left iff a kept triangle with corner `p` has the
+/// direction `p → q` strictly inside its angle at `p`. *Proof.* If such a
+/// triangle `pab` exists, `q` is not in it (it is empty), so `pq` leaves it
+/// through the inside of `ab`, an edge left. Conversely, let `rs` (left)
+/// cross `pq` at `X`; `rs` is no hull edge, and no edge left has a point
+/// inside it (its closed triangles would all hold the point, so it would
+/// have no valid pair). Every edge left that is not a hull edge has a
+/// kept triangle on each side (its locally minimal pair). Walk along `pq`
+/// from `X` towards `p`: start in a kept triangle of `rs` on `p`'s side;
+/// the walk leaves each triangle through the inside of another side (not
+/// through a corner: none lies on `pq`), an edge left, into a kept triangle
+/// on that side's other side, always closer to `p`, until a triangle has
+/// `p` as a corner — with `p → q` strictly inside its angle at `p`. ∎
+///
+/// So the test reads, per vertex, its edges left in angular order and its
+/// kept triangles; debug builds check that both endpoints of every edge
+/// agree, as the lemma says they must.
+fn certain_edges(pts: &[Point], sk: &Skeleton) -> Vec<bool> {
+    let n = pts.len();
+    let m = sk.edges.len();
+    // Kept triangles per corner (CSR).
+    let mut offsets = vec![0u32; n + 1];
+    for (corners, _) in &sk.triangles {
+        for &c in corners {
+            offsets[c as usize + 1] += 1;
+        }
+    }
+    for v in 0..n {
+        offsets[v + 1] += offsets[v];
+    }
+    let mut at = vec![0u32; offsets[n] as usize];
+    let mut fill = offsets.clone();
+    for (t, (corners, _)) in sk.triangles.iter().enumerate() {
+        for &c in corners {
+            at[fill[c as usize] as usize] = t as u32;
+            fill[c as usize] += 1;
+        }
+    }
+    drop(fill);
+    // Per endpoint (smaller, larger): is the edge inside a kept triangle's
+    // angle there?
+    let flags = || -> Vec<AtomicBool> { (0..m).map(|_| AtomicBool::new(false)).collect() };
+    let (from_smaller, from_larger) = (flags(), flags());
+    (0..n).into_par_iter().with_min_len(256).for_each(|p| {
+        let a = pts[p];
+        let mut around: Vec<(u32, u32)> = sk
+            .neighbours(p as u32)
+            .iter()
+            .copied()
+            .filter(|&(_, e)| sk.alive[e as usize])
+            .collect();
+        around.sort_unstable_by(|x, y| ccw_from_east(a, pts[x.0 as usize], pts[y.0 as usize]));
+        let d = around.len();
+        let mut inside = vec![false; d];
+        let position = |w: u32| {
+            around
+                .iter()
+                .position(|&(x, _)| x == w)
+                .expect("a kept triangle's sides are edges left")
+        };
+        for &t in &at[offsets[p] as usize..offsets[p + 1] as usize] {
+            let c = sk.triangles[t as usize].0;
+            let k = c.iter().position(|&x| x as usize == p).unwrap_or(0);
+            // Counter-clockwise corners p, b, c: the angle at p runs
+            // counter-clockwise from p → b to p → c (below π).
+            let (first, last) = (position(c[(k + 1) % 3]), position(c[(k + 2) % 3]));
+            let mut i = (first + 1) % d;
+            while i != last {
+                inside[i] = true;
+                i = (i + 1) % d;
+            }
+        }
+        for (&(w, e), &crossed) in around.iter().zip(&inside) {
+            if crossed {
+                let flag = if (p as u32) < w {
+                    &from_smaller
+                } else {
+                    &from_larger
+                };
+                flag[e as usize].store(true, SeqCst);
+            }
+        }
+    });
+    (0..m)
+        .map(|e| {
+            let (s, l) = (from_smaller[e].load(SeqCst), from_larger[e].load(SeqCst));
+            debug_assert!(
+                !sk.alive[e] || sk.hull[e] || s == l,
+                "the crossing lemma: both endpoints of edge {e} must agree"
+            );
+            sk.alive[e] && (sk.hull[e] || !s)
+        })
+        .collect()
+}
+
+/// Exact counter-clockwise order of the directions `a → x`, `a → y` from
+/// east (the direction `+x` first).
+pub(crate) fn ccw_from_east(a: Point, x: Point, y: Point) -> Ordering {
+    // Upper half-plane, with east, first; the signs of f64 differences are
+    // exact.
+    let half = |w: Point| {
+        if w[1] > a[1] || (w[1] == a[1] && w[0] > a[0]) {
+            0
+        } else {
+            1
+        }
+    };
+    half(x)
+        .cmp(&half(y))
+        .then_with(|| match orient_sign(a, x, y) {
+            1 => Ordering::Less,
+            -1 => Ordering::Greater,
+            _ => Ordering::Equal,
+        })
+}
+
+/// The candidate edges each edge left by the loop intersects, among the
+/// edges left (CSR, each list sorted); for the faces with holes only, so
+/// computed on first use.
+struct CrossingLists {
+    offsets: Vec<u32>,
+    list: Vec<u32>,
+}
+
+fn crossing_lists(pts: &[Point], skeleton: &Skeleton) -> CrossingLists {
+    let m = skeleton.edges.len();
+    // Edges in length classes of powers of two, each class in a
     // grid of its midpoints; an edge of class k (length < 2^(k+1)·base)
     // meeting segment e has its midpoint within 2^k·base of e.
     let length = |e: &[u32; 2]| {
@@ -1103,12 +1221,10 @@ pub(crate) fn z_order_skeleton(
         let (start, end) = (cross_offsets[e as usize], cross_offsets[e as usize + 1]);
         cross_list[start as usize..end as usize].sort_unstable();
     }
-    skeleton.cross_offsets = cross_offsets;
-    skeleton.cross_list = cross_list;
-    skeleton.certain = (0..m)
-        .map(|e| skeleton.alive[e] && (skeleton.hull[e] || skeleton.crossing(e as u32).is_empty()))
-        .collect();
-    Ok(skeleton)
+    CrossingLists {
+        offsets: cross_offsets,
+        list: cross_list,
+    }
 }
 
 /// Edge ranges of the triangle lists' construction (one per core of the
