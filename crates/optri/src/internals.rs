@@ -58,11 +58,14 @@ pub fn min_weight_pipeline_with_budget(
 ) -> crate::Result<(crate::Triangulation, bool, crate::Diagnostics, f64)> {
     let mut phases = Vec::new();
     let g = crate::criteria::min_weight::general_min_weight(points, &mut phases, budget)?;
+    let lower_bound = g.lower_bound.unwrap_or_else(|| {
+        crate::criteria::min_weight::certified_weight_below(&g.solved.triangulation)
+    });
     Ok((
         g.solved.triangulation,
         g.solved.optimality.is_exact(),
         g.solved.diagnostics,
-        g.lower_bound,
+        lower_bound,
     ))
 }
 

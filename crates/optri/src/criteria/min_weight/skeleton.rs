@@ -1321,6 +1321,18 @@ impl TriangleState {
     }
 }
 
+/// The corner of a triangle (`corners`) that is not on its side `uv`.
+#[inline]
+fn apex_of([c0, c1, c2]: [u32; 3], u: u32, v: u32) -> u32 {
+    if c0 != u && c0 != v {
+        c0
+    } else if c1 != u && c1 != v {
+        c1
+    } else {
+        c2
+    }
+}
+
 /// Is triangle `t` valid (no edge removed and empty)? Decides emptiness on
 /// first use.
 fn valid_triangle(
@@ -1356,16 +1368,7 @@ fn locally_minimal(
 ) -> bool {
     let [u, v] = sk.edges[e as usize];
     let (left, right) = sk.sides(e);
-    let apex = |t: u32| {
-        let [c0, c1, c2] = sk.loop_triangles[t as usize];
-        pts[if c0 != u && c0 != v {
-            c0
-        } else if c1 != u && c1 != v {
-            c1
-        } else {
-            c2
-        } as usize]
-    };
+    let apex = |t: u32| pts[apex_of(sk.loop_triangles[t as usize], u, v) as usize];
     // The right apexes are found once each, when first needed (the first
     // pairs usually decide).
     apexes.clear();
@@ -1447,7 +1450,11 @@ fn run_lmt_loop(
             if state.kill(t) != TriangleState::EMPTY {
                 continue;
             }
-            for f in skr.triangle_edges(skr.loop_triangles[t as usize]) {
+            let [u, v] = skr.edges[e as usize];
+            let w = apex_of(skr.loop_triangles[t as usize], u, v);
+            // Its other two sides (`e` itself is no longer alive).
+            for f in [skr.edge_id(u, w), skr.edge_id(v, w)] {
+                let f = f.expect("a loop triangle's sides are candidate edges");
                 if alive[f as usize].load(SeqCst)
                     && !skr.hull[f as usize]
                     && !queued[f as usize].swap(true, SeqCst)
