@@ -223,7 +223,7 @@ fn smallest_corner_first(t: [u32; 3]) -> [u32; 3] {
 /// rounds would crawl (issue 15: 157 s at 10⁴ points). The test is exact
 /// (orientations and coordinate comparisons) and costs O(1) on most inputs:
 /// it stops at the second point off a line.
-fn single_fan(points: &[Point]) -> Option<Vec<[u32; 3]>> {
+pub(super) fn single_fan(points: &[Point]) -> Option<Vec<[u32; 3]>> {
     let n = points.len();
     if n < 4 {
         return None;
@@ -244,17 +244,19 @@ fn single_fan(points: &[Point]) -> Option<Vec<[u32; 3]>> {
     let pa = points[apex];
     let ccw = orient_sign(pa, points[line[0] as usize], points[line[1] as usize]) > 0;
     let apex = apex as u32;
-    Some(
-        line.windows(2)
-            .map(|w| {
-                if ccw {
-                    [apex, w[0], w[1]]
-                } else {
-                    [apex, w[1], w[0]]
-                }
+    let mut triangles: Vec<[u32; 3]> = line
+        .windows(2)
+        .map(|w| {
+            smallest_corner_first(if ccw {
+                [apex, w[0], w[1]]
+            } else {
+                [apex, w[1], w[0]]
             })
-            .collect(),
-    )
+        })
+        .collect();
+    // In the order of the other paths' output (see `greedy_general`).
+    triangles.sort_unstable();
+    Some(triangles)
 }
 
 /// Local (memory-friendly) numbering versus the caller's, which decides ties.
