@@ -52,8 +52,8 @@
 //!    between consecutive hull points are always certain.
 
 use crate::kernel::{
-    compare_lengths, dot_sign, orient_sign, properly_cross, segments_intersect, DiamondPosition,
-    DiamondTriangles, Point,
+    compare_lengths, dot_sign, orient_sign, segments_intersect, DiamondPosition, DiamondTriangles,
+    Point,
 };
 use crate::parallel::prelude::*;
 use crate::spatial::{bounding_box, convex_hull_cycle, CellBlock, PointCells, SparseGrid};
@@ -1386,7 +1386,9 @@ fn locally_minimal(
             let s = *slot.get_or_insert_with(|| apex(tr));
             // The length first: when `e` is not longer, the pair passes
             // without the convexity test (the conjunction is unchanged).
-            if compare_lengths(a, b, r, s) == Ordering::Greater && properly_cross(a, b, r, s) {
+            if compare_lengths(a, b, r, s) == Ordering::Greater
+                && crosses_from_both_sides(a, b, r, s)
+            {
                 continue;
             }
             if !valid_triangle(pts, grid, sk, state, tl) {
@@ -1398,6 +1400,17 @@ fn locally_minimal(
         }
     }
     false
+}
+
+/// Does `rs` properly cross `ab`, given `r` strictly left and `s` strictly
+/// right of the line `ab` (the apexes of a left and a right triangle of
+/// `ab`)? `rs` then meets the line `ab` in one point, inside the segment iff
+/// `a` and `b` lie strictly on either side of the line `rs`: two of
+/// [`properly_cross`](crate::kernel::properly_cross)'s four orientations.
+#[inline]
+fn crosses_from_both_sides(a: Point, b: Point, r: Point, s: Point) -> bool {
+    debug_assert!(orient_sign(a, b, r) > 0 && orient_sign(a, b, s) < 0);
+    orient_sign(r, s, a) * orient_sign(r, s, b) < 0
 }
 
 /// Consecutive edges (in Z-order, so nearby) per parallel task of the loop.
