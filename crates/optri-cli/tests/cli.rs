@@ -716,6 +716,9 @@ const HEXAGON: &str = "2 0\n1 1.75\n-1 1.75\n-2 0\n-1 -1.75\n1 -1.75\n";
 /// the longest edge (points on the parabola y = (16 - x^2) / 8).
 const SEMICIRCULAR: &str = "-4 0\n4 0\n-3 0.875\n-2 1.5\n-1 1.875\n0 2\n1 1.875\n2 1.5\n3 0.875\n";
 
+/// A fan: five points on a line and an apex (its only triangulation).
+const FAN: &str = "0 0\n1 0\n2 0\n3 0\n4 0\n1.5 2\n";
+
 /// Sum of the edge lengths of the JSON `triangles`, each edge once.
 fn total_length(json: &Value, points: &[[f64; 2]]) -> f64 {
     let t = check_triangulation(json, points);
@@ -734,6 +737,7 @@ fn greedy_names_its_algorithm_and_matches_the_library() {
         (SQUARE, "general"),
         (HEXAGON, "convex"),
         (SEMICIRCULAR, "semicircular"),
+        (FAN, "fan"),
     ];
     for (text, algorithm) in cases {
         let json = stdout_json(&run_stdin(

@@ -10,7 +10,8 @@
 //! Defaults: 5 repetitions, baseline `delaunay`, criteria `greedy`, and the
 //! `optri` binary beside this one. Each repetition runs
 //! `optri triangulate FILE --criterion C --quiet -o OUT.json` for the
-//! baseline, then for each criterion; it prints every run, each
+//! baseline and for each criterion (the baseline first in odd repetitions,
+//! last in even ones); it prints every run, each
 //! repetition's ratios, and per criterion the median ratio and the ratio of
 //! the fastest runs (machines here are noisy: a run is only ever slowed down
 //! by its neighbours). Peak memory: run the same command under
@@ -38,7 +39,10 @@ fn usage(problem: &str) -> ! {
 fn parse_args() -> Args {
     let beside = std::env::current_exe()
         .ok()
-        .and_then(|exe| exe.parent().map(|dir| dir.join("optri")))
+        .and_then(|exe| {
+            exe.parent()
+                .map(|dir| dir.join(format!("optri{}", std::env::consts::EXE_SUFFIX)))
+        })
         .unwrap_or_else(|| PathBuf::from("optri"));
     let mut args = Args {
         repeat: 5,
@@ -63,15 +67,23 @@ fn parse_args() -> Args {
             }
             "--baseline" => args.baseline = value("--baseline"),
             "--criteria" => {
-                args.criteria = value("--criteria").split(',').map(str::to_owned).collect();
+                args.criteria = value("--criteria")
+                    .split(',')
+                    .filter(|c| !c.is_empty())
+                    .map(str::to_owned)
+                    .collect();
             }
             "--optri" => args.optri = PathBuf::from(value("--optri")),
             flag if flag.starts_with("--") => usage(&format!("unknown flag {flag}")),
+            "-" => usage("standard input cannot be read twice: give a file"),
             _ => args.files.push(arg),
         }
     }
     if args.files.is_empty() {
         usage("no input file");
+    }
+    if args.criteria.is_empty() {
+        usage("--criteria needs at least one criterion");
     }
     args
 }
@@ -96,6 +108,7 @@ fn whole_run(optri: &Path, file: &str, criterion: &str, out: &Path) -> f64 {
             std::process::exit(1);
         });
     let seconds = start.elapsed().as_secs_f64();
+    let _ = std::fs::remove_file(out);
     if !output.status.success() {
         eprintln!(
             "error: optri triangulate {file} --criterion {criterion} failed ({}):\n{}",
@@ -126,11 +139,20 @@ fn main() {
         let mut baseline = Vec::new();
         let mut times = vec![Vec::new(); args.criteria.len()];
         for rep in 1..=args.repeat {
-            let base = whole_run(&args.optri, file, &args.baseline, &out);
+            // The baseline first in odd repetitions and last in even ones,
+            // so that neither side always runs after the other.
+            let baseline_first = rep % 2 == 1;
+            let run_baseline = || whole_run(&args.optri, file, &args.baseline, &out);
+            let first = baseline_first.then(run_baseline);
+            let these: Vec<f64> = args
+                .criteria
+                .iter()
+                .map(|criterion| whole_run(&args.optri, file, criterion, &out))
+                .collect();
+            let base = first.unwrap_or_else(run_baseline);
             baseline.push(base);
             let mut line = format!("  rep {rep}: {} {base:.2} s", args.baseline);
-            for (criterion, list) in args.criteria.iter().zip(&mut times) {
-                let t = whole_run(&args.optri, file, criterion, &out);
+            for ((criterion, list), t) in args.criteria.iter().zip(&mut times).zip(these) {
                 list.push(t);
                 line += &format!(", {criterion} {t:.2} s ({:.2})", t / base);
             }
