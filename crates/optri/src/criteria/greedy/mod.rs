@@ -121,26 +121,23 @@ pub(crate) fn greedy_triangulation_timed(
     let pts = points.points();
     // One hull for the shape test and the general algorithm's boundary.
     let hull = convex_hull_cycle(pts);
-    let shape = weakly_convex_polygon(pts, &hull);
-    // A fan is weakly convex (its line lies on one hull edge); its only
-    // triangulation is returned in O(n log n) instead of Thm 4.2's expected
-    // O(n²) (10⁵ points: 3.3 s).
-    let fan = (shape == Some(true))
-        .then(|| general::single_fan(pts))
-        .flatten();
-    let (triangles, algorithm) = match shape {
-        _ if fan.is_some() => (fan.expect("checked"), GreedyAlgorithm::Fan),
+    let (triangles, algorithm) = match weakly_convex_polygon(pts, &hull) {
         Some(straight_angles) => {
+            // A fan is weakly convex (its line lies on one hull edge); its
+            // only triangulation is returned in O(n log n) instead of Thm
+            // 4.2's expected O(n²) (10⁵ points: 3.3 s).
+            let fan = straight_angles.then(|| general::single_fan(pts)).flatten();
             // Thm 4.3's ear heap assumes a strictly convex polygon.
             let rotated = (!straight_angles)
                 .then(|| semicircular::base_rotation(pts, &hull))
                 .flatten();
-            match rotated {
-                Some(rotated) => (
+            match (fan, rotated) {
+                (Some(fan), _) => (fan, GreedyAlgorithm::Fan),
+                (None, Some(rotated)) => (
                     triangles_of(pts, &semicircular::greedy_semicircular(pts, &rotated)),
                     GreedyAlgorithm::Semicircular,
                 ),
-                None => (
+                (None, None) => (
                     triangles_of(pts, &convex::greedy_convex(pts, &hull, straight_angles)),
                     GreedyAlgorithm::Convex,
                 ),
@@ -173,17 +170,18 @@ pub fn greedy(points: &PointSet) -> Result<Triangulation> {
 #[cfg(any(test, feature = "internals"))]
 pub fn greedy_edges_by(points: &PointSet, algorithm: GreedyAlgorithm) -> Option<Vec<[u32; 2]>> {
     let pts = points.points();
+    // `Triangulation::edges` works on input indices; map them back.
+    let distinct_edges = |triangles: Vec<[u32; 3]>| -> Vec<[u32; 2]> {
+        Triangulation::from_distinct(points, triangles)
+            .edges()
+            .into_iter()
+            .map(|e| e.map(|i| points.distinct_index(i)))
+            .collect()
+    };
     let edges = match algorithm {
-        GreedyAlgorithm::General => {
-            let triangles =
-                general::greedy_general(pts, &convex_hull_cycle(pts), &mut Vec::new()).ok()?;
-            // `Triangulation::edges` works on input indices; map them back.
-            Triangulation::from_distinct(points, triangles)
-                .edges()
-                .into_iter()
-                .map(|e| e.map(|i| points.distinct_index(i)))
-                .collect()
-        }
+        GreedyAlgorithm::General => distinct_edges(
+            general::greedy_general(pts, &convex_hull_cycle(pts), &mut Vec::new()).ok()?,
+        ),
         GreedyAlgorithm::Convex => {
             let polygon = convex_hull_cycle(pts);
             let straight_angles = weakly_convex_polygon(pts, &polygon)?;
@@ -193,13 +191,7 @@ pub fn greedy_edges_by(points: &PointSet, algorithm: GreedyAlgorithm) -> Option<
             let rotated = semicircular::base_rotation(pts, &convex_polygon(pts)?)?;
             semicircular::greedy_semicircular(pts, &rotated)
         }
-        GreedyAlgorithm::Fan => general::single_fan(pts)?
-            .iter()
-            .flat_map(|&[a, b, c]| [[a, b], [b, c], [c, a]])
-            .map(|[a, b]| [a.min(b), a.max(b)])
-            .collect::<std::collections::BTreeSet<_>>()
-            .into_iter()
-            .collect(),
+        GreedyAlgorithm::Fan => distinct_edges(general::single_fan(pts)?),
     };
     Some(normalized(edges))
 }
