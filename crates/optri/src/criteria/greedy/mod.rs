@@ -325,10 +325,11 @@ pub(crate) fn sort_keyed_runs<T: Send + Copy, U: Send>(
     });
 }
 
-/// Runs per parallel task in [`sort_keyed_runs`]. A tuning choice: most
+/// Runs per parallel task in [`sort_keyed_runs`] (and in the greedy
+/// rounds' integer-key ranking). A tuning choice: most
 /// runs hold a few segments, so a task takes many; the result does not
 /// depend on it.
-const RUNS_PER_TASK: usize = 1024;
+pub(crate) const RUNS_PER_TASK: usize = 1024;
 
 /// Edges as sorted `[min, max]` pairs, sorted.
 #[cfg(any(test, feature = "internals"))]

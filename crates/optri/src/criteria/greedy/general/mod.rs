@@ -88,7 +88,7 @@ mod guard;
 mod partial;
 mod segment_index;
 
-use super::{keyed_by_length, rounded_squared_length, sort_keyed_runs};
+use super::{keyed_by_length, rounded_squared_length, sort_keyed_runs, RUNS_PER_TASK};
 use crate::error::{Error, Result};
 use crate::kernel::{
     compare_equal_lengths_symbolic, compare_lengths, exact_squared_length, orient_sign, Point,
@@ -100,7 +100,6 @@ use guard::{next_floor, next_growth, round_grid, MIN_RELATIVE_STEP, NO_LINE, THR
 use partial::Partial;
 use segment_index::{PointsNear, Query, SegmentIndex, Step};
 use std::cmp::Ordering;
-use std::sync::OnceLock;
 
 /// No candidate at a vertex yet (the lowest rank found so far).
 const NO_RANK: u32 = u32::MAX;
@@ -186,7 +185,6 @@ pub(super) fn greedy_general(
     drop(to_local);
     let renumbering = Renumbering {
         to_original: &to_original,
-        yx_rank: OnceLock::new(),
     };
     let mut triangles: Vec<[u32; 3]> = greedy_rounds(&local, &hull, &renumbering, phases)?
         .into_par_iter()
@@ -262,9 +260,6 @@ pub(super) fn single_fan(points: &[Point]) -> Option<Vec<[u32; 3]>> {
 /// Local (memory-friendly) numbering versus the caller's, which decides ties.
 struct Renumbering<'a> {
     to_original: &'a [u32],
-    /// Each local point's position in `(y, x)` order, for [`Self::ranking`]'s
-    /// integer keys (computed on first use).
-    yx_rank: OnceLock<Vec<u32>>,
 }
 
 /// Original indices below this fit [`Renumbering::tie_key`]'s 31 bits.
@@ -280,7 +275,7 @@ impl Renumbering<'_> {
     /// squared length exactly (integer coordinates, as from a file of
     /// six-decimal points, where ties are common: [`exact_squared_length`]),
     /// the order is that of one integer key per segment
-    /// ([`Self::tie_key`]); otherwise [`Self::order_by_comparison`].
+    /// ([`Self::order_by_key`]); otherwise [`Self::order_by_comparison`].
     fn ranking(&self, points: &[Point], segments: &[[u32; 2]]) -> Ranking {
         let order = self
             .order_by_key(points, segments)
@@ -291,14 +286,18 @@ impl Renumbering<'_> {
         }
     }
 
-    /// [`Self::ranking`]'s order by sorting `(exact squared length, tie key)` as one
-    /// `u128`, or `None` if a squared length is not exact in `f64` (or there
-    /// are too many points for the key). Each key is computed from the
-    /// segment's own endpoints, in the candidates' spatial order; the
-    /// comparison sort it replaces read every tied segment's endpoints at
-    /// random (a fifth of greedy's time on a 10⁶-point CLI run).
+    /// [`Self::ranking`]'s order by sorting one `u128` per segment — its
+    /// exact squared length (64 bits), [`Self::tie_key`] (32 bits) and its
+    /// own index (32 bits) — then, in the rare runs that agree on the first
+    /// 96 bits, by the other endpoint's `(y, x)` (descending); `None` if a
+    /// squared length is not exact in `f64` (or there are too many points
+    /// for the key). Each key is computed from the segment's own endpoints,
+    /// in the candidates' spatial order; the comparison sort it replaces read
+    /// every tied segment's endpoints at random (a fifth of greedy's time on
+    /// a 10⁶-point CLI run), and a key holding the `(y, x)` position too
+    /// needed a sort of the points and twice the bytes a segment.
     fn order_by_key(&self, points: &[Point], segments: &[[u32; 2]]) -> Option<Vec<u32>> {
-        if points.len() > TIE_KEY_INDEX_LIMIT {
+        if points.len() > TIE_KEY_INDEX_LIMIT || segments.len() > u32::MAX as usize {
             return None;
         }
         let lengths: Option<Vec<f64>> = segments
@@ -306,55 +305,78 @@ impl Renumbering<'_> {
             .map(|&[a, b]| exact_squared_length(points[a as usize], points[b as usize]))
             .collect();
         let lengths = lengths?;
-        let yx_rank = self.yx_rank.get_or_init(|| {
-            let mut by_yx: Vec<u32> = (0..points.len() as u32).collect();
-            by_yx.par_sort_unstable_by(|&u, &v| {
-                let (p, q) = (points[u as usize], points[v as usize]);
-                (p[1], p[0])
-                    .partial_cmp(&(q[1], q[0]))
-                    .expect("finite coordinates")
-            });
-            inverse_permutation(&by_yx)
-        });
-        let mut keyed: Vec<(u128, u32)> = segments
+        let mut keys: Vec<u128> = segments
             .par_iter()
             .zip(lengths)
             .enumerate()
             .map(|(i, (&s, length))| {
                 // Non-negative doubles order as their bit patterns.
-                let key = (u128::from(length.to_bits()) << 64)
-                    | u128::from(self.tie_key(points, yx_rank, s));
-                (key, i as u32)
+                (u128::from(length.to_bits()) << 64)
+                    | (u128::from(self.tie_key(points, s)) << 32)
+                    | i as u128
             })
             .collect();
-        keyed.par_sort_unstable();
-        Some(keyed.into_par_iter().map(|(_, i)| i).collect())
+        keys.par_sort_unstable();
+        // Runs of one length and one tie key: segments sharing the endpoint
+        // of lower original index, with the same length and the same kind.
+        let mut runs: Vec<&mut [u128]> = Vec::new();
+        let mut rest = keys.as_mut_slice();
+        while !rest.is_empty() {
+            let head = rest[0] >> 32;
+            let end = rest
+                .iter()
+                .position(|&k| k >> 32 != head)
+                .unwrap_or(rest.len());
+            let (run, tail) = rest.split_at_mut(end);
+            if end > 1 {
+                runs.push(run);
+            }
+            rest = tail;
+        }
+        runs.par_chunks_mut(RUNS_PER_TASK).for_each(|chunk| {
+            for run in chunk.iter_mut() {
+                let far = |key: u128| {
+                    let [a, b] = segments[key as u32 as usize];
+                    let u = if self.to_original[a as usize] < self.to_original[b as usize] {
+                        b
+                    } else {
+                        a
+                    };
+                    let p = points[u as usize];
+                    (p[1], p[0])
+                };
+                // Descending `(y, x)` of the far endpoint: distinct points.
+                run.sort_unstable_by(|&x, &y| {
+                    far(y).partial_cmp(&far(x)).expect("finite coordinates")
+                });
+            }
+        });
+        Some(keys.into_par_iter().map(|k| k as u32).collect())
     }
 
     /// The order of [`compare_equal_lengths_symbolic`] among segments of
-    /// one exact length, as a key: with `m` a segment's lower original index
-    /// and `u` its other endpoint, a segment whose `m` lies strictly below
-    /// `u` is shorter than every segment of larger `m`, one whose `m` does
-    /// not is longer, and at equal `m` the segment with the higher `u` in
-    /// `(y, x)` order is shorter. So the shorter come first as: the first
-    /// kind by ascending `m`, then the second by descending `m`; within one
-    /// `m`, by descending `u`. Key: the kind (1 bit), `m` or its complement
-    /// (31 bits), the complement of `u`'s `(y, x)` position (32 bits).
-    fn tie_key(&self, points: &[Point], yx_rank: &[u32], [a, b]: [u32; 2]) -> u64 {
+    /// one exact length, but for the last criterion: with `m` a segment's
+    /// lower original index and `u` its other endpoint, a segment whose `m`
+    /// lies strictly below `u` is shorter than every segment of larger `m`,
+    /// one whose `m` does not is longer, and at equal `m` the segment with
+    /// the higher `u` in `(y, x)` order is shorter. So the shorter come
+    /// first as: the first kind by ascending `m`, then the second by
+    /// descending `m`; within one `m`, by descending `u` (left to
+    /// [`Self::order_by_key`]'s runs). Key: the kind (1 bit), then `m` or
+    /// its complement (31 bits).
+    fn tie_key(&self, points: &[Point], [a, b]: [u32; 2]) -> u32 {
         let (oa, ob) = (self.to_original[a as usize], self.to_original[b as usize]);
         let ((m, pm), u) = if oa < ob {
             ((oa, points[a as usize]), b)
         } else {
             ((ob, points[b as usize]), a)
         };
-        let pu = points[u as usize];
-        let holder_longer = pm[1] >= pu[1];
-        let high = if holder_longer {
-            (1u64 << 31) | u64::from(TIE_KEY_INDEX_LIMIT as u32 - 1 - m)
+        let holder_longer = pm[1] >= points[u as usize][1];
+        if holder_longer {
+            (1u32 << 31) | (TIE_KEY_INDEX_LIMIT as u32 - 1 - m)
         } else {
-            u64::from(m)
-        };
-        (high << 32) | u64::from(u32::MAX - yx_rank[u as usize])
+            m
+        }
     }
 
     /// [`Self::ranking`]'s order by the exact comparison (see
@@ -909,7 +931,6 @@ mod tests {
             to_original.shuffle(&mut rng);
             let renumbering = Renumbering {
                 to_original: &to_original,
-                yx_rank: OnceLock::new(),
             };
             let n = points.len() as u32;
             let mut segments: Vec<[u32; 2]> = Vec::new();
