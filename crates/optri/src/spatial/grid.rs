@@ -58,6 +58,11 @@ pub(super) const SLACK_RELATIVE: f64 = 2e-15;
 const DENSE_CELLS_PER_ITEM: u64 = 4;
 const DENSE_EXTRA_CELLS: u64 = 65536;
 
+/// Cells per parallel task when a dense grid sorts its cells. A tuning
+/// choice: a task's cells hold a few items each, so it does enough work to
+/// outweigh its overhead; nothing depends on it but the time.
+const CELLS_PER_TASK: usize = 1 << 16;
+
 /// Square cells over a bounding box, for cell sizes that follow a round's
 /// length scale whatever the spread of the points (clustered inputs): a
 /// table over all cells when there are not many more cells than items,
@@ -146,24 +151,66 @@ impl<T: Copy + Send + Sync> SparseGrid<T> {
                 slots[fill[k as usize] as usize] = i as u32;
                 fill[k as usize] += 1;
             }
-            grid.table = vec![EMPTY; cells];
-            // Cell `c` is row `c / columns`, column `c % columns`, counted
-            // along (no division per cell).
-            let (mut row, mut column) = (0, 0);
-            for c in 0..cells {
-                let (a, b) = (count[c] as usize, count[c + 1] as usize);
-                if a < b {
-                    slots[a..b].sort_unstable_by_key(|&i| order(i as usize));
-                    grid.table[c] = grid.keys.len() as u32;
-                    grid.keys.push((row, column));
-                    grid.start.push(a as u32);
-                }
-                column += 1;
-                if column == columns {
-                    (row, column) = (row + 1, 0);
-                }
+            drop((keys, fill));
+            // The cells in blocks of `CELLS_PER_TASK`, in parallel: each
+            // block sorts its cells' slots and lists its occupied cells,
+            // numbering them from zero in its part of the table; the
+            // blocks' offsets then make the numbers global.
+            let mut table = vec![EMPTY; cells];
+            let mut slot_blocks: Vec<&mut [u32]> = Vec::with_capacity(cells / CELLS_PER_TASK + 1);
+            let mut rest = slots.as_mut_slice();
+            for block in 0..cells.div_ceil(CELLS_PER_TASK) {
+                let end = ((block + 1) * CELLS_PER_TASK).min(cells);
+                let taken = (count[end] - count[block * CELLS_PER_TASK]) as usize;
+                let (head, tail) = rest.split_at_mut(taken);
+                slot_blocks.push(head);
+                rest = tail;
             }
+            let occupied: Vec<Vec<usize>> = table
+                .par_chunks_mut(CELLS_PER_TASK)
+                .zip(slot_blocks)
+                .enumerate()
+                .map(|(block, (table, slots))| {
+                    let first = block * CELLS_PER_TASK;
+                    let base = count[first] as usize;
+                    let mut occupied = Vec::new();
+                    for (offset, entry) in table.iter_mut().enumerate() {
+                        let c = first + offset;
+                        let (a, b) = (count[c] as usize - base, count[c + 1] as usize - base);
+                        if a < b {
+                            // By `order`, then by item: deterministic.
+                            slots[a..b].sort_unstable_by_key(|&i| (order(i as usize), i));
+                            *entry = occupied.len() as u32;
+                            occupied.push(c);
+                        }
+                    }
+                    occupied
+                })
+                .collect();
+            let mut offsets = Vec::with_capacity(occupied.len());
+            let mut total = 0u32;
+            for block in &occupied {
+                offsets.push(total);
+                total += block.len() as u32;
+            }
+            table
+                .par_chunks_mut(CELLS_PER_TASK)
+                .zip(&offsets)
+                .for_each(|(table, &offset)| {
+                    if offset > 0 {
+                        for entry in table.iter_mut().filter(|e| **e != EMPTY) {
+                            *entry += offset;
+                        }
+                    }
+                });
+            let occupied: Vec<usize> = occupied.concat();
+            grid.keys = occupied
+                .par_iter()
+                .map(|&c| (c as u64 / columns, c as u64 % columns))
+                .collect();
+            grid.start = occupied.par_iter().map(|&c| count[c]).collect();
             grid.start.push(len as u32);
+            grid.table = table;
             grid.items = slots.par_iter().map(|&i| item(i as usize)).collect();
         } else {
             let mut keyed: Vec<(Key, u32, u32)> = (0..len)
