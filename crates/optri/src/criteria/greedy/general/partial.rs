@@ -168,30 +168,37 @@ impl<'a> Partial<'a> {
     /// Adds a round's accepted edges (they cross nothing and share no
     /// direction at a vertex, so the angular order is strict).
     pub(super) fn add(&mut self, accepted: &[[u32; 2]]) {
-        // Half-edges grouped by origin, then every touched list extended and
-        // re-sorted in parallel.
-        let mut half: Vec<[u32; 2]> = accepted
-            .par_iter()
-            .flat_map_iter(|&[a, b]| [[a, b], [b, a]])
-            .collect();
-        half.par_sort_unstable();
-        let mut start = vec![0u32; self.points.len() + 1];
-        for &[a, _] in &half {
+        // The new neighbours grouped by vertex (a counting sort: only the
+        // grouping matters, each list is re-sorted by angle), then every
+        // touched list extended and re-sorted in parallel.
+        let n = self.points.len();
+        let mut start = vec![0u32; n + 1];
+        for &[a, b] in accepted {
             start[a as usize + 1] += 1;
+            start[b as usize + 1] += 1;
         }
-        for v in 0..self.points.len() {
+        for v in 0..n {
             start[v + 1] += start[v];
         }
+        let mut fill = start.clone();
+        let mut other = vec![0u32; 2 * accepted.len()];
+        for &[a, b] in accepted {
+            other[fill[a as usize] as usize] = b;
+            fill[a as usize] += 1;
+            other[fill[b as usize] as usize] = a;
+            fill[b as usize] += 1;
+        }
+        drop(fill);
         let points = self.points;
         self.adjacency
             .par_iter_mut()
             .enumerate()
             .for_each(|(v, list)| {
-                let new = &half[start[v] as usize..start[v + 1] as usize];
+                let new = &other[start[v] as usize..start[v + 1] as usize];
                 if new.is_empty() {
                     return;
                 }
-                list.extend(new.iter().map(|&[_, b]| b));
+                list.extend_from_slice(new);
                 let pv = points[v];
                 list.sort_unstable_by(|&x, &y| {
                     compare_angles(pv, points[x as usize], points[y as usize])
