@@ -452,6 +452,7 @@ fn greedy_rounds(
     let mut floor = MIN_RELATIVE_STEP;
     let mut growth = THRESHOLD_GROWTH;
     while g.edge_count() < target && !open.is_empty() {
+        debug_assert!(open.windows(2).all(|w| w[0] < w[1]), "open is ascending");
         let proposed = if round == 0 {
             FIRST_THRESHOLD_SPACINGS * spacing
         } else {
@@ -485,6 +486,7 @@ fn greedy_rounds(
                 && g.leaves_through(a, &gaps[i], b)
                 && g.leaves_through(b, &gaps[j], a)
         };
+        let tl = std::time::Instant::now();
         let candidates: Vec<[u32; 2]> = (0..open.len())
             .into_par_iter()
             .chunks(OPEN_VERTICES_PER_TASK)
@@ -506,8 +508,10 @@ fn greedy_rounds(
                                 cell.partition_point(|&j| class[j as usize] <= c),
                             )
                         };
+                        // `open` is ascending, so `j > i` is `open[j] > v`
+                        // without a load.
                         for &j in cell[..lo].iter().chain(&cell[hi..]) {
-                            if open[j as usize] > v && keep(i, j as usize) {
+                            if j as usize > i && keep(i, j as usize) {
                                 out.push([v, open[j as usize]]);
                             }
                         }
@@ -519,6 +523,9 @@ fn greedy_rounds(
             .collect::<Vec<Vec<[u32; 2]>>>()
             .concat();
         drop(grid);
+        if std::env::var("GT_TRACE").is_ok() {
+            eprintln!("  list {:?}", tl.elapsed());
+        }
         let ranking = renumbering.ranking(points, &candidates);
         let mut is_open = vec![false; n];
         for &v in &open {
