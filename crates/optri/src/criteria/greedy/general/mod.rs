@@ -97,7 +97,7 @@ use crate::parallel::prelude::*;
 use crate::spatial::{bounding_box, fmax, fmin, morton_order};
 use crate::timing::{Phase, Stopwatch};
 use guard::{next_floor, next_growth, round_grid, MIN_RELATIVE_STEP, NO_LINE, THRESHOLD_GROWTH};
-use partial::Partial;
+use partial::{OpenGaps, Partial};
 use segment_index::{PointsNear, Query, SegmentIndex, Step};
 use std::cmp::Ordering;
 
@@ -443,9 +443,9 @@ fn greedy_rounds(
     // one); the guard in `round_grid` shrinks it where the points are denser.
     let spacing = ((fmax(w, h * MIN_ASPECT) * fmax(h, w * MIN_ASPECT)) / n as f64).sqrt();
     let mut open: Vec<u32> = (0..n as u32).collect();
-    // The open gaps of each open vertex (`Partial::open_gaps`; none before
+    // The open gaps of each open vertex (`Partial::still_open`; none before
     // the first edges).
-    let mut gaps: Vec<Option<Vec<[u32; 2]>>> = vec![None; n];
+    let mut gaps = OpenGaps::none(n);
     let mut near: Option<PointsNear> = None;
     let mut lower = 0.0;
     let mut round = 0;
@@ -483,8 +483,8 @@ fn greedy_rounds(
             let (pa, pb) = (points[a as usize], points[b as usize]);
             !shorter_than(pa, pb, lower)
                 && (last || shorter_than(pa, pb, threshold))
-                && g.leaves_through(a, &gaps[i], b)
-                && g.leaves_through(b, &gaps[j], a)
+                && g.leaves_through(a, gaps.get(i), b)
+                && g.leaves_through(b, gaps.get(j), a)
         };
         let tl = std::time::Instant::now();
         let candidates: Vec<[u32; 2]> = (0..open.len())
@@ -533,9 +533,9 @@ fn greedy_rounds(
         }
         let active: Vec<[u32; 2]> = open
             .par_iter()
-            .zip(&gaps)
-            .fold(Vec::new, |mut out, (&v, gaps)| {
-                g.active_edges_at(v, gaps, &is_open, &mut out);
+            .enumerate()
+            .fold(Vec::new, |mut out, (i, &v)| {
+                g.active_edges_at(v, gaps.get(i), &is_open, &mut out);
                 out
             })
             .flatten()
@@ -553,13 +553,7 @@ fn greedy_rounds(
         floor = next_floor(floor, candidates.len(), open.len());
         growth = next_growth(growth, candidates.len(), open.len());
         // The vertices still open keep their gaps for the next round.
-        (open, gaps) = open
-            .into_par_iter()
-            .filter_map(|v| {
-                let gaps = g.open_gaps(v);
-                (!Partial::closed(&gaps)).then_some((v, gaps))
-            })
-            .unzip();
+        (open, gaps) = g.still_open(&open, OPEN_VERTICES_PER_TASK);
         if round == 0 {
             stopwatch.lap("round 0");
         }
@@ -593,13 +587,13 @@ fn greedy_rounds(
 /// hold the threshold down for thousands of rounds (issue 15: a run of 1000
 /// points with two apexes took 8.8 s). Only the running time depends on the
 /// classes: the skipped pairs fail `leaves_through` anyway.
-fn line_classes(points: &[Point], open: &[u32], gaps: &[Option<Vec<[u32; 2]>>]) -> Vec<u32> {
+fn line_classes(points: &[Point], open: &[u32], gaps: &OpenGaps) -> Vec<u32> {
     let p = |v: u32| points[v as usize];
     // A gap neighbour of each straight-angle vertex (`NO_LINE` if none).
     let line_neighbour: Vec<u32> = open
         .par_iter()
-        .zip(gaps)
-        .map(|(&v, gaps)| match gaps {
+        .enumerate()
+        .map(|(i, &v)| match gaps.get(i) {
             Some(list)
                 if !list.is_empty()
                     && list
@@ -633,7 +627,7 @@ fn line_classes(points: &[Point], open: &[u32], gaps: &[Option<Vec<[u32; 2]>>]) 
         if line_neighbour[i] == NO_LINE {
             continue;
         }
-        for &[u, w] in gaps[i].as_deref().unwrap_or_default() {
+        for &[u, w] in gaps.get(i).unwrap_or_default() {
             for x in [u, w] {
                 let j = index[x as usize];
                 // `x` is on `v`'s line; it shares the line if its own line

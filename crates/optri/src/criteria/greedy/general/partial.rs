@@ -1,7 +1,7 @@
 //! The partial greedy triangulation between rounds: angular neighbour lists
 //! and the closed-triangle, closed-vertex and active-edge tests of the module
 //! docs ("Earlier edges: only the *active* ones"). [`Partial::gap_closed`]
-//! is the empty-triangle Lemma's closed triangle, [`Partial::closed`] a
+//! is the empty-triangle Lemma's closed triangle, [`Partial::still_open`] drops a
 //! closed vertex, [`Partial::active_edges_at`] the active edges of the Claim,
 //! and [`Partial::leaves_through`] the condition that a later candidate
 //! leaves both endpoints through an open gap.
@@ -9,6 +9,39 @@
 use crate::kernel::{compare_angles, orient_sign, Point};
 use crate::parallel::prelude::*;
 use std::cmp::Ordering;
+
+/// The open gaps of a round's open vertices (indices into its `open`
+/// list), as [`Partial::still_open`] finds them: one flat list.
+#[derive(Default)]
+pub(super) struct OpenGaps {
+    flat: Vec<[u32; 2]>,
+    /// Where each vertex's gaps end in `flat`.
+    end: Vec<u32>,
+    /// Does the vertex have fewer than two neighbours (no gaps listed)?
+    few: Vec<bool>,
+}
+
+impl OpenGaps {
+    /// `len` vertices without neighbours (before the first round).
+    pub(super) fn none(len: usize) -> Self {
+        Self {
+            flat: Vec::new(),
+            end: vec![0; len],
+            few: vec![true; len],
+        }
+    }
+
+    /// The open gaps of the `i`-th open vertex, `None` when it has fewer
+    /// than two neighbours.
+    #[inline]
+    pub(super) fn get(&self, i: usize) -> Option<&[[u32; 2]]> {
+        if self.few[i] {
+            return None;
+        }
+        let begin = if i == 0 { 0 } else { self.end[i - 1] as usize };
+        Some(&self.flat[begin..self.end[i] as usize])
+    }
+}
 
 /// Not a hull vertex (no hull neighbours).
 const NOT_ON_HULL: u32 = u32::MAX;
@@ -72,19 +105,59 @@ impl<'a> Partial<'a> {
             || (orient_sign(self.p(v), self.p(u), self.p(w)) > 0 && self.has_edge(u, w))
     }
 
-    /// The open gaps at `v` (not closed, see [`Self::gap_closed`]), each as
-    /// the neighbours `[u, w]` bounding it counter-clockwise; `None` when `v`
-    /// has fewer than two neighbours, so that only the direction of its
-    /// neighbour (if any) is taken.
-    pub(super) fn open_gaps(&self, v: u32) -> Option<Vec<[u32; 2]>> {
+    /// Appends the open gaps at `v` (not closed, see [`Self::gap_closed`])
+    /// to `out`, each as the neighbours `[u, w]` bounding it
+    /// counter-clockwise; `false` (and nothing appended) when `v` has fewer
+    /// than two neighbours, so that only the direction of its neighbour (if
+    /// any) is taken.
+    fn open_gaps_into(&self, v: u32, out: &mut Vec<[u32; 2]>) -> bool {
         let list = &self.adjacency[v as usize];
         let len = list.len();
-        (len >= 2).then(|| {
+        if len < 2 {
+            return false;
+        }
+        out.extend(
             (0..len)
                 .map(|i| [list[i], list[(i + 1) % len]])
-                .filter(|&[u, w]| !self.gap_closed(v, u, w))
-                .collect()
-        })
+                .filter(|&[u, w]| !self.gap_closed(v, u, w)),
+        );
+        true
+    }
+
+    /// The vertices of `open` that are still open — not *closed*, i.e. with
+    /// fewer than two neighbours or an open gap (module docs) — in order,
+    /// with their open gaps. In parallel blocks of `per_task` vertices, each
+    /// appending to one flat list (a `Vec` per vertex cost an allocation
+    /// and a free per open vertex and round).
+    pub(super) fn still_open(&self, open: &[u32], per_task: usize) -> (Vec<u32>, OpenGaps) {
+        let parts: Vec<(Vec<u32>, OpenGaps)> = open
+            .par_chunks(per_task)
+            .map(|chunk| {
+                let mut kept = Vec::new();
+                let mut gaps = OpenGaps::default();
+                for &v in chunk {
+                    let mark = gaps.flat.len();
+                    let many = self.open_gaps_into(v, &mut gaps.flat);
+                    if many && gaps.flat.len() == mark {
+                        continue; // closed
+                    }
+                    kept.push(v);
+                    gaps.end.push(gaps.flat.len() as u32);
+                    gaps.few.push(!many);
+                }
+                (kept, gaps)
+            })
+            .collect();
+        let mut kept = Vec::with_capacity(parts.iter().map(|p| p.0.len()).sum());
+        let mut gaps = OpenGaps::default();
+        for (part_kept, part) in parts {
+            let offset = gaps.flat.len() as u32;
+            kept.extend_from_slice(&part_kept);
+            gaps.flat.extend_from_slice(&part.flat);
+            gaps.end.extend(part.end.iter().map(|&e| e + offset));
+            gaps.few.extend_from_slice(&part.few);
+        }
+        (kept, gaps)
     }
 
     /// May an edge leave `a` towards `b`, given `a`'s open gaps? Not if its
@@ -93,7 +166,7 @@ impl<'a> Partial<'a> {
     /// for crossing an edge, which then crosses `ab` too) or falls into a
     /// closed triangle (whose third side it would cross): `b` must lie
     /// strictly inside an open gap.
-    pub(super) fn leaves_through(&self, a: u32, gaps: &Option<Vec<[u32; 2]>>, b: u32) -> bool {
+    pub(super) fn leaves_through(&self, a: u32, gaps: Option<&[[u32; 2]]>, b: u32) -> bool {
         let (pa, pb) = (self.p(a), self.p(b));
         let Some(gaps) = gaps else {
             return self.adjacency[a as usize]
@@ -112,22 +185,15 @@ impl<'a> Partial<'a> {
         })
     }
 
-    /// No edge can be added at a vertex any more (module docs), given its
-    /// open gaps from [`Self::open_gaps`]: it has two neighbours or more and
-    /// no open gap.
-    pub(super) fn closed(gaps: &Option<Vec<[u32; 2]>>) -> bool {
-        gaps.as_ref().is_some_and(|list| list.is_empty())
-    }
-
     /// Edges at open `v` towards larger open vertices with a side that is not
-    /// a closed triangle, given `v`'s open gaps (from [`Self::open_gaps`]):
+    /// a closed triangle, given `v`'s open gaps (from [`Self::still_open`]):
     /// the sides of the edge to `u` are the gaps on either side of `u` at
     /// `v`, the only gaps `u` bounds, so a side is open iff `u` bounds an
     /// open gap (every side is open when `v` has fewer than two neighbours).
     pub(super) fn active_edges_at(
         &self,
         v: u32,
-        gaps: &Option<Vec<[u32; 2]>>,
+        gaps: Option<&[[u32; 2]]>,
         is_open: &[bool],
         out: &mut Vec<[u32; 2]>,
     ) {
@@ -135,9 +201,7 @@ impl<'a> Partial<'a> {
             if u < v || !is_open[u as usize] {
                 continue;
             }
-            let open_side = gaps
-                .as_ref()
-                .is_none_or(|list| list.iter().any(|&[x, y]| x == u || y == u));
+            let open_side = gaps.is_none_or(|list| list.iter().any(|&[x, y]| x == u || y == u));
             if open_side {
                 out.push([v, u]);
             }
