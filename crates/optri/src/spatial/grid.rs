@@ -178,8 +178,7 @@ impl<T: Copy + Send + Sync> SparseGrid<T> {
                         let c = first + offset;
                         let (a, b) = (count[c] as usize - base, count[c + 1] as usize - base);
                         if a < b {
-                            // By `order`, then by item: deterministic.
-                            slots[a..b].sort_unstable_by_key(|&i| (order(i as usize), i));
+                            slots[a..b].sort_unstable_by_key(|&i| order(i as usize));
                             *entry = occupied.len() as u32;
                             occupied.push(c);
                         }

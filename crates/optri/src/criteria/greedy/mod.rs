@@ -299,11 +299,35 @@ pub(crate) fn sort_keyed_runs<T: Send + Copy, U: Send>(
     exact: impl Fn(&U, &U) -> std::cmp::Ordering + Sync,
 ) {
     keyed.par_sort_unstable_by(|x, y| x.0.total_cmp(&y.0));
-    let mut runs: Vec<&mut [(f64, T)]> = Vec::new();
-    let mut rest = keyed;
+    sort_runs(
+        keyed,
+        |x, y| y.0 - x.0 <= KEY_RUN_GAP * y.0,
+        |buffer: &mut Vec<(f64, T, U)>, run| {
+            buffer.clear();
+            buffer.extend(run.iter().map(|&(key, item)| (key, item, gather(item))));
+            buffer.sort_unstable_by(|x, y| exact(&x.2, &y.2));
+            for (slot, &(key, item, _)) in run.iter_mut().zip(&*buffer) {
+                *slot = (key, item);
+            }
+        },
+    );
+}
+
+/// Calls `sort` on every run of two or more consecutive items of `items`
+/// that `same_run` joins (each item with the next), in parallel,
+/// [`RUNS_PER_TASK`] runs a task, each task with its own scratch `S`: the
+/// second step of a sort by a coarse key, which leaves the order within
+/// a run of equal coarse keys to `sort`.
+pub(crate) fn sort_runs<T: Send, S: Default>(
+    items: &mut [T],
+    same_run: impl Fn(&T, &T) -> bool,
+    sort: impl Fn(&mut S, &mut [T]) + Sync,
+) {
+    let mut runs: Vec<&mut [T]> = Vec::new();
+    let mut rest = items;
     while !rest.is_empty() {
         let mut end = 1;
-        while end < rest.len() && rest[end].0 - rest[end - 1].0 <= KEY_RUN_GAP * rest[end].0 {
+        while end < rest.len() && same_run(&rest[end - 1], &rest[end]) {
             end += 1;
         }
         let (run, tail) = rest.split_at_mut(end);
@@ -313,23 +337,17 @@ pub(crate) fn sort_keyed_runs<T: Send + Copy, U: Send>(
         rest = tail;
     }
     runs.par_chunks_mut(RUNS_PER_TASK).for_each(|chunk| {
-        let mut buffer: Vec<(f64, T, U)> = Vec::new();
+        let mut scratch = S::default();
         for run in chunk.iter_mut() {
-            buffer.clear();
-            buffer.extend(run.iter().map(|&(key, item)| (key, item, gather(item))));
-            buffer.sort_unstable_by(|x, y| exact(&x.2, &y.2));
-            for (slot, &(key, item, _)) in run.iter_mut().zip(&buffer) {
-                *slot = (key, item);
-            }
+            sort(&mut scratch, run);
         }
     });
 }
 
-/// Runs per parallel task in [`sort_keyed_runs`] (and in the greedy
-/// rounds' integer-key ranking). A tuning choice: most
-/// runs hold a few segments, so a task takes many; the result does not
-/// depend on it.
-pub(crate) const RUNS_PER_TASK: usize = 1024;
+/// Runs per parallel task in [`sort_runs`]. A tuning choice: most runs
+/// hold a few segments, so a task takes many; the result does not depend
+/// on it.
+const RUNS_PER_TASK: usize = 1024;
 
 /// Edges as sorted `[min, max]` pairs, sorted.
 #[cfg(any(test, feature = "internals"))]

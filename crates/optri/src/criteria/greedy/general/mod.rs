@@ -88,7 +88,7 @@ mod guard;
 mod partial;
 mod segment_index;
 
-use super::{keyed_by_length, rounded_squared_length, sort_keyed_runs, RUNS_PER_TASK};
+use super::{keyed_by_length, rounded_squared_length, sort_keyed_runs, sort_runs};
 use crate::error::{Error, Result};
 use crate::kernel::{
     compare_equal_lengths_symbolic, compare_lengths, exact_squared_length, orient_sign, Point,
@@ -319,38 +319,26 @@ impl Renumbering<'_> {
         keys.par_sort_unstable();
         // Runs of one length and one tie key: segments sharing the endpoint
         // of lower original index, with the same length and the same kind.
-        let mut runs: Vec<&mut [u128]> = Vec::new();
-        let mut rest = keys.as_mut_slice();
-        while !rest.is_empty() {
-            let head = rest[0] >> 32;
-            let end = rest
-                .iter()
-                .position(|&k| k >> 32 != head)
-                .unwrap_or(rest.len());
-            let (run, tail) = rest.split_at_mut(end);
-            if end > 1 {
-                runs.push(run);
-            }
-            rest = tail;
-        }
-        runs.par_chunks_mut(RUNS_PER_TASK).for_each(|chunk| {
-            for run in chunk.iter_mut() {
-                let far = |key: u128| {
-                    let [a, b] = segments[key as u32 as usize];
-                    let u = if self.to_original[a as usize] < self.to_original[b as usize] {
-                        b
-                    } else {
-                        a
-                    };
-                    let p = points[u as usize];
-                    (p[1], p[0])
-                };
+        let far = |key: u128| {
+            let [a, b] = segments[key as u32 as usize];
+            let u = if self.to_original[a as usize] < self.to_original[b as usize] {
+                b
+            } else {
+                a
+            };
+            let p = points[u as usize];
+            (p[1], p[0])
+        };
+        sort_runs(
+            &mut keys,
+            |x, y| x >> 32 == y >> 32,
+            |_: &mut (), run| {
                 // Descending `(y, x)` of the far endpoint: distinct points.
                 run.sort_unstable_by(|&x, &y| {
                     far(y).partial_cmp(&far(x)).expect("finite coordinates")
                 });
-            }
-        });
+            },
+        );
         Some(keys.into_par_iter().map(|k| k as u32).collect())
     }
 
@@ -486,7 +474,6 @@ fn greedy_rounds(
                 && g.leaves_through(a, gaps.get(i), b)
                 && g.leaves_through(b, gaps.get(j), a)
         };
-        let tl = std::time::Instant::now();
         let candidates: Vec<[u32; 2]> = (0..open.len())
             .into_par_iter()
             .chunks(OPEN_VERTICES_PER_TASK)
@@ -523,9 +510,6 @@ fn greedy_rounds(
             .collect::<Vec<Vec<[u32; 2]>>>()
             .concat();
         drop(grid);
-        if std::env::var("GT_TRACE").is_ok() {
-            eprintln!("  list {:?}", tl.elapsed());
-        }
         let ranking = renumbering.ranking(points, &candidates);
         let mut is_open = vec![false; n];
         for &v in &open {
