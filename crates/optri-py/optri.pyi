@@ -41,13 +41,36 @@ class _CriterionEntry(TypedDict):
     name: str
     description: str
     optimality: str
+    inputs: List[str]
     options: List[str]
-    polygons: bool
     reference: str
 
 class _GraphKindEntry(TypedDict):
     name: str
     description: str
+    options: List[str]
+
+class _OptionEntry(TypedDict):
+    name: str
+    description: str
+    values: str
+    default: str
+    every_run: bool
+
+class _MeasureEntry(TypedDict):
+    name: str
+    label: str
+    better: str
+
+class _Registry(TypedDict):
+    document: str
+    schema_version: int
+    optri_version: str
+    criteria: List[_CriterionEntry]
+    graphs: List[_GraphKindEntry]
+    options: List[_OptionEntry]
+    input_formats: List[str]
+    measures: List[_MeasureEntry]
 
 @final
 class Triangulation:
@@ -121,15 +144,20 @@ def triangulate_polygon(
 
 def compare(
     points: _ArrayLike, criteria: Optional[Sequence[str]] = None, **options: Any
-) -> Dict[str, Triangulation]:
-    """Every criterion (or those named) on one input, by criterion name."""
+) -> Dict[str, Union[Triangulation, ValueError]]:
+    """Every criterion (or those named) on one input, by criterion name; a
+    criterion that refuses the input maps to its (unraised) ValueError."""
 
-def graph(points: _ArrayLike, kind: str, metric: Optional[str] = None) -> _IndexArray:
+def graph(points: _ArrayLike, kind: str, **options: Any) -> _IndexArray:
     """The (k, 2) int64 edges of a proximity graph: hull, delaunay, rng, gabriel, mst
-    (rng and mst also under ``metric``: "l1", "linf", "lp:P", "polygon:x1,y1,...")."""
+    (rng and mst also under ``metric=``: "l1", "linf", "lp:P", "polygon:x1,y1,...").
+    Two points and collinear points give the path through them."""
 
-def graph_document(points: _ArrayLike, kind: str) -> Dict[str, Any]:
+def graph_document(points: _ArrayLike, kind: str, **options: Any) -> Dict[str, Any]:
     """The JSON document ``optri graph --json`` prints, as a dict."""
+
+def registry() -> _Registry:
+    """The registry listing: the JSON document of ``optri criteria --json``."""
 
 def criteria() -> List[_CriterionEntry]:
     """Every criterion of the registry, in display order."""

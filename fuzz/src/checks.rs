@@ -119,9 +119,17 @@ pub fn decode_points(data: &[u8]) -> Vec<[f64; 2]> {
 }
 
 pub fn check_criteria(data: &[u8]) {
-    let points = decode_points(data);
-    let Ok(set) = PointSet::new(&points) else {
-        return;
+    check_points(&decode_points(data));
+}
+
+/// Every criterion and graph on `points`: `Ok` or an error, every `Ok`
+/// triangulation valid, and with at most [`ORACLE_AT_MOST`] distinct points
+/// each result optimal by its [`optimality_check`]. Returns the criteria
+/// whose optimality was checked.
+pub fn check_points(points: &[[f64; 2]]) -> Vec<Criterion> {
+    let mut checked = Vec::new();
+    let Ok(set) = PointSet::new(points) else {
+        return checked;
     };
     let distinct = set.points().to_vec();
     let small = distinct.len() <= ORACLE_AT_MOST;
@@ -148,10 +156,92 @@ pub fn check_criteria(data: &[u8]) {
             .map(|t| t.map(|i| set.distinct_index(i)))
             .collect();
         check_optimal(criterion, solution.exact, &distinct, &tris, &all);
+        checked.push(criterion);
     }
     for &kind in GraphKind::ALL {
         let _ = graph(&set, kind);
     }
+    checked
+}
+
+/// An optimality check: `Err(why)` when `tris` (distinct indices) is not
+/// optimal for its criterion among `all`, every triangulation of `points`;
+/// `exact` says whether the criterion claimed an exact optimum.
+pub type OptimalityCheck = fn(
+    exact: bool,
+    points: &[[f64; 2]],
+    tris: &[[u32; 3]],
+    all: &[Vec<[u32; 3]>],
+) -> Result<(), String>;
+
+/// The optimality check of every registered criterion, by registry name. A
+/// criterion missing here fails `optimality_check` (and the test suite's
+/// `every_registered_criterion_has_an_oracle_check`), so no criterion runs
+/// unchecked.
+pub const OPTIMALITY_CHECKS: &[(&str, OptimalityCheck)] = &[
+    ("delaunay", |_, points, tris, _| {
+        oracle::delaunay_check(points, tris)
+    }),
+    ("minmax-length", |_, points, tris, all| {
+        let best = all
+            .iter()
+            .map(|t| oracle::max_edge_squared(points, t))
+            .min();
+        (Some(oracle::max_edge_squared(points, tris)) == best)
+            .then_some(())
+            .ok_or_else(|| "longest edge not minimal".to_string())
+    }),
+    ("greedy", |_, points, tris, _| {
+        let want = oracle::canonical_triangulation(points, &oracle::greedy_triangulation(points));
+        (oracle::canonical_triangulation(points, tris) == want)
+            .then_some(())
+            .ok_or_else(|| "not the greedy triangulation".to_string())
+    }),
+    ("min-weight", |_, points, tris, all| {
+        // The oracle sums rounded lengths: a relative 1e-12 separates the
+        // distinct sums of these small integer sets, and the exact sums are
+        // checked against the integer program in tests/min_weight*.rs.
+        let best = all
+            .iter()
+            .map(|t| oracle::total_length(points, t))
+            .fold(f64::INFINITY, f64::min);
+        (oracle::total_length(points, tris) <= best * (1.0 + 1e-12))
+            .then_some(())
+            .ok_or_else(|| "total length not minimal".to_string())
+    }),
+    ("maxmin-area", |exact, points, tris, all| {
+        // An approximation (general sets) is checked for validity only.
+        let best = all
+            .iter()
+            .map(|t| Reverse(oracle::min_twice_area(points, t)))
+            .min();
+        (!exact || Some(Reverse(oracle::min_twice_area(points, tris))) == best)
+            .then_some(())
+            .ok_or_else(|| "smallest area not maximal".to_string())
+    }),
+    ("minmax-area", |exact, points, tris, all| {
+        let best = all.iter().map(|t| oracle::max_twice_area(points, t)).min();
+        (!exact || Some(oracle::max_twice_area(points, tris)) == best)
+            .then_some(())
+            .ok_or_else(|| "largest area not minimal".to_string())
+    }),
+];
+
+/// The optimality check of `criterion`.
+///
+/// # Panics
+/// When the criterion has none in [`OPTIMALITY_CHECKS`].
+pub fn optimality_check(criterion: Criterion) -> OptimalityCheck {
+    OPTIMALITY_CHECKS
+        .iter()
+        .find(|(name, _)| *name == criterion.name())
+        .map(|&(_, check)| check)
+        .unwrap_or_else(|| {
+            panic!(
+                "criterion {} has no optimality check in fuzz/src/checks.rs",
+                criterion.name()
+            )
+        })
 }
 
 fn check_optimal(
@@ -161,56 +251,7 @@ fn check_optimal(
     tris: &[[u32; 3]],
     all: &[Vec<[u32; 3]>],
 ) {
-    let fail = |what: &str| panic!("{criterion:?} on {points:?}: {what}: {tris:?}");
-    match criterion {
-        Criterion::Delaunay => {
-            if let Err(e) = oracle::delaunay_check(points, tris) {
-                fail(&e);
-            }
-        }
-        Criterion::MinmaxLength => {
-            let best = all
-                .iter()
-                .map(|t| oracle::max_edge_squared(points, t))
-                .min();
-            if Some(oracle::max_edge_squared(points, tris)) != best {
-                fail("longest edge not minimal");
-            }
-        }
-        Criterion::Greedy => {
-            let want =
-                oracle::canonical_triangulation(points, &oracle::greedy_triangulation(points));
-            if oracle::canonical_triangulation(points, tris) != want {
-                fail("not the greedy triangulation");
-            }
-        }
-        Criterion::MinWeight => {
-            // Sums of rounded lengths (the criterion says `exact: false`):
-            // optimal up to rounding.
-            let best = all
-                .iter()
-                .map(|t| oracle::total_length(points, t))
-                .fold(f64::INFINITY, f64::min);
-            let got = oracle::total_length(points, tris);
-            if got > best * (1.0 + 1e-12) {
-                fail("total length not minimal");
-            }
-        }
-        Criterion::MaxminArea if exact => {
-            let best = all
-                .iter()
-                .map(|t| Reverse(oracle::min_twice_area(points, t)))
-                .min();
-            if Some(Reverse(oracle::min_twice_area(points, tris))) != best {
-                fail("smallest area not maximal");
-            }
-        }
-        Criterion::MinmaxArea if exact => {
-            let best = all.iter().map(|t| oracle::max_twice_area(points, t)).min();
-            if Some(oracle::max_twice_area(points, tris)) != best {
-                fail("largest area not minimal");
-            }
-        }
-        _ => {}
+    if let Err(why) = optimality_check(criterion)(exact, points, tris, all) {
+        panic!("{criterion:?} on {points:?}: {why}: {tris:?}");
     }
 }

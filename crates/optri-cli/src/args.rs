@@ -28,6 +28,8 @@ pub(crate) enum Command {
     Graph(GraphArgs),
     /// Triangulate one input by every criterion (or the chosen ones) and compare the results.
     Compare(CompareArgs),
+    /// List the criteria, graphs and options, with what each takes.
+    Criteria(CriteriaArgs),
     /// Serve the web playground and its JSON API.
     Serve(ServeArgs),
     /// Triangulate a built-in point set by every criterion and draw them side by side.
@@ -52,11 +54,8 @@ pub(crate) struct TriangulateArgs {
     /// Optimality criterion (case-insensitive).
     #[arg(long, default_value = "delaunay", value_parser = criterion_names())]
     pub criterion: String,
-    /// Norm for lengths: euclidean | l1 | linf | lp:P (integer P ≥ 1) |
-    /// polygon:x1,y1,x2,y2,... (a centrally symmetric convex unit polygon). Taken by
-    /// minmax-length, and by the rng and mst graphs.
-    #[arg(long, default_value = "euclidean", value_name = "METRIC")]
-    pub metric: String,
+    #[command(flatten)]
+    pub run: RunArgs,
     /// Write the triangulation; format by extension: .json .svg .geojson, or .ele / .edge
     /// (Triangle's triangles / edges), which also write the points to the .node file beside
     /// them (X.ele writes X.node; refused if X.node is the input). Repeatable.
@@ -103,11 +102,8 @@ pub(crate) struct GraphArgs {
     /// Which graph (case-insensitive).
     #[arg(long, value_parser = graph_kinds())]
     pub kind: GraphKind,
-    /// Norm for lengths: euclidean | l1 | linf | lp:P (integer P ≥ 1) |
-    /// polygon:x1,y1,x2,y2,... (a centrally symmetric convex unit polygon). Taken by
-    /// minmax-length, and by the rng and mst graphs.
-    #[arg(long, default_value = "euclidean", value_name = "METRIC")]
-    pub metric: String,
+    #[command(flatten)]
+    pub run: RunArgs,
     /// Write the graph; format by extension: .svg .json .geojson, or .edge (Triangle's
     /// format), which also writes the points to the .node file beside it. Repeatable.
     #[arg(long, short, value_name = "FILE")]
@@ -133,6 +129,49 @@ pub(crate) struct CompareArgs {
     pub output: Vec<PathBuf>,
     /// Print the comparison document (`{"results": [...]}`, one triangulation document per
     /// criterion; see docs/json-schema.md) instead of the table.
+    #[arg(long)]
+    pub json: bool,
+    #[command(flatten)]
+    pub run: RunArgs,
+}
+
+/// The library's options (`optri criteria` lists them): shared by
+/// `triangulate`, `graph` and `compare`.
+#[derive(Args)]
+pub(crate) struct RunArgs {
+    /// Norm for lengths: euclidean | l1 | linf | lp:P (integer P ≥ 1) |
+    /// polygon:x1,y1,x2,y2,... (a centrally symmetric convex unit polygon). Taken by
+    /// minmax-length, and by the rng and mst graphs (`optri criteria` lists what takes it).
+    #[arg(long, default_value = "euclidean", value_name = "METRIC")]
+    pub metric: String,
+    /// Stop a run after this many seconds: it fails with exit code 1, or returns its best
+    /// certified result marked not exact where the criterion has one. In `compare`, each
+    /// criterion has the whole limit.
+    #[arg(long, value_name = "SECONDS")]
+    pub time_limit: Option<String>,
+}
+
+impl RunArgs {
+    /// The library's options these arguments name.
+    pub fn options(&self) -> Result<optri::Options, String> {
+        let mut options = optri::Options::default();
+        options
+            .set("metric", &self.metric)
+            .map_err(|e| format!("--metric: {e}"))?;
+        if let Some(limit) = &self.time_limit {
+            options
+                .set("time_limit", limit)
+                .map_err(|e| format!("--time-limit: {e}"))?;
+        }
+        Ok(options)
+    }
+}
+
+/// `optri criteria`.
+#[derive(Args)]
+pub(crate) struct CriteriaArgs {
+    /// Print the registry listing document (the same JSON as Python's `optri.criteria()` and
+    /// the web API's `GET /api/criteria`; see docs/json-schema.md) instead of the table.
     #[arg(long)]
     pub json: bool,
 }

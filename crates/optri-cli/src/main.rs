@@ -9,7 +9,7 @@
 //!
 //! - `args`: the clap types (criteria and graph kinds from the library's
 //!   registry);
-//! - `commands`: `triangulate`, `graph`, `compare`, `serve`, `demo`, and their
+//! - `commands`: `triangulate`, `graph`, `compare`, `criteria`, `serve`, `demo`, and their
 //!   shared prelude;
 //! - `progress`: the progress line on stderr (terminals only);
 //! - `report`: the summaries and the JSON documents on stdout;
@@ -39,6 +39,7 @@ fn main() -> ExitCode {
         Command::Triangulate(args) => commands::triangulate::run(args),
         Command::Graph(args) => commands::graph::run(args),
         Command::Compare(args) => commands::compare::run(args),
+        Command::Criteria(args) => commands::criteria::run(args),
         Command::Serve(args) => commands::serve::run(args),
         Command::Demo(args) => commands::demo::run(args),
     };

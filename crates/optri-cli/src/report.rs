@@ -2,10 +2,11 @@
 //! by the library, [`optri::io::TriangulationReport`] and
 //! [`optri::io::GraphReport`]), and the one way to write to stdout.
 
-use crate::commands::{Reading, Run};
+use crate::commands::Run;
 use crate::CliResult;
-use optri::io::{Arithmetic, TriangulationReport};
-use optri::{Criterion, Domain, GraphKind, Phase, PointGraph, PointSet, Solution};
+use optri::io::Arithmetic;
+use optri::request::Document;
+use optri::{Criterion, Domain, Phase, PointSet, Solution};
 use std::io::Write;
 use std::path::PathBuf;
 
@@ -107,15 +108,15 @@ fn arithmetic_line(read: &optri::io::ReadInput) -> String {
 }
 
 /// The summary of `optri triangulate`.
-pub(crate) fn triangulation_summary(
-    run: &Run,
-    document: &TriangulationReport,
-    solution: &Solution,
-    written: &[PathBuf],
-) -> String {
+pub(crate) fn triangulation_summary(run: &Run, written: &[PathBuf]) -> String {
+    let Document::Triangulation(document) = run.outcome.document() else {
+        unreachable!("a triangulate request");
+    };
+    let solution = run.outcome.solution().expect("a triangulate request");
     let stats = document.stats();
-    let points = &run.points;
-    let domain = match (&run.polygon, solution.triangulation.domain()) {
+    let points = run.outcome.point_set().expect("a validated input");
+    let polygon = run.outcome.polygon();
+    let domain = match (polygon, solution.triangulation.domain()) {
         (Some(p), Domain::Polygon { .. }) => format!(
             "polygon interior ({} vertices, given {})",
             p.len(),
@@ -127,7 +128,7 @@ pub(crate) fn triangulation_summary(
         ),
         _ => "convex hull".to_string(),
     };
-    let boundary = if run.polygon.is_some() {
+    let boundary = if polygon.is_some() {
         "boundary points"
     } else {
         "hull points"
@@ -157,21 +158,23 @@ pub(crate) fn triangulation_summary(
         number(stats.max_angle_deg),
         number(stats.min_area),
         number(stats.max_area),
-        arithmetic_line(&run.read),
-        timing_text(&run.timing.phases),
+        arithmetic_line(run.read()),
+        timing_text(run.phases()),
     );
+    if let Some(([a, b], length)) = document.metric_longest_edge() {
+        text.push_str(&format!(
+            "metric {}: longest edge {a}-{b}, length {length}\n",
+            solution.metric
+        ));
+    }
     wrote(&mut text, written);
     text
 }
 
 /// The summary of `optri graph`.
-pub(crate) fn graph_summary(
-    run: &Reading,
-    kind: GraphKind,
-    graph: &PointGraph,
-    written: &[PathBuf],
-) -> String {
-    let coordinates = run.read.input.points();
+pub(crate) fn graph_summary(run: &Run, written: &[PathBuf]) -> String {
+    let (kind, graph) = run.outcome.graph().expect("a graph request");
+    let coordinates = run.read().input.points();
     let edges = &graph.edges;
     let total: f64 = edges
         .iter()
@@ -187,8 +190,8 @@ pub(crate) fn graph_summary(
         merged_note(graph.duplicates.len()),
         edges.len(),
         number(total),
-        arithmetic_line(&run.read),
-        timing_text(&run.timing.phases),
+        arithmetic_line(run.read()),
+        timing_text(run.phases()),
     );
     wrote(&mut text, written);
     text
@@ -259,15 +262,16 @@ const COLUMNS: &[Column] = &[
 /// `*` (on the rounded values shown; ties are all marked), results that are
 /// not provably optimal flagged in the `guarantee` column, and the criteria
 /// that refused the input listed with the library's reason.
-pub(crate) fn comparison_table(run: &Run, results: &[optri::Comparison]) -> String {
-    let points = &run.points;
+pub(crate) fn comparison_table(run: &Run) -> String {
+    let results = run.outcome.comparison().expect("a compare request");
+    let points = run.outcome.point_set().expect("a validated input");
     let mut text = format!(
         "{}: {} points ({} distinct{}), {}\n\n",
         run.source,
         points.input_points().len(),
         points.len(),
         duplicates_note(points),
-        if run.polygon.is_some() {
+        if run.outcome.polygon().is_some() {
             "polygon interior"
         } else {
             "convex hull"
@@ -279,7 +283,7 @@ pub(crate) fn comparison_table(run: &Run, results: &[optri::Comparison]) -> Stri
         .collect();
     // Stats walk every triangle: once per solution. They and the bounds are
     // in the user's units (the run may have scaled decimal input).
-    let units = optri::io::ComparisonReport::new(results).with_input(&run.read);
+    let units = optri::io::ComparisonReport::new(results).with_input(run.read());
     let stats: Vec<optri::Stats> = solved.iter().map(|s| units.report(s).stats()).collect();
     // Each cell's text; the best (by the value shown) gets a `*`.
     let mut cells: Vec<Vec<String>> = solved
@@ -393,6 +397,6 @@ pub(crate) fn comparison_table(run: &Run, results: &[optri::Comparison]) -> Stri
             text.push_str(&format!("refused: {}: {e}\n", criterion.name()));
         }
     }
-    text.push_str(&format!("time: {}\n", timing_text(&run.timing.phases)));
+    text.push_str(&format!("time: {}\n", timing_text(run.phases())));
     text
 }

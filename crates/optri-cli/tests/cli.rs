@@ -937,7 +937,7 @@ fn polygon_inputs_are_triangulated_inside_by_every_polygon_criterion() {
     for input in [&geojson, &poly] {
         for c in optri::Criterion::ALL
             .iter()
-            .filter(|c| c.supports_polygons())
+            .filter(|c| c.accepts(optri::InputKind::SimplePolygon))
         {
             let json = stdout_json(&run(&[
                 "triangulate",

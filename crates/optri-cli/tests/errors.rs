@@ -266,8 +266,8 @@ fn every_unsupported_combination_says_what_would_work() {
                 "--metric",
                 "l1",
             ],
-            "delaunay does not take a metric other than euclidean (got l1); metrics apply to \
-             minmax-length and the rng and mst graphs",
+            "square.txt: delaunay does not take a metric other than euclidean (got l1); what \
+             takes one: minmax-length, rng, mst",
         ),
         (
             &[
@@ -278,12 +278,12 @@ fn every_unsupported_combination_says_what_would_work() {
                 "--metric",
                 "lp:0",
             ],
-            "--metric: lp:0: the exponent must be an integer 1 ≤ P ≤ 64",
+            "--metric: invalid metric: lp:0: the exponent must be an integer 1 ≤ P ≤ 64",
         ),
         (
             &["graph", "square.txt", "--kind", "gabriel", "--metric", "l1"],
-            "square.txt: gabriel does not take a metric other than euclidean (got l1); metrics \
-             apply to minmax-length and the rng and mst graphs",
+            "square.txt: gabriel does not take a metric other than euclidean (got l1); what takes \
+             one: minmax-length, rng, mst",
         ),
         (
             &["triangulate", "square.txt", "--criterion", "prettiest"],

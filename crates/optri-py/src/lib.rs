@@ -20,152 +20,65 @@ mod triangulation;
 
 use convert::{file_err, index_array, json_text_to_py, point_array, points_arg, to_py_err};
 use numpy::PyArray2;
-use optri::io::{self, GraphReport, Input, InputFormat, ReadInput};
-use optri::{Criterion, Error, GraphKind, Options, Phase, PointSet, SimplePolygon};
-use pyo3::exceptions::PyValueError;
+use optri::io::{self, Input, InputFormat};
+use optri::request::{Outcome, Request, Results, Task};
+use optri::{Error, Phase};
+use pyo3::exceptions::{PyRuntimeError, PyTypeError};
 use pyo3::prelude::*;
-use pyo3::types::{PyDict, PyList};
+use pyo3::types::PyDict;
 use std::path::PathBuf;
 use std::sync::Arc;
-use std::time::Instant;
 use triangulation::Triangulation;
 
-fn ms_since(start: Instant) -> f64 {
-    start.elapsed().as_secs_f64() * 1e3
-}
-
-/// The library's options for `criteria` from Python keyword arguments, each
-/// checked against the option names the registry lists for them
-/// ([`optri::CriterionInfo::options`]).
-///
-/// Keywords are the options the registry lists for the criteria
-/// (`CriterionInfo::options`, e.g. minmax-length's `metric`); anything else
-/// is refused naming what is available.
-fn options_from(criteria: &[Criterion], kwargs: Option<&Bound<'_, PyDict>>) -> PyResult<Options> {
-    let options = Options::default();
-    let Some(kwargs) = kwargs else {
-        return Ok(options);
-    };
-    let mut available: Vec<&str> = criteria
-        .iter()
-        .flat_map(|c| c.info().options.iter().copied())
-        .collect();
-    available.sort_unstable();
-    available.dedup();
-    let whose = match criteria {
-        [one] => format!("criterion {}", one.name()),
-        _ => "these criteria".to_string(),
-    };
-    let mut options = options;
-    for (key, value) in kwargs.iter() {
-        let key: String = key.extract()?;
-        if !available.contains(&key.as_str()) {
-            return Err(PyValueError::new_err(format!(
-                "unknown option '{key}' for {whose}; available: {}",
-                if available.is_empty() {
-                    "none".to_string()
-                } else {
-                    available.join(", ")
-                }
-            )));
-        }
-        match key.as_str() {
-            "metric" => {
-                let text: String = value.extract().map_err(|_| {
-                    PyValueError::new_err(
-                        "metric must be a string: euclidean, l1, linf, lp:P or polygon:x1,y1,...",
-                    )
-                })?;
-                let metric = optri::kernel::Metric::parse(&text)
-                    .map_err(|e| PyValueError::new_err(format!("metric: {e}")))?;
-                options = options.with_metric(metric);
-            }
-            _ => {
-                return Err(PyValueError::new_err(format!(
-                    "option '{key}' of {whose} is not passed through by these Python bindings yet"
-                )))
-            }
+/// A request for `task` on `input` (read at the decimals Python shows,
+/// [`io::doubles_as_decimals`]) with the keyword arguments as options by
+/// name: each checked against what the task reads (the registry's
+/// declarations), its value a string or a number.
+fn request(task: Task, input: Input, kwargs: Option<&Bound<'_, PyDict>>) -> PyResult<Request> {
+    let mut request = Request::new(io::doubles_as_decimals(input), task);
+    if let Some(kwargs) = kwargs {
+        for (key, value) in kwargs.iter() {
+            let key: String = key.extract()?;
+            let text = if let Ok(text) = value.extract::<String>() {
+                text
+            } else if value.is_instance_of::<pyo3::types::PyBool>() {
+                return Err(PyTypeError::new_err(format!(
+                    "option {key} takes a string or a number, not a bool"
+                )));
+            } else if let Ok(number) = value.extract::<f64>() {
+                number.to_string()
+            } else {
+                return Err(PyTypeError::new_err(format!(
+                    "option {key} takes a string or a number, not {}",
+                    value.get_type().name()?
+                )));
+            };
+            request.set_option(&key, &text).map_err(to_py_err)?;
         }
     }
-    Ok(options)
+    Ok(request)
 }
 
-/// The options of a graph: its metric (`None`: Euclidean), read by the RNG
-/// and the MST.
-fn graph_options(metric: Option<&str>) -> PyResult<Options> {
-    Ok(match metric {
-        None => Options::default(),
-        Some(m) => Options::default().with_metric(
-            optri::kernel::Metric::parse(m)
-                .map_err(|e| PyValueError::new_err(format!("metric: {e}")))?,
-        ),
+/// Runs `request` without the GIL.
+fn run(py: Python<'_>, request: Request) -> PyResult<Outcome> {
+    py.detach(|| {
+        let mut outcome = request.run()?;
+        outcome.finish();
+        Ok::<_, Error>(outcome)
     })
+    .map_err(to_py_err)
 }
 
-/// Python floats read at their decimal values ([`io::doubles_as_decimals`]:
-/// each coordinate's shortest repr when every one has at most 15
-/// significant digits), the validated working points, and the `validate`
-/// phase.
-fn point_set(points: Vec<[f64; 2]>) -> optri::Result<(Arc<ReadInput>, PointSet, Phase)> {
-    let start = Instant::now();
-    let read = io::doubles_as_decimals(Input::Points(points));
-    let set = PointSet::new(read.working_points())?;
-    Ok((
-        Arc::new(read),
-        set,
-        Phase {
-            name: "validate",
-            ms: ms_since(start),
-        },
-    ))
-}
-
-/// One criterion on a validated point set, timed as the CLI times it
-/// (`validate`, the library's phases, `total` since `start`).
-fn solve(
-    read: &Arc<ReadInput>,
-    set: &PointSet,
-    validate: &Phase,
-    criterion: Criterion,
-    options: &Options,
-) -> optri::Result<Timed> {
-    let start = Instant::now();
-    let solution = optri::triangulate_with(set, criterion, options)?;
-    Ok(timed(solution, read, validate, start))
-}
-
-/// `solution` with its phases between `validate` and `total` (since `start`,
-/// plus the validation).
-fn timed(
-    solution: optri::Solution,
-    read: &Arc<ReadInput>,
-    validate: &Phase,
-    start: Instant,
-) -> Timed {
-    let mut phases = vec![validate.clone()];
-    phases.extend(solution.phases.iter().cloned());
-    phases.push(Phase {
-        name: "total",
-        ms: validate.ms + ms_since(start),
-    });
-    Timed {
-        solution,
-        read: Arc::clone(read),
-        phases,
-    }
-}
-
-/// A library result, the input it was computed from (the user's values and
-/// the arithmetic) and the phases its document reports.
-struct Timed {
-    solution: optri::Solution,
-    read: Arc<ReadInput>,
-    phases: Vec<Phase>,
-}
-
-impl Timed {
-    fn into_py(self, py: Python<'_>) -> PyResult<Triangulation> {
-        Triangulation::new(py, self.solution, self.read, self.phases)
+/// The `Triangulation` of a triangulate request's outcome.
+fn triangulation_of(py: Python<'_>, outcome: Outcome) -> PyResult<Triangulation> {
+    let (read, phases, results) = outcome.into_parts();
+    match results {
+        Results::Triangulation(solution) => {
+            Triangulation::new(py, *solution, Arc::new(read), phases)
+        }
+        _ => Err(PyRuntimeError::new_err(
+            "internal error: not a triangulation",
+        )),
     }
 }
 
@@ -176,14 +89,17 @@ impl Timed {
 /// shows when every coordinate's repr has at most 15 significant digits
 /// (``coordinate_arithmetic`` is then "decimal-exact": 0.1, 0.2, 0.3 are
 /// collinear as written); otherwise at its binary value ("binary64").
-/// ``criterion``: a name from ``criteria()``,
-/// case-insensitive. Keyword arguments are the criterion's options from the
-/// registry (``criteria()[i]["options"]``). Returns a ``Triangulation``.
+/// ``criterion``: a name from ``criteria()``, case-insensitive. Keyword
+/// arguments are options by name (``registry()["options"]``): those the
+/// criterion lists (``criteria()[i]["options"]``, e.g. ``metric="l1"`` for
+/// minmax-length) and the run controls every criterion takes
+/// (``time_limit=`` seconds). Returns a ``Triangulation``.
 ///
 /// Raises ValueError with the library's message for NaN or infinite
 /// coordinates, a wrong shape, fewer than 3 distinct points, all points
-/// collinear, an unknown criterion or option, or an input the criterion
-/// does not support (e.g. min-weight on points not in convex position).
+/// collinear, an unknown criterion or option, an input the criterion does
+/// not support, or a run stopped by its time limit; TypeError for an option
+/// value that is neither a string nor a number.
 #[pyfunction]
 #[pyo3(signature = (points, criterion = "delaunay", **options))]
 fn triangulate(
@@ -192,16 +108,10 @@ fn triangulate(
     criterion: &str,
     options: Option<&Bound<'_, PyDict>>,
 ) -> PyResult<Triangulation> {
-    let criterion = Criterion::from_name(criterion).map_err(to_py_err)?;
-    let options = options_from(&[criterion], options)?;
+    let task = Task::triangulate(criterion).map_err(to_py_err)?;
     let points = points_arg(py, points, "points")?;
-    let result = py
-        .detach(|| {
-            let (read, set, validate) = point_set(points)?;
-            solve(&read, &set, &validate, criterion, &options)
-        })
-        .map_err(to_py_err)?;
-    result.into_py(py)
+    let request = request(task, Input::Points(points), options)?;
+    triangulation_of(py, run(py, request)?)
 }
 
 /// Triangulates the interior of the simple polygon ``vertices`` (an (n, 2)
@@ -220,34 +130,18 @@ fn triangulate_polygon(
     criterion: &str,
     options: Option<&Bound<'_, PyDict>>,
 ) -> PyResult<Triangulation> {
-    let criterion = Criterion::from_name(criterion).map_err(to_py_err)?;
-    let options = options_from(&[criterion], options)?;
+    let task = Task::triangulate(criterion).map_err(to_py_err)?;
     let ring = points_arg(py, vertices, "vertices")?;
-    let result = py
-        .detach(|| {
-            let start = Instant::now();
-            let read = Arc::new(io::doubles_as_decimals(Input::Polygon(ring)));
-            let polygon = SimplePolygon::new(read.working_points())?;
-            let validate = Phase {
-                name: "validate",
-                ms: ms_since(start),
-            };
-            let start = Instant::now();
-            let solution = optri::triangulate_polygon_with(&polygon, criterion, &options)?;
-            Ok::<_, Error>(timed(solution, &read, &validate, start))
-        })
-        .map_err(to_py_err)?;
-    result.into_py(py)
+    let request = request(task, Input::Polygon(ring), options)?;
+    triangulation_of(py, run(py, request)?)
 }
 
 /// Triangulates ``points`` by several criteria: a dict from criterion name
-/// to ``Triangulation``, in registry order.
-///
-/// ``criteria=None`` runs every criterion of the registry that accepts the
-/// input and leaves out those that refuse it (e.g. min-weight on points not
-/// in convex position); a list of names runs exactly those and raises
-/// ValueError if one refuses the input. Keyword arguments are options, as
-/// for ``triangulate``.
+/// to its result, in the order asked (``criteria=None``: every criterion of
+/// the registry, in registry order). A criterion that refuses the input is
+/// reported, not dropped: its value is the ``ValueError`` it would raise
+/// (not raised), e.g. min-weight's refusal of a metric. Keyword arguments
+/// are options, as for ``triangulate`` (those any of the criteria reads).
 #[pyfunction]
 #[pyo3(signature = (points, criteria = None, **options))]
 fn compare(
@@ -256,35 +150,37 @@ fn compare(
     criteria: Option<Vec<String>>,
     options: Option<&Bound<'_, PyDict>>,
 ) -> PyResult<Py<PyDict>> {
-    let every = criteria.is_none();
-    let chosen: Vec<Criterion> = match criteria {
-        None => Criterion::ALL.to_vec(),
-        Some(names) => names
-            .iter()
-            .map(|name| Criterion::from_name(name))
-            .collect::<optri::Result<_>>()
-            .map_err(to_py_err)?,
-    };
-    let options = options_from(&chosen, options)?;
+    let task = Task::compare(&criteria.unwrap_or_default()).map_err(to_py_err)?;
     let points = points_arg(py, points, "points")?;
-    let results = py
-        .detach(|| {
-            let (read, set, validate) = point_set(points)?;
-            let mut results = Vec::with_capacity(chosen.len());
-            for &criterion in &chosen {
-                match solve(&read, &set, &validate, criterion, &options) {
-                    Ok(result) => results.push((criterion, result)),
-                    // "Every criterion that accepts the input."
-                    Err(Error::Unsupported { .. }) if every => {}
-                    Err(e) => return Err(e),
-                }
-            }
-            Ok(results)
-        })
-        .map_err(to_py_err)?;
+    let request = request(task, Input::Points(points), options)?;
+    let (read, phases, results) = run(py, request)?.into_parts();
+    let Results::Comparison(results) = results else {
+        return Err(PyRuntimeError::new_err("internal error: not a comparison"));
+    };
+    let read = Arc::new(read);
+    let validate: Vec<Phase> = phases
+        .iter()
+        .filter(|p| p.name == "validate")
+        .cloned()
+        .collect();
     let dict = PyDict::new(py);
     for (criterion, result) in results {
-        dict.set_item(criterion.name(), result.into_py(py)?)?;
+        match result {
+            Ok(solution) => {
+                // Each result is timed as `triangulate` times it: the
+                // validation, its own phases, and their total.
+                let mut own = validate.clone();
+                own.extend(solution.phases.iter().cloned());
+                let total = own.iter().map(|p| p.ms).sum();
+                own.push(Phase {
+                    name: "total",
+                    ms: total,
+                });
+                let t = Triangulation::new(py, solution, Arc::clone(&read), own)?;
+                dict.set_item(criterion.name(), Py::new(py, t)?)?;
+            }
+            Err(e) => dict.set_item(criterion.name(), to_py_err(e).into_value(py))?,
+        }
     }
     Ok(dict.unbind())
 }
@@ -292,93 +188,70 @@ fn compare(
 /// The edges of the proximity graph ``kind`` of ``points`` as a (k, 2) int64
 /// array of input indices: ``[min, max]`` pairs, sorted, except "hull",
 /// whose edges ``[a, b]`` go counter-clockwise. Kinds: ``graph_kinds()``
-/// ("hull", "delaunay", "rng", "gabriel", "mst"). Raises ValueError for an
-/// unknown kind or bad points.
+/// ("hull", "delaunay", "rng", "gabriel", "mst"). Two distinct points and
+/// points all on one line are accepted, as by the CLI (the graph is then
+/// the path through them). Keyword arguments are options (``metric`` for
+/// "rng" and "mst"). Raises ValueError for an unknown kind or bad points.
 #[pyfunction]
-#[pyo3(signature = (points, kind, metric=None))]
+#[pyo3(signature = (points, kind, **options))]
 fn graph<'py>(
     py: Python<'py>,
     points: &Bound<'py, PyAny>,
     kind: &str,
-    metric: Option<&str>,
+    options: Option<&Bound<'py, PyDict>>,
 ) -> PyResult<Bound<'py, PyArray2<i64>>> {
-    let kind = GraphKind::from_name(kind).map_err(to_py_err)?;
-    let options = graph_options(metric)?;
+    let task = Task::graph(kind).map_err(to_py_err)?;
     let points = points_arg(py, points, "points")?;
-    let (edges, _phases) = py
-        .detach(|| {
-            let (_, set, _) = point_set(points)?;
-            optri::graph_with(&set, kind, &options)
-        })
-        .map_err(to_py_err)?;
-    Ok(index_array(py, &edges)?.into_bound(py))
+    let outcome = run(py, request(task, Input::Points(points), options)?)?;
+    let (_, graph) = outcome
+        .graph()
+        .ok_or_else(|| PyRuntimeError::new_err("internal error: not a graph"))?;
+    Ok(index_array(py, &graph.edges)?.into_bound(py))
 }
 
 /// The JSON document ``optri graph --kind KIND --json`` prints for
 /// ``points``, as a dict (kind, distinct_points, duplicates, timing_ms,
-/// edges, coordinates).
+/// edges, coordinates). Keyword arguments as for ``graph``.
 #[pyfunction]
+#[pyo3(signature = (points, kind, **options))]
 fn graph_document<'py>(
     py: Python<'py>,
     points: &Bound<'py, PyAny>,
     kind: &str,
+    options: Option<&Bound<'py, PyDict>>,
 ) -> PyResult<Bound<'py, PyAny>> {
-    let kind = GraphKind::from_name(kind).map_err(to_py_err)?;
+    let task = Task::graph(kind).map_err(to_py_err)?;
     let points = points_arg(py, points, "points")?;
-    let text = py
-        .detach(|| {
-            let start = Instant::now();
-            let (read, set, validate) = point_set(points)?;
-            let (edges, phases) = optri::graph(&set, kind)?;
-            let mut timing = vec![validate];
-            timing.extend(phases);
-            timing.push(Phase {
-                name: "total",
-                ms: ms_since(start),
-            });
-            let report = GraphReport::of_graph(&set, kind, &edges)
-                .with_input(&read)
-                .with_timing(&timing);
-            serde_json::to_string(&report)
-                .map_err(|e| Error::Internal(format!("cannot write the JSON document: {e}")))
-        })
-        .map_err(to_py_err)?;
+    let outcome = run(py, request(task, Input::Points(points), options)?)?;
+    let text = serde_json::to_string(&outcome.document())
+        .map_err(|e| PyRuntimeError::new_err(format!("cannot write the JSON document: {e}")))?;
     json_text_to_py(py, &text)
 }
 
-/// Every criterion of the registry, in display order: a list of dicts with
-/// "name", "description", "optimality" (the guarantee on accepted inputs),
-/// "options" (the keyword arguments it takes), "polygons" (whether
-/// ``triangulate_polygon`` takes it) and "reference" (the paper).
+/// The registry listing: the document ``optri criteria --json`` prints and
+/// the web API's ``GET /api/criteria`` returns, as a dict: "criteria"
+/// (name, description, optimality, inputs, options, reference), "graphs",
+/// "options" (name, description, values, default), "input_formats" and
+/// "measures" (the ``stats`` keys, with which direction is better).
 #[pyfunction]
-fn criteria(py: Python<'_>) -> PyResult<Bound<'_, PyList>> {
-    let list = PyList::empty(py);
-    for &criterion in Criterion::ALL {
-        let info = criterion.info();
-        let entry = PyDict::new(py);
-        entry.set_item("name", info.name)?;
-        entry.set_item("description", info.description)?;
-        entry.set_item("optimality", info.optimality.name())?;
-        entry.set_item("options", info.options.to_vec())?;
-        entry.set_item("polygons", criterion.supports_polygons())?;
-        entry.set_item("reference", info.reference)?;
-        list.append(entry)?;
-    }
-    Ok(list)
+fn registry<'py>(py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+    json_text_to_py(py, &io::registry_listing().to_string())
 }
 
-/// Every proximity graph kind of the registry: a list of dicts with "name"
-/// and "description".
+/// Every criterion of the registry, in display order: the listing's
+/// "criteria" (see ``registry()``): dicts with "name", "description",
+/// "optimality", "inputs" ("points", "polygon"), "options" (the keyword
+/// arguments it takes) and "reference" (the paper).
 #[pyfunction]
-fn graph_kinds(py: Python<'_>) -> PyResult<Bound<'_, PyList>> {
-    let list = PyList::empty(py);
-    for &kind in GraphKind::ALL {
-        let entry = PyDict::new(py);
-        entry.set_item("name", kind.name())?;
-        entry.set_item("description", kind.description())?;
-        list.append(entry)?;
-    }
-    Ok(list)
+fn criteria<'py>(py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+    registry(py)?.get_item("criteria")
+}
+
+/// Every proximity graph kind of the registry: the listing's "graphs"
+/// (dicts with "name", "description" and "options").
+#[pyfunction]
+fn graph_kinds<'py>(py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+    registry(py)?.get_item("graphs")
 }
 
 fn input_format(format: Option<&str>) -> PyResult<Option<InputFormat>> {
@@ -433,8 +306,8 @@ fn read_polygon<'py>(
 /// as scipy.spatial.Delaunay: ``points``, ``simplices``; plus ``exact``,
 /// ``algorithm``, ``stats``, ``timing_ms``, ``duplicates`` and the whole JSON
 /// ``document``); ``graph(points, kind)`` an edge array; ``compare`` every
-/// criterion at once; ``criteria()`` and ``graph_kinds()`` list the
-/// registry; ``read_points(path)`` reads the library's file formats.
+/// criterion at once; ``registry()`` is the registry listing (the JSON of
+/// ``optri criteria --json``), ``criteria()`` and ``graph_kinds()`` its parts; ``read_points(path)`` reads the library's file formats.
 #[pymodule]
 #[pyo3(name = "optri")]
 fn optri_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
@@ -446,6 +319,7 @@ fn optri_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(compare, m)?)?;
     m.add_function(wrap_pyfunction!(graph, m)?)?;
     m.add_function(wrap_pyfunction!(graph_document, m)?)?;
+    m.add_function(wrap_pyfunction!(registry, m)?)?;
     m.add_function(wrap_pyfunction!(criteria, m)?)?;
     m.add_function(wrap_pyfunction!(graph_kinds, m)?)?;
     m.add_function(wrap_pyfunction!(read_points, m)?)?;

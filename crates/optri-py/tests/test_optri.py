@@ -289,7 +289,7 @@ def test_graph_document_is_the_clis_graph_document():
     assert doc["schema_version"] == optri.SCHEMA_VERSION
     assert doc["duplicates"] == [[9, 4]] and doc["distinct_points"] == 9
     assert len(doc["edges"]) == 12
-    assert list(doc["timing_ms"]) == ["validate", "rng", "total"]
+    assert list(doc["timing_ms"]) == ["rng", "total"]
 
 
 # --- the document and the CLI ---------------------------------------------
@@ -371,7 +371,7 @@ def test_write_and_read_back(tmp_path):
 L_SHAPE = [(0, 0), (0, 2), (1, 2), (1, 1), (2, 1), (2, 0)]  # clockwise
 
 
-@pytest.mark.parametrize("criterion", [c["name"] for c in optri.criteria() if c["polygons"]])
+@pytest.mark.parametrize("criterion", [c["name"] for c in optri.criteria() if "polygon" in c["inputs"]])
 def test_polygon_interior(criterion):
     t = optri.triangulate_polygon(L_SHAPE, criterion=criterion)
     assert t.domain == "polygon" and len(t.simplices) == len(L_SHAPE) - 2
@@ -397,9 +397,11 @@ def test_criteria_and_kinds_come_from_the_registry():
     entries = optri.criteria()
     assert names()[:3] == ["delaunay", "minmax-length", "greedy"]
     for e in entries:
-        assert set(e) == {"name", "description", "optimality", "options", "polygons", "reference"}
+        assert set(e) == {"name", "description", "optimality", "inputs", "options", "reference"}
         assert e["description"] and e["reference"]
     assert [k["name"] for k in optri.graph_kinds()] == ["hull", "delaunay", "rng", "gabriel", "mst"]
+    registry = optri.registry()
+    assert registry["document"] == "criteria" and registry["criteria"] == entries
     # Names are case-insensitive, as in the CLI.
     assert optri.triangulate(SQUARE_AND_CENTRE, "DELAUNAY").criterion == "delaunay"
 
@@ -407,8 +409,14 @@ def test_criteria_and_kinds_come_from_the_registry():
 def test_compare_named_criteria_runs_exactly_those():
     r = optri.compare(SQUARE_AND_CENTRE, criteria=["greedy", "delaunay"])
     assert list(r) == ["greedy", "delaunay"]
-    with pytest.raises(ValueError, match="unknown option 'metric' for criterion delaunay"):
+    with pytest.raises(ValueError, match="unknown option 'metric' for these criteria"):
         optri.compare(SQUARE_AND_CENTRE, criteria=["delaunay"], metric="l1")
+    # A refusal is reported as the error it would raise, not dropped.
+    r = optri.compare(SQUARE_AND_CENTRE, metric="l1")
+    assert list(r) == names()
+    assert isinstance(r["minmax-length"], optri.Triangulation)
+    assert isinstance(r["delaunay"], ValueError)
+    assert "delaunay does not take a metric other than euclidean" in str(r["delaunay"])
 
 
 # --- bad input -----------------------------------------------------------------
@@ -442,21 +450,34 @@ def test_unknown_names_list_what_is_available():
     assert "unknown criterion 'fastest'; available: " + ", ".join(names()) in str(e.value)
     with pytest.raises(ValueError, match="unknown graph kind 'voronoi'; available: hull, delaunay, rng, gabriel, mst"):
         optri.graph(SQUARE_AND_CENTRE, kind="voronoi")
-    with pytest.raises(ValueError, match="unknown option 'metric' for criterion delaunay; available: none"):
+    with pytest.raises(ValueError, match="unknown option 'metric' for criterion delaunay; available: time_limit"):
         optri.triangulate(SQUARE_AND_CENTRE, criterion="delaunay", metric="l1")
-    with pytest.raises(ValueError, match="unknown option 'colour' for criterion minmax-length; available: metric"):
+    with pytest.raises(ValueError, match="unknown option 'colour' for criterion minmax-length; available: metric, time_limit"):
         optri.triangulate(SQUARE_AND_CENTRE, criterion="minmax-length", colour="red")
-    with pytest.raises(ValueError, match="metric: "):
+    with pytest.raises(ValueError, match="invalid metric: "):
         optri.triangulate(SQUARE_AND_CENTRE, criterion="minmax-length", metric="lp:0")
-    with pytest.raises(ValueError, match="metric must be a string"):
+    with pytest.raises(ValueError, match="invalid metric: "):
         optri.triangulate(SQUARE_AND_CENTRE, criterion="minmax-length", metric=1)
+    with pytest.raises(TypeError, match="option metric takes a string or a number"):
+        optri.triangulate(SQUARE_AND_CENTRE, criterion="minmax-length", metric=[1])
+    with pytest.raises(ValueError, match="time_limit: '-1' is not a positive number of seconds"):
+        optri.triangulate(SQUARE_AND_CENTRE, time_limit=-1)
     with pytest.raises(ValueError, match="unknown input format 'xls'"):
         optri.read_points("points.xls", format="xls")
 
 
 def test_unsupported_input_names_the_criterion():
-    with pytest.raises(ValueError, match="gabriel does not take a metric other than euclidean"):
+    with pytest.raises(ValueError, match="unknown option 'metric' for graph gabriel"):
         optri.graph(SQUARE_AND_CENTRE, "gabriel", metric="l1")
+
+
+def test_graphs_take_two_and_collinear_points_as_the_cli_does():
+    assert optri.graph([[5, 1], [-1, 1]], "mst").tolist() == [[0, 1]]
+    line = [[2, 4], [0, 0], [3, 6], [1, 2], [0, 0]]
+    assert optri.graph(line, "rng").tolist() == [[0, 2], [0, 3], [1, 3]]
+    assert optri.graph_document(line, "gabriel")["duplicates"] == [[4, 1]]
+    with pytest.raises(ValueError, match="a graph needs at least 2 distinct points"):
+        optri.graph([[1, 1], [1, 1]], "mst")
 
 
 def test_read_points_formats_and_errors(tmp_path):

@@ -73,6 +73,28 @@ pub enum Error {
         /// Why.
         reason: UnsupportedReason,
     },
+    /// An option that the criterion or graph asked for does not read (see
+    /// [`crate::request::Request::set_option`]).
+    UnknownOption {
+        /// The option as given.
+        name: String,
+        /// What was asked for, e.g. `"criterion delaunay"`.
+        of: String,
+        /// The options it reads.
+        available: Vec<&'static str>,
+    },
+    /// An option value that cannot be used (see
+    /// [`Options::set`](crate::Options::set)): names the option and says why.
+    InvalidOption {
+        /// The option's name, e.g. `"time_limit"`.
+        option: &'static str,
+        /// What is wrong with the value, in words.
+        message: String,
+    },
+    /// The run was stopped before it finished: its time limit passed or it
+    /// was cancelled ([`crate::Options::with_time_limit`],
+    /// [`crate::Options::with_cancel`]).
+    Interrupted(Interruption),
     /// A triangulation failed [`crate::Triangulation::validate`].
     InvalidTriangulation(String),
     /// An internal consistency check failed: this is a bug in optri, please
@@ -84,13 +106,6 @@ pub enum Error {
 #[derive(Clone, Debug, PartialEq, Eq)]
 #[non_exhaustive]
 pub enum UnsupportedReason {
-    /// The algorithm needs every point on the convex hull.
-    NotConvexPosition {
-        /// Distinct points strictly inside the hull.
-        interior: usize,
-        /// All distinct points.
-        distinct: usize,
-    },
     /// The algorithm needs a strictly convex polygon (every vertex a
     /// strictly convex corner, no three consecutive vertices collinear).
     NotStrictlyConvex,
@@ -103,23 +118,32 @@ pub enum UnsupportedReason {
         /// What limits it, e.g. `"Klincsek's O(n³) program with O(n²) tables"`.
         because: &'static str,
     },
-    /// The algorithm needs points in convex position or a simple polygon
-    /// ([`crate::triangulate_polygon`]); general point sets are not
-    /// supported yet.
-    NotConvexPositionOrPolygon {
-        /// Distinct points strictly inside the hull.
-        interior: usize,
-        /// All distinct points.
-        distinct: usize,
+    /// The criterion does not triangulate polygons (yet).
+    NoPolygonInput {
+        /// The registry names of the criteria that do.
+        accepted_by: Vec<&'static str>,
     },
-    /// The criterion does not accept a polygon as input (yet).
-    NoPolygonInput,
-    /// The criterion has no meaning under a non-Euclidean metric (angles,
-    /// areas) or does not implement it yet; names the metric.
+    /// The criterion or graph has no meaning under a non-Euclidean metric
+    /// (angles, areas) or does not implement it yet; names the metric.
     MetricNotSupported {
         /// The metric's name, e.g. `"l1"`.
         metric: String,
+        /// The registry names of the criteria and graphs that take one.
+        taken_by: Vec<&'static str>,
     },
+}
+
+/// Why a run stopped early ([`Error::Interrupted`]).
+#[derive(Clone, Debug, PartialEq)]
+#[non_exhaustive]
+pub enum Interruption {
+    /// The time limit passed.
+    TimeLimit {
+        /// The limit, seconds.
+        seconds: f64,
+    },
+    /// The run's [`Cancel`](crate::Cancel) flag was raised.
+    Cancelled,
 }
 
 /// What makes a vertex cycle not a simple polygon ([`Error::InvalidPolygon`]).
@@ -199,11 +223,6 @@ impl fmt::Display for Error {
                 available.join(", ")
             ),
             Error::Unsupported { criterion, reason } => match reason {
-                UnsupportedReason::NotConvexPosition { interior, distinct } => write!(
-                    f,
-                    "{criterion} is only supported for points in convex position yet \
-                     ({interior} of {distinct} distinct points are interior to the convex hull)"
-                ),
                 UnsupportedReason::NotStrictlyConvex => write!(
                     f,
                     "{criterion} here needs a strictly convex polygon (every vertex a strictly \
@@ -218,22 +237,39 @@ impl fmt::Display for Error {
                     "{criterion} ({because}) is limited to {limit} points; this input has \
                      {distinct} distinct points"
                 ),
-                UnsupportedReason::NotConvexPositionOrPolygon { interior, distinct } => write!(
-                    f,
-                    "{criterion} is not supported for general point sets yet: it needs points in \
-                     convex position or a simple polygon ({interior} of {distinct} distinct points \
-                     are interior to the convex hull)"
-                ),
-                UnsupportedReason::MetricNotSupported { metric } => write!(
+                UnsupportedReason::MetricNotSupported { metric, taken_by } => write!(
                     f,
                     "{criterion} does not take a metric other than euclidean (got {metric}); \
-                     metrics apply to minmax-length and the rng and mst graphs"
+                     what takes one: {}",
+                    taken_by.join(", ")
                 ),
-                UnsupportedReason::NoPolygonInput => write!(
+                UnsupportedReason::NoPolygonInput { accepted_by } => write!(
                     f,
-                    "{criterion} does not accept a polygon as input yet"
+                    "{criterion} does not triangulate polygons yet; criteria that do: {}",
+                    accepted_by.join(", ")
                 ),
             },
+            Error::UnknownOption {
+                name,
+                of,
+                available,
+            } => write!(
+                f,
+                "unknown option '{name}' for {of}; available: {}",
+                if available.is_empty() {
+                    "none".to_string()
+                } else {
+                    available.join(", ")
+                }
+            ),
+            Error::InvalidOption { option, message } => write!(f, "option {option}: {message}"),
+            Error::Interrupted(Interruption::TimeLimit { seconds }) => write!(
+                f,
+                "stopped: the time limit of {seconds} s passed before the run finished"
+            ),
+            Error::Interrupted(Interruption::Cancelled) => {
+                write!(f, "stopped: the run was cancelled")
+            }
             Error::InvalidTriangulation(message) => write!(f, "invalid triangulation: {message}"),
             Error::Internal(message) => write!(
                 f,

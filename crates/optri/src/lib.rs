@@ -42,12 +42,15 @@ mod error;
 mod graphs;
 #[cfg(feature = "internals")]
 pub mod internals;
+mod interrupt;
 #[cfg(feature = "io")]
 pub mod io;
 pub mod kernel;
 mod parallel;
 mod polygon_program;
 mod registry;
+#[cfg(feature = "io")]
+pub mod request;
 mod spatial;
 mod structures;
 mod timing;
@@ -58,20 +61,21 @@ pub use criteria::min_weight::min_weight;
 pub use criteria::minmax_length::minmax_length;
 pub use criteria::polygon_criteria::MAX_POLYGON_VERTICES;
 pub use criteria::{
-    BoundMeasure, CertifiedBound, CriterionInfo, Diagnostics, Optimality, Options, Progress,
-    Requirement,
+    BoundMeasure, CertifiedBound, CriterionInfo, Diagnostics, InputKind, Optimality, OptionInfo,
+    Options, Progress, OPTIONS,
 };
-pub use error::{Error, PolygonProblem, Result, UnsupportedReason};
+pub use error::{Error, Interruption, PolygonProblem, Result, UnsupportedReason};
 pub use graphs::{
     convex_hull, convex_hull_edges, delaunay, delaunay_edges, gabriel_graph, minimum_spanning_tree,
     minimum_spanning_tree_under, relative_neighborhood_graph, relative_neighborhood_graph_under,
 };
+pub use interrupt::Cancel;
 pub use registry::{
     compare, compare_polygon, graph, graph_of_points, graph_of_points_with, graph_with,
     triangulate, triangulate_polygon, triangulate_polygon_with, triangulate_with, Comparison,
     Criterion, GraphKind, PointGraph, Solution,
 };
-pub use structures::{Domain, PointSet, SimplePolygon, Stats, Triangulation};
+pub use structures::{Better, Domain, Measure, PointSet, SimplePolygon, Stats, Triangulation};
 pub use timing::Phase;
 
 /// The README's Rust examples, compiled and run as doctests.

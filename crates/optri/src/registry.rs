@@ -1,87 +1,84 @@
 //! Layer 6: the registry the front ends share (CLI, demo, Python, web). It
-//! lists every criterion and every graph kind with its name and description,
-//! looks them up by name, and runs them: [`triangulate`] on point sets,
-//! [`triangulate_polygon`] on simple polygons, and [`graph`].
+//! lists every criterion and every graph kind with its name, description and
+//! the options it reads, looks them up by name, and runs them:
+//! [`triangulate`] on point sets, [`triangulate_polygon`] on simple
+//! polygons, [`compare`], and [`graph`].
 //!
-//! Adding a criterion costs one variant of [`Criterion`], one arm in
-//! [`Criterion::entry`] and, if it accepts polygons, one arm in
-//! [`Criterion::polygon_entry`]; everything else lives in the criterion's
-//! module.
+//! The registry reads each criterion's declaration (its `ENTRY`: info,
+//! options, solvers) and nothing else, so adding a criterion is its module
+//! and one line in [`Criterion`]'s list below.
 
 use crate::criteria::{
-    self, CertifiedBound, CriterionInfo, Diagnostics, Optimality, Options, PolygonSolver, Solved,
-    Solver,
+    self, CertifiedBound, CriterionEntry, CriterionInfo, Diagnostics, InputKind, Optimality,
+    Options, Solved,
 };
 use crate::error::{Error, Result, UnsupportedReason};
 use crate::graphs;
 use crate::structures::{PointSet, SimplePolygon, Triangulation};
 use crate::timing::{timed, Phase};
 
-/// An optimality criterion optri can triangulate by.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-#[non_exhaustive]
-pub enum Criterion {
+/// Declares [`Criterion`] from one line per criterion: its variant (with
+/// its doc comment) and its module's `ENTRY`.
+macro_rules! criteria {
+    ($($(#[doc = $doc:literal])* $variant:ident => $entry:path,)*) => {
+        /// An optimality criterion optri can triangulate by.
+        #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+        #[non_exhaustive]
+        pub enum Criterion {
+            $($(#[doc = $doc])* $variant,)*
+        }
+
+        impl Criterion {
+            /// Every implemented criterion, in display order.
+            pub const ALL: &'static [Criterion] = &[$(Criterion::$variant),*];
+
+            /// The criterion's declaration: description, options, solvers.
+            fn entry(self) -> &'static CriterionEntry {
+                match self {
+                    $(Criterion::$variant => &$entry,)*
+                }
+            }
+        }
+    };
+}
+
+criteria! {
     /// The Delaunay triangulation (maximises the smallest angle).
-    Delaunay,
-    /// Minimises the longest edge (Edelsbrunner–Tan).
-    MinmaxLength,
+    Delaunay => criteria::delaunay::ENTRY,
+    /// Minimises the longest edge (Edelsbrunner & Tan), under any norm.
+    MinmaxLength => criteria::minmax_length::ENTRY,
     /// The greedy triangulation (shortest compatible segment first).
-    Greedy,
-    /// Minimum total edge length (convex position or a polygon, for now).
-    MinWeight,
-    /// Maximises the smallest triangle area (convex position or a polygon).
-    MaxminArea,
-    /// Minimises the largest triangle area (convex position or a polygon).
-    MinmaxArea,
+    Greedy => criteria::greedy::ENTRY,
+    /// Minimum total edge length (LMT-skeleton, then exact face programs).
+    MinWeight => criteria::min_weight::ENTRY,
+    /// Maximises the smallest triangle area (exact on convex polygons,
+    /// certified approximations on general point sets).
+    MaxminArea => criteria::area::MAXMIN_ENTRY,
+    /// Minimises the largest triangle area (as MaxMin area).
+    MinmaxArea => criteria::area::MINMAX_ENTRY,
 }
 
 impl Criterion {
-    /// Every implemented criterion, in display order.
-    pub const ALL: &'static [Criterion] = &[
-        Criterion::Delaunay,
-        Criterion::MinmaxLength,
-        Criterion::Greedy,
-        Criterion::MinWeight,
-        Criterion::MaxminArea,
-        Criterion::MinmaxArea,
-    ];
-
-    /// The criterion's description and entry point.
-    fn entry(self) -> (&'static CriterionInfo, Solver) {
-        match self {
-            Criterion::Delaunay => (&criteria::delaunay::INFO, criteria::delaunay::solve),
-            Criterion::MinmaxLength => (
-                &criteria::minmax_length::INFO,
-                criteria::minmax_length::solve,
-            ),
-            Criterion::Greedy => (&criteria::greedy::INFO, criteria::greedy::solve),
-            Criterion::MinWeight => (&criteria::min_weight::INFO, criteria::min_weight::solve),
-            Criterion::MaxminArea => (&criteria::area::MAXMIN_INFO, criteria::area::solve_maxmin),
-            Criterion::MinmaxArea => (&criteria::area::MINMAX_INFO, criteria::area::solve_minmax),
+    /// Does the criterion triangulate this kind of input?
+    pub fn accepts(self, input: InputKind) -> bool {
+        match input {
+            InputKind::PointSet => true,
+            InputKind::SimplePolygon => self.entry().solve_polygon.is_some(),
         }
     }
 
-    /// The criterion's entry point for simple polygons, if it has one.
-    fn polygon_entry(self) -> Option<PolygonSolver> {
-        use criteria::polygon_criteria as polygon;
-        match self {
-            Criterion::Delaunay => Some(polygon::solve_delaunay),
-            Criterion::MinmaxLength => Some(polygon::solve_minmax_length),
-            Criterion::Greedy => Some(polygon::solve_greedy),
-            Criterion::MinWeight => Some(polygon::solve_min_weight),
-            Criterion::MaxminArea => Some(criteria::area::solve_maxmin_polygon),
-            Criterion::MinmaxArea => Some(criteria::area::solve_minmax_polygon),
-        }
+    /// The kinds of input the criterion triangulates.
+    pub fn inputs(self) -> Vec<InputKind> {
+        InputKind::ALL
+            .iter()
+            .copied()
+            .filter(|&k| self.accepts(k))
+            .collect()
     }
 
-    /// Does [`triangulate_polygon`] accept this criterion?
-    pub fn supports_polygons(self) -> bool {
-        self.polygon_entry().is_some()
-    }
-
-    /// Name, description, guarantee, requirements and reference.
+    /// Name, description, guarantee, options and reference.
     pub fn info(self) -> &'static CriterionInfo {
-        self.entry().0
+        &self.entry().info
     }
 
     /// The command-line name, e.g. `"delaunay"`, `"minmax-length"`.
@@ -92,6 +89,12 @@ impl Criterion {
     /// One line describing what is optimised.
     pub fn description(self) -> &'static str {
         self.info().description
+    }
+
+    /// The names of the options the criterion reads
+    /// ([`CriterionInfo::options`]).
+    pub fn options(self) -> &'static [&'static str] {
+        self.info().options
     }
 
     /// Looks a criterion up by its [`name`](Self::name), ignoring ASCII case
@@ -110,6 +113,37 @@ impl Criterion {
                 available: Self::ALL.iter().map(|c| c.name()).collect(),
             })
     }
+}
+
+/// Refuses the options `what` does not read (those not in `declared`) when
+/// they are set to something other than their default.
+fn check_options(what: &'static str, declared: &[&str], options: &Options) -> Result<()> {
+    match options.chosen().into_iter().find(|o| !declared.contains(o)) {
+        None => Ok(()),
+        Some("metric") => Err(Error::Unsupported {
+            criterion: what,
+            reason: UnsupportedReason::MetricNotSupported {
+                metric: options.metric.name(),
+                taken_by: takers_of("metric"),
+            },
+        }),
+        Some(other) => Err(Error::Internal(format!(
+            "option {other} has no refusal for {what}"
+        ))),
+    }
+}
+
+/// The criteria and graph kinds that read the option `name`.
+fn takers_of(name: &str) -> Vec<&'static str> {
+    let criteria = Criterion::ALL
+        .iter()
+        .filter(|c| c.options().contains(&name))
+        .map(|c| c.name());
+    let graphs = GraphKind::ALL
+        .iter()
+        .filter(|k| k.options().contains(&name))
+        .map(|k| k.name());
+    criteria.chain(graphs).collect()
 }
 
 /// The result of [`triangulate`] or [`triangulate_polygon`]: the triangulation and how it was obtained.
@@ -150,26 +184,37 @@ pub fn triangulate(points: &PointSet, criterion: Criterion) -> Result<Solution> 
 /// Triangulates `points` by `criterion` with `options`.
 ///
 /// # Errors
-/// [`Error::Unsupported`] when the criterion cannot handle the input (see
-/// [`CriterionInfo::requirement`]); [`Error::Internal`] on a bug.
+/// [`Error::Unsupported`] when the criterion cannot handle the input or
+/// does not read an option that is set (see [`CriterionInfo::options`]);
+/// [`Error::Interrupted`] when the run is cancelled or out of time and the
+/// criterion has no certified partial result; [`Error::Internal`] on a bug.
 pub fn triangulate_with(
     points: &PointSet,
     criterion: Criterion,
     options: &Options,
 ) -> Result<Solution> {
-    if !options.metric.is_euclidean() && criterion != Criterion::MinmaxLength {
-        return Err(Error::Unsupported {
-            criterion: criterion.name(),
-            reason: UnsupportedReason::MetricNotSupported {
-                metric: options.metric.name(),
-            },
-        });
-    }
+    let entry = criterion.entry();
+    check_options(criterion.name(), entry.info.options, options)?;
+    run(criterion, options, |options, phases| {
+        (entry.solve)(points, options, phases)
+    })
+}
+
+/// Runs one solver with `options` started now: the progress hook hears the
+/// start and the end, and the run stops if it is cancelled or out of time
+/// before it starts or when it ends (the solvers check inside too).
+fn run(
+    criterion: Criterion,
+    options: &Options,
+    solve: impl FnOnce(&Options, &mut Vec<Phase>) -> Result<Solved>,
+) -> Result<Solution> {
+    let options = options.started();
+    options.stop().check()?;
     let mut phases = Vec::new();
     options.report(criterion.name(), 0.0);
-    let solved = (criterion.entry().1)(points, options, &mut phases)?;
+    let solved = solve(&options, &mut phases)?;
     options.report(criterion.name(), 1.0);
-    Ok(Solution::from_solved(criterion, solved, phases, options))
+    Ok(Solution::from_solved(criterion, solved, phases, &options))
 }
 
 /// Triangulates the interior of `polygon` by `criterion` with default
@@ -194,31 +239,31 @@ pub fn triangulate_polygon(polygon: &SimplePolygon, criterion: Criterion) -> Res
 ///
 /// # Errors
 /// [`Error::Unsupported`] when the criterion takes no polygons
-/// ([`UnsupportedReason::NoPolygonInput`], see
-/// [`Criterion::supports_polygons`]) or the polygon is too large for it;
+/// ([`UnsupportedReason::NoPolygonInput`], see [`Criterion::accepts`]) or
+/// the polygon is too large for it; [`Error::Interrupted`] as
+/// [`triangulate_with`];
 /// [`Error::Internal`] on a bug.
 pub fn triangulate_polygon_with(
     polygon: &SimplePolygon,
     criterion: Criterion,
     options: &Options,
 ) -> Result<Solution> {
-    if !options.metric.is_euclidean() {
-        return Err(Error::Unsupported {
-            criterion: criterion.name(),
-            reason: UnsupportedReason::MetricNotSupported {
-                metric: options.metric.name(),
-            },
-        });
-    }
-    let solve = criterion.polygon_entry().ok_or(Error::Unsupported {
+    let entry = criterion.entry();
+    let solve = entry.solve_polygon.ok_or_else(|| Error::Unsupported {
         criterion: criterion.name(),
-        reason: UnsupportedReason::NoPolygonInput,
+        reason: UnsupportedReason::NoPolygonInput {
+            accepted_by: Criterion::ALL
+                .iter()
+                .filter(|c| c.accepts(InputKind::SimplePolygon))
+                .map(|c| c.name())
+                .collect(),
+        },
     })?;
-    let mut phases = Vec::new();
-    options.report(criterion.name(), 0.0);
-    let solved = solve(polygon, options, &mut phases)?;
-    options.report(criterion.name(), 1.0);
-    Ok(Solution::from_solved(criterion, solved, phases, options))
+    // No criterion reads a metric on polygons yet.
+    check_options(criterion.name(), &[], options)?;
+    run(criterion, options, |options, phases| {
+        solve(polygon, options, phases)
+    })
 }
 
 /// The result of one criterion in [`compare`]: its solution, or the error
@@ -378,6 +423,16 @@ impl GraphKind {
         }
     }
 
+    /// The names of the options the graph reads (of
+    /// [`crate::OPTIONS`]): `metric` for the RNG and the MST, which are
+    /// defined by length comparisons alone.
+    pub fn options(self) -> &'static [&'static str] {
+        match self {
+            GraphKind::Rng | GraphKind::Mst => &["metric"],
+            GraphKind::Hull | GraphKind::Delaunay | GraphKind::Gabriel => &[],
+        }
+    }
+
     /// Looks a graph kind up by [`name`](Self::name), ignoring ASCII case.
     ///
     /// # Errors
@@ -442,15 +497,7 @@ pub fn graph_of_points_with(
     kind: GraphKind,
     options: &Options,
 ) -> Result<PointGraph> {
-    let metric = &options.metric;
-    if !metric.is_euclidean() && !matches!(kind, GraphKind::Rng | GraphKind::Mst) {
-        return Err(Error::Unsupported {
-            criterion: kind.name(),
-            reason: UnsupportedReason::MetricNotSupported {
-                metric: metric.name(),
-            },
-        });
-    }
+    check_options(kind.name(), kind.options(), options)?;
     match PointSet::new(points) {
         Ok(point_set) => {
             let (edges, phases) = graph_with(&point_set, kind, options)?;
@@ -526,18 +573,15 @@ pub fn graph_with(
     kind: GraphKind,
     options: &Options,
 ) -> Result<(Vec<[u32; 2]>, Vec<Phase>)> {
+    check_options(kind.name(), kind.options(), options)?;
+    options.started().stop().check()?;
     let metric = &options.metric;
     if !metric.is_euclidean() {
         let mut phases = Vec::new();
         let edges = timed(&mut phases, kind.name(), || match kind {
             GraphKind::Rng => graphs::relative_neighborhood_graph_under(points, metric),
             GraphKind::Mst => graphs::minimum_spanning_tree_under(points, metric),
-            _ => Err(Error::Unsupported {
-                criterion: kind.name(),
-                reason: UnsupportedReason::MetricNotSupported {
-                    metric: metric.name(),
-                },
-            }),
+            _ => Err(Error::Internal(format!("{} takes no metric", kind.name()))),
         })?;
         return Ok((edges, phases));
     }

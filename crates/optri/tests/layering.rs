@@ -11,6 +11,7 @@ const LAYERS: &[(&str, u32)] = &[
     ("error", 1),
     ("timing", 1),
     ("parallel", 1),
+    ("interrupt", 2),
     ("spatial", 2),
     ("structures", 3),
     ("graphs", 4),
@@ -18,7 +19,8 @@ const LAYERS: &[(&str, u32)] = &[
     ("criteria", 6),
     ("registry", 7),
     ("io", 8),
-    ("internals", 9),
+    ("request", 9),
+    ("internals", 10),
 ];
 
 fn rust_files(dir: &Path, out: &mut Vec<PathBuf>) {

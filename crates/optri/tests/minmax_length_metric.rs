@@ -298,10 +298,11 @@ fn metrics_are_refused_where_they_mean_nothing() {
     ] {
         match triangulate_with(&ps, c, &opts) {
             Err(Error::Unsupported {
-                reason: UnsupportedReason::MetricNotSupported { metric },
+                reason: UnsupportedReason::MetricNotSupported { metric, taken_by },
                 ..
             }) => {
-                assert_eq!(metric, "l1")
+                assert_eq!(metric, "l1");
+                assert_eq!(taken_by, ["minmax-length", "rng", "mst"]);
             }
             other => panic!("{c:?}: {other:?}"),
         }

@@ -431,7 +431,7 @@ fn the_mminmax_fixture() {
 fn every_criterion_accepts_polygons_and_limits_are_reported() {
     let square = SimplePolygon::new(&[[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]]).unwrap();
     for &c in Criterion::ALL {
-        assert!(c.supports_polygons(), "{}", c.name());
+        assert!(c.accepts(optri::InputKind::SimplePolygon), "{}", c.name());
         let t = run(&square, c, "square");
         assert_eq!(t.len(), 2);
     }

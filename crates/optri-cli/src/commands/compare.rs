@@ -1,15 +1,16 @@
 //! `optri compare`: every criterion (or the chosen ones) on one input, as a
 //! table of quality measures, the comparison JSON document, or panels side by
-//! side in one SVG. The work is [`optri::compare`]; this module only prints.
+//! side in one SVG. The work is the library's request ([`optri::compare`]);
+//! this module only prints.
 
-use super::{ms_since, Run};
+use super::Reading;
 use crate::args::CompareArgs;
 use crate::report;
 use crate::CliResult;
-use optri::io::{self, ComparisonReport, OutputFormat};
-use optri::{Comparison, Criterion, Options, Phase, Triangulation};
+use optri::io::{self, OutputFormat};
+use optri::request::{Outcome, Task};
+use optri::Triangulation;
 use std::path::{Path, PathBuf};
-use std::time::Instant;
 
 /// The outputs `compare` writes: the panels (`.svg`) or the comparison
 /// document (`.json`).
@@ -24,53 +25,27 @@ fn output_format(path: &Path) -> optri::Result<OutputFormat> {
     }
 }
 
-/// The criteria named by `--criteria` (every one when none is named).
-///
-/// # Errors
-/// The library's message for an unknown name, which lists the valid ones.
-fn criteria(names: &[String]) -> CliResult<Vec<Criterion>> {
-    names
-        .iter()
-        .map(|n| n.trim())
-        .filter(|n| !n.is_empty())
-        .map(|n| Criterion::from_name(n).map_err(|e| e.to_string()))
-        .collect()
-}
-
 pub(crate) fn run(args: CompareArgs) -> CliResult<()> {
     // Check everything the user typed before any work.
-    let criteria = criteria(&args.criteria)?;
-    let mut run = Run::start(&args.input, &args.output, output_format, true)?;
-    let t0 = Instant::now();
-    let options = Options::default();
-    let results = match &run.polygon {
-        Some(polygon) => optri::compare_polygon(polygon, &criteria, &options),
-        None => optri::compare(&run.points, &criteria, &options),
-    };
-    run.timing.phases.push(Phase {
-        name: "compare",
-        ms: ms_since(t0),
-    });
-    let timed = run.timing.phases.clone();
-    let document = ComparisonReport::new(&results)
-        .with_input(&run.read)
-        .with_timing(&timed);
+    let task = Task::compare(&args.criteria).map_err(|e| e.to_string())?;
+    let options = args.run.options()?;
+    let reading = Reading::start(&args.input, &args.output, output_format, true, false)?;
+    reading.progress.phase("comparing");
+    let mut run = reading.run(task, options)?;
+    run.progress.phase("writing");
+    let results = run.outcome.comparison().expect("a compare request");
     let titles: Vec<String> = results
         .iter()
         .map(|(c, r)| run.title(&report::label(*c, r.as_ref().is_ok_and(|s| s.exact))))
         .collect();
-    let written = run.timing.write(&args.output, |path| {
-        write_output(&titles, &results, &document, path)
+    let written = run.write(&args.output, |outcome, path| {
+        write_output(&titles, outcome, path)
     })?;
-    run.timing.finish();
+    run.finish();
     if args.json {
-        return report::emit_json(
-            &ComparisonReport::new(&results)
-                .with_input(&run.read)
-                .with_timing(&run.timing.phases),
-        );
+        return report::emit_json(&run.outcome.document());
     }
-    let mut text = report::comparison_table(&run, &results);
+    let mut text = report::comparison_table(&run);
     for path in written {
         text.push_str(&format!("wrote {}\n", path.display()));
     }
@@ -79,15 +54,11 @@ pub(crate) fn run(args: CompareArgs) -> CliResult<()> {
 
 /// Writes `document` (`.json`) or the panels of the results that
 /// triangulated, titled by `titles` (`.svg`).
-fn write_output(
-    titles: &[String],
-    results: &[Comparison],
-    document: &ComparisonReport,
-    path: &Path,
-) -> optri::Result<Vec<PathBuf>> {
+fn write_output(titles: &[String], outcome: &Outcome, path: &Path) -> optri::Result<Vec<PathBuf>> {
+    let results = outcome.comparison().unwrap_or_default();
     let text = match output_format(path)? {
         OutputFormat::Json => {
-            let mut s = serde_json::to_string_pretty(document)
+            let mut s = serde_json::to_string_pretty(&outcome.document())
                 .map_err(|e| optri::Error::Io(format!("cannot write '{}': {e}", path.display())))?;
             s.push('\n');
             s

@@ -6,14 +6,11 @@ use crate::report;
 use crate::CliResult;
 use optri::io::{self, InputFormat, OutputFormat};
 use optri::kernel::Point;
-use optri::{Criterion, PointSet, Requirement, SimplePolygon, Triangulation};
+use optri::{Criterion, InputKind, PointSet, SimplePolygon, Triangulation};
 use std::time::Instant;
 
 /// The built-in point set of `optri demo`.
 const DEMO_POINTS: &str = include_str!("../demo_points.txt");
-/// The demo's second, strictly convex point set, for the criteria that need
-/// convex position ([`Requirement::ConvexPosition`]).
-const DEMO_CONVEX_POINTS: &str = include_str!("../demo_convex_points.txt");
 
 /// The demo's simple polygon (a notched, star-like outline, counter-clockwise),
 /// triangulated inside by the criteria of [`DEMO_POLYGON_CRITERIA`].
@@ -81,14 +78,8 @@ pub(crate) fn run(args: DemoArgs) -> CliResult<()> {
         ));
     }
     let (points, point_set) = builtin_points(DEMO_POINTS, "built-in demo points")?;
-    // The demo set has interior points, so the criteria that need convex
-    // position are drawn on the convex set instead.
-    let (convex_only, general): (Vec<Criterion>, Vec<Criterion>) = Criterion::ALL
-        .iter()
-        .copied()
-        .partition(|c| c.info().requirement == Requirement::ConvexPosition);
     let mut results: Vec<DemoResult> = Vec::new();
-    for &criterion in &general {
+    for &criterion in Criterion::ALL {
         let r = demo_result(&point_set, criterion, "demo")
             .map_err(|e| format!("{}: {e}", criterion.name()))?;
         results.push(r);
@@ -99,32 +90,6 @@ pub(crate) fn run(args: DemoArgs) -> CliResult<()> {
         point_set.len(),
         report::duplicates_note(&point_set),
     );
-    if !convex_only.is_empty() {
-        let (convex_points, convex_set) =
-            builtin_points(DEMO_CONVEX_POINTS, "built-in convex demo points")?;
-        text.push_str(&format!(
-            "convex set: {} points in convex position (a jittered ellipse)\n",
-            convex_points.len()
-        ));
-        for criterion in &convex_only {
-            text.push_str(&format!(
-                "  {} is drawn on the convex set: it needs points in convex position\n",
-                criterion.name()
-            ));
-        }
-        // Greedy is the classic heuristic for minimum weight: draw it on the
-        // same set for comparison.
-        text.push_str("  greedy is drawn on the convex set too, for comparison\n");
-        let shown = Criterion::ALL
-            .iter()
-            .copied()
-            .filter(|&c| c == Criterion::Greedy || convex_only.contains(&c));
-        for criterion in shown {
-            let r = demo_result(&convex_set, criterion, "convex")
-                .map_err(|e| format!("{} on the convex demo set: {e}", criterion.name()))?;
-            results.push(r);
-        }
-    }
     let polygon =
         SimplePolygon::new(&DEMO_POLYGON).map_err(|e| input_error("built-in demo polygon", e))?;
     text.push_str(&format!(
@@ -134,7 +99,7 @@ pub(crate) fn run(args: DemoArgs) -> CliResult<()> {
     ));
     for criterion in DEMO_POLYGON_CRITERIA
         .into_iter()
-        .filter(|c| c.supports_polygons())
+        .filter(|c| c.accepts(InputKind::SimplePolygon))
     {
         let t0 = Instant::now();
         let solution = optri::triangulate_polygon(&polygon, criterion)

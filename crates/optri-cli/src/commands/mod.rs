@@ -1,7 +1,8 @@
-//! The subcommands, and the prelude that `triangulate` and `graph` share:
-//! check the outputs, read and validate the input, time every step, write.
+//! The subcommands, and the prelude they share: check the outputs, read the
+//! input, run the library's request (validation and the run, timed), write.
 
 pub(crate) mod compare;
+pub(crate) mod criteria;
 pub(crate) mod demo;
 pub(crate) mod graph;
 pub(crate) mod serve;
@@ -10,8 +11,9 @@ pub(crate) mod triangulate;
 use crate::args::InputArgs;
 use crate::progress::Progress;
 use crate::CliResult;
-use optri::io::{self, Input, InputFormat, OutputFormat, ReadInput};
-use optri::{Error, Phase, PointSet, SimplePolygon};
+use optri::io::{self, InputFormat, OutputFormat, ReadInput};
+use optri::request::{Outcome, Request, Task};
+use optri::{Error, Options, Phase};
 use std::io::{Read, Write};
 use std::path::{Path, PathBuf};
 use std::time::Instant;
@@ -30,39 +32,66 @@ pub(crate) struct Reading {
     pub progress: Progress,
 }
 
-/// One run of a command over a validated input.
+/// One command's request, run: where its input came from, what the
+/// library computed (with the input as read and the phases), and the
+/// progress line.
 pub(crate) struct Run {
     /// The name of the input for messages: its path, or `<stdin>`.
     pub source: String,
-    /// The input as read (the user's values, the arithmetic).
-    pub read: ReadInput,
-    /// `read`, `validate`, then whatever the command adds, `write` and `total`.
-    pub timing: Timing,
+    /// The library's outcome: the results, the input, the phases.
+    pub outcome: Outcome,
     /// The progress line on stderr.
     pub progress: Progress,
-    /// The validated working points (for a polygon, its vertices in ring order).
-    pub points: PointSet,
-    /// The validated polygon, when the input is one (a `.poly`, or a GeoJSON
-    /// `Polygon` without points) and the command takes polygons.
-    pub polygon: Option<SimplePolygon>,
 }
 
 impl Run {
-    /// [`Reading::start`] (with warnings) then [`Reading::validate`]: the
-    /// form of the commands that take no `--quiet`.
-    #[allow(dead_code)] // `triangulate` and `graph` pass `--quiet` to `Reading::start`
-    pub fn start(
-        input: &InputArgs,
-        outputs: &[PathBuf],
-        format_for: fn(&Path) -> optri::Result<OutputFormat>,
-        polygons: bool,
-    ) -> CliResult<Self> {
-        Reading::start(input, outputs, format_for, polygons, false)?.validate()
-    }
-
     /// A picture title: the input's file name, then `what`.
     pub fn title(&self, what: &str) -> String {
         format!("{} — {what}", display_name(&self.source))
+    }
+
+    /// The input as read (the user's values, the arithmetic).
+    pub fn read(&self) -> &ReadInput {
+        self.outcome.input()
+    }
+
+    /// The phases so far.
+    pub fn phases(&self) -> &[Phase] {
+        self.outcome.phases()
+    }
+
+    /// Writes every output with `write`, timed as one `write` phase when
+    /// there are outputs; returns the files written.
+    pub fn write(
+        &mut self,
+        outputs: &[PathBuf],
+        mut write: impl FnMut(&Outcome, &Path) -> optri::Result<Vec<PathBuf>>,
+    ) -> CliResult<Vec<PathBuf>> {
+        if outputs.is_empty() {
+            return Ok(Vec::new());
+        }
+        let t0 = Instant::now();
+        let mut written = Vec::new();
+        for path in outputs {
+            match write(&self.outcome, path) {
+                Ok(files) => written.extend(files),
+                Err(e) => {
+                    self.progress.finish();
+                    return Err(e.to_string());
+                }
+            }
+        }
+        self.outcome.add_phase(Phase {
+            name: "write",
+            ms: ms_since(t0),
+        });
+        Ok(written)
+    }
+
+    /// Closes the run: the progress line goes, and `total` is timed.
+    pub fn finish(&mut self) {
+        self.progress.finish();
+        self.outcome.finish();
     }
 }
 
@@ -120,36 +149,28 @@ impl Reading {
         })
     }
 
-    /// Validates the working points (or the polygon), timed as `validate`.
-    pub fn validate(mut self) -> CliResult<Run> {
-        let t0 = Instant::now();
-        let points = self.read.working_points();
-        let validated = match &self.read.input {
-            Input::Points(_) => PointSet::new(points).map(|p| (p, None)),
-            Input::Polygon(_) => SimplePolygon::new(points)
-                .map(|polygon| (polygon.point_set().clone(), Some(polygon))),
-        };
-        let (points, polygon) = validated.map_err(|e| {
-            self.progress.finish();
-            input_error(&self.source, e)
-        })?;
-        self.timing.phases.push(Phase {
-            name: "validate",
-            ms: ms_since(t0),
-        });
+    /// Runs `task` with `options` on what was read (the library's
+    /// [`Request`]: validation, the run, its phases after `read`).
+    pub fn run(self, task: Task, options: Options) -> CliResult<Run> {
+        let Reading {
+            source,
+            read,
+            timing,
+            progress,
+        } = self;
+        let outcome = Request::new(read, task)
+            .with_options(options)
+            .after(timing.start, timing.phases)
+            .run()
+            .map_err(|e| {
+                progress.finish();
+                input_error(&source, e)
+            })?;
         Ok(Run {
-            source: self.source,
-            read: self.read,
-            timing: self.timing,
-            progress: self.progress,
-            points,
-            polygon,
+            source,
+            outcome,
+            progress,
         })
-    }
-
-    /// A picture title: the input's file name, then `what`.
-    pub fn title(&self, what: &str) -> String {
-        format!("{} — {what}", display_name(&self.source))
     }
 }
 
@@ -192,43 +213,11 @@ fn check_writable(file: &Path) -> CliResult<()> {
     }
 }
 
-/// The phases of a [`Run`], measured from its start.
+/// The phases of a command, measured from its start.
 pub(crate) struct Timing {
     start: Instant,
     /// The phases timed so far, in order.
     pub phases: Vec<Phase>,
-}
-
-impl Timing {
-    /// Writes every output with `write`, timed as one `write` phase when
-    /// there are outputs; returns the files written.
-    pub fn write(
-        &mut self,
-        outputs: &[PathBuf],
-        mut write: impl FnMut(&Path) -> optri::Result<Vec<PathBuf>>,
-    ) -> CliResult<Vec<PathBuf>> {
-        if outputs.is_empty() {
-            return Ok(Vec::new());
-        }
-        let t0 = Instant::now();
-        let mut written = Vec::new();
-        for path in outputs {
-            written.extend(write(path).map_err(|e| e.to_string())?);
-        }
-        self.phases.push(Phase {
-            name: "write",
-            ms: ms_since(t0),
-        });
-        Ok(written)
-    }
-
-    /// Closes the run with the `total` phase.
-    pub fn finish(&mut self) {
-        self.phases.push(Phase {
-            name: "total",
-            ms: ms_since(self.start),
-        });
-    }
 }
 
 /// Milliseconds since `start`.

@@ -8,10 +8,17 @@
 //! | request | answer |
 //! |---|---|
 //! | `GET /` | the page ([`INDEX_HTML`], embedded; no external resources) |
-//! | `GET /api/criteria` | `{"criteria": [{name, description, optimality, requirement, supports_polygons, options, reference}], "limits": {…}}` |
-//! | `POST /api/triangulate` `{"points": [[x, y], …], "criterion"?, "polygon"?}` | the triangulation document of `optri triangulate --json` |
-//! | `POST /api/compare` `{"points", "criteria"?: [names], "polygon"?}` | the comparison document of `optri compare --json` |
+//! | `GET /api/criteria` | the registry listing document of `optri criteria --json` |
+//! | `GET /api/limits` | `{"max_body_bytes", "max_points", "time_limit_s", "max_running"}` |
+//! | `POST /api/triangulate` `{"points": [[x, y], …], "criterion"?, "polygon"?, "options"?}` | the triangulation document of `optri triangulate --json` |
+//! | `POST /api/compare` `{"points", "criteria"?: [names], "polygon"?, "options"?}` | the comparison document of `optri compare --json` |
+//! | `POST /api/graph` `{"points", "kind", "options"?}` | the graph document of `optri graph --json` |
 //! | `POST /api/read` `{"text", "filename"?, "format"?}` | `{"points": [[x, y], …], "polygon": bool, "format"}`: a file parsed by the library's readers |
+//!
+//! `options` maps option names of the listing to values (strings or
+//! numbers), checked against what the criterion or graph reads; `metric`
+//! is also accepted as a field of its own. Every request runs through the
+//! library's [`Request`], as the CLI's and Python's do.
 //!
 //! The numbers of `points` are taken at their decimal values when the body
 //! writes none with more than 15 significant digits
@@ -28,14 +35,16 @@
 //! exceeds [`Limits::time_limit`] (its thread then finishes in the background
 //! and still counts as running, so a flood of slow requests cannot pile up).
 
-use optri::io::{self, ComparisonReport, InputFormat, ReadInput, TriangulationReport};
-use optri::{Criterion, Error, Options, Phase, PointSet, Requirement, SimplePolygon, Solution};
+use optri::io::{self, InputFormat};
+use optri::request::{Request, Task};
+use optri::{Criterion, Error};
 use serde::Deserialize;
 use serde_json::{json, Value};
+use std::collections::BTreeMap;
 use std::path::Path;
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::{mpsc, Arc};
-use std::time::{Duration, Instant};
+use std::time::Duration;
 
 /// The page, embedded in the binary: plain HTML, CSS and JavaScript.
 pub(crate) const INDEX_HTML: &str = include_str!("index.html");
@@ -96,12 +105,6 @@ impl Drop for Slot {
     }
 }
 
-/// The points of a request: a point set, or a polygon's ring.
-enum Points {
-    Set(PointSet),
-    Polygon(SimplePolygon),
-}
-
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
 struct TriangulateRequest {
@@ -113,16 +116,8 @@ struct TriangulateRequest {
     /// The registry's `metric` option (`Metric::parse` syntax).
     #[serde(default)]
     metric: Option<String>,
-}
-
-/// The run options a request names (today the metric).
-fn options(metric: Option<&str>) -> Result<Options, Refusal> {
-    match metric {
-        None => Ok(Options::default()),
-        Some(m) => optri::kernel::Metric::parse(m)
-            .map(|m| Options::default().with_metric(m))
-            .map_err(|e| (400, format!("metric: {e}"))),
-    }
+    #[serde(default)]
+    options: BTreeMap<String, Value>,
 }
 
 fn default_criterion() -> String {
@@ -139,6 +134,19 @@ struct CompareRequest {
     polygon: bool,
     #[serde(default)]
     metric: Option<String>,
+    #[serde(default)]
+    options: BTreeMap<String, Value>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct GraphRequest {
+    points: Vec<Vec<f64>>,
+    kind: String,
+    #[serde(default)]
+    metric: Option<String>,
+    #[serde(default)]
+    options: BTreeMap<String, Value>,
 }
 
 #[derive(Deserialize)]
@@ -159,26 +167,19 @@ fn bad_request(e: impl std::fmt::Display) -> Refusal {
     (400, format!("invalid request: {e}"))
 }
 
-/// The status of a library error: 422 (the input is refused), 500 for a bug.
+/// The status of a library error: 422 (the input is refused), 503 (the run
+/// was stopped by its time limit), 500 for a bug.
 fn library_error(e: &Error) -> Refusal {
-    let status = if matches!(e, Error::Internal(_)) {
-        500
-    } else {
-        422
+    let status = match e {
+        Error::Internal(_) => 500,
+        Error::Interrupted(_) => 503,
+        _ => 422,
     };
     (status, e.to_string())
 }
 
 fn parse<T: serde::de::DeserializeOwned>(body: &[u8]) -> Result<T, Refusal> {
     serde_json::from_slice(body).map_err(bad_request)
-}
-
-fn requirement_name(r: Requirement) -> &'static str {
-    match r {
-        Requirement::AnyPointSet => "any-point-set",
-        Requirement::ConvexPosition => "convex-position",
-        _ => "other",
-    }
 }
 
 impl Api {
@@ -202,66 +203,54 @@ impl Api {
                     body: INDEX_HTML.to_string(),
                 }
             }
-            ("GET", "/api/criteria") => Ok(Reply::json(200, &self.criteria())),
+            ("GET", "/api/criteria") => Ok(Reply::json(200, &io::registry_listing())),
+            ("GET", "/api/limits") => Ok(Reply::json(200, &self.limits())),
             ("POST", "/api/triangulate") => self.triangulate(body),
             ("POST", "/api/compare") => self.compare(body),
+            ("POST", "/api/graph") => self.graph(body),
             ("POST", "/api/read") => read(body),
-            (_, "/" | "/index.html" | "/api/criteria") => {
+            (_, "/" | "/index.html" | "/api/criteria" | "/api/limits") => {
                 Err((405, format!("{path} answers GET only")))
             }
-            (_, "/api/triangulate" | "/api/compare" | "/api/read") => {
+            (_, "/api/triangulate" | "/api/compare" | "/api/graph" | "/api/read") => {
                 Err((405, format!("{path} answers POST only")))
             }
             _ => Err((
                 404,
                 format!(
-                    "no such page: {path} (the API is GET /api/criteria, POST /api/triangulate, \
-                     POST /api/compare, POST /api/read)"
+                    "no such page: {path} (the API is GET /api/criteria, GET /api/limits, \
+                     POST /api/triangulate, POST /api/compare, POST /api/graph, POST /api/read)"
                 ),
             )),
         };
         result.unwrap_or_else(|(status, message)| Reply::error(status, message))
     }
 
-    fn criteria(&self) -> Value {
-        let criteria: Vec<Value> = Criterion::ALL
-            .iter()
-            .map(|&c| {
-                let info = c.info();
-                json!({
-                    "name": info.name,
-                    "description": info.description,
-                    "optimality": info.optimality.name(),
-                    "requirement": requirement_name(info.requirement),
-                    "supports_polygons": c.supports_polygons(),
-                    "options": info.options,
-                    "reference": info.reference,
-                })
-            })
-            .collect();
+    fn limits(&self) -> Value {
         json!({
-            "criteria": criteria,
-            "formats": InputFormat::ALL.iter().map(|f| f.name()).collect::<Vec<_>>(),
-            "limits": {
-                "max_body_bytes": self.limits.max_body_bytes,
-                "max_points": self.limits.max_points,
-                "time_limit_s": self.limits.time_limit.as_secs_f64(),
-                "max_running": self.limits.max_running,
-            },
+            "max_body_bytes": self.limits.max_body_bytes,
+            "max_points": self.limits.max_points,
+            "time_limit_s": self.limits.time_limit.as_secs_f64(),
+            "max_running": self.limits.max_running,
         })
     }
 
-    /// Validates the points of a request (timed as `validate`): each an
-    /// `[x, y]` pair (400 otherwise), then as the library does (422). The
-    /// numbers are taken at their decimal values when the request `body`
-    /// writes none with more than 15 significant digits
-    /// ([`io::json_numbers_as_decimals`]), as the GeoJSON reader does.
-    fn points(
+    /// The library's request for `task` on the points of a request body:
+    /// each an `[x, y]` pair (400 otherwise), at most
+    /// [`Limits::max_points`] (422), taken at their decimal values when the
+    /// `body` writes none with more than 15 significant digits
+    /// ([`io::json_numbers_as_decimals`], as the GeoJSON reader does), with
+    /// the options named in the body (400 for one the task does not read)
+    /// and this server's time limit.
+    fn request(
         &self,
+        task: Task,
         points: &[Vec<f64>],
         polygon: bool,
+        metric: Option<&str>,
+        options: &BTreeMap<String, Value>,
         body: &[u8],
-    ) -> Result<(Points, ReadInput, Phase), Refusal> {
+    ) -> Result<Request, Refusal> {
         if points.len() > self.limits.max_points {
             return Err((
                 422,
@@ -273,7 +262,6 @@ impl Api {
                 ),
             ));
         }
-        let t0 = Instant::now();
         let points = points
             .iter()
             .enumerate()
@@ -293,20 +281,52 @@ impl Api {
         // `parse` accepted the body, so it is UTF-8 and the lossy view is
         // the text itself.
         let read = io::json_numbers_as_decimals(input, &String::from_utf8_lossy(body));
-        let working = read.working_points();
-        let points = if polygon {
-            Points::Polygon(SimplePolygon::new(working).map_err(|e| library_error(&e))?)
-        } else {
-            Points::Set(PointSet::new(working).map_err(|e| library_error(&e))?)
-        };
-        Ok((
-            points,
-            read,
-            Phase {
-                name: "validate",
-                ms: ms_since(t0),
-            },
-        ))
+        let mut request = Request::new(read, task);
+        if !self.limits.time_limit.is_zero() {
+            request
+                .set_option(
+                    "time_limit",
+                    &self.limits.time_limit.as_secs_f64().to_string(),
+                )
+                .map_err(|e| library_error(&e))?;
+        }
+        let named = metric.map(|m| ("metric", Value::from(m)));
+        for (name, value) in named
+            .into_iter()
+            .chain(options.iter().map(|(n, v)| (n.as_str(), v.clone())))
+        {
+            let text = match &value {
+                Value::String(s) => s.clone(),
+                Value::Number(n) => n.to_string(),
+                other => {
+                    return Err(bad_request(format!(
+                        "option {name}: {other} is not a string or a number"
+                    )))
+                }
+            };
+            if name == "time_limit" {
+                let mut check = optri::Options::default();
+                check.set(name, &text).map_err(bad_request)?;
+                if check.time_limit > Some(self.limits.time_limit) {
+                    return Err(bad_request(format!(
+                        "option time_limit: {text} s is more than this server's limit of {} s",
+                        self.limits.time_limit.as_secs_f64()
+                    )));
+                }
+            }
+            request.set_option(name, &text).map_err(bad_request)?;
+        }
+        Ok(request)
+    }
+
+    /// Runs `request` within the limits and answers with its document.
+    fn run(&self, request: Request) -> Result<Reply, Refusal> {
+        let mut outcome = self
+            .compute(move || request.run())?
+            .map_err(|e| library_error(&e))?;
+        outcome.finish();
+        // Serialised directly, so the fields keep the documented order.
+        Ok(Reply::json(200, &outcome.document()))
     }
 
     /// Runs `work` on its own thread within the limits.
@@ -355,65 +375,45 @@ impl Api {
     }
 
     fn triangulate(&self, body: &[u8]) -> Result<Reply, Refusal> {
-        let start = Instant::now();
-        let request: TriangulateRequest = parse(body)?;
-        let criterion = Criterion::from_name(&request.criterion).map_err(bad_request)?;
-        let options = options(request.metric.as_deref())?;
-        let (points, read, validate) = self.points(&request.points, request.polygon, body)?;
-        let solution: Solution = self
-            .compute(move || match &points {
-                Points::Set(p) => optri::triangulate_with(p, criterion, &options),
-                Points::Polygon(p) => optri::triangulate_polygon_with(p, criterion, &options),
-            })?
-            .map_err(|e| library_error(&e))?;
-        let mut phases = vec![validate];
-        phases.extend(solution.phases.iter().cloned());
-        phases.push(Phase {
-            name: "total",
-            ms: ms_since(start),
-        });
-        // Serialised directly, so the fields keep the documented order.
-        Ok(Reply::json(
-            200,
-            &TriangulationReport::of_solution(&solution)
-                .with_input(&read)
-                .with_timing(&phases),
-        ))
+        let r: TriangulateRequest = parse(body)?;
+        let task = Task::triangulate(&r.criterion).map_err(bad_request)?;
+        let request = self.request(
+            task,
+            &r.points,
+            r.polygon,
+            r.metric.as_deref(),
+            &r.options,
+            body,
+        )?;
+        self.run(request)
     }
 
     fn compare(&self, body: &[u8]) -> Result<Reply, Refusal> {
-        let start = Instant::now();
-        let request: CompareRequest = parse(body)?;
-        let criteria = request
-            .criteria
-            .iter()
-            .map(|n| Criterion::from_name(n))
-            .collect::<optri::Result<Vec<_>>>()
-            .map_err(bad_request)?;
-        let options = options(request.metric.as_deref())?;
-        let (points, read, validate) = self.points(&request.points, request.polygon, body)?;
-        let t0 = Instant::now();
-        let results = self.compute(move || match &points {
-            Points::Set(p) => optri::compare(p, &criteria, &options),
-            Points::Polygon(p) => optri::compare_polygon(p, &criteria, &options),
-        })?;
-        let phases = [
-            validate,
-            Phase {
-                name: "compare",
-                ms: ms_since(t0),
-            },
-            Phase {
-                name: "total",
-                ms: ms_since(start),
-            },
-        ];
-        Ok(Reply::json(
-            200,
-            &ComparisonReport::new(&results)
-                .with_input(&read)
-                .with_timing(&phases),
-        ))
+        let r: CompareRequest = parse(body)?;
+        let task = Task::compare(&r.criteria).map_err(bad_request)?;
+        let request = self.request(
+            task,
+            &r.points,
+            r.polygon,
+            r.metric.as_deref(),
+            &r.options,
+            body,
+        )?;
+        self.run(request)
+    }
+
+    fn graph(&self, body: &[u8]) -> Result<Reply, Refusal> {
+        let r: GraphRequest = parse(body)?;
+        let task = Task::graph(&r.kind).map_err(bad_request)?;
+        let request = self.request(
+            task,
+            &r.points,
+            false,
+            r.metric.as_deref(),
+            &r.options,
+            body,
+        )?;
+        self.run(request)
     }
 }
 
@@ -440,8 +440,4 @@ fn read(body: &[u8]) -> Result<Reply, Refusal> {
             "format": format.name(),
         }),
     ))
-}
-
-fn ms_since(start: Instant) -> f64 {
-    start.elapsed().as_secs_f64() * 1e3
 }

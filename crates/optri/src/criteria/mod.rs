@@ -1,20 +1,22 @@
 //! Layer 5: one module per optimality criterion, named after it. Each
-//! module owns everything about its criterion — the algorithm, its
-//! [`CriterionInfo`] (name, description, [`Optimality`], [`Requirement`],
-//! citation) and a `solve` entry point with one signature — so that the
-//! registry ([`crate::Criterion`]) only lists them.
+//! module owns everything about its criterion — the algorithm, and its
+//! `ENTRY` ([`CriterionEntry`]: the [`CriterionInfo`] with name,
+//! description, [`Optimality`], the options it reads and its citation, and
+//! its solvers for point sets and polygons, one signature each) — so that
+//! the registry ([`crate::Criterion`]) only lists them.
 //!
 //! | criterion | module | paper |
 //! |---|---|---|
 //! | `delaunay` | `delaunay` | Delaunay 1934; via spade |
 //! | `minmax-length` | `minmax_length` | Edelsbrunner & Tan 1991 |
 //! | `greedy` | `greedy` | Levcopoulos & Lingas 1987; Dickerson et al. 1997 |
-//! | `min-weight` | `min_weight` | Klincsek 1980 |
+//! | `min-weight` | `min_weight` | Dickerson et al. 1997 (LMT-skeleton); Klincsek 1980 |
 //! | `maxmin-area`, `minmax-area` | `area` | Vassilev 2005 |
 //!
-//! Simple polygons ([`crate::triangulate_polygon`]): every criterion has a
-//! [`PolygonSolver`]; those of `delaunay`, `minmax-length`, `greedy` and
-//! `min-weight` are in `polygon_criteria`, the area ones in `area`.
+//! Simple polygons ([`crate::triangulate_polygon`]): a criterion that takes
+//! them has a [`PolygonSolver`] in its entry; those of `delaunay`,
+//! `minmax-length`, `greedy` and `min-weight` are in `polygon_criteria`, the
+//! area ones in `area`.
 
 pub(crate) mod area;
 pub(crate) mod delaunay;
@@ -59,14 +61,28 @@ impl Optimality {
     }
 }
 
-/// What a criterion needs of its input.
+/// A kind of input a criterion triangulates.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 #[non_exhaustive]
-pub enum Requirement {
-    /// Any point set with three points not on one line.
-    AnyPointSet,
-    /// Every point on the convex hull (collinear boundary points allowed).
-    ConvexPosition,
+pub enum InputKind {
+    /// A point set: its convex hull is triangulated ([`crate::PointSet`]).
+    PointSet,
+    /// A simple polygon: its interior is triangulated
+    /// ([`crate::SimplePolygon`]).
+    SimplePolygon,
+}
+
+impl InputKind {
+    /// Every input kind.
+    pub const ALL: &'static [InputKind] = &[InputKind::PointSet, InputKind::SimplePolygon];
+
+    /// `"points"` or `"polygon"`, as the registry listing names it.
+    pub fn name(self) -> &'static str {
+        match self {
+            InputKind::PointSet => "points",
+            InputKind::SimplePolygon => "polygon",
+        }
+    }
 }
 
 /// Everything a front end needs to list and explain a criterion.
@@ -79,25 +95,85 @@ pub struct CriterionInfo {
     pub description: &'static str,
     /// The guarantee of the result on the inputs the criterion accepts.
     pub optimality: Optimality,
-    /// What the input must satisfy.
-    pub requirement: Requirement,
-    /// Names of the [`Options`] fields the criterion reads (none yet).
+    /// Names of the options (of [`OPTIONS`]) the criterion reads, beyond
+    /// the run controls every criterion takes; any other option set to a
+    /// value other than its default is refused.
     pub options: &'static [&'static str],
     /// The paper the algorithm follows: authors, year, title.
     pub reference: &'static str,
 }
 
+/// What a criterion module provides to the registry: its description and
+/// its solvers. Each criterion declares one `ENTRY`; the registry lists them
+/// and reads nothing else.
+pub(crate) struct CriterionEntry {
+    pub info: CriterionInfo,
+    /// The solver for point sets.
+    pub solve: Solver,
+    /// The solver for simple polygons, if the criterion takes them.
+    pub solve_polygon: Option<PolygonSolver>,
+}
+
+/// An option a front end can set by name ([`Options::set`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[non_exhaustive]
+pub struct OptionInfo {
+    /// The name, e.g. `"metric"`.
+    pub name: &'static str,
+    /// One line saying what it does.
+    pub description: &'static str,
+    /// The values it takes, in the text syntax of [`Options::set`].
+    pub values: &'static str,
+    /// The value when it is not set.
+    pub default: &'static str,
+    /// `true`: a run control every criterion and graph takes; `false`: taken
+    /// only by those that list it ([`CriterionInfo::options`],
+    /// [`crate::GraphKind::options`]).
+    pub every_run: bool,
+}
+
+/// Every option a front end can set by name, in display order.
+pub const OPTIONS: &[OptionInfo] = &[
+    OptionInfo {
+        name: "metric",
+        description: "the norm lengths are measured in",
+        values: "euclidean | l1 | linf | lp:P (integer P >= 1) | polygon:x1,y1,x2,y2,... \
+                 (a centrally symmetric convex unit polygon, counter-clockwise)",
+        default: "euclidean",
+        every_run: false,
+    },
+    OptionInfo {
+        name: "time_limit",
+        description: "seconds a run may take; past it the run stops, or returns its best \
+                      certified result with exact: false where the criterion has one",
+        values: "a positive number of seconds",
+        default: "none",
+        every_run: true,
+    },
+];
+
 /// Options of a criterion run. `#[non_exhaustive]`: build it with
-/// `Options::default()` and the `with_*` methods.
+/// `Options::default()` and the `with_*` methods, or by name with
+/// [`Options::set`].
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
 #[non_exhaustive]
 pub struct Options {
     /// Called as the run goes (see [`Progress`]); `None`: nothing is called.
     pub progress: Option<Progress>,
-    /// The norm lengths are measured in (Euclidean by default). Read by
-    /// `minmax-length` (and by [`crate::graph_with`] for the RNG and MST);
-    /// every other criterion refuses a non-Euclidean metric with [`crate::UnsupportedReason::MetricNotSupported`].
+    /// The norm lengths are measured in (Euclidean by default). Read by the
+    /// criteria and graphs that list `metric` in their options; the others
+    /// refuse a non-Euclidean metric with
+    /// [`crate::UnsupportedReason::MetricNotSupported`].
     pub metric: crate::kernel::Metric,
+    /// How long one run may take (`None`: no limit). Past it the run returns
+    /// [`crate::Error::Interrupted`], or its best certified result with
+    /// `exact: false` where the criterion has one. In a comparison each
+    /// criterion has the whole limit.
+    pub time_limit: Option<std::time::Duration>,
+    /// A flag that stops the run when raised (see [`crate::Cancel`]).
+    pub cancel: Option<crate::Cancel>,
+    /// The stop of a started run: `time_limit` counted from its start.
+    stop: crate::interrupt::Stop,
 }
 
 impl Options {
@@ -113,12 +189,97 @@ impl Options {
         self
     }
 
+    /// These options with a time limit per run.
+    pub fn with_time_limit(mut self, limit: std::time::Duration) -> Self {
+        self.time_limit = Some(limit);
+        self
+    }
+
+    /// These options stopped when `cancel` is raised.
+    pub fn with_cancel(mut self, cancel: crate::Cancel) -> Self {
+        self.cancel = Some(cancel);
+        self
+    }
+
+    /// Sets the option `name` (one of [`OPTIONS`]) from its text form, as
+    /// every front end takes it: `metric` in [`crate::kernel::Metric::parse`]'s
+    /// syntax, `time_limit` in seconds.
+    ///
+    /// # Errors
+    /// [`Error::UnknownName`](crate::Error::UnknownName) for an unknown
+    /// option; [`Error::InvalidMetric`](crate::Error::InvalidMetric) or
+    /// [`Error::InvalidOption`](crate::Error::InvalidOption) for a value it
+    /// cannot take.
+    pub fn set(&mut self, name: &str, value: &str) -> crate::Result<()> {
+        let Some(option) = OPTIONS.iter().find(|o| o.name == name) else {
+            return Err(crate::Error::UnknownName {
+                kind: "option",
+                name: name.to_string(),
+                available: OPTIONS.iter().map(|o| o.name).collect(),
+            });
+        };
+        match option.name {
+            "metric" => {
+                self.metric =
+                    crate::kernel::Metric::parse(value).map_err(crate::Error::InvalidMetric)?
+            }
+            "time_limit" => {
+                let seconds: f64 = value.trim().parse().map_err(|_| invalid_time(value))?;
+                if seconds.is_nan() || seconds <= 0.0 {
+                    return Err(invalid_time(value));
+                }
+                let limit = std::time::Duration::try_from_secs_f64(seconds)
+                    .map_err(|_| invalid_time(value))?;
+                self.time_limit = Some(limit);
+            }
+            other => unreachable!("option {other} has no decoder"),
+        }
+        Ok(())
+    }
+
+    /// The names of the options whose value differs from the default,
+    /// run controls excluded.
+    pub(crate) fn chosen(&self) -> Vec<&'static str> {
+        let mut chosen = Vec::new();
+        if !self.metric.is_euclidean() {
+            chosen.push("metric");
+        }
+        chosen
+    }
+
+    /// These options for a run that starts now: its time limit counts
+    /// from here.
+    pub(crate) fn started(&self) -> Options {
+        let mut started = self.clone();
+        started.stop = crate::interrupt::Stop::starting_now(self.cancel.clone(), self.time_limit);
+        started
+    }
+
+    /// When the run must stop (never, unless the options were
+    /// [`started`](Self::started) with a limit or a cancellation flag).
+    pub(crate) fn stop(&self) -> &crate::interrupt::Stop {
+        &self.stop
+    }
+
     /// Reports `fraction` (0 to 1) of the phase `phase` to the progress
     /// hook, if there is one.
     pub(crate) fn report(&self, phase: &str, fraction: f64) {
         if let Some(progress) = &self.progress {
             (progress.0)(phase, fraction);
         }
+    }
+}
+
+/// The message for a time limit that is not a positive number of seconds.
+fn invalid_time(value: &str) -> crate::Error {
+    let shown: String = value
+        .chars()
+        .take(40)
+        .flat_map(char::escape_default)
+        .collect();
+    crate::Error::InvalidOption {
+        option: "time_limit",
+        message: format!("'{shown}' is not a positive number of seconds"),
     }
 }
 

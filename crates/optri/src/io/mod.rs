@@ -38,6 +38,7 @@ mod decimal;
 mod format;
 mod geojson;
 mod json;
+mod listing;
 mod node;
 mod poly;
 mod svg;
@@ -52,6 +53,7 @@ pub use json::{
     comparison_to_json, graph_to_json, solution_to_json, triangulation_from_json,
     triangulation_to_json, ComparisonReport, GraphReport, TriangulationReport, SCHEMA_VERSION,
 };
+pub use listing::registry_listing;
 pub use node::triangulation_to_triangle_files;
 pub use svg::{graph_to_svg, panels_to_svg, triangulation_to_svg};
 

@@ -7,12 +7,14 @@
 mod delaunay_graph;
 #[cfg(feature = "geo-types")]
 mod geo;
+mod measures;
 pub(crate) mod planar_graph;
 mod point_set;
 mod polygon;
 mod triangulation;
 
 pub(crate) use delaunay_graph::{DelaunayGraph, NO_TRIANGLE};
+pub use measures::{Better, Measure};
 pub(crate) use planar_graph::PlanarGraph;
 pub use point_set::PointSet;
 pub use polygon::SimplePolygon;

@@ -37,7 +37,7 @@ pub use decision::{maxmin_area_at_least, MaxMinAreaDecision};
 
 use super::polygon_criteria::{check_size, corner_point, polygon_program, MAX_POLYGON_VERTICES};
 use super::{
-    BoundMeasure, CertifiedBound, CriterionInfo, Diagnostics, Optimality, Options, Requirement,
+    BoundMeasure, CertifiedBound, CriterionEntry, CriterionInfo, Diagnostics, Optimality, Options,
     Solved,
 };
 use crate::error::{Error, Result, UnsupportedReason};
@@ -57,12 +57,25 @@ const GENERAL_OPTIMALITY: Optimality = Optimality::Approximation {
             than Delaunay, exact when it meets the certified bound",
 };
 
+/// The registry's entry of MaxMin area.
+pub(crate) const MAXMIN_ENTRY: CriterionEntry = CriterionEntry {
+    info: MAXMIN_INFO,
+    solve: solve_maxmin,
+    solve_polygon: Some(solve_maxmin_polygon),
+};
+
+/// The registry's entry of MinMax area.
+pub(crate) const MINMAX_ENTRY: CriterionEntry = CriterionEntry {
+    info: MINMAX_INFO,
+    solve: solve_minmax,
+    solve_polygon: Some(solve_minmax_polygon),
+};
+
 pub(crate) const MAXMIN_INFO: CriterionInfo = CriterionInfo {
     name: "maxmin-area",
     description: "maximises the smallest triangle area (exact in convex position and on simple \
                   polygons; general point sets: certified approximation)",
     optimality: GENERAL_OPTIMALITY,
-    requirement: Requirement::AnyPointSet,
     options: &[],
     reference: REFERENCE,
 };
@@ -72,7 +85,6 @@ pub(crate) const MINMAX_INFO: CriterionInfo = CriterionInfo {
     description: "minimises the largest triangle area (exact in convex position and on simple \
                   polygons; general point sets: certified approximation)",
     optimality: GENERAL_OPTIMALITY,
-    requirement: Requirement::AnyPointSet,
     options: &[],
     reference: REFERENCE,
 };

@@ -32,7 +32,7 @@ mod convex_delaunay;
 mod general;
 mod semicircular;
 
-use super::{CriterionInfo, Diagnostics, Optimality, Options, Requirement, Solved};
+use super::{CriterionEntry, CriterionInfo, Diagnostics, Optimality, Options, Solved};
 use crate::error::Result;
 use crate::kernel::{orient_sign, Point};
 use crate::parallel::prelude::*;
@@ -40,11 +40,17 @@ use crate::spatial::convex_hull_cycle;
 use crate::structures::{PlanarGraph, PointSet, Triangulation};
 use crate::timing::{Phase, Stopwatch};
 
+/// The registry's entry: this criterion's description and solvers.
+pub(crate) const ENTRY: CriterionEntry = CriterionEntry {
+    info: INFO,
+    solve,
+    solve_polygon: Some(super::polygon_criteria::solve_greedy),
+};
+
 pub(crate) const INFO: CriterionInfo = CriterionInfo {
     name: "greedy",
     description: "greedy: repeatedly adds the shortest segment crossing no earlier one",
     optimality: Optimality::Exact,
-    requirement: Requirement::AnyPointSet,
     options: &[],
     reference: "C. Levcopoulos & A. Lingas, On approximation behavior of the greedy \
                 triangulation for convex polygons, Algorithmica 1987; M. T. Dickerson, \

@@ -34,7 +34,7 @@ pub(crate) use faces::FRONT_BUDGET;
 mod skeleton;
 
 use super::{
-    BoundMeasure, CertifiedBound, CriterionInfo, Diagnostics, Optimality, Options, Requirement,
+    BoundMeasure, CertifiedBound, CriterionEntry, CriterionInfo, Diagnostics, Optimality, Options,
     Solved,
 };
 use crate::error::{Error, Result};
@@ -47,11 +47,17 @@ use crate::timing::{Phase, Stopwatch};
 use faces::Method;
 use std::cmp::Ordering;
 
+/// The registry's entry: this criterion's description and solvers.
+pub(crate) const ENTRY: CriterionEntry = CriterionEntry {
+    info: INFO,
+    solve,
+    solve_polygon: Some(super::polygon_criteria::solve_min_weight),
+};
+
 pub(crate) const INFO: CriterionInfo = CriterionInfo {
     name: "min-weight",
     description: "minimises the total edge length",
     optimality: Optimality::Exact,
-    requirement: Requirement::AnyPointSet,
     options: &[],
     reference: "G. T. Klincsek 1980; Dickerson, Keil & Montague 1997; Drysdale, McElfresh & Snoeyink 2001; A. Haas 2018",
 };

@@ -155,7 +155,7 @@ mod repair;
 mod rng_polygon;
 mod under_metric;
 
-use super::{CriterionInfo, Diagnostics, Optimality, Options, Requirement, Solved};
+use super::{CriterionEntry, CriterionInfo, Diagnostics, Optimality, Options, Solved};
 use crate::error::Result;
 use crate::graphs::perturbed_rng_from_delaunay;
 use crate::kernel::{compare_lengths, Point};
@@ -173,11 +173,17 @@ use repair::repair_flat_triangles;
 use rng_polygon::{Mesh, RngPolygon};
 use std::cmp::Ordering::Greater;
 
+/// The registry's entry: this criterion's description and solvers.
+pub(crate) const ENTRY: CriterionEntry = CriterionEntry {
+    info: INFO,
+    solve,
+    solve_polygon: Some(super::polygon_criteria::solve_minmax_length),
+};
+
 pub(crate) const INFO: CriterionInfo = CriterionInfo {
     name: "minmax-length",
     description: "minimises the longest edge",
     optimality: Optimality::Exact,
-    requirement: Requirement::AnyPointSet,
     options: &["metric"],
     reference: "H. Edelsbrunner & T. S. Tan, A quadratic time algorithm for the minmax \
                 length triangulation, FOCS 1991 / SIAM J. Comput. 1993",
