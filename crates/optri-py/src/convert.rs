@@ -2,18 +2,24 @@
 //! out, and `optri::Error` as the Python exception that fits it.
 
 use numpy::{PyArray1, PyArray2, PyArrayMethods, PyUntypedArrayMethods};
-use optri::Error;
-use pyo3::exceptions::{PyOSError, PyRuntimeError, PyValueError};
+use optri::{Error, Interruption};
+use pyo3::exceptions::{
+    PyMemoryError, PyOSError, PyRuntimeError, PyTimeoutError, PyTypeError, PyValueError,
+};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
 /// The Python exception for a library error, with the library's message:
-/// `OSError` for files that cannot be read or written, `RuntimeError` for
+/// `OSError` for files that cannot be read or written, `TimeoutError` for a
+/// run stopped by its `time_limit`, `RuntimeError` for
 /// [`Error::Internal`] (a bug in optri), `ValueError` for everything the
 /// caller's input or arguments got wrong.
 pub(crate) fn to_py_err(e: Error) -> PyErr {
     match e {
         Error::Io(message) => PyOSError::new_err(message),
+        Error::Interrupted(Interruption::TimeLimit { .. }) => {
+            PyTimeoutError::new_err(e.to_string())
+        }
         Error::Internal(_) => PyRuntimeError::new_err(e.to_string()),
         other => PyValueError::new_err(other.to_string()),
     }
@@ -33,26 +39,57 @@ pub(crate) fn file_err(path: &std::path::Path, e: Error) -> PyErr {
     }
 }
 
-/// `what` as an `(n, 2)` float array, through `numpy.asarray` (so lists,
-/// tuples, integer arrays and any array-like work), copied into the rows the
-/// library takes. Values are not checked here: `PointSet::new` rejects NaN
-/// and out-of-range coordinates naming the point.
+/// `what` as `(n, 2)` doubles, through `numpy.asarray` (so lists, tuples,
+/// integer arrays and any array-like work), copied into the rows the library
+/// takes. Nothing is changed silently: complex values and masked entries are
+/// refused (`TypeError`), and so is a value that no double represents
+/// exactly (an integer beyond 2⁵³, a `longdouble`, a `Fraction` like 1/3:
+/// `ValueError` naming the point), since rounding it could merge distinct
+/// points or move one across a line. NaN and out-of-range values pass here:
+/// `PointSet::new` rejects them naming the point.
 pub(crate) fn points_arg(
     py: Python<'_>,
     points: &Bound<'_, PyAny>,
     what: &str,
 ) -> PyResult<Vec<[f64; 2]>> {
     let numpy = py.import("numpy")?;
-    let kwargs = PyDict::new(py);
-    kwargs.set_item("dtype", numpy.getattr("float64")?)?;
-    let array = numpy
-        .call_method("asarray", (points,), Some(&kwargs))
-        .map_err(|e| {
-            PyValueError::new_err(format!(
-                "{what} must be an (n, 2) array-like of numbers: {}",
-                e.value(py)
-            ))
-        })?;
+    let ma = numpy.getattr("ma")?;
+    if ma.call_method1("isMaskedArray", (points,))?.is_truthy()?
+        && ma
+            .call_method1("getmaskarray", (points,))?
+            .call_method0("any")?
+            .is_truthy()?
+    {
+        return Err(PyTypeError::new_err(format!(
+            "{what} is a masked array with masked entries; pass the points to use \
+             (e.g. points[~points.mask.any(axis=1)].data)"
+        )));
+    }
+    let not_numbers = |e: PyErr| {
+        if e.is_instance_of::<PyMemoryError>(py) {
+            return e;
+        }
+        PyValueError::new_err(format!(
+            "{what} must be an (n, 2) array-like of numbers: {}",
+            e.value(py)
+        ))
+    };
+    let given = numpy
+        .call_method1("asarray", (points,))
+        .map_err(not_numbers)?;
+    let dtype = given.getattr("dtype")?;
+    let kind: String = dtype.getattr("kind")?.extract()?;
+    if kind == "c" {
+        return Err(PyTypeError::new_err(format!(
+            "{what} must be real numbers, got {} values",
+            dtype.str()?
+        )));
+    }
+    let no_copy = PyDict::new(py);
+    no_copy.set_item("copy", false)?;
+    let array = given
+        .call_method("astype", (numpy.getattr("float64")?,), Some(&no_copy))
+        .map_err(not_numbers)?;
     let array = array.cast_into::<numpy::PyArrayDyn<f64>>().map_err(|_| {
         PyValueError::new_err(format!("{what}: numpy.asarray did not give a float array"))
     })?;
@@ -65,13 +102,66 @@ pub(crate) fn points_arg(
             if shape.len() == 1 { "," } else { "" }
         )));
     }
+    if dtype.ne(numpy.getattr("float64")?)? {
+        check_exact(py, &numpy, &given, array.as_any())?;
+    }
     let readonly = array.readonly();
     let view = readonly.as_array();
-    Ok(view
-        .rows()
-        .into_iter()
-        .map(|row| [row[0], row[1]])
-        .collect())
+    let n = shape[0];
+    let mut rows = Vec::new();
+    rows.try_reserve_exact(n).map_err(|_| {
+        PyMemoryError::new_err(format!(
+            "cannot hold {n} points ({} bytes)",
+            n.saturating_mul(16)
+        ))
+    })?;
+    rows.extend(view.rows().into_iter().map(|row| [row[0], row[1]]));
+    Ok(rows)
+}
+
+/// Refuses the first value of `given` that its double in `doubles` does not
+/// equal exactly (compared in `given`'s own type: integers exactly, Python
+/// objects by Python's exact mixed comparisons). Non-finite doubles are
+/// left to `PointSet::new`.
+fn check_exact(
+    py: Python<'_>,
+    numpy: &Bound<'_, PyModule>,
+    given: &Bound<'_, PyAny>,
+    doubles: &Bound<'_, PyAny>,
+) -> PyResult<()> {
+    // Casting an out-of-range double back to an integer type warns; the
+    // comparison then fails, which is the answer.
+    let quiet = PyDict::new(py);
+    quiet.set_item("all", "ignore")?;
+    let errstate = numpy.call_method("errstate", (), Some(&quiet))?;
+    errstate.call_method0("__enter__")?;
+    let warnings = py.import("warnings")?;
+    let catcher = warnings.call_method0("catch_warnings")?;
+    catcher.call_method0("__enter__")?;
+    warnings.call_method1("simplefilter", ("ignore",))?;
+    let back = doubles.call_method1("astype", (given.getattr("dtype")?,));
+    let differs = back.and_then(|back| {
+        let unequal = back.call_method1("__ne__", (given,))?;
+        let finite = numpy.call_method1("isfinite", (doubles,))?;
+        numpy.call_method1("logical_and", (unequal, finite))
+    });
+    catcher.call_method1("__exit__", (py.None(), py.None(), py.None()))?;
+    errstate.call_method1("__exit__", (py.None(), py.None(), py.None()))?;
+    let differs = differs?;
+    let found = numpy.call_method1("argwhere", (differs,))?;
+    if found.len()? == 0 {
+        return Ok(());
+    }
+    let first = found.get_item(0)?;
+    let (i, j): (usize, usize) = (first.get_item(0)?.extract()?, first.get_item(1)?.extract()?);
+    let value = given.get_item((i, j))?;
+    let double: f64 = doubles.get_item((i, j))?.extract()?;
+    Err(PyValueError::new_err(format!(
+        "point {i} has coordinate {} that no double represents exactly (the nearest is {double:?}); \
+         optri computes exactly with doubles, so rounding it would change the input: scale or \
+         shift the points so that every coordinate is a double (integers up to 2**53)",
+        value.str()?
+    )))
 }
 
 /// A read-only `(len, K)` int64 array of index tuples: read-only because a

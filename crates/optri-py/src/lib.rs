@@ -22,20 +22,21 @@ use convert::{file_err, index_array, json_text_to_py, point_array, points_arg, t
 use numpy::PyArray2;
 use optri::io::{self, Input, InputFormat};
 use optri::request::{Outcome, Request, Results, Task};
-use optri::{Error, Phase};
-use pyo3::exceptions::{PyRuntimeError, PyTypeError};
+use optri::{Cancel, Options, Phase};
+use pyo3::exceptions::{PyMemoryError, PyRuntimeError, PyTypeError};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use std::path::PathBuf;
 use std::sync::Arc;
 use triangulation::Triangulation;
 
-/// A request for `task` on `input` (read at the decimals Python shows,
-/// [`io::doubles_as_decimals`]) with the keyword arguments as options by
-/// name: each checked against what the task reads (the registry's
-/// declarations), its value a string or a number.
-fn request(task: Task, input: Input, kwargs: Option<&Bound<'_, PyDict>>) -> PyResult<Request> {
-    let mut request = Request::new(io::doubles_as_decimals(input), task);
+/// A request for `task` on `input` with the keyword arguments as options
+/// by name: each checked against what the task reads (the registry's
+/// declarations), its value a string or a number. The input is read at the
+/// decimals Python shows ([`io::doubles_as_decimals`]) when the request
+/// runs, on its own thread.
+fn request(task: Task, input: Input, kwargs: Option<&Bound<'_, PyDict>>) -> PyResult<Pending> {
+    let mut options = Options::default();
     if let Some(kwargs) = kwargs {
         for (key, value) in kwargs.iter() {
             let key: String = key.extract()?;
@@ -53,20 +54,91 @@ fn request(task: Task, input: Input, kwargs: Option<&Bound<'_, PyDict>>) -> PyRe
                     value.get_type().name()?
                 )));
             };
-            request.set_option(&key, &text).map_err(to_py_err)?;
+            task.set_option(&mut options, &key, &text)
+                .map_err(to_py_err)?;
         }
     }
-    Ok(request)
+    Ok(Pending {
+        task,
+        input,
+        options,
+    })
 }
 
-/// Runs `request` without the GIL.
-fn run(py: Python<'_>, request: Request) -> PyResult<Outcome> {
-    py.detach(|| {
-        let mut outcome = request.run()?;
-        outcome.finish();
-        Ok::<_, Error>(outcome)
-    })
-    .map_err(to_py_err)
+/// A request before its input is read: [`run`] builds and runs it.
+struct Pending {
+    task: Task,
+    input: Input,
+    options: Options,
+}
+
+/// How often a waiting call looks for Ctrl-C (and other signals).
+const SIGNAL_POLL: std::time::Duration = std::time::Duration::from_millis(50);
+
+/// Bytes of working memory reserved per point before a run, so that a
+/// request far beyond this machine's memory fails with `MemoryError` up
+/// front instead of aborting the interpreter inside the library (a
+/// Delaunay triangulation alone keeps about 100 bytes per point).
+const WORKING_BYTES_PER_POINT: usize = 256;
+
+/// Runs `request` on a thread of its own, without the GIL, and waits for it
+/// while looking for signals: Ctrl-C raises the request's cancellation flag
+/// and `KeyboardInterrupt` at once (the run stops at its next check and its
+/// thread ends by itself).
+fn run(py: Python<'_>, pending: Pending) -> PyResult<Outcome> {
+    let points = pending.input.points().len();
+    let mut probe: Vec<u8> = Vec::new();
+    probe
+        .try_reserve_exact(points.saturating_mul(WORKING_BYTES_PER_POINT))
+        .map_err(|_| {
+            PyMemoryError::new_err(format!(
+                "{points} points need about {} MB of working memory, which this process cannot get",
+                points.saturating_mul(WORKING_BYTES_PER_POINT) >> 20
+            ))
+        })?;
+    drop(probe);
+    let cancel = Cancel::new();
+    let Pending {
+        task,
+        input,
+        options,
+    } = pending;
+    let options = options.with_cancel(cancel.clone());
+    let (send, receive) = std::sync::mpsc::sync_channel(1);
+    std::thread::Builder::new()
+        .name("optri".to_string())
+        .spawn(move || {
+            let request = Request::new(io::doubles_as_decimals(input), task).with_options(options);
+            let outcome = request.run().map(|mut outcome| {
+                outcome.finish();
+                outcome
+            });
+            // The caller may have gone (Ctrl-C): nobody to tell then.
+            let _ = send.send(outcome);
+        })
+        .map_err(|e| PyRuntimeError::new_err(format!("cannot start the run's thread: {e}")))?;
+    let receive = std::sync::Mutex::new(receive);
+    loop {
+        let waited = py.detach(|| match receive.lock() {
+            Ok(receive) => receive.recv_timeout(SIGNAL_POLL),
+            Err(_) => Err(std::sync::mpsc::RecvTimeoutError::Disconnected),
+        });
+        match waited {
+            Ok(outcome) => return outcome.map_err(to_py_err),
+            Err(std::sync::mpsc::RecvTimeoutError::Timeout) => {
+                if let Err(interrupt) = py.check_signals() {
+                    cancel.cancel();
+                    return Err(interrupt);
+                }
+            }
+            Err(std::sync::mpsc::RecvTimeoutError::Disconnected) => {
+                return Err(PyRuntimeError::new_err(
+                    "internal error: the run ended without a result (a bug in optri; please \
+                     report it with the input)",
+                ))
+            }
+        }
+    }
 }
 
 /// The `Triangulation` of a triangulate request's outcome.

@@ -8,7 +8,10 @@ import math
 import os
 import pathlib
 import random
+from fractions import Fraction
 import subprocess
+import sys
+import textwrap
 import threading
 import time
 
@@ -609,3 +612,75 @@ def test_decimal_files_through_read_points_match_the_cli(tmp_path):
     assert len(optri.graph(TENTHS, "hull")) == 4
     for name, result in optri.compare(TENTHS).items():
         assert len(result.simplices) == 2, name
+
+
+# --- input that is never changed silently ---------------------------------------
+
+
+def test_values_no_double_represents_are_refused_naming_the_point():
+    big = 2**53
+    ok = optri.triangulate(np.array([[0, 0], [big, 0], [0, big]], dtype=np.int64))
+    assert ok.points.tolist() == [[0, 0], [big, 0], [0, big]]
+    with pytest.raises(ValueError, match=r"point 1 has coordinate 9007199254740993 that no double"):
+        optri.triangulate(np.array([[0, 0], [big + 1, 0], [0, 5]], dtype=np.int64))
+    with pytest.raises(ValueError, match=r"point 2 has coordinate .* that no double"):
+        optri.triangulate([[0, 0], [1, 0], [Fraction(1, 3), 1]])
+    with pytest.raises(ValueError, match="no double represents exactly"):
+        optri.triangulate([[0, 0], [1, 0], [10**30 + 1, 1]])
+    with pytest.raises(ValueError, match="point 1 has coordinate"):
+        optri.graph(np.array([[0, 0], [2**63 - 1, 0]], dtype=np.uint64), "mst")
+    # Exact conversions pass: float32, small integers, exact Fractions.
+    optri.triangulate(np.array([[0, 0], [1.5, 0], [0, 0.25]], dtype=np.float32))
+    optri.triangulate([[0, 0], [Fraction(3, 4), 0], [0, 1]])
+
+
+def test_complex_and_masked_arrays_are_refused():
+    with pytest.raises(TypeError, match="must be real numbers, got complex128 values"):
+        optri.triangulate(np.array([[0, 0], [1, 0], [0, 1j]]))
+    masked = np.ma.masked_array([[0, 0], [1, 0], [0, 1], [5, 5]], mask=[[0, 0], [0, 0], [0, 0], [1, 0]])
+    with pytest.raises(TypeError, match="masked array with masked entries"):
+        optri.triangulate(masked)
+    unmasked = np.ma.masked_array([[0, 0], [1, 0], [0, 1]], mask=False)
+    assert optri.triangulate(unmasked).simplices.shape == (1, 3)
+
+
+def test_an_array_beyond_memory_raises_memory_error():
+    huge = np.broadcast_to(np.zeros(2), (2**36, 2))
+    with pytest.raises(MemoryError):
+        optri.triangulate(huge)
+
+
+def test_a_time_limit_stops_the_run_with_timeout_error():
+    rng = np.random.default_rng(7)
+    points = rng.random((200_000, 2))
+    with pytest.raises(TimeoutError, match="stopped: the time limit of .* s passed"):
+        optri.triangulate(points, "min-weight", time_limit=1e-9)
+
+
+def test_ctrl_c_stops_a_long_run_within_seconds():
+    """SIGINT half a second into a long run (Klincsek's cubic program on a
+    3000-gon takes minutes) raises KeyboardInterrupt at once; the run's
+    thread stops at its next check."""
+    code = textwrap.dedent(
+        """
+        import math, os, signal, threading, time
+        import optri
+        ring = [[round(1e6 * math.cos(2 * math.pi * k / 3000)), round(1e6 * math.sin(2 * math.pi * k / 3000))]
+                for k in range(3000)]
+        sent = []
+        def interrupt():
+            sent.append(time.monotonic())
+            os.kill(os.getpid(), signal.SIGINT)
+        threading.Timer(0.5, interrupt).start()
+        try:
+            optri.triangulate_polygon(ring, "min-weight")
+            print("finished", 0)
+        except KeyboardInterrupt:
+            print("interrupted", time.monotonic() - sent[0])
+        """
+    )
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=600)
+    assert out.returncode == 0, out.stderr
+    word, seconds = out.stdout.split()
+    assert word == "interrupted", out.stdout
+    assert float(seconds) < 2.0, out.stdout

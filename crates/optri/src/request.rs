@@ -83,6 +83,23 @@ impl Task {
         GraphKind::from_name(kind).map(Task::Graph)
     }
 
+    /// Sets the option `name` of `options` from its text form
+    /// ([`Options::set`]), refusing an option this task does not read.
+    ///
+    /// # Errors
+    /// As [`Request::set_option`].
+    pub fn set_option(&self, options: &mut Options, name: &str, value: &str) -> Result<()> {
+        let read = self.options();
+        if !read.contains(&name) {
+            return Err(Error::UnknownOption {
+                name: name.to_string(),
+                of: self.describe(),
+                available: read,
+            });
+        }
+        options.set(name, value)
+    }
+
     /// `"criterion delaunay"`, `"these criteria"`, `"graph rng"`: for
     /// messages.
     fn describe(&self) -> String {
@@ -164,15 +181,7 @@ impl Request {
     /// [`Error::UnknownOption`] naming the options the task reads, or the
     /// errors of [`Options::set`] for its value.
     pub fn set_option(&mut self, name: &str, value: &str) -> Result<()> {
-        let read = self.task.options();
-        if !read.contains(&name) {
-            return Err(Error::UnknownOption {
-                name: name.to_string(),
-                of: self.task.describe(),
-                available: read,
-            });
-        }
-        self.options.set(name, value)
+        self.task.set_option(&mut self.options, name, value)
     }
 
     /// The task.
@@ -183,6 +192,11 @@ impl Request {
     /// The options as set so far.
     pub fn options(&self) -> &Options {
         &self.options
+    }
+
+    /// The input as read.
+    pub fn input(&self) -> &ReadInput {
+        &self.read
     }
 
     /// Validates the input (timed as `validate`) and runs the task.
