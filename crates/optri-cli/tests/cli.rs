@@ -9,7 +9,7 @@ use std::path::PathBuf;
 use std::process::{Command, Output, Stdio};
 
 const BIN: &str = env!("CARGO_BIN_EXE_optri");
-/// The shared TSPLIB file `name.tsp` (see `optri_oracle::data_dir`).
+/// The TSPLIB file `name.tsp` (see `optri_oracle::data_dir`).
 fn tsplib(name: &str) -> String {
     let path = optri_oracle::data_dir().join(format!("tsplib/{name}.tsp"));
     path.to_str().unwrap().to_string()
@@ -563,7 +563,8 @@ fn a_closed_stdout_pipe_is_a_clean_failure() {
 #[test]
 fn every_tsplib_file_matches_its_readme_counts() {
     // (file, DIMENSION, duplicate coords, hull points incl. collinear) from
-    // shared/data/tsplib/README.md, computed there independently.
+    // the TSPLIB README (crates/optri-oracle/data/tsplib/README.md),
+    // computed there independently.
     let expected = [
         ("berlin52", 52, 0, 8),
         ("kroA100", 100, 0, 12),

@@ -20,8 +20,8 @@
 //! generators and named degenerate fixtures the tests, benches and examples
 //! share.
 //!
-//! [`data_dir`] finds the shared test data (`$OPTRI_DATA`, else
-//! `shared/data` beside the repository).
+//! [`data_dir`] finds the test data (`$OPTRI_DATA`, else `shared/data`
+//! beside the repository, else the TSPLIB files vendored in `data/`).
 //!
 //! Conventions: indices are `u32` into the caller's slice of *distinct*
 //! points; triangles are counter-clockwise with the smallest index first,

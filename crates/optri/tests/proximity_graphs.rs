@@ -493,7 +493,7 @@ fn gabriel_graph_is_planar_and_uses_the_closed_disc() {
     let ps = PointSet::new(&grid).unwrap();
     let edges = gabriel_graph(&ps).unwrap();
     assert_eq!(edges.len(), 12, "{edges:?}");
-    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../../shared/data/tsplib");
+    let dir = optri_oracle::data_dir().join("tsplib");
     let mut checked = 0;
     for (label, pts) in [
         (
