@@ -68,7 +68,7 @@ fn limits(args: &ServeArgs) -> CliResult<Limits> {
     let seconds = |option: &str, value: f64| {
         if !(0.0..=MAX_SECONDS).contains(&value) {
             return Err(format!(
-                "invalid {option} {value}: give a number of seconds from 0 to {MAX_SECONDS} \
+                "invalid {option} {value:?}: give a number of seconds from 0 to {MAX_SECONDS} \
                  (a year)"
             ));
         }

@@ -666,3 +666,139 @@ fn read(body: &[u8]) -> Result<Reply, Refusal> {
         }),
     ))
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use optri_oracle::inputs;
+    use rand::{rngs::StdRng, SeedableRng};
+    use std::f64::consts::TAU;
+
+    /// Seed of the comparison's points.
+    const SEED_POINTS: u64 = 2_000;
+
+    fn limits(time_limit: Duration) -> Limits {
+        Limits {
+            max_body_bytes: 1 << 20,
+            max_points: 10_000,
+            time_limit,
+            max_running: 1,
+            read_timeout: Duration::from_secs(5),
+        }
+    }
+
+    fn block_on<T>(future: impl std::future::Future<Output = T>) -> T {
+        tokio::runtime::Builder::new_current_thread()
+            .enable_time()
+            .build()
+            .unwrap()
+            .block_on(future)
+    }
+
+    #[test]
+    fn past_the_deadline_the_flag_is_raised_and_the_slot_freed_when_the_work_stops() {
+        let api = Api::new(limits(Duration::from_millis(50)));
+        let cancel = Cancel::new();
+        let flag = cancel.clone();
+        let reply = block_on(async {
+            let job = api.large.try_take().unwrap().run(move || {
+                // A computation that checks its flag, as the library does.
+                while !flag.is_cancelled() {
+                    std::thread::sleep(Duration::from_millis(1));
+                }
+            });
+            let deadline = Instant::now() + Duration::from_millis(50);
+            api.wait(job, deadline, &cancel, false).await
+        })
+        .unwrap_err();
+        assert_eq!(reply.status, 503);
+        assert!(reply.body.contains("limit of 0.05 s"), "{}", reply.body);
+        assert!(cancel.is_cancelled());
+        block_on(async {
+            timeout(Duration::from_secs(60), api.large.wait())
+                .await
+                .expect("the slot is freed once the work has stopped")
+        });
+    }
+
+    #[test]
+    fn a_comparison_past_its_deadline_reports_the_criteria_the_limit_stopped() {
+        let api = Api::new(limits(Duration::from_secs(7)));
+        let mut rng = StdRng::seed_from_u64(SEED_POINTS);
+        let points = inputs::uniform_in_square(&mut rng, SMALL_POINTS, 1000.0);
+        let criteria = ["delaunay", "greedy", "minmax-length"];
+        let body = json!({ "points": points, "criteria": criteria }).to_string();
+        // The deadline has passed when the computation starts: every
+        // criterion is stopped at its first check, and the answer says so.
+        let reply = block_on(api.answer(
+            Endpoint::Run(Kind::Compare),
+            Bytes::from(body),
+            Instant::now(),
+        ));
+        assert_eq!(reply.status, 200, "{}", reply.body);
+        let doc: Value = serde_json::from_str(&reply.body).unwrap();
+        assert_eq!(doc["document"], "comparison");
+        let results = doc["results"].as_array().unwrap();
+        assert_eq!(results.len(), criteria.len());
+        for (r, name) in results.iter().zip(criteria) {
+            assert_eq!(r["criterion"], name);
+            assert_eq!(
+                r["error"],
+                "stopped: the time limit of 7 s passed before the run finished"
+            );
+        }
+        // One criterion: 503 naming the limit.
+        let body = json!({ "points": points, "criterion": "greedy" }).to_string();
+        let reply = block_on(api.answer(
+            Endpoint::Run(Kind::Triangulate),
+            Bytes::from(body),
+            Instant::now(),
+        ));
+        assert_eq!(reply.status, 503, "{}", reply.body);
+        assert!(reply.body.contains("limit of 7 s"), "{}", reply.body);
+        // Within the limit, the same comparison is whole.
+        let body = json!({ "points": points, "criteria": criteria }).to_string();
+        let reply = block_on(api.answer(
+            Endpoint::Run(Kind::Compare),
+            Bytes::from(body),
+            Instant::now() + Duration::from_secs(600),
+        ));
+        let doc: Value = serde_json::from_str(&reply.body).unwrap();
+        assert!(doc["results"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .all(|r| r["triangles"].is_array()));
+    }
+
+    #[test]
+    fn a_criterion_that_refuses_the_input_is_named() {
+        let api = Api::new(limits(Duration::from_secs(60)));
+        // A star with 4001 vertices: more than the polygon program takes.
+        let star: Vec<[f64; 2]> = (0..4001)
+            .map(|i| {
+                let (r, angle) = (1000.0 - 100.0 * (i % 2) as f64, i as f64 / 4001.0 * TAU);
+                [r * angle.cos(), r * angle.sin()]
+            })
+            .collect();
+        let body = json!({ "points": star, "criterion": "minmax-area", "polygon": true });
+        let reply = block_on(api.answer(
+            Endpoint::Run(Kind::Triangulate),
+            Bytes::from(body.to_string()),
+            Instant::now() + Duration::from_secs(600),
+        ));
+        let doc: Value = serde_json::from_str(&reply.body).unwrap();
+        assert_eq!(reply.status, 422, "{doc}");
+        assert_eq!(doc["criterion"], "minmax-area", "{doc}");
+        // An input every criterion refuses names none.
+        let body = json!({ "points": [[0, 0], [1, 1], [2, 2]], "criterion": "delaunay" });
+        let reply = block_on(api.answer(
+            Endpoint::Run(Kind::Triangulate),
+            Bytes::from(body.to_string()),
+            Instant::now() + Duration::from_secs(600),
+        ));
+        let doc: Value = serde_json::from_str(&reply.body).unwrap();
+        assert_eq!(reply.status, 422);
+        assert!(doc.get("criterion").is_none(), "{doc}");
+    }
+}
