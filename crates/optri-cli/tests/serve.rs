@@ -866,4 +866,12 @@ fn limits_that_overflow_or_make_no_sense_are_refused_at_start() {
         assert!(stderr.contains(message), "{stderr}");
         assert!(out.stdout.is_empty(), "it does not start listening");
     }
+    // The help says what is small, as GET /api/limits does.
+    let out = Command::new(BIN)
+        .args(["serve", "--help"])
+        .output()
+        .unwrap();
+    let help = String::from_utf8_lossy(&out.stdout);
+    assert!(help.contains("at most 2000 points"), "{help}");
+    assert!(help.contains("--read-timeout"), "{help}");
 }
