@@ -306,7 +306,7 @@ struct Prepared {
 /// computation.
 enum Step {
     Done(Reply),
-    Large(Prepared),
+    Large(Box<Prepared>),
 }
 
 /// Raises the flag when dropped: a request whose client went away, or that
@@ -449,7 +449,7 @@ impl Api {
             Ok(if prepared.points <= SMALL_POINTS {
                 Step::Done(run(prepared))
             } else {
-                Step::Large(prepared)
+                Step::Large(Box::new(prepared))
             })
         });
         match self.wait(first, deadline, cancel, partial).await? {
@@ -458,7 +458,7 @@ impl Api {
             Ok(Step::Large(_)) if Instant::now() >= deadline => Err(self.out_of_time()),
             Ok(Step::Large(prepared)) => {
                 let slot = self.large.try_take().ok_or_else(|| self.busy())?;
-                self.wait(slot.run(move || run(prepared)), deadline, cancel, partial)
+                self.wait(slot.run(move || run(*prepared)), deadline, cancel, partial)
                     .await
             }
         }
