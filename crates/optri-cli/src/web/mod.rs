@@ -667,6 +667,16 @@ fn read(body: &[u8]) -> Result<Reply, Refusal> {
     ))
 }
 
+/// Runs `future` to its end on a runtime like the server's.
+#[cfg(test)]
+fn block_on<T>(future: impl std::future::Future<Output = T>) -> T {
+    tokio::runtime::Builder::new_current_thread()
+        .enable_time()
+        .build()
+        .unwrap()
+        .block_on(future)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -685,14 +695,6 @@ mod tests {
             max_running: 1,
             read_timeout: Duration::from_secs(5),
         }
-    }
-
-    fn block_on<T>(future: impl std::future::Future<Output = T>) -> T {
-        tokio::runtime::Builder::new_current_thread()
-            .enable_time()
-            .build()
-            .unwrap()
-            .block_on(future)
     }
 
     #[test]

@@ -120,16 +120,9 @@ impl Slot {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::web::block_on;
     use std::sync::mpsc;
     use std::time::Duration;
-
-    fn block_on<T>(future: impl std::future::Future<Output = T>) -> T {
-        tokio::runtime::Builder::new_current_thread()
-            .enable_time()
-            .build()
-            .unwrap()
-            .block_on(future)
-    }
 
     #[test]
     fn a_slot_is_free_again_when_its_work_returns_not_when_its_caller_leaves() {
