@@ -570,9 +570,9 @@ fn small_request(server: &Server) -> Answer {
 fn stalled_clients_are_dropped_and_never_hold_up_others() {
     let server = Server::start(&["--read-timeout", "1"]);
     let start = Instant::now();
-    // More stalled connections than the small slots (16) and tiny_http's
-    // workers (4) together: idle ones, ones stuck in their headers, and ones
-    // that announce a body and send none or part of it.
+    // More stalled connections than there are small slots (16): idle ones,
+    // ones stuck in their headers, and ones that announce a body and send
+    // none or part of it.
     let stalls = [
         "",
         "POST /api/triangulate HTTP/1.1\r\nHost: ",
