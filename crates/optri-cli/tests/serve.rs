@@ -614,36 +614,47 @@ fn stalled_clients_are_dropped_and_never_hold_up_others() {
 #[test]
 fn small_requests_are_answered_beside_large_ones() {
     let server = Server::start(&["--max-running", "1", "--time-limit", "60"]);
-    // The one large slot is taken by a computation of a few seconds.
-    let first = post_in_background(&server, large("min-weight", 20_000));
-    std::thread::sleep(Duration::from_millis(500));
-    // A small request is answered while it runs, not queued behind it.
+    let start = Instant::now();
+    // The one large slot is taken by a computation of a second or more; a
+    // quick large one is accepted until it is, then refused as busy and
+    // told to retry. (If a quick one held the slot when the long one asked,
+    // the long one was refused: it is sent again.)
+    let mut first = post_in_background(&server, large("min-weight", 20_000));
+    let busy = loop {
+        assert!(
+            start.elapsed() < HANG,
+            "the large computation never took its slot"
+        );
+        std::thread::sleep(Duration::from_millis(50));
+        if first.try_recv().is_ok() {
+            first = post_in_background(&server, large("min-weight", 20_000));
+            continue;
+        }
+        let quick = server.exchange("POST", "/api/triangulate", "", &large("delaunay", 2_001));
+        if quick.status != 200 {
+            break quick;
+        }
+    };
+    assert_eq!(busy.status, 503, "{}", busy.body);
+    assert_eq!(busy.header("retry-after"), Some("1"));
+    assert!(
+        busy.json()["error"].as_str().unwrap().contains("busy"),
+        "{}",
+        busy.body
+    );
+    // A small request is answered while it runs, not queued behind it (the
+    // large one takes a second or more, the small one milliseconds).
     let answer = small_request(&server);
     assert_eq!(answer.status, 200, "{}", answer.body);
-    let small_done = Instant::now();
-    // Another large one is refused as busy (the slot is held) and told to
-    // retry, unless the first one finished meanwhile.
-    let second = server.exchange("POST", "/api/triangulate", "", &large("delaunay", 2_001));
-    let second_done = Instant::now();
+    assert!(
+        first.try_recv().is_err(),
+        "the small request was answered after the large one"
+    );
     let first = first
         .recv_timeout(HANG)
         .expect("the large computation answers");
     assert_eq!(first.status, 200, "{}", first.body);
-    let first_done = Instant::now();
-    assert!(
-        first_done > small_done,
-        "the small request waited for the large one"
-    );
-    if first_done > second_done + Duration::from_secs(1) {
-        assert_eq!(second.status, 503, "{}", second.body);
-        assert_eq!(second.header("retry-after"), Some("1"));
-        assert!(
-            second.json()["error"].as_str().unwrap().contains("busy"),
-            "{}",
-            second.body
-        );
-    }
-    // Then it is accepted.
+    // Then a new large one is accepted.
     let again = server.exchange("POST", "/api/triangulate", "", &large("delaunay", 2_001));
     assert_eq!(again.status, 200, "{}", again.body);
 }
@@ -662,14 +673,17 @@ fn a_request_over_the_time_limit_is_cancelled_and_frees_its_slot() {
     // The answer came at the limit, not when the computation ended.
     assert!(start.elapsed() < HANG);
     // Its slot is freed when the computation stops: a new large computation
-    // is refused as busy until then, and accepted after.
+    // is refused as busy until then (or runs out of time itself, sharing the
+    // cores with it), and accepted after.
     loop {
         let next = server.exchange("POST", "/api/triangulate", "", &large("delaunay", 2_001));
         if next.status == 200 {
             break;
         }
         assert_eq!(next.status, 503, "{}", next.body);
-        assert_eq!(next.header("retry-after"), Some("1"), "{}", next.body);
+        let e = next.json()["error"].as_str().unwrap().to_string();
+        let busy = next.header("retry-after") == Some("1") && e.contains("busy");
+        assert!(busy || e.contains("limit of 0.5 s"), "{e}");
         assert!(start.elapsed() < HANG, "the slot was never freed");
         std::thread::sleep(Duration::from_millis(100));
     }
