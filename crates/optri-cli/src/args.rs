@@ -176,9 +176,22 @@ pub(crate) struct CriteriaArgs {
     pub json: bool,
 }
 
+/// `optri serve`. The limits are checked when the server starts: a value that overflows is
+/// refused with a message.
 #[derive(Args)]
+#[command(after_help = "\
+API: GET / (the page), GET /api/criteria, GET /api/limits, POST /api/triangulate, \
+POST /api/compare, POST /api/graph, POST /api/read; every GET also answers HEAD. \
+Errors are JSON {\"error\": message}: 400 bad request, 403 Host or Origin not this \
+server (when bound to a loopback address), 408 stalled body, 413 body too large, \
+422 input refused, 503 time limit passed or busy.
+
+Requests with at most 2000 points (and /api/read) are small: they run beside the large \
+ones on threads of their own and never wait for them; --max-running counts the large \
+ones only.")]
 pub(crate) struct ServeArgs {
-    /// Address to listen on (use 0.0.0.0 to accept other machines; there is no authentication).
+    /// Address to listen on (use 0.0.0.0 to accept other machines; there is no authentication,
+    /// and Host and Origin are checked only on a loopback address).
     #[arg(long, default_value = "127.0.0.1")]
     pub host: String,
     /// Port to listen on (0 picks a free one, printed on startup).
@@ -187,15 +200,22 @@ pub(crate) struct ServeArgs {
     /// Refuse requests with more points than this (422).
     #[arg(long, default_value_t = 20_000, value_name = "N")]
     pub max_points: usize,
-    /// Answer 503 when a computation takes longer than this many seconds.
+    /// Answer 503 when a request takes longer than this many seconds, from its headers to its
+    /// answer (reading, waiting and computing), and stop its computation. A comparison answers
+    /// with the criteria it finished instead.
     #[arg(long, default_value_t = 20.0, value_name = "SECONDS")]
     pub time_limit: f64,
     /// Refuse request bodies larger than this many MiB (413).
     #[arg(long, default_value_t = 8, value_name = "MIB")]
     pub max_body_mib: usize,
-    /// Most computations running at once; more requests get 503.
+    /// Most computations of more than 2000 points running at once; more get 503.
     #[arg(long, default_value_t = 2, value_name = "N")]
     pub max_running: usize,
+    /// Drop a client that takes longer than this many seconds to send request headers (or to
+    /// send the next request on a kept-alive connection), and answer 408 to one whose body
+    /// stalls this long.
+    #[arg(long, default_value_t = 5.0, value_name = "SECONDS")]
+    pub read_timeout: f64,
 }
 
 #[derive(Args)]

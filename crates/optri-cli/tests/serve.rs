@@ -1,20 +1,94 @@
 //! The web playground's API end to end: `optri serve --port 0` in a child
 //! process, plain HTTP/1.1 requests over a TCP socket, and the answers
 //! checked against the library (the same documents as `triangulate --json`
-//! and `compare --json`) and for their 4xx/503 refusals.
+//! and `compare --json`) and for their 4xx/503 refusals; then the server
+//! under load on the loopback interface: stalled clients, small requests
+//! beside large ones, cancellation at the time limit, keep-alive, `HEAD`,
+//! Host/Origin refusals and the security headers. Every wait is bounded;
+//! the only times asserted are generous bounds that catch a hang.
 
 use optri::io::triangulation_from_json;
+use optri_oracle::inputs;
+use rand::rngs::StdRng;
+use rand::SeedableRng;
 use serde_json::{json, Value};
 use std::io::{BufRead, BufReader, Read, Write};
 use std::net::TcpStream;
 use std::process::{Child, Command, Stdio};
+use std::sync::mpsc;
+use std::time::{Duration, Instant};
 
 const BIN: &str = env!("CARGO_BIN_EXE_optri");
+
+/// Longer than any answer or drop may take on a loaded machine: only a hang
+/// gets there.
+const HANG: Duration = Duration::from_secs(120);
 
 /// A running `optri serve`, killed when dropped.
 struct Server {
     child: Child,
     address: String,
+}
+
+/// One HTTP answer.
+struct Answer {
+    status: u16,
+    /// Header names in lower case, in the order received.
+    headers: Vec<(String, String)>,
+    body: String,
+}
+
+impl Answer {
+    fn header(&self, name: &str) -> Option<&str> {
+        self.headers
+            .iter()
+            .find(|(n, _)| n == name)
+            .map(|(_, v)| v.as_str())
+    }
+
+    fn json(&self) -> Value {
+        serde_json::from_str(&self.body)
+            .unwrap_or_else(|e| panic!("{e}: not JSON: {:?}", self.body))
+    }
+}
+
+/// Reads one answer from `reader`: its head, then `Content-Length` bytes of
+/// body (none for the answer to a `HEAD`).
+fn read_answer(reader: &mut impl BufRead, head: bool) -> Answer {
+    let mut status_line = String::new();
+    reader.read_line(&mut status_line).unwrap();
+    let status: u16 = status_line
+        .split(' ')
+        .nth(1)
+        .and_then(|s| s.parse().ok())
+        .unwrap_or_else(|| panic!("no status in {status_line:?}"));
+    let mut headers = Vec::new();
+    loop {
+        let mut line = String::new();
+        reader.read_line(&mut line).unwrap();
+        let line = line.trim_end();
+        if line.is_empty() {
+            break;
+        }
+        let (name, value) = line.split_once(':').unwrap();
+        headers.push((name.to_ascii_lowercase(), value.trim().to_string()));
+    }
+    let mut answer = Answer {
+        status,
+        headers,
+        body: String::new(),
+    };
+    if !head {
+        let length: usize = answer
+            .header("content-length")
+            .expect("every answer has a length")
+            .parse()
+            .unwrap();
+        let mut body = vec![0; length];
+        reader.read_exact(&mut body).unwrap();
+        answer.body = String::from_utf8(body).unwrap();
+    }
+    answer
 }
 
 impl Server {
@@ -40,36 +114,54 @@ impl Server {
         Server { child, address }
     }
 
-    /// Sends one request; returns the status and the body.
-    fn request(&self, method: &str, path: &str, body: &[u8]) -> (u16, String) {
-        let mut stream = TcpStream::connect(&self.address).unwrap();
-        let head = format!(
+    /// A connection that fails a read or write stalled longer than `HANG`.
+    fn connect(&self) -> TcpStream {
+        let stream = TcpStream::connect(&self.address).unwrap();
+        stream.set_read_timeout(Some(HANG)).unwrap();
+        stream.set_write_timeout(Some(HANG)).unwrap();
+        stream
+    }
+
+    /// The head of a request with these `headers` (each ending in CRLF).
+    fn head(&self, method: &str, path: &str, headers: &str, body: &[u8]) -> String {
+        format!(
             "{method} {path} HTTP/1.1\r\nHost: {}\r\nContent-Type: application/json\r\n\
-             Content-Length: {}\r\nConnection: close\r\n\r\n",
+             Content-Length: {}\r\n{headers}\r\n",
             self.address,
             body.len()
+        )
+    }
+
+    /// Sends one request with extra `headers` on a new connection; returns
+    /// the answer.
+    fn exchange(&self, method: &str, path: &str, headers: &str, body: &[u8]) -> Answer {
+        let mut stream = self.connect();
+        let head = self.head(
+            method,
+            path,
+            &format!("Connection: close\r\n{headers}"),
+            body,
         );
         stream.write_all(head.as_bytes()).unwrap();
         // The server may answer (413) before reading a large body.
         let _ = stream.write_all(body);
-        let mut answer = Vec::new();
-        stream.read_to_end(&mut answer).unwrap();
-        let answer = String::from_utf8(answer).unwrap();
-        let status: u16 = answer
-            .split(' ')
-            .nth(1)
-            .and_then(|s| s.parse().ok())
-            .unwrap_or_else(|| panic!("no status in {answer:?}"));
-        let body = answer
-            .split_once("\r\n\r\n")
-            .map_or("", |(_, b)| b)
-            .to_string();
-        (status, body)
+        read_answer(&mut BufReader::new(stream), method == "HEAD")
+    }
+
+    /// Sends one request; returns the status and the body.
+    fn request(&self, method: &str, path: &str, body: &[u8]) -> (u16, String) {
+        let answer = self.exchange(method, path, "", body);
+        (answer.status, answer.body)
     }
 
     fn post(&self, path: &str, body: &Value) -> (u16, Value) {
         let (status, text) = self.request("POST", path, body.to_string().as_bytes());
         (status, serde_json::from_str(&text).unwrap())
+    }
+
+    /// The port, as a client writes it in `Host`.
+    fn port(&self) -> &str {
+        self.address.rsplit(':').next().unwrap()
     }
 }
 
@@ -100,16 +192,29 @@ fn the_page_and_the_criteria_come_from_the_binary_and_the_registry() {
     let (status, page) = server.request("GET", "/", b"");
     assert_eq!(status, 200);
     assert!(page.contains("<title>optri playground</title>"), "{page}");
+    // Its script and style sheet come from the binary too.
+    let mut texts = vec![page.clone()];
+    for part in ["/playground.js", "/playground.css"] {
+        assert!(
+            page.contains(&format!("\"{part}\"")),
+            "the page loads {part}"
+        );
+        let (status, text) = server.request("GET", part, b"");
+        assert_eq!(status, 200, "{part}");
+        texts.push(text);
+    }
     // Offline: the page loads nothing from elsewhere (the only URL in it is
     // the SVG namespace).
-    for remote in [
-        "src=\"http",
-        "href=\"http",
-        "https://",
-        "url(http",
-        "import ",
-    ] {
-        assert!(!page.contains(remote), "the page must not load {remote}…");
+    for text in &texts {
+        for remote in [
+            "src=\"http",
+            "href=\"http",
+            "https://",
+            "url(http",
+            "import ",
+        ] {
+            assert!(!text.contains(remote), "the page must not load {remote}…");
+        }
     }
     let (status, text) = server.request("GET", "/api/criteria", b"");
     assert_eq!(status, 200);
@@ -425,4 +530,362 @@ fn size_and_time_limits_refuse_with_413_and_503() {
         503,
     );
     assert!(e.contains("longer than this server's limit of 0 s"), "{e}");
+}
+
+// ---- the server under load, on the loopback interface ----
+
+/// Seed of the large inputs.
+const SEED_LARGE: u64 = 20_000;
+
+/// A triangulate body of `n` uniform points (min-weight on 20 000 of them
+/// takes seconds, Delaunay on 2 001 milliseconds).
+fn large(criterion: &str, n: usize) -> Vec<u8> {
+    let mut rng = StdRng::seed_from_u64(SEED_LARGE);
+    let points = inputs::uniform_in_square(&mut rng, n, 1000.0);
+    json!({"points": points, "criterion": criterion})
+        .to_string()
+        .into_bytes()
+}
+
+/// `body` posted to `/api/triangulate` from a thread of its own; the answer
+/// arrives on the receiver.
+fn post_in_background(server: &Server, body: Vec<u8>) -> mpsc::Receiver<Answer> {
+    let mut stream = server.connect();
+    let head = server.head("POST", "/api/triangulate", "Connection: close\r\n", &body);
+    let (send, receive) = mpsc::channel();
+    std::thread::spawn(move || {
+        stream.write_all(head.as_bytes()).unwrap();
+        stream.write_all(&body).unwrap();
+        let _ = send.send(read_answer(&mut BufReader::new(stream), false));
+    });
+    receive
+}
+
+fn small_request(server: &Server) -> Answer {
+    let body = json!({"points": square_and_centre(), "criterion": "minmax-length"}).to_string();
+    server.exchange("POST", "/api/triangulate", "", body.as_bytes())
+}
+
+#[test]
+fn stalled_clients_are_dropped_and_never_hold_up_others() {
+    let server = Server::start(&["--read-timeout", "1"]);
+    let start = Instant::now();
+    // More stalled connections than there are small slots (16): idle ones,
+    // ones stuck in their headers, and ones that announce a body and send
+    // none or part of it.
+    let stalls = [
+        "",
+        "POST /api/triangulate HTTP/1.1\r\nHost: ",
+        "GET / HTTP/1.1\r\n",
+        "POST /api/triangulate HTTP/1.1\r\nHost: H\r\nContent-Length: 1000\r\n\r\n",
+        "POST /api/compare HTTP/1.1\r\nHost: H\r\nContent-Length: 1000\r\n\r\n{\"points\": [",
+    ];
+    let stalled: Vec<(usize, TcpStream)> = (0..25)
+        .map(|i| {
+            let mut stream = server.connect();
+            let text =
+                stalls[i % stalls.len()].replace("H\r\n", &format!("{}\r\n", server.address));
+            stream.write_all(text.as_bytes()).unwrap();
+            (i % stalls.len(), stream)
+        })
+        .collect();
+    // Meanwhile a small request is answered at once.
+    let answer = small_request(&server);
+    assert_eq!(answer.status, 200, "{}", answer.body);
+    // Each stalled client is dropped after the read timeout (1 s): those in
+    // their headers without an answer, those in a body with 408.
+    for (kind, stream) in stalled {
+        let mut text = String::new();
+        BufReader::new(stream)
+            .read_to_string(&mut text)
+            .unwrap_or_else(|e| panic!("stall {kind} was not dropped: {e}"));
+        if kind >= 3 {
+            assert!(text.starts_with("HTTP/1.1 408"), "stall {kind}: {text}");
+            assert!(text.contains("stalled: nothing arrived for 1 s"), "{text}");
+        } else {
+            assert!(!text.contains(" 200 "), "stall {kind}: {text}");
+        }
+    }
+    assert!(start.elapsed() < HANG);
+    let answer = small_request(&server);
+    assert_eq!(answer.status, 200, "{}", answer.body);
+}
+
+#[test]
+fn small_requests_are_answered_beside_large_ones() {
+    let server = Server::start(&["--max-running", "1", "--time-limit", "60"]);
+    let start = Instant::now();
+    // The one large slot is taken by a computation of a second or more; a
+    // quick large one is accepted until it is, then refused as busy and
+    // told to retry. (If a quick one held the slot when the long one asked,
+    // the long one was refused: it is sent again.)
+    let mut first = post_in_background(&server, large("min-weight", 20_000));
+    let busy = loop {
+        assert!(
+            start.elapsed() < HANG,
+            "the large computation never took its slot"
+        );
+        std::thread::sleep(Duration::from_millis(50));
+        if first.try_recv().is_ok() {
+            first = post_in_background(&server, large("min-weight", 20_000));
+            continue;
+        }
+        let quick = server.exchange("POST", "/api/triangulate", "", &large("delaunay", 2_001));
+        if quick.status != 200 {
+            break quick;
+        }
+    };
+    assert_eq!(busy.status, 503, "{}", busy.body);
+    assert_eq!(busy.header("retry-after"), Some("1"));
+    assert!(
+        busy.json()["error"].as_str().unwrap().contains("busy"),
+        "{}",
+        busy.body
+    );
+    // A small request is answered while it runs, not queued behind it (the
+    // large one takes a second or more, the small one milliseconds).
+    let answer = small_request(&server);
+    assert_eq!(answer.status, 200, "{}", answer.body);
+    assert!(
+        first.try_recv().is_err(),
+        "the small request was answered after the large one"
+    );
+    let first = first
+        .recv_timeout(HANG)
+        .expect("the large computation answers");
+    assert_eq!(first.status, 200, "{}", first.body);
+    // Then a new large one is accepted.
+    let again = server.exchange("POST", "/api/triangulate", "", &large("delaunay", 2_001));
+    assert_eq!(again.status, 200, "{}", again.body);
+}
+
+#[test]
+fn a_request_over_the_time_limit_is_cancelled_and_frees_its_slot() {
+    let server = Server::start(&["--max-running", "1", "--time-limit", "0.5"]);
+    let start = Instant::now();
+    let over = server.exchange("POST", "/api/triangulate", "", &large("min-weight", 20_000));
+    assert_eq!(over.status, 503, "{}", over.body);
+    let e = over.json()["error"].as_str().unwrap().to_string();
+    assert!(
+        e.starts_with("stopped:") && e.contains("limit of 0.5 s"),
+        "{e}"
+    );
+    // The answer came at the limit, not when the computation ended.
+    assert!(start.elapsed() < HANG);
+    // Its slot is freed when the computation stops: a new large computation
+    // is refused as busy until then (or runs out of time itself, sharing the
+    // cores with it), and accepted after.
+    loop {
+        let next = server.exchange("POST", "/api/triangulate", "", &large("delaunay", 2_001));
+        if next.status == 200 {
+            break;
+        }
+        assert_eq!(next.status, 503, "{}", next.body);
+        let e = next.json()["error"].as_str().unwrap().to_string();
+        let busy = next.header("retry-after") == Some("1") && e.contains("busy");
+        assert!(busy || e.contains("limit of 0.5 s"), "{e}");
+        assert!(start.elapsed() < HANG, "the slot was never freed");
+        std::thread::sleep(Duration::from_millis(100));
+    }
+}
+
+#[test]
+fn keep_alive_and_head() {
+    let server = Server::start(&[]);
+    // Two requests on one connection, then HEAD, then a POST.
+    let mut stream = server.connect();
+    let mut reader = BufReader::new(stream.try_clone().unwrap());
+    stream
+        .write_all(server.head("GET", "/api/limits", "", b"").as_bytes())
+        .unwrap();
+    let limits = read_answer(&mut reader, false);
+    assert_eq!(limits.status, 200);
+    assert_eq!(limits.json()["small_points"], 2000);
+    stream
+        .write_all(server.head("GET", "/", "", b"").as_bytes())
+        .unwrap();
+    let page = read_answer(&mut reader, false);
+    assert_eq!(page.status, 200);
+    // HEAD: the same headers, no body (the next answer parses right after).
+    for path in [
+        "/",
+        "/playground.js",
+        "/playground.css",
+        "/api/criteria",
+        "/api/limits",
+    ] {
+        stream
+            .write_all(server.head("HEAD", path, "", b"").as_bytes())
+            .unwrap();
+        let head = read_answer(&mut reader, true);
+        assert_eq!(head.status, 200, "{path}");
+        let (status, body) = server.request("GET", path, b"");
+        assert_eq!(status, 200);
+        assert_eq!(
+            head.header("content-length"),
+            Some(body.len().to_string().as_str()),
+            "{path}"
+        );
+    }
+    let body = json!({"points": square_and_centre()}).to_string();
+    stream
+        .write_all(
+            server
+                .head("POST", "/api/triangulate", "", body.as_bytes())
+                .as_bytes(),
+        )
+        .unwrap();
+    stream.write_all(body.as_bytes()).unwrap();
+    let answer = read_answer(&mut reader, false);
+    assert_eq!(answer.status, 200, "{}", answer.body);
+    assert_eq!(answer.json()["criterion"], "delaunay");
+    // HEAD of a POST route, and POST of a GET route: 405 with Allow.
+    let (status, text) = server.request("HEAD", "/api/compare", b"");
+    assert_eq!(status, 405, "{text}");
+    let answer = server.exchange("POST", "/api/limits", "", b"{}");
+    assert_eq!(answer.status, 405);
+    assert_eq!(answer.header("allow"), Some("GET, HEAD"));
+}
+
+#[test]
+fn host_and_origin_of_another_site_are_refused() {
+    let server = Server::start(&[]);
+    let port = server.port();
+    let raw = |head: String, body: &str| {
+        let mut stream = server.connect();
+        stream.write_all(head.as_bytes()).unwrap();
+        stream.write_all(body.as_bytes()).unwrap();
+        read_answer(&mut BufReader::new(stream), false)
+    };
+    let get = |host: &str| {
+        raw(
+            format!("GET /api/limits HTTP/1.1\r\nHost: {host}\r\nConnection: close\r\n\r\n"),
+            "",
+        )
+    };
+    for host in [format!("localhost:{port}"), format!("127.0.0.1:{port}")] {
+        assert_eq!(get(&host).status, 200, "{host}");
+    }
+    // DNS rebinding: a site whose name resolves to 127.0.0.1.
+    for host in [
+        format!("evil.example:{port}"),
+        "localhost:1".to_string(),
+        "localhost".to_string(),
+    ] {
+        let answer = get(&host);
+        assert_eq!(answer.status, 403, "{host}");
+        assert!(answer.json()["error"]
+            .as_str()
+            .unwrap()
+            .contains("not this server"));
+    }
+    // HTTP/1.1 without Host is malformed.
+    let answer = raw(
+        "GET / HTTP/1.1\r\nConnection: close\r\n\r\n".to_string(),
+        "",
+    );
+    assert_eq!(answer.status, 400, "{}", answer.body);
+    let body = json!({"points": square_and_centre()}).to_string();
+    let post = |origin: &str| {
+        server.exchange(
+            "POST",
+            "/api/triangulate",
+            &format!("Origin: {origin}\r\n"),
+            body.as_bytes(),
+        )
+    };
+    assert_eq!(post(&format!("http://localhost:{port}")).status, 200);
+    assert_eq!(post(&format!("http://127.0.0.1:{port}")).status, 200);
+    for origin in [
+        format!("http://evil.example:{port}"),
+        "null".to_string(),
+        format!("https://localhost:{port}"),
+    ] {
+        let answer = post(&origin);
+        assert_eq!(answer.status, 403, "{origin}");
+        assert!(
+            answer.json()["error"]
+                .as_str()
+                .unwrap()
+                .contains("may not post"),
+            "{}",
+            answer.body
+        );
+    }
+}
+
+#[test]
+fn every_answer_says_nosniff_and_the_page_has_a_policy() {
+    let server = Server::start(&["--max-body-mib", "1"]);
+    let answers = [
+        server.exchange("GET", "/", "", b""),
+        server.exchange("GET", "/api/criteria", "", b""),
+        server.exchange("GET", "/nope", "", b""),
+        server.exchange("POST", "/api/compare", "", b"{"),
+        server.exchange("POST", "/api/compare", "", &vec![b' '; 1024 * 1024 + 1]),
+        server.exchange("GET", "/", "Host: evil.example\r\n", b""),
+    ];
+    for answer in &answers {
+        assert_eq!(
+            answer.header("x-content-type-options"),
+            Some("nosniff"),
+            "{}",
+            answer.status
+        );
+    }
+    let policy = answers[0]
+        .header("content-security-policy")
+        .expect("the page has a policy");
+    for rule in [
+        "default-src 'none'",
+        "script-src 'self'",
+        "connect-src 'self'",
+        "frame-ancestors 'none'",
+    ] {
+        assert!(policy.contains(rule), "{policy}");
+    }
+    assert!(!policy.contains("unsafe"), "{policy}");
+    assert_eq!(answers[1].header("content-type"), Some("application/json"));
+    assert_eq!(
+        answers[2].header("content-type"),
+        Some("application/json"),
+        "errors are JSON too"
+    );
+}
+
+#[test]
+fn limits_that_overflow_or_make_no_sense_are_refused_at_start() {
+    for (option, value, message) in [
+        (
+            "--max-body-mib",
+            "17592186044416",
+            "invalid --max-body-mib 17592186044416",
+        ),
+        (
+            "--time-limit",
+            "-1",
+            "invalid --time-limit -1.0: give a number",
+        ),
+        ("--time-limit", "NaN", "invalid --time-limit NaN"),
+        ("--time-limit", "1e300", "invalid --time-limit 1e300"),
+        ("--read-timeout", "0", "invalid --read-timeout 0"),
+        ("--max-running", "0", "invalid --max-running 0"),
+    ] {
+        let out = Command::new(BIN)
+            .args(["serve", "--port", "0", &format!("{option}={value}")])
+            .output()
+            .unwrap();
+        assert_eq!(out.status.code(), Some(1), "{option} {value}");
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert!(stderr.contains(message), "{stderr}");
+        assert!(out.stdout.is_empty(), "it does not start listening");
+    }
+    // The help says what is small, as GET /api/limits does.
+    let out = Command::new(BIN)
+        .args(["serve", "--help"])
+        .output()
+        .unwrap();
+    let help = String::from_utf8_lossy(&out.stdout);
+    assert!(help.contains("at most 2000 points"), "{help}");
+    assert!(help.contains("--read-timeout"), "{help}");
 }

@@ -1,73 +1,151 @@
-//! The web playground's JSON API, as a function from a request (method,
-//! path, body) to a [`Reply`], so that the HTTP loop in `commands::serve`
-//! only moves bytes. Every answer is built by the library: the registry
-//! ([`Criterion::ALL`], [`optri::compare`]), the readers ([`io::read_input`])
-//! and the result schema ([`TriangulationReport`], [`ComparisonReport`]), so
-//! a criterion that lands later appears in the page without changes here.
+//! The web playground's JSON API: routes, limits and where computations
+//! run. The HTTP loop in `commands::serve` reads requests and writes
+//! [`Reply`]s; everything an answer says is built by the library: the
+//! registry listing ([`io::registry_listing`]), the readers
+//! ([`io::read_input`]) and the result documents of [`Request::run`], so a
+//! criterion that lands later appears in the page without changes here.
 //!
 //! | request | answer |
 //! |---|---|
-//! | `GET /` | the page ([`INDEX_HTML`], embedded; no external resources) |
+//! | `GET /` | the page ([`INDEX_HTML`] with [`PLAYGROUND_JS`] and [`PLAYGROUND_CSS`], embedded; nothing is loaded from elsewhere) |
 //! | `GET /api/criteria` | the registry listing document of `optri criteria --json` |
-//! | `GET /api/limits` | `{"max_body_bytes", "max_points", "time_limit_s", "max_running"}` |
+//! | `GET /api/limits` | `{"max_body_bytes", "max_points", "time_limit_s", "max_running", "small_points", "read_timeout_s"}` |
 //! | `POST /api/triangulate` `{"points": [[x, y], …], "criterion"?, "polygon"?, "options"?}` | the triangulation document of `optri triangulate --json` |
 //! | `POST /api/compare` `{"points", "criteria"?: [names], "polygon"?, "options"?}` | the comparison document of `optri compare --json` |
 //! | `POST /api/graph` `{"points", "kind", "options"?}` | the graph document of `optri graph --json` |
 //! | `POST /api/read` `{"text", "filename"?, "format"?}` | `{"points": [[x, y], …], "polygon": bool, "format"}`: a file parsed by the library's readers |
 //!
-//! `options` maps option names of the listing to values (strings or
-//! numbers), checked against what the criterion or graph reads; `metric`
-//! is also accepted as a field of its own. Every request runs through the
-//! library's [`Request`], as the CLI's and Python's do.
+//! Every `GET` route answers `HEAD` (the same headers, no body). `options`
+//! maps option names of the listing to values (strings or numbers), checked
+//! against what the criterion or graph reads; `metric` is also accepted as a
+//! field of its own. Every request runs through the library's [`Request`],
+//! as the CLI's and Python's do.
 //!
 //! The numbers of `points` are taken at their decimal values when the body
 //! writes none with more than 15 significant digits
 //! ([`io::json_numbers_as_decimals`]; the page's `JSON.stringify` writes
 //! shortest decimals), and the documents say `coordinate_arithmetic`.
 //!
-//! Errors are `{"error": message}` with the library's message: 400 for a
-//! request that is not the documented JSON (syntax, types, unknown fields,
-//! unknown criterion or format), 404/405 for other paths and methods, 413 for
-//! a body over [`Limits::max_body_bytes`], 422 for input the library refuses
-//! (too few points, collinear, out-of-range coordinates, a criterion that
-//! does not support the input, more than [`Limits::max_points`] points) and
-//! 503 when [`Limits::max_running`] computations are already running or one
-//! exceeds [`Limits::time_limit`] (its thread then finishes in the background
-//! and still counts as running, so a flood of slow requests cannot pile up).
+//! # Status codes
+//! Errors are `{"error": message}` with the library's message; a
+//! criterion's refusal of the input (e.g. a convex-only criterion on a set
+//! that is not in convex position) also names it: `{"error", "criterion"}`,
+//! as in a comparison's results.
+//! - 400: the request is not the documented JSON (syntax, types, unknown
+//!   fields, unknown criterion, format or option, an option value the
+//!   library refuses), or an HTTP/1.1 request without `Host`;
+//! - 403: a server bound to a loopback address refuses a `Host` other than
+//!   a loopback address or `localhost` with its port, and a POST whose
+//!   `Origin` is another site (DNS rebinding; see `origin`);
+//! - 404 and 405 (with `Allow`) for other paths and methods;
+//! - 408: the request body stalled for [`Limits::read_timeout`];
+//! - 413: a body over [`Limits::max_body_bytes`];
+//! - 422: input the library refuses (too few points, collinear,
+//!   out-of-range coordinates, a criterion that does not support the input,
+//!   more than [`Limits::max_points`] points);
+//! - 503: the request's time limit passed ([`Limits::time_limit`], see
+//!   below), or [`Limits::max_running`] large computations are running
+//!   already (then with `Retry-After: 1`).
+//!
+//! Every answer carries `X-Content-Type-Options: nosniff`, and the page a
+//! `Content-Security-Policy` that lets it load its own script and style and
+//! talk to this server only ([`PAGE_POLICY`]).
+//!
+//! # Limits
+//! - **Reading.** Request headers must arrive within
+//!   [`Limits::read_timeout`] of the connection's start or of the previous
+//!   answer (so an idle keep-alive connection is closed after it too), and a
+//!   body may stall for at most as long: a client that stops sending is
+//!   dropped and holds nothing.
+//! - **Time.** [`Limits::time_limit`] covers a POST from the arrival of its
+//!   headers to its answer: reading the body, waiting for a slot, computing
+//!   and writing the document. When it passes, the computation's
+//!   [`Cancel`] is raised (the library stops at its next check) and the
+//!   answer is 503 naming the limit. A comparison answers with what it has
+//!   instead: it gets up to [`PARTIAL_GRACE`] more to return, its finished
+//!   criteria are kept and each one the limit stopped reports "stopped: the
+//!   time limit of … s passed"; the `time_limit` option (at most the
+//!   server's) limits each criterion of a comparison separately.
+//! - **Small and large.** A request with at most [`SMALL_POINTS`] points,
+//!   and every `/api/read`, is small: it runs on one of [`SMALL_SLOTS`]
+//!   one-thread pools and waits (within its time limit) when all are busy.
+//!   A larger one takes one of [`Limits::max_running`] slots, each a pool
+//!   with a thread per core, or gets 503 at once when none is free. So
+//!   large computations never delay small ones, and a slot is freed when
+//!   its computation actually stops (see `slots`). A large request's body is
+//!   parsed in a small slot (linear work, bounded by the body limit).
 
-use optri::io::{self, InputFormat};
-use optri::request::{Request, Task};
-use optri::{Criterion, Error};
+mod origin;
+mod slots;
+
+pub(crate) use origin::Origins;
+
+use hyper::body::Bytes;
+use optri::io::{self, ComparisonReport, InputFormat};
+use optri::request::{Request, Results, Task};
+use optri::{Cancel, Criterion, Error, Interruption, Options};
 use serde::Deserialize;
 use serde_json::{json, Value};
+use slots::{Failure, Slots};
+use std::borrow::Cow;
 use std::collections::BTreeMap;
 use std::path::Path;
-use std::sync::atomic::{AtomicUsize, Ordering};
-use std::sync::{mpsc, Arc};
 use std::time::Duration;
+use tokio::sync::oneshot;
+use tokio::time::{timeout, timeout_at, Instant};
 
-/// The page, embedded in the binary: plain HTML, CSS and JavaScript.
+/// The page, embedded in the binary: plain HTML that loads
+/// [`PLAYGROUND_CSS`] and [`PLAYGROUND_JS`] from this server.
 pub(crate) const INDEX_HTML: &str = include_str!("index.html");
+/// The page's script (`GET /playground.js`).
+pub(crate) const PLAYGROUND_JS: &str = include_str!("playground.js");
+/// The page's style sheet (`GET /playground.css`).
+pub(crate) const PLAYGROUND_CSS: &str = include_str!("playground.css");
+
+/// The page's `Content-Security-Policy`: its own script, style and API
+/// only; `data:` for the empty icon, `blob:` for the downloads it builds.
+pub(crate) const PAGE_POLICY: &str = "default-src 'none'; script-src 'self'; \
+     style-src 'self'; img-src 'self' data: blob:; connect-src 'self'; base-uri 'none'; \
+     form-action 'none'; frame-ancestors 'none'";
+
+/// Requests with at most this many points are small (see the module docs):
+/// every criterion answers them in well under a second except on
+/// adversarial inputs, which the time limit stops.
+pub(crate) const SMALL_POINTS: usize = 2_000;
+
+/// Small computations running at once; more wait. The page sends one
+/// request per criterion at once, and one slow criterion must not hold up
+/// the others.
+pub(crate) const SMALL_SLOTS: usize = 16;
+
+/// How much longer than its time limit a comparison may take to return the
+/// criteria it finished.
+pub(crate) const PARTIAL_GRACE: Duration = Duration::from_secs(2);
 
 /// What the server refuses, so one request cannot take the machine.
 #[derive(Clone, Debug)]
 pub(crate) struct Limits {
     /// Largest request body, bytes (larger: 413).
     pub max_body_bytes: usize,
-    /// Most points one triangulate or compare request may hold (more: 422).
+    /// Most points one triangulate, compare or graph request may hold
+    /// (more: 422).
     pub max_points: usize,
-    /// Longest a computation may take before the answer is 503.
+    /// Longest a POST may take, reading included (longer: 503).
     pub time_limit: Duration,
-    /// Most computations running at once (more: 503).
+    /// Most large computations running at once (more: 503).
     pub max_running: usize,
+    /// Longest a client may take to send request headers, or stall in a
+    /// body (then it is dropped, or answered 408).
+    pub read_timeout: Duration,
 }
 
-/// An HTTP answer: status, content type and body.
+/// An HTTP answer: status, content type, body and any other headers.
 #[derive(Debug)]
 pub(crate) struct Reply {
     pub status: u16,
     pub content_type: &'static str,
-    pub body: String,
+    pub body: Cow<'static, str>,
+    pub headers: Vec<(&'static str, &'static str)>,
 }
 
 const JSON: &str = "application/json";
@@ -75,34 +153,63 @@ const JSON: &str = "application/json";
 impl Reply {
     fn json(status: u16, value: &impl serde::Serialize) -> Self {
         match serde_json::to_string(value) {
-            Ok(body) => Reply {
-                status,
-                content_type: JSON,
-                body,
-            },
-            Err(e) => Reply::error(500, format!("cannot encode the answer: {e}")),
+            Ok(body) => Self::text(status, JSON, body),
+            Err(e) => Self::error(500, format!("cannot encode the answer: {e}")),
         }
     }
 
+    fn text(status: u16, content_type: &'static str, body: impl Into<Cow<'static, str>>) -> Self {
+        Reply {
+            status,
+            content_type,
+            body: body.into(),
+            headers: Vec::new(),
+        }
+    }
+
+    /// `{"error": message}` with `status`.
     pub(crate) fn error(status: u16, message: impl Into<String>) -> Self {
-        Reply::json(status, &json!({ "error": message.into() }))
+        Self::json(status, &json!({ "error": message.into() }))
+    }
+
+    fn with_header(mut self, name: &'static str, value: &'static str) -> Self {
+        self.headers.push((name, value));
+        self
     }
 }
 
-/// The API's state shared by the worker threads.
+/// What a request asks for, known from its method and path.
+pub(crate) enum Route {
+    /// Answered at once: a page, a listing, or a refusal.
+    Ready(Reply),
+    /// A POST whose body is read and then computed on.
+    Compute(Endpoint),
+}
+
+/// The POST routes.
+#[derive(Clone, Copy, Debug)]
+pub(crate) enum Endpoint {
+    /// `/api/read`.
+    Read,
+    /// `/api/triangulate`, `/api/compare`, `/api/graph`.
+    Run(Kind),
+}
+
+/// What a run computes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Kind {
+    Triangulate,
+    Compare,
+    Graph,
+}
+
+/// The API's state, shared by the connections.
 pub(crate) struct Api {
     limits: Limits,
-    running: Arc<AtomicUsize>,
-}
-
-/// One slot of [`Limits::max_running`], released when the computation (not
-/// the request) ends.
-struct Slot(Arc<AtomicUsize>);
-
-impl Drop for Slot {
-    fn drop(&mut self) {
-        self.0.fetch_sub(1, Ordering::SeqCst);
-    }
+    /// `GET /api/criteria`, written once.
+    listing: String,
+    small: Slots,
+    large: Slots,
 }
 
 #[derive(Deserialize)]
@@ -162,6 +269,10 @@ struct ReadRequest {
 /// A failed request: its status and message.
 type Refusal = (u16, String);
 
+fn refused((status, message): Refusal) -> Reply {
+    Reply::error(status, message)
+}
+
 /// 400: the request is not the documented JSON.
 fn bad_request(e: impl std::fmt::Display) -> Refusal {
     (400, format!("invalid request: {e}"))
@@ -182,239 +293,353 @@ fn parse<T: serde::de::DeserializeOwned>(body: &[u8]) -> Result<T, Refusal> {
     serde_json::from_slice(body).map_err(bad_request)
 }
 
+/// A computation's request, checked and ready to run.
+struct Prepared {
+    request: Request,
+    points: usize,
+    /// Raised when the request's time limit passes.
+    cancel: Cancel,
+    time_limit: Duration,
+}
+
+/// What the small slot did with a POST: answered it, or prepared a large
+/// computation.
+enum Step {
+    Done(Reply),
+    Large(Box<Prepared>),
+}
+
+/// Raises the flag when dropped: a request whose client went away, or that
+/// was answered, leaves no computation running for it.
+struct CancelOnDrop(Cancel);
+
+impl Drop for CancelOnDrop {
+    fn drop(&mut self) {
+        self.0.cancel();
+    }
+}
+
 impl Api {
     pub(crate) fn new(limits: Limits) -> Self {
+        let cores = std::thread::available_parallelism().map_or(1, usize::from);
         Api {
+            listing: io::registry_listing().to_string(),
+            small: Slots::new(SMALL_SLOTS, 1, "small"),
+            large: Slots::new(limits.max_running, cores, "large"),
             limits,
-            running: Arc::new(AtomicUsize::new(0)),
         }
     }
 
-    /// Answers one request. `body` is at most `max_body_bytes` long (the
-    /// HTTP loop answers 413 itself otherwise).
-    pub(crate) fn respond(&self, method: &str, path: &str, body: &[u8]) -> Reply {
-        // The query string plays no part in any answer.
-        let path = path.split('?').next().unwrap_or(path);
-        let result = match (method, path) {
-            ("GET", "/" | "/index.html") => {
-                return Reply {
-                    status: 200,
-                    content_type: "text/html; charset=utf-8",
-                    body: INDEX_HTML.to_string(),
-                }
-            }
-            ("GET", "/api/criteria") => Ok(Reply::json(200, &io::registry_listing())),
-            ("GET", "/api/limits") => Ok(Reply::json(200, &self.limits())),
-            ("POST", "/api/triangulate") => self.triangulate(body),
-            ("POST", "/api/compare") => self.compare(body),
-            ("POST", "/api/graph") => self.graph(body),
-            ("POST", "/api/read") => read(body),
-            (_, "/" | "/index.html" | "/api/criteria" | "/api/limits") => {
-                Err((405, format!("{path} answers GET only")))
-            }
-            (_, "/api/triangulate" | "/api/compare" | "/api/graph" | "/api/read") => {
-                Err((405, format!("{path} answers POST only")))
-            }
-            _ => Err((
-                404,
-                format!(
-                    "no such page: {path} (the API is GET /api/criteria, GET /api/limits, \
-                     POST /api/triangulate, POST /api/compare, POST /api/graph, POST /api/read)"
-                ),
-            )),
-        };
-        result.unwrap_or_else(|(status, message)| Reply::error(status, message))
+    pub(crate) fn limits(&self) -> &Limits {
+        &self.limits
     }
 
-    fn limits(&self) -> Value {
+    /// Where a request goes, from its method and path (the query string
+    /// plays no part). `HEAD` is routed as `GET`; the HTTP loop drops the
+    /// body.
+    pub(crate) fn route(&self, method: &str, path: &str) -> Route {
+        let path = path.split('?').next().unwrap_or(path);
+        let endpoint = match path {
+            "/api/triangulate" => Some(Endpoint::Run(Kind::Triangulate)),
+            "/api/compare" => Some(Endpoint::Run(Kind::Compare)),
+            "/api/graph" => Some(Endpoint::Run(Kind::Graph)),
+            "/api/read" => Some(Endpoint::Read),
+            _ => None,
+        };
+        if let Some(endpoint) = endpoint {
+            return if method == "POST" {
+                Route::Compute(endpoint)
+            } else {
+                Route::Ready(
+                    Reply::error(405, format!("{path} answers POST only"))
+                        .with_header("Allow", "POST"),
+                )
+            };
+        }
+        let page = match path {
+            "/" | "/index.html" => Reply::text(200, "text/html; charset=utf-8", INDEX_HTML)
+                .with_header("Content-Security-Policy", PAGE_POLICY),
+            "/playground.js" => Reply::text(200, "text/javascript; charset=utf-8", PLAYGROUND_JS),
+            "/playground.css" => Reply::text(200, "text/css; charset=utf-8", PLAYGROUND_CSS),
+            "/api/criteria" => Reply::text(200, JSON, self.listing.clone()),
+            "/api/limits" => Reply::json(200, &self.limits_document()),
+            _ => {
+                return Route::Ready(Reply::error(
+                    404,
+                    format!(
+                        "no such page: {path} (the API is GET /api/criteria, GET /api/limits, \
+                         POST /api/triangulate, POST /api/compare, POST /api/graph, POST /api/read)"
+                    ),
+                ))
+            }
+        };
+        Route::Ready(if matches!(method, "GET" | "HEAD") {
+            page
+        } else {
+            Reply::error(405, format!("{path} answers GET and HEAD only"))
+                .with_header("Allow", "GET, HEAD")
+        })
+    }
+
+    fn limits_document(&self) -> Value {
         json!({
             "max_body_bytes": self.limits.max_body_bytes,
             "max_points": self.limits.max_points,
             "time_limit_s": self.limits.time_limit.as_secs_f64(),
             "max_running": self.limits.max_running,
+            "small_points": SMALL_POINTS,
+            "read_timeout_s": self.limits.read_timeout.as_secs_f64(),
         })
     }
 
-    /// The library's request for `task` on the points of a request body:
-    /// each an `[x, y]` pair (400 otherwise), at most
-    /// [`Limits::max_points`] (422), taken at their decimal values when the
-    /// `body` writes none with more than 15 significant digits
-    /// ([`io::json_numbers_as_decimals`], as the GeoJSON reader does), with
-    /// the options named in the body (400 for one the task does not read)
-    /// and this server's time limit.
-    fn request(
+    /// 503 for a request whose time limit passed.
+    pub(crate) fn out_of_time(&self) -> Reply {
+        Reply::error(
+            503,
+            format!(
+                "stopped: the request took longer than this server's limit of {} s; use the \
+                 command line (optri triangulate, optri compare) for this input",
+                self.limits.time_limit.as_secs_f64()
+            ),
+        )
+    }
+
+    /// 503 when every large slot is taken.
+    fn busy(&self) -> Reply {
+        Reply::error(
+            503,
+            format!(
+                "the server is busy: {} computations of more than {SMALL_POINTS} points are \
+                 running, its limit; try again shortly",
+                self.large.count()
+            ),
+        )
+        .with_header("Retry-After", "1")
+    }
+
+    /// Answers a POST whose `body` (at most `max_body_bytes` long) was read
+    /// before `deadline`, computing on the slots of the module docs.
+    pub(crate) async fn answer(&self, endpoint: Endpoint, body: Bytes, deadline: Instant) -> Reply {
+        let cancel = Cancel::new();
+        let _stop = CancelOnDrop(cancel.clone());
+        self.compute(endpoint, body, deadline, &cancel)
+            .await
+            .unwrap_or_else(|reply| reply)
+    }
+
+    async fn compute(
         &self,
-        task: Task,
-        points: &[Vec<f64>],
-        polygon: bool,
-        metric: Option<&str>,
-        options: &BTreeMap<String, Value>,
-        body: &[u8],
-    ) -> Result<Request, Refusal> {
-        if points.len() > self.limits.max_points {
-            return Err((
-                422,
-                format!(
-                    "{} points is more than this server's limit of {} per request; use the \
-                     command line (optri triangulate / optri compare) for large inputs",
-                    points.len(),
-                    self.limits.max_points
-                ),
-            ));
-        }
-        let points = points
-            .iter()
-            .enumerate()
-            .map(|(i, p)| match p[..] {
-                [x, y] => Ok([x, y]),
-                _ => Err(bad_request(format!(
-                    "point {i} has {} numbers; each point is [x, y]",
-                    p.len()
-                ))),
-            })
-            .collect::<Result<Vec<[f64; 2]>, Refusal>>()?;
-        let input = if polygon {
-            io::Input::Polygon(points)
-        } else {
-            io::Input::Points(points)
-        };
-        // `parse` accepted the body, so it is UTF-8 and the lossy view is
-        // the text itself.
-        let read = io::json_numbers_as_decimals(input, &String::from_utf8_lossy(body));
-        let mut request = Request::new(read, task);
-        if !self.limits.time_limit.is_zero() {
-            request
-                .set_option(
-                    "time_limit",
-                    &self.limits.time_limit.as_secs_f64().to_string(),
-                )
-                .map_err(|e| library_error(&e))?;
-        }
-        let named = metric.map(|m| ("metric", Value::from(m)));
-        for (name, value) in named
-            .into_iter()
-            .chain(options.iter().map(|(n, v)| (n.as_str(), v.clone())))
-        {
-            let text = match &value {
-                Value::String(s) => s.clone(),
-                Value::Number(n) => n.to_string(),
-                other => {
-                    return Err(bad_request(format!(
-                        "option {name}: {other} is not a string or a number"
-                    )))
-                }
+        endpoint: Endpoint,
+        body: Bytes,
+        deadline: Instant,
+        cancel: &Cancel,
+    ) -> Result<Reply, Reply> {
+        let partial = matches!(endpoint, Endpoint::Run(Kind::Compare));
+        let slot = timeout_at(deadline, self.small.wait())
+            .await
+            .map_err(|_| self.out_of_time())?;
+        let limits = self.limits.clone();
+        let flag = cancel.clone();
+        let first = slot.run(move || -> Result<Step, Refusal> {
+            let kind = match endpoint {
+                Endpoint::Read => return read(&body).map(Step::Done),
+                Endpoint::Run(kind) => kind,
             };
-            if name == "time_limit" {
-                let mut check = optri::Options::default();
-                check.set(name, &text).map_err(bad_request)?;
-                if check.time_limit > Some(self.limits.time_limit) {
-                    return Err(bad_request(format!(
-                        "option time_limit: {text} s is more than this server's limit of {} s",
-                        self.limits.time_limit.as_secs_f64()
-                    )));
-                }
-            }
-            request.set_option(name, &text).map_err(bad_request)?;
-        }
-        Ok(request)
-    }
-
-    /// Runs `request` within the limits and answers with its document.
-    fn run(&self, request: Request) -> Result<Reply, Refusal> {
-        let mut outcome = self
-            .compute(move || request.run())?
-            .map_err(|e| library_error(&e))?;
-        outcome.finish();
-        // Serialised directly, so the fields keep the documented order.
-        Ok(Reply::json(200, &outcome.document()))
-    }
-
-    /// Runs `work` on its own thread within the limits.
-    fn compute<T: Send + 'static>(
-        &self,
-        work: impl FnOnce() -> T + Send + 'static,
-    ) -> Result<T, Refusal> {
-        let busy = self
-            .running
-            .fetch_update(Ordering::SeqCst, Ordering::SeqCst, |n| {
-                (n < self.limits.max_running).then_some(n + 1)
+            let prepared = prepare(kind, &body, &limits, flag)?;
+            Ok(if prepared.points <= SMALL_POINTS {
+                Step::Done(run(prepared))
+            } else {
+                Step::Large(Box::new(prepared))
             })
-            .is_err();
-        if busy {
-            return Err((
-                503,
-                format!(
-                    "the server is busy ({} computations running); try again shortly",
-                    self.limits.max_running
-                ),
-            ));
-        }
-        let slot = Slot(Arc::clone(&self.running));
-        let (send, receive) = mpsc::channel();
-        std::thread::spawn(move || {
-            let _slot = slot;
-            // The receiver may have given up (time limit): nothing to do then.
-            let _ = send.send(work());
         });
-        match receive.recv_timeout(self.limits.time_limit) {
-            Ok(value) => Ok(value),
-            Err(mpsc::RecvTimeoutError::Timeout) => Err((
-                503,
-                format!(
-                    "the computation took longer than this server's limit of {} s; use the \
-                     command line for this input",
-                    self.limits.time_limit.as_secs_f64()
-                ),
-            )),
-            Err(mpsc::RecvTimeoutError::Disconnected) => Err((
-                500,
-                "internal error: the computation failed (this is a bug, please report it)"
-                    .to_string(),
-            )),
+        match self.wait(first, deadline, cancel, partial).await? {
+            Err(refusal) => Err(refused(refusal)),
+            Ok(Step::Done(reply)) => Ok(reply),
+            Ok(Step::Large(_)) if Instant::now() >= deadline => Err(self.out_of_time()),
+            Ok(Step::Large(prepared)) => {
+                let slot = self.large.try_take().ok_or_else(|| self.busy())?;
+                self.wait(slot.run(move || run(*prepared)), deadline, cancel, partial)
+                    .await
+            }
         }
     }
 
-    fn triangulate(&self, body: &[u8]) -> Result<Reply, Refusal> {
-        let r: TriangulateRequest = parse(body)?;
-        let task = Task::triangulate(&r.criterion).map_err(bad_request)?;
-        let request = self.request(
-            task,
-            &r.points,
-            r.polygon,
-            r.metric.as_deref(),
-            &r.options,
-            body,
-        )?;
-        self.run(request)
+    /// The value of a computation, or 503 when `deadline` passes first
+    /// (then `cancel` is raised; with `partial`, the computation has
+    /// [`PARTIAL_GRACE`] more to return what it has), or 500 if it failed.
+    async fn wait<T>(
+        &self,
+        mut job: oneshot::Receiver<Result<T, Failure>>,
+        deadline: Instant,
+        cancel: &Cancel,
+        partial: bool,
+    ) -> Result<T, Reply> {
+        let done = match timeout_at(deadline, &mut job).await {
+            Ok(done) => done,
+            Err(_) => {
+                cancel.cancel();
+                if !partial {
+                    return Err(self.out_of_time());
+                }
+                timeout(PARTIAL_GRACE, job)
+                    .await
+                    .map_err(|_| self.out_of_time())?
+            }
+        };
+        match done {
+            Ok(Ok(value)) => Ok(value),
+            Ok(Err(failure)) => Err(Reply::error(
+                500,
+                format!(
+                    "internal error (a bug in optri; please report it with the input): {failure}"
+                ),
+            )),
+            Err(_) => Err(Reply::error(
+                500,
+                "internal error: the computation ended without an answer",
+            )),
+        }
     }
+}
 
-    fn compare(&self, body: &[u8]) -> Result<Reply, Refusal> {
-        let r: CompareRequest = parse(body)?;
-        let task = Task::compare(&r.criteria).map_err(bad_request)?;
-        let request = self.request(
-            task,
-            &r.points,
-            r.polygon,
-            r.metric.as_deref(),
-            &r.options,
-            body,
-        )?;
-        self.run(request)
+/// The library's request for a triangulate, compare or graph `body`: each
+/// point an `[x, y]` pair (400 otherwise), at most [`Limits::max_points`]
+/// (422), taken at their decimal values when the `body` writes none with
+/// more than 15 significant digits ([`io::json_numbers_as_decimals`], as the
+/// GeoJSON reader does), with the options named in the body (400 for one the
+/// task does not read), this server's time limit (per criterion in a
+/// comparison) and `cancel`.
+fn prepare(kind: Kind, body: &[u8], limits: &Limits, cancel: Cancel) -> Result<Prepared, Refusal> {
+    let (task, points, polygon, metric, options) = match kind {
+        Kind::Triangulate => {
+            let r: TriangulateRequest = parse(body)?;
+            let task = Task::triangulate(&r.criterion).map_err(bad_request)?;
+            (task, r.points, r.polygon, r.metric, r.options)
+        }
+        Kind::Compare => {
+            let r: CompareRequest = parse(body)?;
+            let task = Task::compare(&r.criteria).map_err(bad_request)?;
+            (task, r.points, r.polygon, r.metric, r.options)
+        }
+        Kind::Graph => {
+            let r: GraphRequest = parse(body)?;
+            let task = Task::graph(&r.kind).map_err(bad_request)?;
+            (task, r.points, false, r.metric, r.options)
+        }
+    };
+    if points.len() > limits.max_points {
+        return Err((
+            422,
+            format!(
+                "{} points is more than this server's limit of {} per request; use the \
+                 command line (optri triangulate / optri compare) for large inputs",
+                points.len(),
+                limits.max_points
+            ),
+        ));
     }
+    let count = points.len();
+    let points = points
+        .iter()
+        .enumerate()
+        .map(|(i, p)| match p[..] {
+            [x, y] => Ok([x, y]),
+            _ => Err(bad_request(format!(
+                "point {i} has {} numbers; each point is [x, y]",
+                p.len()
+            ))),
+        })
+        .collect::<Result<Vec<[f64; 2]>, Refusal>>()?;
+    let input = if polygon {
+        io::Input::Polygon(points)
+    } else {
+        io::Input::Points(points)
+    };
+    // `parse` accepted the body, so it is UTF-8 and the lossy view is
+    // the text itself.
+    let read = io::json_numbers_as_decimals(input, &String::from_utf8_lossy(body));
+    let mut request =
+        Request::new(read, task).with_options(Options::default().with_cancel(cancel.clone()));
+    if !limits.time_limit.is_zero() {
+        request
+            .set_option("time_limit", &limits.time_limit.as_secs_f64().to_string())
+            .map_err(|e| library_error(&e))?;
+    }
+    let named = metric.map(|m| ("metric".to_string(), Value::from(m)));
+    for (name, value) in named.into_iter().chain(options) {
+        let text = match &value {
+            Value::String(s) => s.clone(),
+            Value::Number(n) => n.to_string(),
+            other => {
+                return Err(bad_request(format!(
+                    "option {name}: {other} is not a string or a number"
+                )))
+            }
+        };
+        if name == "time_limit" {
+            let mut check = Options::default();
+            check.set(&name, &text).map_err(bad_request)?;
+            if check.time_limit > Some(limits.time_limit) {
+                return Err(bad_request(format!(
+                    "option time_limit: {text} s is more than this server's limit of {} s",
+                    limits.time_limit.as_secs_f64()
+                )));
+            }
+        }
+        request.set_option(&name, &text).map_err(bad_request)?;
+    }
+    Ok(Prepared {
+        request,
+        points: count,
+        cancel,
+        time_limit: limits.time_limit,
+    })
+}
 
-    fn graph(&self, body: &[u8]) -> Result<Reply, Refusal> {
-        let r: GraphRequest = parse(body)?;
-        let task = Task::graph(&r.kind).map_err(bad_request)?;
-        let request = self.request(
-            task,
-            &r.points,
-            false,
-            r.metric.as_deref(),
-            &r.options,
-            body,
-        )?;
-        self.run(request)
+/// Runs a prepared request and answers with its document. A comparison
+/// that the time limit cut short (its flag is raised only then) reports
+/// each criterion it stopped as stopped by that limit, and keeps the rest.
+fn run(prepared: Prepared) -> Reply {
+    let Prepared {
+        request,
+        cancel,
+        time_limit,
+        ..
+    } = prepared;
+    let mut outcome = match request.run() {
+        Ok(outcome) => outcome,
+        Err(e) => {
+            let (status, message) = library_error(&e);
+            return match e {
+                Error::Unsupported { criterion, .. } => {
+                    Reply::json(status, &json!({ "error": message, "criterion": criterion }))
+                }
+                _ => Reply::error(status, message),
+            };
+        }
+    };
+    outcome.finish();
+    if !cancel.is_cancelled() || outcome.comparison().is_none() {
+        // Serialised directly, so the fields keep the documented order.
+        return Reply::json(200, &outcome.document());
     }
+    let (read, phases, results) = outcome.into_parts();
+    let Results::Comparison(mut results) = results else {
+        unreachable!("a comparison's results are a comparison")
+    };
+    for (_, result) in &mut results {
+        if matches!(result, Err(Error::Interrupted(Interruption::Cancelled))) {
+            *result = Err(Error::Interrupted(Interruption::TimeLimit {
+                seconds: time_limit.as_secs_f64(),
+            }));
+        }
+    }
+    Reply::json(
+        200,
+        &ComparisonReport::new(&results)
+            .with_input(&read)
+            .with_timing(&phases),
+    )
 }
 
 /// `POST /api/read`: parses a file's text with the library's readers; the
@@ -440,4 +665,142 @@ fn read(body: &[u8]) -> Result<Reply, Refusal> {
             "format": format.name(),
         }),
     ))
+}
+
+/// Runs `future` to its end on a runtime like the server's.
+#[cfg(test)]
+fn block_on<T>(future: impl std::future::Future<Output = T>) -> T {
+    tokio::runtime::Builder::new_current_thread()
+        .enable_time()
+        .build()
+        .unwrap()
+        .block_on(future)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use optri_oracle::inputs;
+    use rand::{rngs::StdRng, SeedableRng};
+    use std::f64::consts::TAU;
+
+    /// Seed of the comparison's points.
+    const SEED_POINTS: u64 = 2_000;
+
+    fn limits(time_limit: Duration) -> Limits {
+        Limits {
+            max_body_bytes: 1 << 20,
+            max_points: 10_000,
+            time_limit,
+            max_running: 1,
+            read_timeout: Duration::from_secs(5),
+        }
+    }
+
+    #[test]
+    fn past_the_deadline_the_flag_is_raised_and_the_slot_freed_when_the_work_stops() {
+        let api = Api::new(limits(Duration::from_millis(50)));
+        let cancel = Cancel::new();
+        let flag = cancel.clone();
+        let reply = block_on(async {
+            let job = api.large.try_take().unwrap().run(move || {
+                // A computation that checks its flag, as the library does.
+                while !flag.is_cancelled() {
+                    std::thread::sleep(Duration::from_millis(1));
+                }
+            });
+            let deadline = Instant::now() + Duration::from_millis(50);
+            api.wait(job, deadline, &cancel, false).await
+        })
+        .unwrap_err();
+        assert_eq!(reply.status, 503);
+        assert!(reply.body.contains("limit of 0.05 s"), "{}", reply.body);
+        assert!(cancel.is_cancelled());
+        block_on(async {
+            timeout(Duration::from_secs(60), api.large.wait())
+                .await
+                .expect("the slot is freed once the work has stopped")
+        });
+    }
+
+    #[test]
+    fn a_comparison_past_its_deadline_reports_the_criteria_the_limit_stopped() {
+        let api = Api::new(limits(Duration::from_secs(7)));
+        let mut rng = StdRng::seed_from_u64(SEED_POINTS);
+        let points = inputs::uniform_in_square(&mut rng, SMALL_POINTS, 1000.0);
+        let criteria = ["delaunay", "greedy", "minmax-length"];
+        let body = json!({ "points": points, "criteria": criteria }).to_string();
+        // The deadline has passed when the computation starts: every
+        // criterion is stopped at its first check, and the answer says so.
+        let reply = block_on(api.answer(
+            Endpoint::Run(Kind::Compare),
+            Bytes::from(body),
+            Instant::now(),
+        ));
+        assert_eq!(reply.status, 200, "{}", reply.body);
+        let doc: Value = serde_json::from_str(&reply.body).unwrap();
+        assert_eq!(doc["document"], "comparison");
+        let results = doc["results"].as_array().unwrap();
+        assert_eq!(results.len(), criteria.len());
+        for (r, name) in results.iter().zip(criteria) {
+            assert_eq!(r["criterion"], name);
+            assert_eq!(
+                r["error"],
+                "stopped: the time limit of 7 s passed before the run finished"
+            );
+        }
+        // One criterion: 503 naming the limit.
+        let body = json!({ "points": points, "criterion": "greedy" }).to_string();
+        let reply = block_on(api.answer(
+            Endpoint::Run(Kind::Triangulate),
+            Bytes::from(body),
+            Instant::now(),
+        ));
+        assert_eq!(reply.status, 503, "{}", reply.body);
+        assert!(reply.body.contains("limit of 7 s"), "{}", reply.body);
+        // Within the limit, the same comparison is whole.
+        let body = json!({ "points": points, "criteria": criteria }).to_string();
+        let reply = block_on(api.answer(
+            Endpoint::Run(Kind::Compare),
+            Bytes::from(body),
+            Instant::now() + Duration::from_secs(600),
+        ));
+        let doc: Value = serde_json::from_str(&reply.body).unwrap();
+        assert!(doc["results"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .all(|r| r["triangles"].is_array()));
+    }
+
+    #[test]
+    fn a_criterion_that_refuses_the_input_is_named() {
+        let api = Api::new(limits(Duration::from_secs(60)));
+        // A star with 4001 vertices: more than the polygon program takes.
+        let star: Vec<[f64; 2]> = (0..4001)
+            .map(|i| {
+                let (r, angle) = (1000.0 - 100.0 * (i % 2) as f64, i as f64 / 4001.0 * TAU);
+                [r * angle.cos(), r * angle.sin()]
+            })
+            .collect();
+        let body = json!({ "points": star, "criterion": "minmax-area", "polygon": true });
+        let reply = block_on(api.answer(
+            Endpoint::Run(Kind::Triangulate),
+            Bytes::from(body.to_string()),
+            Instant::now() + Duration::from_secs(600),
+        ));
+        let doc: Value = serde_json::from_str(&reply.body).unwrap();
+        assert_eq!(reply.status, 422, "{doc}");
+        assert_eq!(doc["criterion"], "minmax-area", "{doc}");
+        // An input every criterion refuses names none.
+        let body = json!({ "points": [[0, 0], [1, 1], [2, 2]], "criterion": "delaunay" });
+        let reply = block_on(api.answer(
+            Endpoint::Run(Kind::Triangulate),
+            Bytes::from(body.to_string()),
+            Instant::now() + Duration::from_secs(600),
+        ));
+        let doc: Value = serde_json::from_str(&reply.body).unwrap();
+        assert_eq!(reply.status, 422);
+        assert!(doc.get("criterion").is_none(), "{doc}");
+    }
 }

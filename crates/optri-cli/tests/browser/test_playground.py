@@ -4,7 +4,9 @@ Starts `optri serve --port 0` (the binary from $OPTRI_BIN, default
 target/debug/optri), opens the page, adds points by clicking the editor,
 switches criteria, drags and deletes a point, triggers bad requests, and
 checks what is drawn against an independent count: a triangulation of n
-points with h on the convex hull has 2n - h - 2 triangles.
+points with h on the convex hull has 2n - h - 2 triangles. Each criterion
+is its own request: a panel is busy until its answer arrives, and one
+stopped by the server's time limit says so while the others are drawn.
 
 Run by .ci/run:  python -m pytest crates/optri-cli/tests/browser
 A screenshot goes to $OPTRI_SCREENSHOT (default: a temporary file).
@@ -51,15 +53,27 @@ def hull_size(points):
     return len(chain(pts)) + len(chain(reversed(pts)))
 
 
-@pytest.fixture(scope="module")
-def server():
-    proc = subprocess.Popen([BIN, "serve", "--port", "0"], stdout=subprocess.PIPE, text=True)
+def serve(*options):
+    """Starts `optri serve` with `options`; yields its URL, then stops it."""
+    proc = subprocess.Popen([BIN, "serve", "--port", "0", *options], stdout=subprocess.PIPE, text=True)
     line = proc.stdout.readline()
     url = re.search(r"http://\S+/", line)
     assert url, f"no address in {line!r}"
     yield url.group(0)
     proc.kill()
     proc.wait()
+
+
+@pytest.fixture(scope="module")
+def server():
+    yield from serve()
+
+
+@pytest.fixture
+def hurried_server():
+    """A server with a time limit of 2 s, stopped after its test (the
+    computation it stops may run on until its next check)."""
+    yield from serve("--time-limit", "2")
 
 
 @pytest.fixture(scope="module")
@@ -73,23 +87,35 @@ def browser():
         context.close()
 
 
-@pytest.fixture
-def page(server, browser):
+def open_page(browser, url):
+    """The page at `url`, ready; yields it, then checks it raised no error
+    and its Content-Security-Policy blocked nothing."""
     page = browser.new_page()
     errors = []
     page.on("pageerror", lambda e: errors.append(str(e)))
-    page.goto(server)
+    page.on("console", lambda m: "Content Security Policy" in m.text and errors.append(m.text))
+    page.goto(url)
     page.wait_for_selector("body[data-ready=yes]")
     yield page
     page.close()
     assert not errors, errors
 
 
+@pytest.fixture
+def page(server, browser):
+    yield from open_page(browser, server)
+
+
+@pytest.fixture
+def hurried_page(hurried_server, browser):
+    yield from open_page(browser, hurried_server)
+
+
 def settle(page):
     page.wait_for_selector("body[data-state=done]")
 
 
-def click_points(page, clicks):
+def click_points(page, clicks, wait=True):
     # Ticking checkboxes may have scrolled the editor (at the top) away.
     page.evaluate("window.scrollTo(0, 0)")
     box = page.locator("#editor").bounding_box()
@@ -98,7 +124,8 @@ def click_points(page, clicks):
         x, y = box["x"] + fx * box["width"], box["y"] + fy * box["height"]
         page.mouse.click(x, y)
         spots.append((round(x), round(y)))
-    settle(page)
+    if wait:
+        settle(page)
     return spots
 
 
@@ -241,6 +268,61 @@ def test_bad_input_shows_the_servers_message(page):
     click_points(page, CLICKS[:4])
     expect(page.locator("#error")).to_be_hidden()
     assert page.locator("#panels svg").count() >= 1
+
+
+def test_a_panel_is_busy_until_its_answer_arrives(page):
+    set_criteria(page, {"delaunay", "greedy"})
+    held = []
+
+    def hold_greedy(route):
+        if json.loads(route.request.post_data)["criterion"] == "greedy":
+            held.append(route)
+        else:
+            route.continue_()
+
+    page.route("**/api/triangulate", hold_greedy)
+    click_points(page, CLICKS, wait=False)
+    # Delaunay is drawn while greedy's request is held: its panel is busy.
+    expect(page.locator('svg.panel-svg[data-criterion="delaunay"] polygon.tri')).to_have_count(7)
+    greedy = page.locator('#panels .panel[data-criterion="greedy"]')
+    assert greedy.get_attribute("data-state") == "busy"
+    expect(greedy).to_contain_text("computing")
+    assert page.locator("body").get_attribute("data-state") == "busy"
+    assert drawn_triangles(page, "delaunay") == 7
+    expect(page.locator('#stats tbody tr[data-criterion="delaunay"]')).to_be_visible()
+    # Only the latest request is held; older ones were aborted.
+    assert held, "greedy's request was sent"
+    held[-1].continue_()
+    settle(page)
+    page.unroute("**/api/triangulate")
+    assert greedy.get_attribute("data-state") == "done"
+    assert drawn_triangles(page, "greedy") == 7
+    rows = [r.get_attribute("data-criterion") for r in page.locator("#stats tbody tr").all()]
+    assert rows == ["delaunay", "greedy"]
+
+
+def test_a_criterion_out_of_time_says_so_and_the_others_are_drawn(hurried_page):
+    page = hurried_page
+    # 200 points on a circle: min-weight takes far longer than the 2 s the
+    # server allows; Delaunay and greedy answer at once.
+    set_criteria(page, {"delaunay", "greedy", "min-weight"})
+    page.select_option("#generator", "circle")
+    page.fill("#n", "200")
+    page.click("#generate")
+    settle(page)
+    for name in ["delaunay", "greedy"]:
+        assert drawn_triangles(page, name) == 200 - 2, name
+    stopped = page.locator('#panels .panel[data-criterion="min-weight"]')
+    assert stopped.get_attribute("data-state") == "stopped"
+    expect(stopped.locator(".refused")).to_contain_text("stopped")
+    expect(stopped.locator(".refused")).to_contain_text("limit of 2 s")
+    expect(page.locator('#stats tbody tr[data-criterion="min-weight"]')).to_contain_text("stopped")
+    assert page.locator("#error").is_hidden()
+    with page.expect_download() as d:
+        page.click("#download-json")
+    doc = json.loads(Path(d.value.path()).read_text())
+    assert [r["criterion"] for r in doc["results"]] == ["delaunay", "greedy", "min-weight"]
+    assert "limit of 2 s" in doc["results"][2]["error"]
 
 
 def test_screenshot(page):
