@@ -20,7 +20,7 @@ mod triangulation;
 
 use convert::{file_err, index_array, json_text_to_py, point_array, points_arg, to_py_err};
 use numpy::PyArray2;
-use optri::io::{self, Input, InputFormat};
+use optri::io::{self, Input, InputFormat, ReadInput, ReadOptions, Source};
 use optri::request::{Outcome, Request, Results, Task};
 use optri::{Error, Phase};
 use pyo3::exceptions::{PyRuntimeError, PyTypeError};
@@ -31,11 +31,11 @@ use std::sync::Arc;
 use triangulation::Triangulation;
 
 /// A request for `task` on `input` (read at the decimals Python shows,
-/// [`io::doubles_as_decimals`]) with the keyword arguments as options by
+/// [`ReadInput::from_doubles`]) with the keyword arguments as options by
 /// name: each checked against what the task reads (the registry's
 /// declarations), its value a string or a number.
 fn request(task: Task, input: Input, kwargs: Option<&Bound<'_, PyDict>>) -> PyResult<Request> {
-    let mut request = Request::new(io::doubles_as_decimals(input), task);
+    let mut request = Request::new(ReadInput::from_doubles(input), task);
     if let Some(kwargs) = kwargs {
         for (key, value) in kwargs.iter() {
             let key: String = key.extract()?;
@@ -275,11 +275,11 @@ fn read_points<'py>(
     path: PathBuf,
     format: Option<&str>,
 ) -> PyResult<Bound<'py, PyArray2<f64>>> {
-    let format = input_format(format)?;
-    let points = py
-        .detach(|| io::read_points_file(&path, format))
+    let options = ReadOptions::default().with_format(input_format(format)?);
+    let read = py
+        .detach(|| io::read(Source::Path(&path), &options))
         .map_err(|e| file_err(&path, e))?;
-    Ok(point_array(py, &points)?.into_bound(py))
+    Ok(point_array(py, read.input.points())?.into_bound(py))
 }
 
 /// Reads a simple polygon's ring (a Triangle .poly, or a GeoJSON Polygon in
@@ -293,11 +293,21 @@ fn read_polygon<'py>(
     path: PathBuf,
     format: Option<&str>,
 ) -> PyResult<Bound<'py, PyArray2<f64>>> {
-    let format = input_format(format)?;
-    let ring = py
-        .detach(|| io::read_polygon_file(&path, format))
+    let options = ReadOptions::default()
+        .with_format(input_format(format)?)
+        .with_polygons(true);
+    let read = py
+        .detach(|| io::read(Source::Path(&path), &options))
         .map_err(|e| file_err(&path, e))?;
-    Ok(point_array(py, &ring)?.into_bound(py))
+    let Input::Polygon(ring) = &read.input else {
+        let format = read.format.map_or("", InputFormat::name);
+        let message = format!(
+            "the {format} input holds points, not a polygon (polygons are read from a GeoJSON \
+             Polygon or a Triangle .poly)"
+        );
+        return Err(file_err(&path, Error::Parse { line: 0, message }));
+    };
+    Ok(point_array(py, ring)?.into_bound(py))
 }
 
 /// Exact optimal planar triangulations and proximity graphs.

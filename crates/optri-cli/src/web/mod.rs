@@ -1,7 +1,7 @@
 //! The web playground's JSON API, as a function from a request (method,
 //! path, body) to a [`Reply`], so that the HTTP loop in `commands::serve`
 //! only moves bytes. Every answer is built by the library: the registry
-//! ([`Criterion::ALL`], [`optri::compare`]), the readers ([`io::read_input`])
+//! ([`Criterion::ALL`], [`optri::compare`]), the readers ([`io::read`])
 //! and the result schema ([`TriangulationReport`], [`ComparisonReport`]), so
 //! a criterion that lands later appears in the page without changes here.
 //!
@@ -22,7 +22,7 @@
 //!
 //! The numbers of `points` are taken at their decimal values when the body
 //! writes none with more than 15 significant digits
-//! ([`io::json_numbers_as_decimals`]; the page's `JSON.stringify` writes
+//! ([`ReadInput::from_json_numbers`]; the page's `JSON.stringify` writes
 //! shortest decimals), and the documents say `coordinate_arithmetic`.
 //!
 //! Errors are `{"error": message}` with the library's message: 400 for a
@@ -35,7 +35,7 @@
 //! exceeds [`Limits::time_limit`] (its thread then finishes in the background
 //! and still counts as running, so a flood of slow requests cannot pile up).
 
-use optri::io::{self, InputFormat};
+use optri::io::{self, InputFormat, ReadInput, ReadOptions, Source};
 use optri::request::{Request, Task};
 use optri::{Criterion, Error};
 use serde::Deserialize;
@@ -239,7 +239,7 @@ impl Api {
     /// each an `[x, y]` pair (400 otherwise), at most
     /// [`Limits::max_points`] (422), taken at their decimal values when the
     /// `body` writes none with more than 15 significant digits
-    /// ([`io::json_numbers_as_decimals`], as the GeoJSON reader does), with
+    /// ([`ReadInput::from_json_numbers`], as the GeoJSON reader does), with
     /// the options named in the body (400 for one the task does not read)
     /// and this server's time limit.
     fn request(
@@ -280,7 +280,7 @@ impl Api {
         };
         // `parse` accepted the body, so it is UTF-8 and the lossy view is
         // the text itself.
-        let read = io::json_numbers_as_decimals(input, &String::from_utf8_lossy(body));
+        let read = ReadInput::from_json_numbers(input, &String::from_utf8_lossy(body));
         let mut request = Request::new(read, task);
         if !self.limits.time_limit.is_zero() {
             request
@@ -419,25 +419,27 @@ impl Api {
 
 /// `POST /api/read`: parses a file's text with the library's readers; the
 /// format is `format` if given, else the `filename`'s extension, else
-/// guessed from the content (as the CLI does for stdin).
+/// picked by content (as the CLI does for stdin).
 fn read(body: &[u8]) -> Result<Reply, Refusal> {
     let request: ReadRequest = parse(body)?;
     let format = match (&request.format, &request.filename) {
-        (Some(name), _) => InputFormat::from_name(name).map_err(bad_request)?,
-        (None, Some(name)) => InputFormat::from_path(Path::new(name))
-            .unwrap_or_else(|_| InputFormat::sniff(&request.text)),
-        (None, None) => InputFormat::sniff(&request.text),
+        (Some(name), _) => Some(InputFormat::from_name(name).map_err(bad_request)?),
+        (None, Some(name)) => InputFormat::from_path(Path::new(name)).ok(),
+        (None, None) => None,
     };
-    let input = io::read_input(&request.text, format).map_err(|e| {
+    let options = ReadOptions::default()
+        .with_format(format)
+        .with_polygons(true);
+    let read = io::read(Source::Text(&request.text), &options).map_err(|e| {
         let name = request.filename.as_deref().unwrap_or("the input");
         (422, format!("{name}: {e}"))
     })?;
     Ok(Reply::json(
         200,
         &json!({
-            "points": input.points(),
-            "polygon": matches!(input, io::Input::Polygon(_)),
-            "format": format.name(),
+            "points": read.input.points(),
+            "polygon": matches!(read.input, io::Input::Polygon(_)),
+            "format": read.format.map(InputFormat::name),
         }),
     ))
 }
