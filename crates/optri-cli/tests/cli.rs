@@ -672,7 +672,7 @@ fn an_ele_output_never_overwrites_the_input_node_file() {
         "{}",
         String::from_utf8_lossy(&out.stderr)
     );
-    assert_eq!(file_points(&dir.join("tri.node")), file_points(&input));
+    assert_eq!(file_points(dir.join("tri.node")), file_points(&input));
     // --help says that .ele writes the .node too.
     let help = String::from_utf8_lossy(&run(&["triangulate", "--help"]).stdout).into_owned();
     assert!(

@@ -377,7 +377,7 @@ fn check_tsplib(small: bool) -> usize {
             continue;
         }
         let start = std::time::Instant::now();
-        check(&pts, &path.display().to_string(), &mut tally)
+        check(pts, &path.display().to_string(), &mut tally)
             .unwrap_or_else(|| panic!("{} rejected", path.display()));
         files += 1;
         eprintln!(

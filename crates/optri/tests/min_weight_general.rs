@@ -227,7 +227,7 @@ fn tsplib_files_are_certified(limit: usize) {
         if pts.len() > limit {
             continue;
         }
-        let ps = PointSet::new(&pts).unwrap();
+        let ps = PointSet::new(pts).unwrap();
         let s = triangulate(&ps, Criterion::MinWeight).unwrap();
         s.triangulation.validate().unwrap();
         assert!(s.exact, "{}: {:?}", path.display(), s.diagnostics);

@@ -54,10 +54,10 @@ pub enum InputFormat {
     /// types (`LineString`, `Polygon`, their `Multi` forms) are skipped, so
     /// optri's own GeoJSON output reads back as its points. A document with
     /// no `Point`/`MultiPoint` but one `Polygon` (or a `MultiPolygon` of one
-    /// polygon, without holes) is a polygon input for
-    /// [`read`](super::read) with polygons allowed: the outer ring. Also optri's own
-    /// JSON documents (an object without `"type"`): their `"coordinates"`, or
-    /// the `"points"` array of documents before schema version 1.
+    /// polygon, without holes) is a polygon input for [`read`](super::read)
+    /// with polygons allowed: the outer ring. Also optri's own JSON
+    /// documents (an object without `"type"`): their `"coordinates"`, or the
+    /// `"points"` array of documents before schema version 1.
     GeoJson,
 }
 

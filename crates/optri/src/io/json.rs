@@ -40,9 +40,8 @@ pub const SCHEMA_VERSION: u32 = 1;
 ///
 /// [`new`](Self::new) describes a bare triangulation; [`of_solution`](Self::of_solution)
 /// adds the run fields (`criterion`, `exact`, `optimality`, `algorithm`,
-/// `diagnostics`, `timing_ms`). The JSON files that
-/// [`write_triangulation`](super::write_triangulation) writes are this
-/// document.
+/// `diagnostics`, `timing_ms`). The `.json` files [`write`](super::write())
+/// makes of it are this document.
 #[derive(Clone, Copy, Debug)]
 pub struct TriangulationReport<'a> {
     triangulation: &'a Triangulation,
@@ -306,8 +305,8 @@ struct TriangulationDocument<'a> {
 /// [`new`](Self::new) describes a bare edge set over points;
 /// [`of_graph`](Self::of_graph) adds the graph `kind`, the distinct-point
 /// count and the duplicates; [`with_timing`](Self::with_timing) adds
-/// `timing_ms`. The JSON files that [`write_graph`](super::write_graph)
-/// writes are this document.
+/// `timing_ms`. The `.json` files [`write`](super::write()) makes of it are
+/// this document.
 #[derive(Clone, Copy, Debug)]
 pub struct GraphReport<'a> {
     points: &'a [Point],

@@ -1,5 +1,5 @@
 //! Reading point sets and polygons, and writing the result documents: one
-//! entry point each, [`read`] and [`write`], over one file per format with
+//! entry point each, [`read`] and [`write`](write()), over one file per format with
 //! its reader and writer side by side:
 //!
 //! | module | reads | writes |
@@ -13,7 +13,7 @@
 //! | `json` | [`triangulation_from_json`]; its `coordinates` through the GeoJSON reader | the one result schema: [`TriangulationReport`], [`GraphReport`], [`ComparisonReport`] |
 //! | `svg` | | single picture, graph, multi-panel comparison |
 //! | `read` | [`read`]: a [`Source`] (text, bytes or a path) with [`ReadOptions`] | |
-//! | `write` | | [`write`]: a [`Document`] by the path's extension, with [`WriteOptions`] |
+//! | `write` | | [`write`](write()): a [`Document`] by the path's extension, with [`WriteOptions`] |
 //!
 //! [`read`] returns a [`ReadInput`]: the points or a polygon's ring
 //! ([`Input`]), the coordinates' decimal values where they are exact

@@ -29,7 +29,7 @@ pub struct ReadOptions {
     /// ([`InputFormat::from_path`]) and otherwise by content
     /// ([`InputFormat::sniff`]).
     pub format: Option<InputFormat>,
-    /// Whether a polygon input is returned as [`Input::Polygon`]: a `.poly`,
+    /// Whether a polygon input is returned as [`Input::Polygon`](super::Input::Polygon): a `.poly`,
     /// or a GeoJSON document with one `Polygon` and no points. Otherwise
     /// (the default) every input is points: a `.poly` gives its ring's
     /// vertices in boundary order, and a GeoJSON document without points is

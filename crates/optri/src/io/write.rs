@@ -1,4 +1,4 @@
-//! The one writer entry point: [`write`] puts a [`Document`] (a
+//! The one writer entry point: [`write`](write()) puts a [`Document`] (a
 //! triangulation, a graph or a comparison) into a file in the format of its
 //! extension ([`OutputFormat`]), as [`WriteOptions`] say (the picture's
 //! title, the JSON layout).
@@ -73,7 +73,7 @@ pub enum JsonStyle {
     Pretty,
 }
 
-/// How [`write`] writes.
+/// How [`write`](write()) writes.
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
 #[non_exhaustive]
 pub struct WriteOptions {
