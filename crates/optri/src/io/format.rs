@@ -22,10 +22,12 @@ fn lowercase_extension(path: &Path) -> Option<String> {
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum InputFormat {
     /// One point per line, `x y` (separated by spaces, tabs, commas or
-    /// semicolons); `#` starts a comment. A run of spaces and tabs is one
-    /// separator, but a comma or semicolon always ends a field, so an empty
-    /// field (`1,,0`, or a separator at the start or end of a line) is never
-    /// a silently shifted column. Every row has the same number of fields.
+    /// semicolons); `#` starts a comment. A line with a comma or semicolon
+    /// is split at those only (outside double quotes; fields are trimmed and
+    /// lose their surrounding double quotes), so a name may hold spaces, and
+    /// an empty field (`1,,0`, or a separator at the start or end of a
+    /// line) is never a silently shifted column; a line without is split at
+    /// runs of spaces and tabs. Every row has the same number of fields.
     ///
     /// The first line may be a header (no field a number) naming the
     /// coordinate columns with one pair of `x`/`y`, `lon`/`lat`,

@@ -71,16 +71,18 @@ impl ReadOptions {
 /// holes are not supported yet") or more than one polygon.
 pub fn read(source: Source<'_>, options: &ReadOptions) -> Result<ReadInput> {
     let file;
-    let (bytes, by_extension) = match source {
-        Source::Text(text) => (text.as_bytes(), None),
-        Source::Bytes(bytes) => (bytes, None),
+    let (text, by_extension) = match source {
+        Source::Text(text) => {
+            let text = text.strip_prefix('\u{feff}').unwrap_or(text);
+            (Cow::Borrowed(text), None)
+        }
+        Source::Bytes(bytes) => (decode(bytes), None),
         Source::Path(path) => {
             file = std::fs::read(path)
                 .map_err(|e| Error::Io(format!("cannot read '{}': {e}", path.display())))?;
-            (&file[..], InputFormat::from_path(path).ok())
+            (decode(&file), InputFormat::from_path(path).ok())
         }
     };
-    let text = decode(bytes);
     let format = options
         .format
         .or(by_extension)
