@@ -57,8 +57,9 @@ fn text_fields(line_text: &str) -> Vec<&str> {
 struct Columns {
     /// The columns of x and y.
     xy: [usize; 2],
-    /// Every row's field count, and the line that set it.
+    /// Every row's field count.
     count: usize,
+    /// The line that set it (the header, or the first row).
     line: usize,
     /// Whether a header set them (then the other columns may hold
     /// anything, e.g. names).
@@ -225,11 +226,7 @@ fn header_columns(fields: &[&str], line: usize) -> Result<([usize; 2], Option<St
                 format!(
                     "the header names no coordinate columns (found {}); it must name one pair \
                      of: {accepted} (case-insensitive; x is the longitude or easting)",
-                    listed(
-                        &(0..fields.len())
-                            .map(|k| quoted(names[k]))
-                            .collect::<Vec<_>>()
-                    )
+                    listed(names.len(), names.iter().map(|n| quoted(n)))
                 ),
             ))
         }
@@ -245,16 +242,15 @@ fn header_columns(fields: &[&str], line: usize) -> Result<([usize; 2], Option<St
             ));
         }
     };
-    let skipped: Vec<String> = (0..fields.len())
+    let skipped = (0..names.len())
         .filter(|k| !xy.contains(k))
-        .map(|k| format!("{} (column {})", quoted(names[k]), k + 1))
-        .collect();
-    let warning = (!skipped.is_empty()).then(|| {
+        .map(|k| format!("{} (column {})", quoted(names[k]), k + 1));
+    let count = names.len() - 2;
+    let warning = (count > 0).then(|| {
         format!(
-            "line {line}: skipping {} column{} {}; x and y are {} and {} (columns {} and {})",
-            skipped.len(),
-            plural(skipped.len()),
-            listed(&skipped),
+            "line {line}: skipping {count} column{} {}; x and y are {} and {} (columns {} and {})",
+            plural(count),
+            listed(count, skipped),
             quoted(names[xy[0]]),
             quoted(names[xy[1]]),
             xy[0] + 1,
@@ -264,17 +260,12 @@ fn header_columns(fields: &[&str], line: usize) -> Result<([usize; 2], Option<St
     Ok((xy, warning))
 }
 
-/// The first [`LISTED_NAMES`] of `items`, comma-separated, then `…` with
-/// how many there are in all.
-fn listed(items: &[String]) -> String {
-    let mut text = items
-        .iter()
-        .take(LISTED_NAMES)
-        .cloned()
-        .collect::<Vec<_>>()
-        .join(", ");
-    if items.len() > LISTED_NAMES {
-        text.push_str(&format!(", … ({} in all)", items.len()));
+/// The first [`LISTED_NAMES`] of the `count` `items`, comma-separated,
+/// then `…` with how many there are in all (only those listed are made).
+fn listed(count: usize, items: impl Iterator<Item = String>) -> String {
+    let mut text = items.take(LISTED_NAMES).collect::<Vec<_>>().join(", ");
+    if count > LISTED_NAMES {
+        text.push_str(&format!(", … ({count} in all)"));
     }
     text
 }
