@@ -2,9 +2,10 @@
 //! (`crates/optri/tests/fuzz_regressions.rs` replays the committed corpus
 //! and every crash found through the same functions).
 //!
-//! * [`check_readers`]: every input format (`optri::io::read_input_exact`
-//!   and, for the polygon formats, `read_polygon`) on arbitrary bytes
-//!   returns `Ok` or an error and never panics; an `Ok` result whose working
+//! * [`check_readers`]: every input format (`optri::io::read`, as points
+//!   and with polygons allowed), and the format picked by content, on
+//!   arbitrary bytes returns `Ok` or an error and never panics; an error
+//!   message holds no control character; an `Ok` result whose working
 //!   points (the decimals scaled to integers when exact) validate as a point
 //!   set or polygon triangulates (Delaunay, or the polygon's constrained
 //!   Delaunay) to something `validate()` accepts, and its JSON document (in
@@ -16,7 +17,7 @@
 //!   against `optri-oracle`'s exhaustive enumeration.
 
 use optri::io::{
-    read_input_exact, read_polygon, triangulation_from_json, Input, InputFormat, ReadInput,
+    read, triangulation_from_json, Input, InputFormat, ReadInput, ReadOptions, Source,
     TriangulationReport,
 };
 use optri::{
@@ -33,39 +34,63 @@ const SOLVE_AT_MOST: usize = 64;
 pub const ORACLE_AT_MOST: usize = 7;
 
 pub fn check_readers(data: &[u8]) {
-    let Ok(text) = std::str::from_utf8(data) else {
-        return;
-    };
-    for &format in InputFormat::ALL {
-        match read_input_exact(text, format) {
-            Ok(read) => {
-                let points = read.working_points();
-                assert!(!points.is_empty(), "{format:?}: Ok with no points");
-                if points.len() > SOLVE_AT_MOST {
-                    continue;
-                }
-                let solved = match &read.input {
-                    Input::Points(_) => PointSet::new(points)
-                        .ok()
-                        .map(|set| triangulate(&set, Criterion::Delaunay)),
-                    Input::Polygon(_) => SimplePolygon::new(points)
-                        .ok()
-                        .map(|polygon| triangulate_polygon(&polygon, Criterion::Delaunay)),
-                };
-                if let Some(solved) = solved {
-                    let s = solved.unwrap_or_else(|e| panic!("{format:?}: Delaunay failed: {e}"));
-                    s.triangulation.validate().unwrap_or_else(|e| {
-                        panic!("{format:?}: invalid Delaunay of {points:?}: {e}")
-                    });
-                    check_document_reads_back(&read, &s, format);
-                }
-            }
-            Err(e) => {
-                let _ = e.to_string();
+    let formats = InputFormat::ALL.iter().map(|&f| Some(f)).chain([None]);
+    for format in formats {
+        let options = ReadOptions::default().with_format(format);
+        // As points, every input is points; with polygons, only a `.poly`
+        // or a GeoJSON polygon may be one.
+        let points = read(Source::Bytes(data), &options);
+        if let Ok(got) = &points {
+            assert!(
+                matches!(got.input, Input::Points(_)),
+                "{format:?}: a polygon read as points"
+            );
+        }
+        let polygons = read(Source::Bytes(data), &options.with_polygons(true));
+        if let Ok(got) = &polygons {
+            if matches!(got.input, Input::Polygon(_)) {
+                assert!(
+                    matches!(got.format, Some(InputFormat::Poly | InputFormat::GeoJson)),
+                    "{format:?}: a polygon from {:?}",
+                    got.format
+                );
             }
         }
-        if matches!(format, InputFormat::Poly | InputFormat::GeoJson) {
-            let _ = read_polygon(text, format).map(|ring| assert!(!ring.is_empty()));
+        // Messages quote tokens escaped: no control character of the input
+        // reaches a terminal.
+        for e in [points.as_ref().err(), polygons.as_ref().err()]
+            .into_iter()
+            .flatten()
+        {
+            let message = e.to_string();
+            assert!(
+                !message.chars().any(char::is_control),
+                "{format:?}: a control character in {message:?}"
+            );
+        }
+        let Ok(got) = polygons else {
+            continue;
+        };
+        let format = got.format.expect("a reader names its format");
+        let points = got.working_points();
+        assert!(!points.is_empty(), "{format:?}: Ok with no points");
+        if points.len() > SOLVE_AT_MOST {
+            continue;
+        }
+        let solved = match &got.input {
+            Input::Points(_) => PointSet::new(points)
+                .ok()
+                .map(|set| triangulate(&set, Criterion::Delaunay)),
+            Input::Polygon(_) => SimplePolygon::new(points)
+                .ok()
+                .map(|polygon| triangulate_polygon(&polygon, Criterion::Delaunay)),
+        };
+        if let Some(solved) = solved {
+            let s = solved.unwrap_or_else(|e| panic!("{format:?}: Delaunay failed: {e}"));
+            s.triangulation
+                .validate()
+                .unwrap_or_else(|e| panic!("{format:?}: invalid Delaunay of {points:?}: {e}"));
+            check_document_reads_back(&got, &s, format);
         }
     }
 }

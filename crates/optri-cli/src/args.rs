@@ -38,11 +38,15 @@ pub(crate) enum Command {
 
 #[derive(Args)]
 pub(crate) struct InputArgs {
-    /// Point file (text, .node, .tsp, .geojson/.json), or `-` for stdin. `triangulate` also
-    /// takes a simple polygon (a Triangle .poly, or a GeoJSON Polygon without points) and
-    /// triangulates its interior.
+    /// Point file, or `-` for stdin: text (`x y` per line, or CSV whose header names x/y,
+    /// lon/lat, lng/lat, long/lat, longitude/latitude or easting/northing; other columns are
+    /// skipped with a warning), .node, .tsp, .geojson/.json. `triangulate` also takes a simple
+    /// polygon (a Triangle .poly, or a GeoJSON Polygon without points) and triangulates its
+    /// interior.
     pub input: String,
-    /// Input format: text, node, poly, tsplib, geojson (default: by extension, else by content).
+    /// Input format: text, node, poly, tsplib, geojson (default: by extension, else by content,
+    /// where .node and .poly are recognised only when the whole file matches their headers and
+    /// is not also a table of numbers; anything else is text).
     #[arg(long, value_name = "FMT")]
     pub input_format: Option<String>,
 }

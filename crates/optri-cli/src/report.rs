@@ -5,7 +5,7 @@
 use crate::commands::Run;
 use crate::CliResult;
 use optri::io::Arithmetic;
-use optri::request::Document;
+use optri::io::Document;
 use optri::{Criterion, Domain, Phase, PointSet, Solution};
 use std::io::Write;
 use std::path::PathBuf;

@@ -15,6 +15,21 @@ fn tsplib(name: &str) -> String {
     path.to_str().unwrap().to_string()
 }
 
+/// The points of the file at `path`, read by the library (format by
+/// extension, else by content).
+fn file_points(path: impl AsRef<std::path::Path>) -> Vec<[f64; 2]> {
+    let source = optri::io::Source::Path(path.as_ref());
+    let read = optri::io::read(source, &optri::io::ReadOptions::default()).unwrap();
+    read.input.points().to_vec()
+}
+
+/// The points of `text` in `format`, read by the library.
+fn text_points(text: &str, format: optri::io::InputFormat) -> Vec<[f64; 2]> {
+    let options = optri::io::ReadOptions::default().with_format(format);
+    let read = optri::io::read(optri::io::Source::Text(text), &options).unwrap();
+    read.input.points().to_vec()
+}
+
 /// A fresh directory for one test's files.
 fn scratch(test: &str) -> PathBuf {
     let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join(format!("cli-{test}"));
@@ -178,7 +193,7 @@ fn tsplib_file_with_a_duplicate_and_outputs() {
         out_json.to_str().unwrap(),
     ]);
     let json = stdout_json(&out);
-    let points = optri::io::read_points_file(std::path::Path::new(&input), None).unwrap();
+    let points = file_points(&input);
     assert_eq!(points.len(), 280);
     let t = check_triangulation(&json, &points);
     // Nodes 171 and 172 (input indices 170, 171) coincide.
@@ -188,10 +203,7 @@ fn tsplib_file_with_a_duplicate_and_outputs() {
     assert!(svg.starts_with("<svg"));
     assert_eq!(svg.matches("<line class=\"edge\"").count(), t.edges().len());
     let node = std::fs::read_to_string(dir.join("a280.node")).unwrap();
-    assert_eq!(
-        optri::io::read_points(&node, optri::io::InputFormat::Node).unwrap(),
-        points
-    );
+    assert_eq!(text_points(&node, optri::io::InputFormat::Node), points);
     assert!(std::fs::read_to_string(ele)
         .unwrap()
         .contains(&format!("\n{} 3 0\n", t.triangles().len())));
@@ -342,7 +354,7 @@ fn graph_kinds_match_the_library() {
     let dir = scratch("graph");
     let text = "0 0\n4 0\n4 4\n0 4\n1 1\n3 2\n2 0\n1 1\n2 3.5\n";
     let input = write(&dir, "g.txt", text);
-    let points = optri::io::read_points(text, optri::io::InputFormat::Text).unwrap();
+    let points = text_points(text, optri::io::InputFormat::Text);
     let ps = PointSet::new(&points).unwrap();
     let sorted = |mut e: Vec<[u32; 2]>| {
         for x in &mut e {
@@ -661,10 +673,7 @@ fn an_ele_output_never_overwrites_the_input_node_file() {
         "{}",
         String::from_utf8_lossy(&out.stderr)
     );
-    assert_eq!(
-        optri::io::read_points_file(&dir.join("tri.node"), None).unwrap(),
-        optri::io::read_points_file(std::path::Path::new(&input), None).unwrap()
-    );
+    assert_eq!(file_points(dir.join("tri.node")), file_points(&input));
     // --help says that .ele writes the .node too.
     let help = String::from_utf8_lossy(&run(&["triangulate", "--help"]).stdout).into_owned();
     assert!(
@@ -685,10 +694,10 @@ fn geojson_output_reads_back_as_the_same_points() {
         "-o",
         geojson.to_str().unwrap(),
     ]));
-    let points = optri::io::read_points_file(std::path::Path::new(&input), None).unwrap();
+    let points = file_points(&input);
     // The triangles (Polygons) are skipped; the Point features give every
     // input point, duplicate included, in input order.
-    assert_eq!(optri::io::read_points_file(&geojson, None).unwrap(), points);
+    assert_eq!(file_points(&geojson), points);
     let again = stdout_json(&run(&["triangulate", geojson.to_str().unwrap(), "--json"]));
     assert_eq!(again["points"], 7);
     assert_eq!(again["duplicates"], first["duplicates"]);
@@ -708,7 +717,7 @@ fn geojson_output_reads_back_as_the_same_points() {
         "{}",
         String::from_utf8_lossy(&out.stderr)
     );
-    assert_eq!(optri::io::read_points_file(&graph, None).unwrap(), points);
+    assert_eq!(file_points(&graph), points);
 }
 
 /// Points strictly in convex position, not semicircular: a hexagon.
@@ -750,7 +759,7 @@ fn greedy_names_its_algorithm_and_matches_the_library() {
         assert_eq!(json["algorithm"], *algorithm);
         let detail = json["algorithm_detail"].as_str().unwrap();
         assert!(detail.starts_with(&format!("{algorithm} (")), "{detail}");
-        let points = optri::io::read_points(text, optri::io::InputFormat::Text).unwrap();
+        let points = text_points(text, optri::io::InputFormat::Text);
         let lib =
             optri::triangulate(&PointSet::new(&points).unwrap(), optri::Criterion::Greedy).unwrap();
         let triangles: Vec<[u32; 3]> = serde_json::from_value(json["triangles"].clone()).unwrap();
@@ -767,7 +776,7 @@ fn greedy_names_its_algorithm_and_matches_the_library() {
 #[test]
 fn min_weight_takes_any_point_set_and_is_certified_exact() {
     for input in [SQUARE, HEXAGON] {
-        let points = optri::io::read_points(input, optri::io::InputFormat::Text).unwrap();
+        let points = text_points(input, optri::io::InputFormat::Text);
         let json = stdout_json(&run_stdin(
             &["triangulate", "-", "--criterion", "min-weight", "--json"],
             input,
@@ -872,10 +881,7 @@ fn json_on_stdout_and_a_json_file_are_one_document_that_reads_back() {
     assert_eq!(keys(&stdout), keys(&written));
     assert_eq!(untimed(&stdout), untimed(&written));
     assert_eq!(stdout["document"], "graph");
-    assert_eq!(
-        optri::io::read_points_file(&file, None).unwrap(),
-        optri::io::read_points_file(std::path::Path::new(&input), None).unwrap()
-    );
+    assert_eq!(file_points(&file), file_points(&input));
 }
 
 #[test]

@@ -430,3 +430,93 @@ fn warnings_name_what_is_ignored_and_quiet_silences_them() {
         String::from_utf8_lossy(&out.stderr)
     );
 }
+
+/// The coordinates of `optri triangulate INPUT --json` run in `dir`.
+fn coordinates(dir: &Path, input: &str, stdin: Option<&str>) -> serde_json::Value {
+    let out = run_in(dir, &["triangulate", input, "--json", "-q"], stdin);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(out.status.success(), "{input}: {err}");
+    let document: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    document["coordinates"].clone()
+}
+
+#[test]
+fn stdin_and_unknown_extensions_are_text_unless_the_structure_is_triangles() {
+    let dir = scratch("sniff");
+    let cloud = "3 2 0\n1 0 0\n2 1 0\n3 0 1\n";
+    let zero = "0 2\n1 3\n5 6\n4 0\n";
+    let node = "3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n";
+    let cases = [
+        (cloud, "[[3.0,2.0],[1.0,0.0],[2.0,1.0],[3.0,0.0]]"),
+        (zero, "[[0.0,2.0],[1.0,3.0],[5.0,6.0],[4.0,0.0]]"),
+        (node, "[[0.0,0.0],[1.0,0.0],[0.0,1.0]]"),
+    ];
+    for (k, (text, expected)) in cases.into_iter().enumerate() {
+        let expected: serde_json::Value = serde_json::from_str(expected).unwrap();
+        assert_eq!(coordinates(&dir, "-", Some(text)), expected, "{text}");
+        let name = format!("cloud{k}.dat");
+        std::fs::write(dir.join(&name), text).unwrap();
+        assert_eq!(coordinates(&dir, &name, None), expected, "{text}");
+    }
+}
+
+#[test]
+fn csv_headers_name_the_columns_and_comments_may_be_latin1() {
+    let dir = scratch("csv");
+    std::fs::write(
+        dir.join("cities.csv"),
+        "name,lat,lon\nBern,46.95,7.45\nZürich,47.37,8.54\nGenève,46.2,6.14\n",
+    )
+    .unwrap();
+    let out = run_in(&dir, &["triangulate", "cities.csv", "--json"], None);
+    assert!(out.status.success());
+    assert_eq!(
+        String::from_utf8_lossy(&out.stderr),
+        "optri: warning: cities.csv: line 1: skipping 1 column 'name' (column 1); x and y are \
+         'lon' and 'lat' (columns 3 and 2)\n"
+    );
+    let document: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(
+        document["coordinates"],
+        serde_json::json!([[7.45, 46.95], [8.54, 47.37], [6.14, 46.2]])
+    );
+    assert_error(
+        &dir,
+        &["triangulate", "-"],
+        Some("id,a,b\n1,0,0\n"),
+        "<stdin>:1: the header names no coordinate columns (found 'id', 'a', 'b'); it must name \
+         one pair of: x/y, lon/lat, lng/lat, long/lat, longitude/latitude, easting/northing \
+         (case-insensitive; x is the longitude or easting)",
+    );
+    // Latin-1 bytes in a comment are fine; in a number they name the line.
+    let latin1 = b"# Gen\xe8ve\n0 0\n1 0 # caf\xe9\n0 1\n";
+    std::fs::write(dir.join("latin1.txt"), latin1).unwrap();
+    assert_eq!(
+        coordinates(&dir, "latin1.txt", None),
+        serde_json::json!([[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]])
+    );
+    std::fs::write(dir.join("bad.txt"), b"0 0\n1 0\n0 1\xe9\n").unwrap();
+    assert_error(
+        &dir,
+        &["triangulate", "bad.txt"],
+        None,
+        "bad.txt:3: '1�' is not a number (� stands for bytes that are not UTF-8)",
+    );
+}
+
+#[test]
+fn a_huge_or_binary_token_is_quoted_short_and_escaped() {
+    let dir = scratch("huge");
+    let token = "\u{1b}[31m".to_string() + &"9".repeat(1 << 20);
+    std::fs::write(dir.join("huge.txt"), format!("0 0\n1 {token}\n")).unwrap();
+    assert_error(
+        &dir,
+        &["triangulate", "huge.txt"],
+        None,
+        &format!(
+            "huge.txt:2: '\\u{{1b}}[31m{}…' ({} bytes) is not a number",
+            "9".repeat(35),
+            token.len()
+        ),
+    );
+}

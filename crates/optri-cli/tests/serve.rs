@@ -386,6 +386,29 @@ fn read_parses_files_with_the_library_readers() {
     let (status, v) = server.post("/api/read", &json!({ "text": tsp }));
     assert_eq!(status, 200, "{v}");
     assert_eq!(v["format"], "tsplib");
+    // Pasted clouds whose first row reads as a Triangle header are text;
+    // a whole `.node` is a `.node`.
+    for (text, format, points) in [
+        (
+            "3 2 0\n1 0 0\n2 1 0\n3 0 1\n",
+            "text",
+            json!([[3.0, 2.0], [1.0, 0.0], [2.0, 1.0], [3.0, 0.0]]),
+        ),
+        (
+            "0 2\n1 3\n5 6\n",
+            "text",
+            json!([[0.0, 2.0], [1.0, 3.0], [5.0, 6.0]]),
+        ),
+        (
+            "3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n",
+            "node",
+            json!([[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]]),
+        ),
+    ] {
+        let (status, v) = server.post("/api/read", &json!({ "text": text }));
+        assert_eq!(status, 200, "{v}");
+        assert_eq!((&v["format"], &v["points"]), (&json!(format), &points));
+    }
     let polygon = r#"{"type": "Polygon", "coordinates": [[[0,0],[2,0],[1,1],[0,0]]]}"#;
     let (_, v) = server.post("/api/read", &json!({ "text": polygon }));
     assert_eq!(v["polygon"], true);

@@ -20,9 +20,9 @@ mod triangulation;
 
 use convert::{file_err, index_array, json_text_to_py, point_array, points_arg, to_py_err};
 use numpy::PyArray2;
-use optri::io::{self, Input, InputFormat};
+use optri::io::{self, Input, InputFormat, ReadInput, ReadOptions, Source};
 use optri::request::{Outcome, Request, Results, Task};
-use optri::{Cancel, Options, Phase};
+use optri::{Cancel, Error, Options, Phase};
 use pyo3::exceptions::{PyMemoryError, PyRuntimeError, PyTypeError};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
@@ -33,7 +33,7 @@ use triangulation::Triangulation;
 /// A request for `task` on `input` with the keyword arguments as options
 /// by name: each checked against what the task reads (the registry's
 /// declarations), its value a string or a number. The input is read at the
-/// decimals Python shows ([`io::doubles_as_decimals`]) when the request
+/// decimals Python shows ([`ReadInput::from_doubles`]) when the request
 /// runs, on its own thread.
 fn request(task: Task, input: Input, kwargs: Option<&Bound<'_, PyDict>>) -> PyResult<Pending> {
     let mut options = Options::default();
@@ -108,7 +108,7 @@ fn run(py: Python<'_>, pending: Pending) -> PyResult<Outcome> {
     std::thread::Builder::new()
         .name("optri".to_string())
         .spawn(move || {
-            let request = Request::new(io::doubles_as_decimals(input), task).with_options(options);
+            let request = Request::new(ReadInput::from_doubles(input), task).with_options(options);
             let outcome = request.run().map(|mut outcome| {
                 outcome.finish();
                 outcome
@@ -347,11 +347,11 @@ fn read_points<'py>(
     path: PathBuf,
     format: Option<&str>,
 ) -> PyResult<Bound<'py, PyArray2<f64>>> {
-    let format = input_format(format)?;
-    let points = py
-        .detach(|| io::read_points_file(&path, format))
+    let options = ReadOptions::default().with_format(input_format(format)?);
+    let read = py
+        .detach(|| io::read(Source::Path(&path), &options))
         .map_err(|e| file_err(&path, e))?;
-    Ok(point_array(py, &points)?.into_bound(py))
+    Ok(point_array(py, read.input.points())?.into_bound(py))
 }
 
 /// Reads a simple polygon's ring (a Triangle .poly, or a GeoJSON Polygon in
@@ -365,11 +365,21 @@ fn read_polygon<'py>(
     path: PathBuf,
     format: Option<&str>,
 ) -> PyResult<Bound<'py, PyArray2<f64>>> {
-    let format = input_format(format)?;
-    let ring = py
-        .detach(|| io::read_polygon_file(&path, format))
+    let options = ReadOptions::default()
+        .with_format(input_format(format)?)
+        .with_polygons(true);
+    let read = py
+        .detach(|| io::read(Source::Path(&path), &options))
         .map_err(|e| file_err(&path, e))?;
-    Ok(point_array(py, &ring)?.into_bound(py))
+    let Input::Polygon(ring) = &read.input else {
+        let format = read.format.map_or("", InputFormat::name);
+        let message = format!(
+            "the {format} input holds points, not a polygon (polygons are read from a GeoJSON \
+             Polygon or a Triangle .poly)"
+        );
+        return Err(file_err(&path, Error::Parse { line: 0, message }));
+    };
+    Ok(point_array(py, ring)?.into_bound(py))
 }
 
 /// Exact optimal planar triangulations and proximity graphs.

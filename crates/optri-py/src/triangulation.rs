@@ -7,7 +7,7 @@
 
 use crate::convert::{index_array, json_text_to_py, point_array, to_py_err};
 use numpy::PyArray2;
-use optri::io::{self, ReadInput, TriangulationReport};
+use optri::io::{self, ReadInput, TriangulationReport, WriteOptions};
 use optri::{Phase, Solution};
 use pyo3::exceptions::PyRuntimeError;
 use pyo3::prelude::*;
@@ -265,12 +265,8 @@ impl Triangulation {
     /// the CLI's `-o`: .json (this document), .svg, .geojson, or .ele (and
     /// the .node beside it). Returns the paths written.
     fn write(&self, py: Python<'_>, path: PathBuf) -> PyResult<Vec<PathBuf>> {
-        let title = path
-            .file_name()
-            .map(|n| n.to_string_lossy().into_owned())
-            .unwrap_or_default();
         let report = self.report();
-        py.detach(|| io::write_triangulation_report(&report, &path, &title))
+        py.detach(|| io::write(report, &path, &WriteOptions::default()))
             .map_err(to_py_err)
     }
 

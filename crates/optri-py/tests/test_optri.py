@@ -503,6 +503,27 @@ def test_read_points_formats_and_errors(tmp_path):
         optri.read_polygon(text)
 
 
+def test_read_points_takes_csv_headers_latin1_comments_and_sniffs_only_on_evidence(tmp_path):
+    cities = tmp_path / "cities.csv"
+    cities.write_text("name,lat,lon\nNew York,40.7,-74\nBern,46.95,7.45\n", encoding="utf-8")
+    assert optri.read_points(cities).tolist() == [[-74, 40.7], [7.45, 46.95]]
+    latin1 = tmp_path / "latin1.txt"
+    latin1.write_bytes(b"# Gen\xe8ve\n0 0\n1 0 # caf\xe9\n0 1\n")
+    assert optri.read_points(latin1).tolist() == [[0, 0], [1, 0], [0, 1]]
+    # Without an extension, a cloud whose first row reads as a Triangle
+    # header is text.
+    cloud = tmp_path / "cloud"
+    cloud.write_text("3 2 0\n1 0 0\n2 1 0\n3 0 1\n")
+    assert optri.read_points(cloud).tolist() == [[3, 2], [1, 0], [2, 1], [3, 0]]
+    assert optri.read_points(cloud, format="node").tolist() == [[0, 0], [1, 0], [0, 1]]
+    huge = tmp_path / "huge.txt"
+    huge.write_text("0 0\n1 " + "9" * 1_000_000 + "x\n")
+    with pytest.raises(ValueError) as error:
+        optri.read_points(huge)
+    assert len(str(error.value)) < 200
+    assert "(1000001 bytes)" in str(error.value)
+
+
 # --- threads -------------------------------------------------------------------
 
 

@@ -6,6 +6,7 @@
 //! cargo run --release -p optri --example compare_criteria -- pts.tsp # a file
 //! ```
 
+use optri::io::{self, ReadOptions, Source};
 use optri::{triangulate, Criterion, Error, PointSet};
 use std::path::Path;
 
@@ -21,7 +22,10 @@ fn built_in() -> Vec<[f64; 2]> {
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let raw = match std::env::args().nth(1) {
-        Some(path) => optri::io::read_points_file(Path::new(&path), None)?,
+        Some(path) => io::read(Source::Path(Path::new(&path)), &ReadOptions::default())?
+            .input
+            .points()
+            .to_vec(),
         None => built_in(),
     };
     let points = PointSet::new(&raw)?;

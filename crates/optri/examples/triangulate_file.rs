@@ -7,6 +7,7 @@
 //! The file may be plain `x y` text, Triangle `.node`, TSPLIB `.tsp` or
 //! GeoJSON; the criterion is any name of `optri::Criterion::ALL`.
 
+use optri::io::{self, ReadOptions, Source};
 use optri::{triangulate, Criterion, PointSet};
 use std::path::Path;
 
@@ -21,8 +22,10 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         std::process::exit(2);
     };
     let criterion = Criterion::from_name(criterion.as_deref().unwrap_or("delaunay"))?;
-    let raw = optri::io::read_points_file(Path::new(&path), None)?;
-    let points = PointSet::new(&raw)?;
+    // The format by extension, else by content; a .poly gives its vertices.
+    let read = io::read(Source::Path(Path::new(&path)), &ReadOptions::default())?;
+    let raw = read.input.points();
+    let points = PointSet::new(raw)?;
     let solution = triangulate(&points, criterion)?;
     solution.triangulation.validate()?;
     let stats = solution.triangulation.stats();

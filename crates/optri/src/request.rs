@@ -5,9 +5,9 @@
 //! report alike.
 //!
 //! ```
-//! use optri::io::{self, Input};
+//! use optri::io::{Input, ReadInput};
 //! use optri::request::{Request, Task};
-//! let read = io::doubles_as_decimals(Input::Points(vec![
+//! let read = ReadInput::from_doubles(Input::Points(vec![
 //!     [0.0, 0.0], [4.0, 0.0], [0.0, 3.0], [4.0, 3.0], [2.0, 1.0],
 //! ]));
 //! let mut request = Request::new(read, Task::triangulate("minmax-length")?);
@@ -27,7 +27,7 @@
 
 use crate::criteria::{InputKind, Options, OPTIONS};
 use crate::error::{Error, Result};
-use crate::io::{ComparisonReport, GraphReport, Input, ReadInput, TriangulationReport};
+use crate::io::{ComparisonReport, Document, GraphReport, Input, ReadInput, TriangulationReport};
 use crate::registry::{
     compare, compare_polygon, graph_of_points_with, triangulate_polygon_with, triangulate_with,
     Comparison, Criterion, GraphKind, PointGraph, Solution,
@@ -145,8 +145,8 @@ pub struct Request {
 }
 
 impl Request {
-    /// A request for `task` on `read` (what a reader returned, or
-    /// [`crate::io::doubles_as_decimals`] of a front end's numbers), with
+    /// A request for `task` on `read` (what [`crate::io::read`] returned, or
+    /// [`ReadInput::from_doubles`] of a front end's numbers), with
     /// default options, timed from now.
     pub fn new(read: ReadInput, task: Task) -> Self {
         Self {
@@ -304,42 +304,6 @@ pub struct Outcome {
     start: Instant,
 }
 
-/// An [`Outcome`]'s JSON document, as the report type of its kind.
-#[derive(Clone, Copy, Debug)]
-#[non_exhaustive]
-pub enum Document<'a> {
-    /// `"document": "triangulation"`.
-    Triangulation(TriangulationReport<'a>),
-    /// `"document": "comparison"`.
-    Comparison(ComparisonReport<'a>),
-    /// `"document": "graph"`.
-    Graph(GraphReport<'a>),
-}
-
-impl Document<'_> {
-    /// The document as a JSON value.
-    pub fn to_json(&self) -> Value {
-        match self {
-            Document::Triangulation(d) => d.to_json(),
-            Document::Comparison(d) => d.to_json(),
-            Document::Graph(d) => d.to_json(),
-        }
-    }
-}
-
-impl serde::Serialize for Document<'_> {
-    fn serialize<S: serde::Serializer>(
-        &self,
-        serializer: S,
-    ) -> std::result::Result<S::Ok, S::Error> {
-        match self {
-            Document::Triangulation(d) => d.serialize(serializer),
-            Document::Comparison(d) => d.serialize(serializer),
-            Document::Graph(d) => d.serialize(serializer),
-        }
-    }
-}
-
 impl Outcome {
     /// The triangulation, for [`Task::Triangulate`].
     pub fn solution(&self) -> Option<&Solution> {
@@ -473,10 +437,9 @@ fn ms_since(start: Instant) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::io::doubles_as_decimals;
 
     fn read(points: &[[f64; 2]]) -> ReadInput {
-        doubles_as_decimals(Input::Points(points.to_vec()))
+        ReadInput::from_doubles(Input::Points(points.to_vec()))
     }
 
     #[test]
@@ -540,7 +503,7 @@ mod tests {
             [2.0, 1.0],
             [2.0, 0.0],
         ];
-        let read = doubles_as_decimals(Input::Polygon(l.to_vec()));
+        let read = ReadInput::from_doubles(Input::Polygon(l.to_vec()));
         let outcome = Request::new(read, Task::triangulate("min-weight").unwrap())
             .run()
             .unwrap();

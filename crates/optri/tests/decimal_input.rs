@@ -3,9 +3,17 @@
 //! triangle that is flat in decimal terms), checked against integer
 //! arithmetic on the decimals, independently of the reader's scaling.
 
-use optri::io::{read_points_exact, Arithmetic, InputFormat};
+use optri::io::{read, Arithmetic, InputFormat, ReadInput, ReadOptions, Source};
 use optri::{graph_of_points, triangulate, Criterion, GraphKind, PointSet};
 use rand::{rngs::StdRng, Rng, SeedableRng};
+
+/// `text` read in `format` as points, with its decimal values.
+fn read_points_exact(text: &str, format: InputFormat) -> optri::Result<ReadInput> {
+    read(
+        Source::Text(text),
+        &ReadOptions::default().with_format(format),
+    )
+}
 
 /// `v / 10^k` written as a decimal with `k` places.
 fn decimal(v: i64, k: u32) -> String {
@@ -187,7 +195,10 @@ fn inputs_that_do_not_scale_are_binary64() {
     let read = read_points_exact(node, InputFormat::Node).unwrap();
     assert_eq!(read.working_points()[1], [2.0, 6.0]);
     let poly = "3 2\n1 0.5 0\n2 0 0.25\n3 0 0\n3 0\n1 1 3\n2 3 2\n3 2 1\n";
-    let read = optri::io::read_input_exact(poly, InputFormat::Poly).unwrap();
+    let options = ReadOptions::default()
+        .with_format(InputFormat::Poly)
+        .with_polygons(true);
+    let read = optri::io::read(Source::Text(poly), &options).unwrap();
     assert_eq!(
         read.working_points(),
         [[50.0, 0.0], [0.0, 0.0], [0.0, 25.0]]

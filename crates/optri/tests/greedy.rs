@@ -368,14 +368,16 @@ fn check_tsplib(small: bool) -> usize {
     let mut tally = Tally::default();
     let mut files = 0;
     for path in tsplib_files() {
-        let pts = optri::io::read_points_file(&path, Some(optri::io::InputFormat::Tsplib))
+        let options = optri::io::ReadOptions::default().with_format(optri::io::InputFormat::Tsplib);
+        let read = optri::io::read(optri::io::Source::Path(&path), &options)
             .unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+        let pts = read.input.points();
         assert!(pts.len() >= 52, "{}", path.display());
         if (pts.len() <= 1100) != small {
             continue;
         }
         let start = std::time::Instant::now();
-        check(&pts, &path.display().to_string(), &mut tally)
+        check(pts, &path.display().to_string(), &mut tally)
             .unwrap_or_else(|| panic!("{} rejected", path.display()));
         files += 1;
         eprintln!(

@@ -6,7 +6,7 @@
 //! trip must give back the identical `f64` values, in input order, with the
 //! same duplicates.
 
-use optri::io::{self, InputFormat, OutputFormat};
+use optri::io::{self, InputFormat, OutputFormat, ReadOptions, Source, WriteOptions};
 use optri::kernel::{MAX_COORDINATE, MIN_COORDINATE};
 use optri::{delaunay, Error, PointSet, Triangulation};
 use optri_oracle::inputs::{grid, lattice_points, uniform_in_square};
@@ -16,6 +16,23 @@ use serde_json::Value;
 use std::path::PathBuf;
 
 type Point = [f64; 2];
+
+/// The points of `text` read in `format`.
+fn read_points(text: &str, format: InputFormat) -> optri::Result<Vec<Point>> {
+    let options = ReadOptions::default().with_format(format);
+    io::read(Source::Text(text), &options).map(|r| r.input.points().to_vec())
+}
+
+/// The points of the file at `path` (format by extension, else content).
+fn read_file(path: &std::path::Path) -> Vec<Point> {
+    let read = io::read(Source::Path(path), &ReadOptions::default()).unwrap();
+    read.input.points().to_vec()
+}
+
+/// Writes `document` to `path` by its extension, with default options.
+fn write<'a>(document: impl Into<io::Document<'a>>, path: &std::path::Path) -> Vec<PathBuf> {
+    io::write(document, path, &WriteOptions::default()).unwrap()
+}
 
 const SEED_POINT_SETS: u64 = 2024;
 
@@ -152,12 +169,12 @@ fn text_files_in_every_style_read_back_exactly() {
         for (sep, header) in styles {
             for exponent in [false, true] {
                 let text = to_text(&pts, sep, header, exponent);
-                let back = io::read_points(&text, InputFormat::Text)
+                let back = read_points(&text, InputFormat::Text)
                     .unwrap_or_else(|e| panic!("{name} sep {sep:?}: {e}\n{text}"));
                 assert_eq!(back, pts, "{name} sep {sep:?} header {header:?}");
                 // CRLF line ends read the same.
                 let crlf = text.replace('\n', "\r\n");
-                assert_eq!(io::read_points(&crlf, InputFormat::Text).unwrap(), pts);
+                assert_eq!(read_points(&crlf, InputFormat::Text).unwrap(), pts);
             }
         }
         // Sniffed as text without an extension.
@@ -172,14 +189,14 @@ fn node_and_tsp_files_read_back_exactly() {
         let t = delaunay(&PointSet::new(&pts).unwrap()).unwrap();
         let (node, _) = io::triangulation_to_triangle_files(&t);
         assert_eq!(
-            io::read_points(&node, InputFormat::Node).unwrap(),
+            read_points(&node, InputFormat::Node).unwrap(),
             pts,
             "{name}"
         );
         let tsp = to_tsp(&pts);
         assert_eq!(InputFormat::sniff(&tsp), InputFormat::Tsplib);
         assert_eq!(
-            io::read_points(&tsp, InputFormat::Tsplib).unwrap(),
+            read_points(&tsp, InputFormat::Tsplib).unwrap(),
             pts,
             "{name}"
         );
@@ -187,7 +204,7 @@ fn node_and_tsp_files_read_back_exactly() {
     // A hand-written .node: 1-based ids, an attribute and boundary markers.
     let node = "# square\n4 2 1 1\n1 0 0 0.5 1\n2 1 0 0.5 1\n3 1 1 0.5 1\n4 0 1 0.5 1\n";
     assert_eq!(
-        io::read_points(node, InputFormat::Node).unwrap(),
+        read_points(node, InputFormat::Node).unwrap(),
         vec![[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]]
     );
 }
@@ -200,18 +217,19 @@ fn geojson_and_json_outputs_read_back_as_their_points() {
         let t = delaunay(&ps).unwrap();
         // GeoJSON: triangles (Polygons) are skipped, the Points are the input.
         let geojson = dir.join(format!("t{k}.geojson"));
-        io::write_triangulation(&t, &geojson).unwrap();
-        let back = io::read_points_file(&geojson, None).unwrap();
+        write(io::TriangulationReport::new(&t), &geojson);
+        let back = read_file(&geojson);
         assert_eq!(back, pts, "{name}");
         assert_eq!(PointSet::new(&back).unwrap().duplicates(), ps.duplicates());
         // A graph's GeoJSON (LineStrings and Points) as well.
         let graph = dir.join(format!("g{k}.geojson"));
-        io::write_graph(&pts, &t.edges(), name.as_str(), &graph).unwrap();
-        assert_eq!(io::read_points_file(&graph, None).unwrap(), pts, "{name}");
+        let edges = t.edges();
+        write(io::GraphReport::new(&pts, &edges), &graph);
+        assert_eq!(read_file(&graph), pts, "{name}");
         // JSON: parses back to the same triangulation, and its points read as
         // a point file.
         let json = dir.join(format!("t{k}.json"));
-        io::write_triangulation(&t, &json).unwrap();
+        write(io::TriangulationReport::new(&t), &json);
         let text = std::fs::read_to_string(&json).unwrap();
         let value: Value = serde_json::from_str(&text).unwrap();
         let again = io::triangulation_from_json(&value).unwrap();
@@ -219,13 +237,13 @@ fn geojson_and_json_outputs_read_back_as_their_points() {
         assert_eq!(again.triangles(), t.triangles(), "{name}");
         assert_eq!(again.point_set().duplicates(), ps.duplicates(), "{name}");
         assert_eq!(value["duplicates"], serde_json::json!(ps.duplicates()));
-        assert_eq!(io::read_points_file(&json, None).unwrap(), pts, "{name}");
+        assert_eq!(read_file(&json), pts, "{name}");
     }
     // Polygons alone hold no points: the error says what the document has.
     let pts = &point_sets()[0].1;
     let t = delaunay(&PointSet::new(pts).unwrap()).unwrap();
     let polygons_only = io::triangulation_to_geojson(&t, false).to_string();
-    let (_, m) = parse_error(io::read_points(&polygons_only, InputFormat::GeoJson).unwrap_err());
+    let (_, m) = parse_error(read_points(&polygons_only, InputFormat::GeoJson).unwrap_err());
     assert!(
         m.contains("no Point or MultiPoint")
             && m.contains(&format!("{} Polygon", t.triangles().len())),
@@ -246,9 +264,9 @@ fn ele_and_node_files_read_back_with_consistent_indices() {
         let ps = PointSet::new(&pts).unwrap();
         let t = delaunay(&ps).unwrap();
         let ele = dir.join(format!("t{k}.ele"));
-        let written = io::write_triangulation(&t, &ele).unwrap();
+        let written = write(io::TriangulationReport::new(&t), &ele);
         assert_eq!(written, OutputFormat::Triangle.files_written(&ele));
-        let node_points = io::read_points_file(&written[1], None).unwrap();
+        let node_points = read_file(&written[1]);
         assert_eq!(node_points, pts, "{name}");
         let triangles = read_ele(&std::fs::read_to_string(&ele).unwrap());
         assert_eq!(triangles, t.triangles(), "{name}");
@@ -274,14 +292,14 @@ fn ele_and_node_files_read_back_with_consistent_indices() {
 #[test]
 fn a_shared_tsplib_file_survives_the_round_trip_with_its_duplicate() {
     let tsp = optri_oracle::data_dir().join("tsplib/a280.tsp");
-    let pts = io::read_points_file(&tsp, None).unwrap();
+    let pts = read_file(&tsp);
     let ps = PointSet::new(&pts).unwrap();
     // Nodes 171 and 172 coincide (input indices 170, 171).
     assert_eq!(ps.duplicates(), &[[171, 170]]);
     let t = delaunay(&ps).unwrap();
     let dir = scratch("a280");
-    let written = io::write_triangulation(&t, &dir.join("a280.ele")).unwrap();
-    let back = io::read_points_file(&written[1], None).unwrap();
+    let written = write(io::TriangulationReport::new(&t), &dir.join("a280.ele"));
+    let back = read_file(&written[1]);
     assert_eq!(back, pts);
     assert_eq!(PointSet::new(&back).unwrap().duplicates(), &[[171, 170]]);
     std::fs::remove_dir_all(&dir).unwrap();
@@ -306,19 +324,19 @@ fn bad_text_inputs_name_their_line() {
         ("x y\n", 0, "no points"),
     ];
     for &(text, line, needle) in cases {
-        let (got, m) = parse_error(io::read_points(text, InputFormat::Text).unwrap_err());
+        let (got, m) = parse_error(read_points(text, InputFormat::Text).unwrap_err());
         assert_eq!(got, line, "{text:?}: {m}");
         assert!(m.contains(needle), "{text:?}: {m}");
     }
     // The other formats reject out-of-range values too, with their line where
     // there is one.
     let (line, m) = parse_error(
-        io::read_points("3 2 0 0\n0 0 0\n1 1e300 0\n2 0 1\n", InputFormat::Node).unwrap_err(),
+        read_points("3 2 0 0\n0 0 0\n1 1e300 0\n2 0 1\n", InputFormat::Node).unwrap_err(),
     );
     assert_eq!(line, 3);
     assert!(m.contains("range"), "{m}");
     let (line, m) = parse_error(
-        io::read_points(
+        read_points(
             "NODE_COORD_SECTION\n1 0 0\n2 1e-300 0\n",
             InputFormat::Tsplib,
         )
@@ -327,7 +345,7 @@ fn bad_text_inputs_name_their_line() {
     assert_eq!(line, 3);
     assert!(m.contains("range"), "{m}");
     let (_, m) = parse_error(
-        io::read_points(
+        read_points(
             r#"{"type":"MultiPoint","coordinates":[[0,0],[1e300,1]]}"#,
             InputFormat::GeoJson,
         )
@@ -335,7 +353,7 @@ fn bad_text_inputs_name_their_line() {
     );
     assert!(m.contains("range") && m.contains("[1]"), "{m}");
     for format in InputFormat::ALL {
-        let (line, m) = parse_error(io::read_points("", *format).unwrap_err());
+        let (line, m) = parse_error(read_points("", *format).unwrap_err());
         assert_eq!(line, 0, "{format:?}");
         assert!(
             m.contains("no points") || m.contains("no coordinates"),
@@ -361,7 +379,7 @@ fn the_coordinate_range_is_exactly_the_documented_one() {
         (1e-300, false),
     ] {
         let text = format!("1 1\n2 1\n{value:e} 3\n");
-        let read = io::read_points(&text, InputFormat::Text);
+        let read = read_points(&text, InputFormat::Text);
         assert_eq!(read.is_ok(), ok, "{value:e}: {read:?}");
         if let Err(e) = read {
             let (line, m) = parse_error(e);
@@ -398,11 +416,59 @@ fn too_few_and_collinear_points_read_but_do_not_triangulate() {
         ),
     ];
     for (text, expected) in cases {
-        let pts = io::read_points(text, InputFormat::Text).unwrap();
+        let pts = read_points(text, InputFormat::Text).unwrap();
         let e = PointSet::new(&pts).unwrap_err();
         assert_eq!(&e, expected, "{text:?}");
         // The message says what is wrong and how many points there are.
         let m = e.to_string();
         assert!(m.contains("distinct") || m.contains("collinear"), "{m}");
+    }
+}
+
+#[test]
+fn a_50_mb_token_gives_a_short_escaped_message_in_every_reader() {
+    let long = "7".repeat(50 << 20);
+    // A bell and an escape first: they must not reach a terminal raw.
+    let token = format!("\u{7}\u{1b}{long}");
+    let cases: Vec<(InputFormat, String)> = vec![
+        (InputFormat::Text, format!("0 0\n1 {token}\n")),
+        (InputFormat::Text, format!("{token}\n")),
+        (InputFormat::Text, format!("id,a{token}\n1,2\n")),
+        (
+            InputFormat::Node,
+            format!("3 2 0 0\n0 0 0\n1 {token} 0\n2 0 1\n"),
+        ),
+        (InputFormat::Node, format!("{token} 2 0 0\n")),
+        (
+            InputFormat::Poly,
+            format!("3 2\n0 0 0\n1 1 0\n2 0 1\n{token} 0\n"),
+        ),
+        (
+            InputFormat::Tsplib,
+            format!("NODE_COORD_SECTION\n1 0 0\n2 {token} 1\n"),
+        ),
+        (InputFormat::Tsplib, format!("NAME: x\n{token}\n")),
+        (InputFormat::Tsplib, format!("EDGE_WEIGHT_TYPE: {token}\n")),
+        (
+            InputFormat::GeoJson,
+            format!(r#"{{"type":"\u0007{long}","coordinates":[0,0]}}"#),
+        ),
+        (
+            InputFormat::GeoJson,
+            format!(r#"{{"type":"Point","coordinates":"\u0007{long}"}}"#),
+        ),
+    ];
+    for (format, text) in cases {
+        let e = read_points(&text, format).unwrap_err();
+        let message = e.to_string();
+        assert!(
+            message.len() < 300 && !message.chars().any(char::is_control),
+            "{format:?}: {message}"
+        );
+        // The prefix is shown, then how long the whole token is.
+        assert!(message.contains("7777…"), "{format:?}: {message}");
+        let before = message.split(" bytes)").next().unwrap();
+        let bytes: usize = before.rsplit('(').next().unwrap().parse().unwrap();
+        assert!(bytes >= long.len(), "{format:?}: {message}");
     }
 }

@@ -221,11 +221,13 @@ fn tsplib_files_are_certified(limit: usize) {
     files.sort();
     let mut checked = 0;
     for path in files {
-        let pts = optri::io::read_points_file(&path, None).unwrap();
+        let source = optri::io::Source::Path(&path);
+        let read = optri::io::read(source, &optri::io::ReadOptions::default()).unwrap();
+        let pts = read.input.points();
         if pts.len() > limit {
             continue;
         }
-        let ps = PointSet::new(&pts).unwrap();
+        let ps = PointSet::new(pts).unwrap();
         let s = triangulate(&ps, Criterion::MinWeight).unwrap();
         s.triangulation.validate().unwrap();
         assert!(s.exact, "{}: {:?}", path.display(), s.diagnostics);

@@ -502,7 +502,14 @@ fn gabriel_graph_is_planar_and_uses_the_closed_disc() {
         ),
         (
             "a280",
-            optri::io::read_points_file(&dir.join("a280.tsp"), None).unwrap(),
+            optri::io::read(
+                optri::io::Source::Path(&dir.join("a280.tsp")),
+                &optri::io::ReadOptions::default(),
+            )
+            .unwrap()
+            .input
+            .points()
+            .to_vec(),
         ),
     ] {
         let ps = PointSet::new(&pts).unwrap();

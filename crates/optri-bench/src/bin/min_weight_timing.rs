@@ -11,6 +11,7 @@
 //! printed, and the ratio of the fastest runs (the machines here are noisy:
 //! a run is only ever slowed down by the neighbours).
 
+use optri::io::{self, ReadOptions, Source};
 use optri::{triangulate, Criterion, PointSet};
 use optri_oracle::inputs::uniform_unit_square;
 use rand::{rngs::StdRng, SeedableRng};
@@ -86,8 +87,9 @@ fn main() {
         run(&format!("uniform {n}"), &pts, repeat);
     } else {
         for path in args {
-            let pts = optri::io::read_points_file(std::path::Path::new(&path), None).unwrap();
-            run(&path, &pts, repeat);
+            let source = Source::Path(std::path::Path::new(&path));
+            let read = io::read(source, &ReadOptions::default()).unwrap();
+            run(&path, read.input.points(), repeat);
         }
     }
 }

@@ -19,9 +19,11 @@
 //! Peak resident memory (VmHWM) is printed at the end.
 
 use optri::internals::SMALL_REGION;
+use optri::io::{self, InputFormat, ReadOptions, Source};
 use optri::{Criterion, Diagnostics, PointSet};
 use optri_oracle::inputs::{boxed, perturbed_circle, uniform_unit_square};
 use rand::{rngs::StdRng, SeedableRng};
+use std::path::Path;
 use std::time::Instant;
 
 const SEED_UNIFORM: u64 = 1;
@@ -124,9 +126,9 @@ fn main() {
         }
         "tsp" => {
             for path in args.iter().skip(1) {
-                let text = std::fs::read_to_string(path).unwrap();
-                let pts = optri::io::read_points(&text, optri::io::InputFormat::Tsplib).unwrap();
-                compare_with_delaunay(path, &PointSet::new(&pts).unwrap());
+                let options = ReadOptions::default().with_format(InputFormat::Tsplib);
+                let read = io::read(Source::Path(Path::new(path)), &options).unwrap();
+                compare_with_delaunay(path, &PointSet::new(read.input.points()).unwrap());
             }
         }
         "convex" => {

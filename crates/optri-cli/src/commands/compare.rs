@@ -7,10 +7,9 @@ use super::Reading;
 use crate::args::CompareArgs;
 use crate::report;
 use crate::CliResult;
-use optri::io::{self, OutputFormat};
-use optri::request::{Outcome, Task};
-use optri::Triangulation;
-use std::path::{Path, PathBuf};
+use optri::io::{self, JsonStyle, OutputFormat, WriteOptions};
+use optri::request::Task;
+use std::path::Path;
 
 /// The outputs `compare` writes: the panels (`.svg`) or the comparison
 /// document (`.json`).
@@ -33,13 +32,13 @@ pub(crate) fn run(args: CompareArgs) -> CliResult<()> {
     reading.progress.phase("comparing");
     let mut run = reading.run(task, options)?;
     run.progress.phase("writing");
-    let results = run.outcome.comparison().expect("a compare request");
-    let titles: Vec<String> = results
-        .iter()
-        .map(|(c, r)| run.title(&report::label(*c, r.as_ref().is_ok_and(|s| s.exact))))
-        .collect();
+    // The panels are titled `input — criterion (exact)`; the document file
+    // is indented (compare has no `--pretty`).
+    let options = WriteOptions::default()
+        .with_title(super::display_name(&run.source))
+        .with_style(JsonStyle::Pretty);
     let written = run.write(&args.output, |outcome, path| {
-        write_output(&titles, outcome, path)
+        io::write(outcome.document(), path, &options)
     })?;
     run.finish();
     if args.json {
@@ -50,35 +49,4 @@ pub(crate) fn run(args: CompareArgs) -> CliResult<()> {
         text.push_str(&format!("wrote {}\n", path.display()));
     }
     report::emit(&text)
-}
-
-/// Writes `document` (`.json`) or the panels of the results that
-/// triangulated, titled by `titles` (`.svg`).
-fn write_output(titles: &[String], outcome: &Outcome, path: &Path) -> optri::Result<Vec<PathBuf>> {
-    let results = outcome.comparison().unwrap_or_default();
-    let text = match output_format(path)? {
-        OutputFormat::Json => {
-            let mut s = serde_json::to_string_pretty(&outcome.document())
-                .map_err(|e| optri::Error::Io(format!("cannot write '{}': {e}", path.display())))?;
-            s.push('\n');
-            s
-        }
-        _ => {
-            let panels: Vec<(&str, &Triangulation)> = titles
-                .iter()
-                .zip(results)
-                .filter_map(|(t, (_, r))| r.as_ref().ok().map(|s| (t.as_str(), &s.triangulation)))
-                .collect();
-            if panels.is_empty() {
-                return Err(optri::Error::Io(format!(
-                    "cannot write '{}': every criterion refused the input, there is nothing to draw",
-                    path.display()
-                )));
-            }
-            io::panels_to_svg(&panels)
-        }
-    };
-    std::fs::write(path, text)
-        .map_err(|e| optri::Error::Io(format!("cannot write '{}': {e}", path.display())))?;
-    Ok(vec![path.to_path_buf()])
 }

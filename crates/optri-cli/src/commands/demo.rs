@@ -4,7 +4,7 @@ use super::{input_error, ms_since};
 use crate::args::DemoArgs;
 use crate::report;
 use crate::CliResult;
-use optri::io::{self, InputFormat, OutputFormat};
+use optri::io::{self, InputFormat, OutputFormat, ReadOptions, Source};
 use optri::kernel::Point;
 use optri::{Criterion, InputKind, PointSet, SimplePolygon, Triangulation};
 use std::time::Instant;
@@ -45,7 +45,9 @@ struct DemoResult {
 /// Reads a built-in point set (valid by construction; errors are still
 /// reported, not unwrapped).
 fn builtin_points(text: &str, name: &str) -> CliResult<(Vec<Point>, PointSet)> {
-    let points = io::read_points(text, InputFormat::Text).map_err(|e| input_error(name, e))?;
+    let options = ReadOptions::default().with_format(InputFormat::Text);
+    let read = io::read(Source::Text(text), &options).map_err(|e| input_error(name, e))?;
+    let points = read.input.points().to_vec();
     let point_set = PointSet::new(&points).map_err(|e| input_error(name, e))?;
     Ok((points, point_set))
 }

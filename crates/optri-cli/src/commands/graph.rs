@@ -6,8 +6,8 @@ use super::Reading;
 use crate::args::GraphArgs;
 use crate::report;
 use crate::CliResult;
-use optri::io::{self, OutputFormat};
-use optri::request::{Document, Task};
+use optri::io::{self, OutputFormat, WriteOptions};
+use optri::request::Task;
 
 pub(crate) fn run(args: GraphArgs) -> CliResult<()> {
     let options = args.run.options()?;
@@ -23,11 +23,9 @@ pub(crate) fn run(args: GraphArgs) -> CliResult<()> {
     run.progress.phase("writing");
     let title = run.title(args.kind.name());
     let style = args.style.json_style();
+    let options = WriteOptions::default().with_title(title).with_style(style);
     let written = run.write(&args.output, |outcome, path| {
-        let Document::Graph(document) = outcome.document() else {
-            unreachable!("a graph request");
-        };
-        io::write_graph_report_styled(&document, path, &title, style)
+        io::write(outcome.document(), path, &options)
     })?;
     run.finish();
     if args.json {

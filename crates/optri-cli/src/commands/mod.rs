@@ -11,7 +11,7 @@ pub(crate) mod triangulate;
 use crate::args::InputArgs;
 use crate::progress::Progress;
 use crate::CliResult;
-use optri::io::{self, InputFormat, OutputFormat, ReadInput};
+use optri::io::{self, InputFormat, OutputFormat, ReadInput, ReadOptions, Source};
 use optri::request::{Outcome, Request, Task};
 use optri::{Error, Options, Phase};
 use std::io::{Read, Write};
@@ -246,22 +246,19 @@ fn read_input(args: &InputArgs, polygons: bool) -> CliResult<(ReadInput, String)
         .map(InputFormat::from_name)
         .transpose()
         .map_err(|e| e.to_string())?;
+    let options = ReadOptions::default()
+        .with_format(format)
+        .with_polygons(polygons);
     if args.input == "-" {
         let source = "<stdin>".to_string();
-        let mut text = String::new();
+        let mut bytes = Vec::new();
         std::io::stdin()
-            .read_to_string(&mut text)
+            .read_to_end(&mut bytes)
             .map_err(|e| format!("cannot read stdin: {e}"))?;
-        let format = format.unwrap_or_else(|| InputFormat::sniff(&text));
-        let read = if polygons {
-            io::read_input_exact(&text, format)
-        } else {
-            io::read_points_exact(&text, format)
-        };
+        let read = io::read(Source::Bytes(&bytes), &options);
         Ok((read.map_err(|e| input_error(&source, e))?, source))
     } else {
-        let path = Path::new(&args.input);
-        let read = io::read_file_exact(path, format, polygons);
+        let read = io::read(Source::Path(Path::new(&args.input)), &options);
         Ok((
             read.map_err(|e| input_error(&args.input, e))?,
             args.input.clone(),

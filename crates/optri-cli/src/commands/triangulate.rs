@@ -5,7 +5,7 @@ use super::Reading;
 use crate::args::TriangulateArgs;
 use crate::report;
 use crate::CliResult;
-use optri::io::{self, OutputFormat};
+use optri::io::{self, OutputFormat, WriteOptions};
 use optri::request::Task;
 
 pub(crate) fn run(args: TriangulateArgs) -> CliResult<()> {
@@ -40,11 +40,9 @@ pub(crate) fn run(args: TriangulateArgs) -> CliResult<()> {
     // A JSON output holds the phases timed so far (the write and the total
     // are still running).
     let style = args.style.json_style();
+    let options = WriteOptions::default().with_title(title).with_style(style);
     let written = run.write(&args.output, |outcome, path| {
-        let optri::request::Document::Triangulation(document) = outcome.document() else {
-            unreachable!("a triangulate request");
-        };
-        io::write_triangulation_report_styled(&document, path, &title, style)
+        io::write(outcome.document(), path, &options)
     })?;
     run.finish();
     if args.json {

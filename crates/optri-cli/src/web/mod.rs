@@ -2,7 +2,7 @@
 //! run. The HTTP loop in `commands::serve` reads requests and writes
 //! [`Reply`]s; everything an answer says is built by the library: the
 //! registry listing ([`io::registry_listing`]), the readers
-//! ([`io::read_input`]) and the result documents of [`Request::run`], so a
+//! ([`io::read`]) and the result documents of [`Request::run`], so a
 //! criterion that lands later appears in the page without changes here.
 //!
 //! | request | answer |
@@ -23,7 +23,7 @@
 //!
 //! The numbers of `points` are taken at their decimal values when the body
 //! writes none with more than 15 significant digits
-//! ([`io::json_numbers_as_decimals`]; the page's `JSON.stringify` writes
+//! ([`ReadInput::from_json_numbers`]; the page's `JSON.stringify` writes
 //! shortest decimals), and the documents say `coordinate_arithmetic`.
 //!
 //! # Status codes
@@ -81,7 +81,7 @@ mod slots;
 pub(crate) use origin::Origins;
 
 use hyper::body::Bytes;
-use optri::io::{self, ComparisonReport, InputFormat};
+use optri::io::{self, ComparisonReport, InputFormat, ReadInput, ReadOptions, Source};
 use optri::request::{Request, Results, Task};
 use optri::{Cancel, Criterion, Error, Interruption, Options};
 use serde::Deserialize;
@@ -505,7 +505,7 @@ impl Api {
 /// The library's request for a triangulate, compare or graph `body`: each
 /// point an `[x, y]` pair (400 otherwise), at most [`Limits::max_points`]
 /// (422), taken at their decimal values when the `body` writes none with
-/// more than 15 significant digits ([`io::json_numbers_as_decimals`], as the
+/// more than 15 significant digits ([`ReadInput::from_json_numbers`], as the
 /// GeoJSON reader does), with the options named in the body (400 for one the
 /// task does not read), this server's time limit (per criterion in a
 /// comparison) and `cancel`.
@@ -557,7 +557,7 @@ fn prepare(kind: Kind, body: &[u8], limits: &Limits, cancel: Cancel) -> Result<P
     };
     // `parse` accepted the body, so it is UTF-8 and the lossy view is
     // the text itself.
-    let read = io::json_numbers_as_decimals(input, &String::from_utf8_lossy(body));
+    let read = ReadInput::from_json_numbers(input, &String::from_utf8_lossy(body));
     let mut request =
         Request::new(read, task).with_options(Options::default().with_cancel(cancel.clone()));
     if !limits.time_limit.is_zero() {
@@ -644,25 +644,27 @@ fn run(prepared: Prepared) -> Reply {
 
 /// `POST /api/read`: parses a file's text with the library's readers; the
 /// format is `format` if given, else the `filename`'s extension, else
-/// guessed from the content (as the CLI does for stdin).
+/// picked by content (as the CLI does for stdin).
 fn read(body: &[u8]) -> Result<Reply, Refusal> {
     let request: ReadRequest = parse(body)?;
     let format = match (&request.format, &request.filename) {
-        (Some(name), _) => InputFormat::from_name(name).map_err(bad_request)?,
-        (None, Some(name)) => InputFormat::from_path(Path::new(name))
-            .unwrap_or_else(|_| InputFormat::sniff(&request.text)),
-        (None, None) => InputFormat::sniff(&request.text),
+        (Some(name), _) => Some(InputFormat::from_name(name).map_err(bad_request)?),
+        (None, Some(name)) => InputFormat::from_path(Path::new(name)).ok(),
+        (None, None) => None,
     };
-    let input = io::read_input(&request.text, format).map_err(|e| {
+    let options = ReadOptions::default()
+        .with_format(format)
+        .with_polygons(true);
+    let read = io::read(Source::Text(&request.text), &options).map_err(|e| {
         let name = request.filename.as_deref().unwrap_or("the input");
         (422, format!("{name}: {e}"))
     })?;
     Ok(Reply::json(
         200,
         &json!({
-            "points": input.points(),
-            "polygon": matches!(input, io::Input::Polygon(_)),
-            "format": format.name(),
+            "points": read.input.points(),
+            "polygon": matches!(read.input, io::Input::Polygon(_)),
+            "format": read.format.map(InputFormat::name),
         }),
     ))
 }

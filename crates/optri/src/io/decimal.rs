@@ -20,7 +20,8 @@
 //! (`"coordinate_arithmetic": "binary64"`).
 //!
 //! Front ends whose numbers arrive as doubles (Python floats, the numbers of
-//! a web request) use the same rule: [`super::doubles_as_decimals`] reads each
+//! a web request) use the same rule:
+//! [`ReadInput::from_doubles`](super::ReadInput::from_doubles) reads each
 //! double as its shortest round-trip decimal when every one has at most 15
 //! significant digits (`0.1` typed in Python is the decimal 0.1; a computed
 //! `0.1 + 0.2 = 0.30000000000000004` has 17 and keeps the input binary64).

@@ -17,19 +17,27 @@ fn lowercase_extension(path: &Path) -> Option<String> {
     Some(path.extension()?.to_str()?.to_ascii_lowercase())
 }
 
-/// The input formats optri reads: point files and, for
-/// [`read_input`](super::read_input), polygon files.
+/// The input formats optri reads: point files and polygon files (see
+/// [`read`](super::read)).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum InputFormat {
     /// One point per line, `x y` (separated by spaces, tabs, commas or
-    /// semicolons); `#` starts a comment; an optional non-numeric header line
-    /// may precede the data. Every data row must have the same number of
-    /// columns (at least two, all numbers). The coordinates are the columns
-    /// the header names `x` and `y` (case-insensitive, e.g. `id,x,y`), else
-    /// the first two; other columns are ignored. A run of spaces and tabs is
-    /// one separator, but a comma or semicolon always ends a field, so an
-    /// empty field (`1,,0`, or a separator at the start or end of a line) is
-    /// an error rather than a silently shifted column.
+    /// semicolons); `#` starts a comment. A line with a comma or semicolon
+    /// is split at those only (outside double quotes; fields are trimmed and
+    /// lose their surrounding double quotes), so a name may hold spaces, and
+    /// an empty field (`1,,0`, or a separator at the start or end of a
+    /// line) is never a silently shifted column; a line without is split at
+    /// runs of spaces and tabs. Every row has the same number of fields.
+    ///
+    /// The first line may be a header (no field a number) naming the
+    /// coordinate columns with one pair of `x`/`y`, `lon`/`lat`,
+    /// `lng`/`lat`, `long`/`lat`, `longitude`/`latitude` or
+    /// `easting`/`northing` (case-insensitive, optionally quoted; x is the
+    /// longitude or easting): those columns are read, and the others are
+    /// skipped with a warning naming them (they may hold anything, e.g.
+    /// names). A header without such a pair, or with two, is an error.
+    /// Without a header every field must be a number and x, y are the first
+    /// two (a warning names the columns ignored).
     Text,
     /// Triangle's `.node`: a header `n dim attributes boundary_marker`, then
     /// `id x y [attributes…] [marker]` per vertex.
@@ -48,10 +56,10 @@ pub enum InputFormat {
     /// types (`LineString`, `Polygon`, their `Multi` forms) are skipped, so
     /// optri's own GeoJSON output reads back as its points. A document with
     /// no `Point`/`MultiPoint` but one `Polygon` (or a `MultiPolygon` of one
-    /// polygon, without holes) is a polygon input for
-    /// [`read_input`](super::read_input): the outer ring. Also optri's own
-    /// JSON documents (an object without `"type"`): their `"coordinates"`, or
-    /// the `"points"` array of documents before schema version 1.
+    /// polygon, without holes) is a polygon input for [`read`](super::read)
+    /// with polygons allowed: the outer ring. Also optri's own JSON
+    /// documents (an object without `"type"`): their `"coordinates"`, or the
+    /// `"points"` array of documents before schema version 1.
     GeoJson,
 }
 
@@ -82,10 +90,8 @@ impl InputFormat {
     ///
     /// # Errors
     /// [`Error::Io`] naming the path and listing the supported extensions
-    /// (as [`OutputFormat::from_path`]); [`read_points_file`] then guesses
-    /// the format from the content instead ([`sniff`](Self::sniff)).
-    ///
-    /// [`read_points_file`]: super::read_points_file
+    /// (as [`OutputFormat::from_path`]); [`read`](super::read) then picks
+    /// the format by content instead ([`sniff`](Self::sniff)).
     pub fn from_path(path: &Path) -> Result<Self> {
         match lowercase_extension(path).as_deref() {
             Some("txt" | "xy" | "csv" | "pts") => Ok(InputFormat::Text),
@@ -121,14 +127,18 @@ impl InputFormat {
         }
     }
 
-    /// Guesses the format from the content (for stdin and unknown
-    /// extensions): a leading `{` means GeoJSON, a TSPLIB keyword line
-    /// (`NAME`, `TYPE`, `DIMENSION`, `NODE_COORD_SECTION`) means TSPLIB, a
-    /// Triangle vertex section (a header `n 2 [attributes [marker]]` of
-    /// integers followed by at least `n` vertex lines numbered from 0 or 1
-    /// with the header's column count) means `.node`, or `.poly` when more
-    /// lines follow the vertices (the segments); anything else is read as
-    /// text.
+    /// Picks the format by content (for stdin and files without a known
+    /// extension), on evidence that no other format could be meant: a
+    /// leading `{` means GeoJSON; a line `NODE_COORD_SECTION`, or a first
+    /// line `NAME`, `TYPE`, `DIMENSION` or `COMMENT` followed by `:`, means
+    /// TSPLIB; Triangle's `.node` and `.poly` are recognised only when the
+    /// whole file has their structure (counts, ids and columns as the
+    /// headers announce) and could not also be a table of numbers; anything
+    /// else is text. A point cloud whose first row reads as a `.node`
+    /// header (`3 2 0` over rows `1 0 0`, `2 1 0`, `3 0 1`) is therefore
+    /// text; so is a `.node` whose header has as many fields as its vertex
+    /// lines (`n 2 0 1` over `id x y marker`), or one that breaks its own
+    /// counts: name the format (or use the extension) to read those.
     pub fn sniff(text: &str) -> Self {
         let trimmed = text.trim_start_matches('\u{feff}').trim_start();
         if trimmed.starts_with('{') {
@@ -141,44 +151,83 @@ impl InputFormat {
         {
             return InputFormat::Tsplib;
         }
-        sniff_triangle(text).unwrap_or(InputFormat::Text)
+        triangle_structure(text).unwrap_or(InputFormat::Text)
     }
 }
 
-/// `.node` or `.poly` if `text` starts with a Triangle vertex section (see
-/// [`InputFormat::sniff`]).
-fn sniff_triangle(text: &str) -> Option<InputFormat> {
+/// `.node` or `.poly` if the whole of `text` has that structure, on which
+/// the counts of the headers decide (the values are left to the readers,
+/// which name the line of a bad one):
+///
+/// - a vertex section: a header `n 2 [attributes [marker]]` of integers
+///   with `n ≥ 1` and a marker flag of 0 or 1, then exactly `n` lines of
+///   `3 + attributes + marker` fields whose first is the id, counting up
+///   from 0 or 1;
+/// - for `.node`, nothing after it, and a header whose field count differs
+///   from the vertex lines' (otherwise the file is also a table of numbers,
+///   e.g. the cloud `3 2 0 / 1 0 0 / 2 1 0 / 3 0 1`, and is read as text);
+/// - for `.poly`, then a segment section: a header `m [marker]` with
+///   `m ≥ 1`, then exactly `m` lines `id a b [marker]` with ids counting up
+///   from the vertices' first id and endpoints that are vertex ids, then
+///   nothing or a hole count (what follows it is left to the reader).
+fn triangle_structure(text: &str) -> Option<InputFormat> {
     let mut lines = super::node::token_lines(text).map(|(_, tokens)| tokens);
+    let integers =
+        |tokens: &[&str]| -> Option<Vec<usize>> { tokens.iter().map(|t| t.parse().ok()).collect() };
     let header = lines.next()?;
-    let numbers: Vec<usize> = header
-        .iter()
-        .map(|t| t.parse().ok())
-        .collect::<Option<_>>()?;
-    if !(2..=4).contains(&numbers.len()) || numbers[1] != 2 {
+    let counts = integers(&header)?;
+    if !(2..=4).contains(&counts.len()) || counts[0] == 0 || counts[1] != 2 {
         return None;
     }
-    let columns = 3 + numbers.get(2).copied().unwrap_or(0) + numbers.get(3).copied().unwrap_or(0);
-    let mut base = None;
-    for k in 0..numbers[0] {
+    let (vertices, attributes) = (counts[0], counts.get(2).copied().unwrap_or(0));
+    let marker = counts.get(3).copied().unwrap_or(0);
+    if marker > 1 {
+        return None;
+    }
+    let columns = attributes.checked_add(3 + marker)?;
+    let mut first_id = None;
+    for k in 0..vertices {
         let tokens = lines.next()?;
         let id: usize = tokens.first()?.parse().ok()?;
-        let base = *base.get_or_insert(id);
+        let base = *first_id.get_or_insert(id);
         if tokens.len() != columns || base > 1 || id != base + k {
             return None;
         }
     }
-    Some(if lines.next().is_some() {
-        InputFormat::Poly
-    } else {
-        InputFormat::Node
-    })
+    let base = first_id?;
+    let Some(segment_header) = lines.next() else {
+        return (header.len() != columns).then_some(InputFormat::Node);
+    };
+    let counts = integers(&segment_header)?;
+    let (segments, marker) = match counts[..] {
+        [m] => (m, 0),
+        [m, marker @ (0 | 1)] => (m, marker),
+        _ => return None,
+    };
+    if segments == 0 {
+        return None;
+    }
+    let vertex_ids = base..base + vertices;
+    for k in 0..segments {
+        let segment = lines.next()?;
+        if segment.len() != 3 + marker {
+            return None;
+        }
+        let ids = integers(&segment[..3])?;
+        if ids[0] != base + k || !ids[1..].iter().all(|v| vertex_ids.contains(v)) {
+            return None;
+        }
+    }
+    match lines.next() {
+        None => Some(InputFormat::Poly),
+        Some(holes) => (integers(&holes)?.len() == 1).then_some(InputFormat::Poly),
+    }
 }
 
 /// The file formats optri writes, chosen by extension.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum OutputFormat {
-    /// `.json`: [`triangulation_to_json`](super::triangulation_to_json) /
-    /// [`graph_to_json`](super::graph_to_json).
+    /// `.json`: the whole [`Document`](super::Document).
     Json,
     /// `.svg`: a picture.
     Svg,
@@ -244,7 +293,7 @@ impl OutputFormat {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::io::read_points_file;
+    use crate::io::{read, ReadOptions, Source};
 
     #[test]
     fn formats_by_extension_name_and_content() {
@@ -302,10 +351,85 @@ mod tests {
             InputFormat::Text
         );
         assert_eq!(InputFormat::sniff("3 2\n1 0\n2 1\n"), InputFormat::Text);
-        let e = read_points_file(Path::new("/nonexistent/x.txt"), None).unwrap_err();
-        assert!(
-            matches!(&e, Error::Io(m) if m.contains("/nonexistent/x.txt")),
-            "{e:?}"
+    }
+
+    /// The points `text` reads as with the format picked by content.
+    fn sniffed_points(text: &str) -> Vec<[f64; 2]> {
+        read(Source::Text(text), &ReadOptions::default())
+            .unwrap()
+            .input
+            .points()
+            .to_vec()
+    }
+
+    #[test]
+    fn triangle_files_are_recognised_only_by_their_whole_structure() {
+        // A cloud of three numbers per line whose first row reads as a
+        // `.node` header with an attribute count: also a table, so text.
+        let cloud = "3 2 0\n1 0 0\n2 1 0\n3 0 1\n";
+        assert_eq!(InputFormat::sniff(cloud), InputFormat::Text);
+        assert_eq!(
+            sniffed_points(cloud),
+            [[3.0, 2.0], [1.0, 0.0], [2.0, 1.0], [3.0, 0.0]]
         );
+        // A first row `0 2` is a point, not an empty `.poly`.
+        let zero = "0 2\n1 3\n5 6\n";
+        assert_eq!(InputFormat::sniff(zero), InputFormat::Text);
+        assert_eq!(sniffed_points(zero), [[0.0, 2.0], [1.0, 3.0], [5.0, 6.0]]);
+        // Real Triangle files: a header whose field count differs from the
+        // vertex lines', ids in sequence, the announced columns.
+        for node in [
+            "# c\n3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n",
+            "3 2\n0 0 0\n1 1 0\n2 0 1\n",
+            "3 2 1 1\n0 0 0 7 1\n1 1 0 7 0\n2 0 1 7 1\n",
+        ] {
+            assert_eq!(InputFormat::sniff(node), InputFormat::Node, "{node}");
+            assert_eq!(sniffed_points(node), [[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]]);
+        }
+        let poly = "3 2 0\n0 0 0\n1 1 0\n2 0 1\n3 0\n0 0 1\n1 1 2\n2 2 0\n";
+        for poly in [
+            poly.to_string(),
+            format!("{poly}0\n"),
+            "3 2\n1 0 0\n2 1 0\n3 0 1\n3 1\n1 1 2 5\n2 2 3 5\n3 3 1 5\n0\n".to_string(),
+        ] {
+            assert_eq!(InputFormat::sniff(&poly), InputFormat::Poly, "{poly}");
+            assert_eq!(sniffed_points(&poly), [[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]]);
+        }
+        // Near misses are text: one vertex line too few or too many, an id
+        // out of sequence or from 2, a column too many, a marker flag of 2,
+        // dimension 3, a header whose fields are not integers; a segment
+        // section with a wrong count, id, endpoint or column count, or
+        // followed by more than a hole count.
+        for near in [
+            "3 2 0 0\n1 0 0\n2 1 0\n",
+            "2 2 0 0\n1 0 0\n2 1 0\n3 0 1\n",
+            "3 2 0 0\n1 0 0\n3 1 0\n2 0 1\n",
+            "3 2 0 0\n2 0 0\n3 1 0\n4 0 1\n",
+            "3 2 0 0\n1 0 0 9\n2 1 0 9\n3 0 1 9\n",
+            "3 2 0 2\n1 0 0 1 \n2 1 0 1\n3 0 1 1\n",
+            "3 3 0 0\n1 0 0\n2 1 0\n3 0 1\n",
+            "3 2.0 0 0\n1 0 0\n2 1 0\n3 0 1\n",
+            "3 2\n0 0 0\n1 1 0\n2 0 1\n0 0\n",
+            "3 2\n0 0 0\n1 1 0\n2 0 1\n3 0\n0 0 1\n1 1 2\n",
+            "3 2\n0 0 0\n1 1 0\n2 0 1\n3 0\n0 0 1\n2 1 2\n2 2 0\n",
+            "3 2\n0 0 0\n1 1 0\n2 0 1\n3 0\n0 0 1\n1 1 3\n2 2 0\n",
+            "3 2\n0 0 0\n1 1 0\n2 0 1\n3 0\n0 0 1 1\n1 1 2 1\n2 2 0 1\n",
+            "3 2\n0 0 0\n1 1 0\n2 0 1\n3 0\n0 0 1\n1 1 2\n2 2 0\n0 1\n",
+        ] {
+            assert_eq!(InputFormat::sniff(near), InputFormat::Text, "{near}");
+        }
+        // A `.node` with markers and no attributes has as many fields in
+        // its header as in its vertex lines: it is also a table of four
+        // columns, so it is text unless named (or by its extension).
+        let markers = "3 2 0 1\n1 0 0 1\n2 1 0 1\n3 0 1 0\n";
+        assert_eq!(InputFormat::sniff(markers), InputFormat::Text);
+        assert_eq!(sniffed_points(markers).len(), 4);
+        // Named, the format is read as named.
+        let node = read(
+            Source::Text(cloud),
+            &ReadOptions::default().with_format(InputFormat::Node),
+        )
+        .unwrap();
+        assert_eq!(node.input.points(), [[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]]);
     }
 }

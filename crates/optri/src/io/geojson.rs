@@ -5,9 +5,8 @@
 //!
 //! [`InputFormat::GeoJson`]: super::InputFormat::GeoJson
 
-use super::decimal::{json_literals_are_short, DecimalScaler};
 use super::json::document_coordinates;
-use super::{check_coordinate, parse, Input, ReadInput, HOLES_UNSUPPORTED};
+use super::{check_coordinate, parse, shown, Input, HOLES_UNSUPPORTED};
 use crate::error::Result;
 use crate::kernel::Point;
 use crate::structures::Triangulation;
@@ -24,30 +23,6 @@ fn json_type(v: &Value) -> &'static str {
         Value::Array(_) => "an array",
         Value::Object(_) => "an object",
     }
-}
-
-/// Reads a GeoJSON document as [`read_geojson_input`] does, with the decimal
-/// values of its coordinates: the shortest round-trip decimal of each
-/// number, trusted when no number literal of the document has more than 15
-/// significant digits (see the `decimal` module docs).
-pub(super) fn read_geojson_exact(text: &str, polygons: bool) -> Result<ReadInput> {
-    let input = read_geojson_input(text, polygons)?;
-    let mut decimal = if json_literals_are_short(text) {
-        DecimalScaler::default()
-    } else {
-        DecimalScaler::given_up()
-    };
-    for p in input.points() {
-        decimal.push_shortest(p[0]);
-        decimal.push_shortest(p[1]);
-    }
-    let (arithmetic, scaled) = decimal.finish();
-    Ok(ReadInput {
-        input,
-        arithmetic,
-        scaled,
-        warnings: Vec::new(),
-    })
 }
 
 /// Reads a GeoJSON document as points or, when it holds no `Point` or
@@ -225,8 +200,9 @@ fn collect_geojson<'v>(v: &'v Value, at: &str, found: &mut GeoJsonPoints<'v>) ->
             // typo, which must not silently drop points.
             let Some(&kind) = POINTLESS.iter().find(|&&k| k == other) else {
                 return bad(format!(
-                    "\"{other}\" is not a GeoJSON geometry type (points are read from Point \
-                     and MultiPoint; LineString, Polygon and their Multi forms are skipped)"
+                    "{} is not a GeoJSON geometry type (points are read from Point and \
+                     MultiPoint; LineString, Polygon and their Multi forms are skipped)",
+                    shown(other, "\"")
                 ));
             };
             if matches!(kind, "Polygon" | "MultiPolygon") {
@@ -262,7 +238,10 @@ fn position(v: &Value, at: &str) -> Result<Point> {
     let bad = || {
         parse(
             0,
-            format!("GeoJSON: {at}: expected a position [x, y], found {v}"),
+            format!(
+                "GeoJSON: {at}: expected a position [x, y], found {}",
+                shown(&v.to_string(), "")
+            ),
         )
     };
     let a = v.as_array().ok_or_else(bad)?;
@@ -430,7 +409,7 @@ impl Serialize for GraphFeatures<'_> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::io::{awkward_points, line_of, read_points, InputFormat};
+    use crate::io::{awkward_points, line_of, points_of, InputFormat};
     use crate::{delaunay, PointSet};
 
     #[test]
@@ -440,11 +419,11 @@ mod tests {
             {"type":"Feature","geometry":{"type":"MultiPoint","coordinates":[[3,4],[5,6,7]]}},
             {"type":"Feature","geometry":null}]}"#;
         assert_eq!(
-            read_points(text, InputFormat::GeoJson).unwrap(),
+            points_of(text, InputFormat::GeoJson).unwrap(),
             vec![[1.0, 2.0], [3.0, 4.0], [5.0, 6.0]]
         );
         assert_eq!(
-            read_points(
+            points_of(
                 r#"{"type":"Point","coordinates":[0.5,-1]}"#,
                 InputFormat::GeoJson
             )
@@ -454,7 +433,7 @@ mod tests {
         // Lines and polygons are skipped; a document without any point names
         // what it holds instead.
         assert_eq!(
-            read_points(
+            points_of(
                 r#"{"type":"GeometryCollection","geometries":[
                     {"type":"LineString","coordinates":[[0,0],[1,1]]},
                     {"type":"Point","coordinates":[2,3]}]}"#,
@@ -463,7 +442,7 @@ mod tests {
             .unwrap(),
             vec![[2.0, 3.0]]
         );
-        let e = read_points(
+        let e = points_of(
             r#"{"type":"FeatureCollection","features":[
                 {"type":"Feature","geometry":{"type":"LineString","coordinates":[[0,0],[1,1]]}},
                 {"type":"Feature","geometry":{"type":"Polygon","coordinates":[[[0,0],[1,0],[0,1],[0,0]]]}},
@@ -476,14 +455,14 @@ mod tests {
             e.contains("no Point or MultiPoint") && e.contains("2 LineString, 1 Polygon"),
             "{e}"
         );
-        let e = read_points(
+        let e = points_of(
             r#"{"type":"FeatureCollection","features":[]}"#,
             InputFormat::GeoJson,
         )
         .unwrap_err()
         .to_string();
         assert!(e.contains("no geometries"), "{e}");
-        let e = read_points(
+        let e = points_of(
             r#"{"type":"Piont","coordinates":[1,2]}"#,
             InputFormat::GeoJson,
         )
@@ -493,9 +472,9 @@ mod tests {
             e.contains("\"Piont\" is not a GeoJSON geometry type"),
             "{e}"
         );
-        let (line, _) = line_of(read_points("{\n\"type\":\n}", InputFormat::GeoJson).unwrap_err());
+        let (line, _) = line_of(points_of("{\n\"type\":\n}", InputFormat::GeoJson).unwrap_err());
         assert_eq!(line, 3);
-        let e = read_points(
+        let e = points_of(
             r#"{"type":"Point","coordinates":[1]}"#,
             InputFormat::GeoJson,
         )
@@ -503,7 +482,7 @@ mod tests {
         .to_string();
         assert!(e.contains("position"), "{e}");
         assert_eq!(
-            read_points(
+            points_of(
                 r#"{"points":[[1,2],[3,4]],"triangles":[]}"#,
                 InputFormat::GeoJson
             )
@@ -514,30 +493,30 @@ mod tests {
 
     #[test]
     fn geojson_polygon_inputs() {
-        use crate::io::{read_input, read_polygon, Input};
+        use crate::io::{input_of, ring_of, Input};
         let square = vec![[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [0.0, 2.0]];
         // A Feature with a closed outer ring: the closing vertex is dropped.
         let feature = r#"{"type":"Feature","properties":{},"geometry":{"type":"Polygon",
             "coordinates":[[[0,0],[2,0],[2,2],[0,2],[0,0]]]}}"#;
         assert_eq!(
-            read_input(feature, InputFormat::GeoJson).unwrap(),
+            input_of(feature, InputFormat::GeoJson).unwrap(),
             Input::Polygon(square.clone())
         );
         // Clockwise and unclosed rings are returned as given.
         let clockwise = r#"{"type":"Polygon","coordinates":[[[0,0],[0,2],[2,2],[2,0]]]}"#;
         assert_eq!(
-            read_polygon(clockwise, InputFormat::GeoJson).unwrap(),
+            ring_of(clockwise, InputFormat::GeoJson).unwrap(),
             vec![[0.0, 0.0], [0.0, 2.0], [2.0, 2.0], [2.0, 0.0]]
         );
         // A MultiPolygon of one polygon, in a FeatureCollection.
         let multi = r#"{"type":"FeatureCollection","features":[{"type":"Feature","geometry":
             {"type":"MultiPolygon","coordinates":[[[[0,0],[2,0],[2,2],[0,2],[0,0]]]]}}]}"#;
-        assert_eq!(read_polygon(multi, InputFormat::GeoJson).unwrap(), square);
+        assert_eq!(ring_of(multi, InputFormat::GeoJson).unwrap(), square);
         // Holes and several polygons are refused, naming the geometry.
         let holes = r#"{"type":"FeatureCollection","features":[{"type":"Feature","geometry":
             {"type":"Polygon","coordinates":[[[0,0],[4,0],[4,4],[0,4],[0,0]],
             [[1,1],[1,2],[2,2],[1,1]]]}}]}"#;
-        let e = read_input(holes, InputFormat::GeoJson)
+        let e = input_of(holes, InputFormat::GeoJson)
             .unwrap_err()
             .to_string();
         assert!(
@@ -546,9 +525,7 @@ mod tests {
         );
         let two = r#"{"type":"MultiPolygon","coordinates":[[[[0,0],[1,0],[0,1],[0,0]]],
             [[[5,5],[6,5],[5,6],[5,5]]]]}"#;
-        let e = read_input(two, InputFormat::GeoJson)
-            .unwrap_err()
-            .to_string();
+        let e = input_of(two, InputFormat::GeoJson).unwrap_err().to_string();
         assert!(
             e.contains("2 polygons") && e.contains("one simple polygon"),
             "{e}"
@@ -559,15 +536,15 @@ mod tests {
             {"type":"Point","coordinates":[7,7]},
             {"type":"Polygon","coordinates":[[[0,0],[4,0],[4,4],[0,0]],[[1,1],[2,1],[1,2],[1,1]]]}]}"#;
         assert_eq!(
-            read_input(mixed, InputFormat::GeoJson).unwrap(),
+            input_of(mixed, InputFormat::GeoJson).unwrap(),
             Input::Points(vec![[7.0, 7.0]])
         );
-        let e = read_polygon(mixed, InputFormat::GeoJson)
+        let e = ring_of(mixed, InputFormat::GeoJson)
             .unwrap_err()
             .to_string();
         assert!(e.contains("holds points, not a polygon"), "{e}");
         // read_points keeps refusing a polygon-only document.
-        assert!(read_points(feature, InputFormat::GeoJson).is_err());
+        assert!(points_of(feature, InputFormat::GeoJson).is_err());
     }
 
     #[test]
@@ -590,17 +567,17 @@ mod tests {
         // The point features, read by the GeoJSON reader, give the input.
         let points_only = serde_json::json!({"type": "FeatureCollection", "features": features[t.triangles().len()..]});
         assert_eq!(
-            read_points(&points_only.to_string(), InputFormat::GeoJson).unwrap(),
+            points_of(&points_only.to_string(), InputFormat::GeoJson).unwrap(),
             pts
         );
         // The whole collection reads back as the points: polygons are skipped.
         assert_eq!(
-            read_points(&v.to_string(), InputFormat::GeoJson).unwrap(),
+            points_of(&v.to_string(), InputFormat::GeoJson).unwrap(),
             pts
         );
         // Without the point features there are no points, and the reader
         // says what it found instead.
-        let e = read_points(
+        let e = points_of(
             &triangulation_to_geojson(&t, false).to_string(),
             InputFormat::GeoJson,
         )

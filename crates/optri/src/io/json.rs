@@ -40,9 +40,8 @@ pub const SCHEMA_VERSION: u32 = 1;
 ///
 /// [`new`](Self::new) describes a bare triangulation; [`of_solution`](Self::of_solution)
 /// adds the run fields (`criterion`, `exact`, `optimality`, `algorithm`,
-/// `diagnostics`, `timing_ms`). The JSON files that
-/// [`write_triangulation`](super::write_triangulation) writes are this
-/// document.
+/// `diagnostics`, `timing_ms`). The `.json` files [`write`](super::write())
+/// makes of it are this document.
 #[derive(Clone, Copy, Debug)]
 pub struct TriangulationReport<'a> {
     triangulation: &'a Triangulation,
@@ -306,8 +305,8 @@ struct TriangulationDocument<'a> {
 /// [`new`](Self::new) describes a bare edge set over points;
 /// [`of_graph`](Self::of_graph) adds the graph `kind`, the distinct-point
 /// count and the duplicates; [`with_timing`](Self::with_timing) adds
-/// `timing_ms`. The JSON files that [`write_graph`](super::write_graph)
-/// writes are this document.
+/// `timing_ms`. The `.json` files [`write`](super::write()) makes of it are
+/// this document.
 #[derive(Clone, Copy, Debug)]
 pub struct GraphReport<'a> {
     points: &'a [Point],
@@ -561,12 +560,6 @@ struct ErrorDocument {
     error: String,
 }
 
-/// The document of [`compare`](crate::compare)'s results:
-/// [`ComparisonReport::new`] as a value.
-pub fn comparison_to_json(results: &[Comparison]) -> Value {
-    ComparisonReport::new(results).to_json()
-}
-
 /// The `"domain"` of a triangulation document: `"convex-hull"` or
 /// `"polygon"` (the interior of a simple polygon whose ring is the
 /// coordinates, in order).
@@ -615,23 +608,6 @@ impl Serialize for DiagnosticsMap<'_> {
 fn to_value(document: &impl Serialize) -> Value {
     // The documents hold strings, numbers, arrays and string-keyed maps only.
     serde_json::to_value(document).expect("an optri document always converts to a JSON value")
-}
-
-/// The document of a [`triangulate`](crate::triangulate) result:
-/// [`TriangulationReport::of_solution`] as a value.
-pub fn solution_to_json(solution: &Solution) -> Value {
-    TriangulationReport::of_solution(solution).to_json()
-}
-
-/// The document of a bare triangulation: [`TriangulationReport::new`] as a
-/// value.
-pub fn triangulation_to_json(t: &Triangulation) -> Value {
-    TriangulationReport::new(t).to_json()
-}
-
-/// The document of a bare graph: [`GraphReport::new`] as a value.
-pub fn graph_to_json(points: &[Point], edges: &[[u32; 2]]) -> Value {
-    GraphReport::new(points, edges).to_json()
 }
 
 /// The member of an optri document that holds its points: `coordinates`, or
@@ -707,7 +683,7 @@ pub fn triangulation_from_json(value: &Value) -> Result<Triangulation> {
             )))
         }
     };
-    let read = super::doubles_as_decimals(if polygon {
+    let read = ReadInput::from_doubles(if polygon {
         Input::Polygon(points)
     } else {
         Input::Points(points)
@@ -732,7 +708,7 @@ pub fn triangulation_from_json(value: &Value) -> Result<Triangulation> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::io::{awkward_points, read_points, InputFormat};
+    use crate::io::{awkward_points, points_of, read_str, InputFormat};
     use crate::{delaunay, triangulate, Criterion, PointSet};
     use serde_json::json;
 
@@ -798,18 +774,15 @@ mod tests {
     fn json_round_trip_gives_the_same_triangulation() {
         let ps = PointSet::new(&awkward_points()).unwrap();
         let t = delaunay(&ps).unwrap();
-        let text = serde_json::to_string(&triangulation_to_json(&t)).unwrap();
+        let text = serde_json::to_string(&TriangulationReport::new(&t).to_json()).unwrap();
         let back = triangulation_from_json(&serde_json::from_str(&text).unwrap()).unwrap();
         assert_eq!(back.points(), t.points());
         assert_eq!(back.triangles(), t.triangles());
         assert_eq!(back.point_set().duplicates(), &[[46, 3]]);
         // The points alone read back through the GeoJSON reader.
-        assert_eq!(
-            read_points(&text, InputFormat::GeoJson).unwrap(),
-            t.points()
-        );
+        assert_eq!(points_of(&text, InputFormat::GeoJson).unwrap(), t.points());
         // Tampering is caught: a flipped triangle no longer validates.
-        let mut v = triangulation_to_json(&t);
+        let mut v = TriangulationReport::new(&t).to_json();
         v["triangles"][0] = json!([
             t.triangles()[0][1],
             t.triangles()[0][0],
@@ -826,7 +799,7 @@ mod tests {
         let ps = PointSet::new(&pts).unwrap();
         let solution = triangulate(&ps, Criterion::Greedy).unwrap();
         let t = &solution.triangulation;
-        let v = solution_to_json(&solution);
+        let v = TriangulationReport::of_solution(&solution).to_json();
         assert_eq!(keys(&v), sorted(&[TRIANGULATION_FIELDS, RUN_FIELDS]));
         assert_eq!(keys(&v["stats"]), sorted(&[STATS_FIELDS]));
         assert_eq!(v["schema_version"], SCHEMA_VERSION);
@@ -866,7 +839,7 @@ mod tests {
         assert!(text.starts_with("{\"schema_version\":1,\"document\":\"triangulation\","));
         let back = triangulation_from_json(&v).unwrap();
         assert_eq!(back.triangles(), t.triangles());
-        assert_eq!(read_points(&text, InputFormat::GeoJson).unwrap(), pts);
+        assert_eq!(points_of(&text, InputFormat::GeoJson).unwrap(), pts);
     }
 
     #[test]
@@ -880,7 +853,7 @@ mod tests {
             "0.1 0.7\n0.2 1.4\n0.3 2.1\n0 2\n",
             "0.1 0.7\n0.2 1.4\n0.3 2.1\n1 0\n",
         ] {
-            let read = crate::io::read_points_exact(text, InputFormat::Text).unwrap();
+            let read = read_str(text, InputFormat::Text).unwrap();
             assert_eq!(read.arithmetic, Arithmetic::DecimalExact);
             let solution = triangulate(
                 &PointSet::new(read.working_points()).unwrap(),
@@ -929,14 +902,15 @@ mod tests {
         ];
         let polygon = SimplePolygon::new(&ring).unwrap();
         let solution = crate::triangulate_polygon(&polygon, Criterion::MinWeight).unwrap();
-        let v = solution_to_json(&solution);
+        let v = TriangulationReport::of_solution(&solution).to_json();
         assert_eq!(v["domain"], "polygon");
         assert_eq!(v["coordinates"], json!(ring));
         assert_eq!(v["triangles"].as_array().unwrap().len(), ring.len() - 2);
         let back = triangulation_from_json(&v).unwrap();
         assert_eq!(back.triangles(), solution.triangulation.triangles());
         assert_eq!(back.domain(), solution.triangulation.domain());
-        let hull = triangulation_to_json(&delaunay(&PointSet::new(&ring).unwrap()).unwrap());
+        let hull =
+            TriangulationReport::new(&delaunay(&PointSet::new(&ring).unwrap()).unwrap()).to_json();
         assert_eq!(hull["domain"], "convex-hull");
         let mut odd = v.clone();
         odd["domain"] = json!("torus");
@@ -947,9 +921,9 @@ mod tests {
     #[test]
     fn bare_documents_omit_the_run_fields() {
         let t = delaunay(&PointSet::new(&awkward_points()).unwrap()).unwrap();
-        let v = triangulation_to_json(&t);
+        let v = TriangulationReport::new(&t).to_json();
         assert_eq!(keys(&v), sorted(&[TRIANGULATION_FIELDS]));
-        let g = graph_to_json(t.points(), &t.edges());
+        let g = GraphReport::new(t.points(), &t.edges()).to_json();
         assert_eq!(keys(&g), sorted(&[GRAPH_FIELDS]));
         assert_eq!(g["document"], "graph");
         assert_eq!(g["points"], t.points().len());
@@ -1006,7 +980,7 @@ mod tests {
         assert_eq!(v["edges"], json!(edges));
         assert!(v["timing_ms"]["rng"].is_number());
         assert_eq!(
-            read_points(&v.to_string(), InputFormat::GeoJson).unwrap(),
+            points_of(&v.to_string(), InputFormat::GeoJson).unwrap(),
             pts
         );
         // A graph is not a triangulation.
@@ -1031,10 +1005,10 @@ mod tests {
         assert_eq!(back.triangles(), t.triangles());
         assert_eq!(back.point_set().duplicates(), &[[46, 3]]);
         assert_eq!(
-            read_points(&old.to_string(), InputFormat::GeoJson).unwrap(),
+            points_of(&old.to_string(), InputFormat::GeoJson).unwrap(),
             t.points()
         );
-        let mut newer = triangulation_to_json(&t);
+        let mut newer = TriangulationReport::new(&t).to_json();
         newer["schema_version"] = json!(SCHEMA_VERSION + 1);
         let e = triangulation_from_json(&newer).unwrap_err().to_string();
         assert!(e.contains("schema_version 2"), "{e}");
@@ -1055,7 +1029,7 @@ mod tests {
             &[Criterion::MinmaxLength, Criterion::Greedy],
             &Options::default().with_metric(crate::kernel::Metric::l1()),
         );
-        let v = comparison_to_json(&results);
+        let v = ComparisonReport::new(&results).to_json();
         assert_eq!(
             keys(&v),
             sorted(&[&["schema_version", "document", "results"]])
@@ -1064,7 +1038,10 @@ mod tests {
         let entries = v["results"].as_array().unwrap();
         assert_eq!(entries.len(), 2);
         let minmax = results[0].1.as_ref().unwrap();
-        assert_eq!(entries[0], solution_to_json(minmax));
+        assert_eq!(
+            entries[0],
+            TriangulationReport::of_solution(minmax).to_json()
+        );
         assert_eq!(entries[0]["metric"]["name"], "l1");
         let refusal = results[1].1.as_ref().unwrap_err();
         assert_eq!(
@@ -1092,7 +1069,7 @@ mod tests {
         assert!(t.triangles().contains(&s.smallest_triangle));
         assert_eq!(area(s.smallest_triangle), s.min_area);
         assert_eq!(area(s.largest_triangle), s.max_area);
-        let v = triangulation_to_json(&t);
+        let v = TriangulationReport::new(&t).to_json();
         assert_eq!(v["stats"]["smallest_triangle"], json!(s.smallest_triangle));
         assert_eq!(v["stats"]["largest_triangle"], json!(s.largest_triangle));
     }

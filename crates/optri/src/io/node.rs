@@ -3,7 +3,7 @@
 //!
 //! [`InputFormat::Node`]: super::InputFormat::Node
 
-use super::{parse, strip_comment, Collected};
+use super::{not_a_number, parse, quoted, strip_comment, Collected};
 use crate::error::Result;
 use crate::kernel::Point;
 use crate::structures::Triangulation;
@@ -66,7 +66,10 @@ pub(super) fn read_vertex_section<'t>(
             Some(t) => t.parse().map_err(|_| {
                 parse(
                     header_line,
-                    format!("header field {what} '{t}' is not a non-negative integer"),
+                    format!(
+                        "header field {what} {} is not a non-negative integer",
+                        quoted(t)
+                    ),
                 )
             }),
         }
@@ -113,9 +116,12 @@ pub(super) fn read_vertex_section<'t>(
                 ),
             ));
         }
-        let id: usize = tokens[0]
-            .parse()
-            .map_err(|_| parse(line, format!("vertex id '{}' is not an integer", tokens[0])))?;
+        let id: usize = tokens[0].parse().map_err(|_| {
+            parse(
+                line,
+                format!("vertex id {} is not an integer", quoted(tokens[0])),
+            )
+        })?;
         let base = *first_id.get_or_insert(id);
         if base > 1 || id != base + points.points.len() {
             return Err(parse(
@@ -131,8 +137,7 @@ pub(super) fn read_vertex_section<'t>(
             ));
         }
         for t in &tokens[3..] {
-            t.parse::<f64>()
-                .map_err(|_| parse(line, format!("'{t}' is not a number")))?;
+            t.parse::<f64>().map_err(|_| parse(line, not_a_number(t)))?;
         }
         points.push(tokens[1], tokens[2], line)?;
     }
@@ -214,32 +219,31 @@ pub(super) fn edge_text(edges: &[[u32; 2]]) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::io::{awkward_points, line_of, read_points, InputFormat};
+    use crate::io::{awkward_points, line_of, points_of, InputFormat};
     use crate::{delaunay, PointSet};
 
     #[test]
     fn node_files() {
         let text = "# comment\n4 2 1 1\n1 0 0 7 1\n2 1 0 7 1\n3 1 1 7 0\n4 0 1 7 1\n";
         assert_eq!(
-            read_points(text, InputFormat::Node).unwrap(),
+            points_of(text, InputFormat::Node).unwrap(),
             vec![[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]]
         );
         assert_eq!(
-            read_points("3 2 0 0\n0 0 0\n1 1 0\n2 0 1\n", InputFormat::Node).unwrap(),
+            points_of("3 2 0 0\n0 0 0\n1 1 0\n2 0 1\n", InputFormat::Node).unwrap(),
             vec![[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]]
         );
-        let (line, _) = line_of(
-            read_points("3 2 0 0\n0 0 0\n1 1 0 5\n2 0 1\n", InputFormat::Node).unwrap_err(),
-        );
+        let (line, _) =
+            line_of(points_of("3 2 0 0\n0 0 0\n1 1 0 5\n2 0 1\n", InputFormat::Node).unwrap_err());
         assert_eq!(line, 3);
         let (line, m) =
-            line_of(read_points("3 2 0 0\n0 0 0\n1 1 0\n", InputFormat::Node).unwrap_err());
+            line_of(points_of("3 2 0 0\n0 0 0\n1 1 0\n", InputFormat::Node).unwrap_err());
         assert_eq!(line, 1);
         assert!(m.contains("3 vertices"), "{m}");
         let (line, _) =
-            line_of(read_points("2 3 0 0\n0 0 0 0\n1 1 0 0\n", InputFormat::Node).unwrap_err());
+            line_of(points_of("2 3 0 0\n0 0 0 0\n1 1 0 0\n", InputFormat::Node).unwrap_err());
         assert_eq!(line, 1);
-        let (line, _) = line_of(read_points("2 2\n0 0 0\n5 1 0\n", InputFormat::Node).unwrap_err());
+        let (line, _) = line_of(points_of("2 2\n0 0 0\n5 1 0\n", InputFormat::Node).unwrap_err());
         assert_eq!(line, 3);
     }
 
@@ -249,7 +253,7 @@ mod tests {
         pts.push([3e40, -5e-20]);
         let t = delaunay(&PointSet::new(&pts).unwrap()).unwrap();
         let (node, ele) = triangulation_to_triangle_files(&t);
-        assert_eq!(read_points(&node, InputFormat::Node).unwrap(), pts);
+        assert_eq!(points_of(&node, InputFormat::Node).unwrap(), pts);
         let rows: Vec<Vec<u32>> = ele
             .lines()
             .filter(|l| !l.starts_with('#'))

@@ -13,7 +13,7 @@
 //! [`InputFormat::Poly`]: super::InputFormat::Poly
 
 use super::node::{read_vertex_section, token_lines};
-use super::{parse, Collected, HOLES_UNSUPPORTED};
+use super::{parse, quoted, Collected, HOLES_UNSUPPORTED};
 use crate::error::Result;
 
 /// Reads the vertices of a `.poly` file in file order and its boundary ring
@@ -41,8 +41,12 @@ pub(super) fn read_poly(text: &str) -> Result<(Collected, Vec<usize>)> {
         ));
     };
     let number = |t: &str, line: usize, what: &str| -> Result<usize> {
-        t.parse()
-            .map_err(|_| parse(line, format!("{what} '{t}' is not a non-negative integer")))
+        t.parse().map_err(|_| {
+            parse(
+                line,
+                format!("{what} {} is not a non-negative integer", quoted(t)),
+            )
+        })
     };
     let m = number(header[0], segment_header_line, "segment count")?;
     let markers = match header.get(1) {
@@ -187,7 +191,7 @@ pub(super) fn read_poly(text: &str) -> Result<(Collected, Vec<usize>)> {
 
 #[cfg(test)]
 mod tests {
-    use crate::io::{line_of, read_polygon, InputFormat};
+    use crate::io::{line_of, ring_of, InputFormat};
 
     const SQUARE: &str = "# a square\n4 2 0 1\n1 0 0 1\n2 1 0 1\n3 1 1 1\n4 0 1 1\n\
                           4 1\n1 1 2 1\n2 2 3 1\n3 3 4 1\n4 4 1 1\n0\n";
@@ -195,20 +199,20 @@ mod tests {
     #[test]
     fn poly_rings_and_errors() {
         let square = vec![[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]];
-        assert_eq!(read_polygon(SQUARE, InputFormat::Poly).unwrap(), square);
+        assert_eq!(ring_of(SQUARE, InputFormat::Poly).unwrap(), square);
         // Segments in any order and direction; no hole section; 0-based ids.
         let shuffled = "4 2\n0 0 0\n1 1 0\n2 1 1\n3 0 1\n4 0\n0 0 1\n1 3 2\n2 0 3\n3 1 2\n";
         assert_eq!(
-            read_polygon(shuffled, InputFormat::Poly).unwrap(),
+            ring_of(shuffled, InputFormat::Poly).unwrap(),
             vec![[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]]
         );
         let holes = SQUARE.replace("\n0\n", "\n1\n1 0.5 0.5\n");
-        let (line, m) = line_of(read_polygon(&holes, InputFormat::Poly).unwrap_err());
+        let (line, m) = line_of(ring_of(&holes, InputFormat::Poly).unwrap_err());
         assert_eq!(line, 12);
         assert!(m.contains("holes are not supported yet"), "{m}");
         // A third segment at a vertex.
         let (line, m) = line_of(
-            read_polygon(
+            ring_of(
                 "4 2\n0 0 0\n1 1 0\n2 1 1\n3 0 1\n5 0\n0 0 1\n1 1 2\n2 2 3\n3 3 0\n4 0 2\n",
                 InputFormat::Poly,
             )
@@ -218,7 +222,7 @@ mod tests {
         assert!(m.contains("third at vertex 0"), "{m}");
         // Two triangles: two cycles.
         let (line, m) = line_of(
-            read_polygon(
+            ring_of(
                 "6 2\n0 0 0\n1 1 0\n2 0 1\n3 5 5\n4 6 5\n5 5 6\n6 0\n\
                  0 0 1\n1 1 2\n2 2 0\n3 3 4\n4 4 5\n5 5 3\n",
                 InputFormat::Poly,
@@ -229,7 +233,7 @@ mod tests {
         assert!(m.contains("more than one cycle"), "{m}");
         // An open path: a vertex on one segment.
         let (line, m) = line_of(
-            read_polygon(
+            ring_of(
                 "3 2\n0 0 0\n1 1 0\n2 0 1\n2 0\n0 0 1\n1 1 2\n",
                 InputFormat::Poly,
             )
@@ -261,7 +265,7 @@ mod tests {
             ),
             ("0 2 0 0\n3 0\n", 1, "separate .node"),
         ] {
-            let (l, m) = line_of(read_polygon(text, InputFormat::Poly).unwrap_err());
+            let (l, m) = line_of(ring_of(text, InputFormat::Poly).unwrap_err());
             assert_eq!((l, m.contains(needle)), (line, true), "{text}: {m}");
         }
     }

@@ -2,7 +2,7 @@
 //!
 //! [`InputFormat::Tsplib`]: super::InputFormat::Tsplib
 
-use super::{parse, Collected};
+use super::{parse, quoted, shown, Collected};
 use crate::error::Result;
 
 pub(super) fn read_tsplib(text: &str) -> Result<Collected> {
@@ -36,9 +36,12 @@ pub(super) fn read_tsplib(text: &str) -> Result<Collected> {
                     ),
                 ));
             }
-            let id: usize = tokens[0]
-                .parse()
-                .map_err(|_| parse(line, format!("node id '{}' is not an integer", tokens[0])))?;
+            let id: usize = tokens[0].parse().map_err(|_| {
+                parse(
+                    line,
+                    format!("node id {} is not an integer", quoted(tokens[0])),
+                )
+            })?;
             if id != last_id + 1 {
                 return Err(parse(
                     line,
@@ -62,13 +65,19 @@ pub(super) fn read_tsplib(text: &str) -> Result<Collected> {
         if first.ends_with("_SECTION") {
             return Err(parse(
                 line,
-                format!("{first} before any NODE_COORD_SECTION: the file has no coordinates"),
+                format!(
+                    "{} before any NODE_COORD_SECTION: the file has no coordinates",
+                    shown(first, "")
+                ),
             ));
         }
         let Some((key, value)) = trimmed.split_once(':') else {
             return Err(parse(
                 line,
-                format!("expected a header line 'KEY : VALUE', found '{trimmed}'"),
+                format!(
+                    "expected a header line 'KEY : VALUE', found {}",
+                    quoted(trimmed)
+                ),
             ));
         };
         let (key, value) = (key.trim(), value.trim());
@@ -77,7 +86,7 @@ pub(super) fn read_tsplib(text: &str) -> Result<Collected> {
                 let n = value.parse().map_err(|_| {
                     parse(
                         line,
-                        format!("DIMENSION '{value}' is not a non-negative integer"),
+                        format!("DIMENSION {} is not a non-negative integer", quoted(value)),
                     )
                 })?;
                 dimension = Some((n, line));
@@ -88,8 +97,9 @@ pub(super) fn read_tsplib(text: &str) -> Result<Collected> {
                     return Err(parse(
                         line,
                         format!(
-                            "EDGE_WEIGHT_TYPE {value} has no planar coordinates; \
-                             supported: EUC_2D, CEIL_2D, MAN_2D, MAX_2D, ATT, GEO"
+                            "EDGE_WEIGHT_TYPE {} has no planar coordinates; \
+                             supported: EUC_2D, CEIL_2D, MAN_2D, MAX_2D, ATT, GEO",
+                            shown(value, "")
                         ),
                     ))
                 }
@@ -97,7 +107,10 @@ pub(super) fn read_tsplib(text: &str) -> Result<Collected> {
             "NODE_COORD_TYPE" if value != "TWOD_COORDS" => {
                 return Err(parse(
                     line,
-                    format!("NODE_COORD_TYPE {value} is not supported (only TWOD_COORDS)"),
+                    format!(
+                        "NODE_COORD_TYPE {} is not supported (only TWOD_COORDS)",
+                        shown(value, "")
+                    ),
                 ))
             }
             _ => {}
@@ -125,24 +138,24 @@ pub(super) fn read_tsplib(text: &str) -> Result<Collected> {
 
 #[cfg(test)]
 mod tests {
-    use crate::io::{line_of, read_points, read_points_file, InputFormat};
+    use crate::io::{line_of, points_of, read, InputFormat, ReadOptions, Source};
 
     #[test]
     fn tsplib_headers_sections_and_errors() {
         let text = "NAME : t\nTYPE: TSP\nDIMENSION : 3\nEDGE_WEIGHT_TYPE : EUC_2D\n\
                     NODE_COORD_SECTION\n 1 0 0\n2 1.5e+01 0\n3 0 -2\nEOF\n\n";
         assert_eq!(
-            read_points(text, InputFormat::Tsplib).unwrap(),
+            points_of(text, InputFormat::Tsplib).unwrap(),
             vec![[0.0, 0.0], [15.0, 0.0], [0.0, -2.0]]
         );
         // No EOF line is fine (pr1002 has none).
         let text = "DIMENSION: 1\nNODE_COORD_SECTION\n1 4 5\n";
         assert_eq!(
-            read_points(text, InputFormat::Tsplib).unwrap(),
+            points_of(text, InputFormat::Tsplib).unwrap(),
             vec![[4.0, 5.0]]
         );
         let (line, m) = line_of(
-            read_points(
+            points_of(
                 "DIMENSION: 3\nNODE_COORD_SECTION\n1 0 0\n2 1 1\nEOF\n",
                 InputFormat::Tsplib,
             )
@@ -151,7 +164,7 @@ mod tests {
         assert_eq!(line, 1);
         assert!(m.contains("DIMENSION is 3"), "{m}");
         let (line, m) = line_of(
-            read_points(
+            points_of(
                 "DIMENSION: 2\nEDGE_WEIGHT_TYPE: EXPLICIT\nEDGE_WEIGHT_SECTION\n0 1\n",
                 InputFormat::Tsplib,
             )
@@ -160,11 +173,20 @@ mod tests {
         assert_eq!(line, 2);
         assert!(m.contains("EXPLICIT"), "{m}");
         let (line, _) = line_of(
-            read_points("NODE_COORD_SECTION\n1 0 0\n2 x 1\n", InputFormat::Tsplib).unwrap_err(),
+            points_of("NODE_COORD_SECTION\n1 0 0\n2 x 1\n", InputFormat::Tsplib).unwrap_err(),
         );
         assert_eq!(line, 3);
-        let (line, _) = line_of(read_points("NAME: x\n", InputFormat::Tsplib).unwrap_err());
+        let (line, _) = line_of(points_of("NAME: x\n", InputFormat::Tsplib).unwrap_err());
         assert_eq!(line, 0);
+    }
+
+    /// The points of the file at `path`, its format by extension.
+    fn file_points(path: &std::path::Path) -> Vec<crate::kernel::Point> {
+        read(Source::Path(path), &ReadOptions::default())
+            .unwrap()
+            .input
+            .points()
+            .to_vec()
     }
 
     #[test]
@@ -189,7 +211,7 @@ mod tests {
         let dir = optri_oracle::data_dir().join("tsplib");
         for (name, n) in expected {
             let path = dir.join(format!("{name}.tsp"));
-            let points = read_points_file(&path, None).unwrap();
+            let points = file_points(&path);
             assert_eq!(points.len(), n, "{name}");
             assert_eq!(
                 InputFormat::sniff(&std::fs::read_to_string(&path).unwrap()),
@@ -197,11 +219,11 @@ mod tests {
             );
         }
         // Spot checks against the files' text.
-        let a280 = read_points_file(&dir.join("a280.tsp"), None).unwrap();
+        let a280 = file_points(&dir.join("a280.tsp"));
         assert_eq!(a280[170], a280[171]);
-        let ali = read_points_file(&dir.join("ali535.tsp"), None).unwrap();
+        let ali = file_points(&dir.join("ali535.tsp"));
         assert_eq!(ali[3], [5.15, -3.56]);
-        let berlin = read_points_file(&dir.join("berlin52.tsp"), None).unwrap();
+        let berlin = file_points(&dir.join("berlin52.tsp"));
         assert_eq!(berlin[51], [1740.0, 245.0]);
     }
 }

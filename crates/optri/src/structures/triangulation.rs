@@ -118,7 +118,7 @@ impl Triangulation {
     /// The same triangles and domain over `point_set`, which holds the same
     /// points in the same order at other values: the user's doubles of a
     /// triangulation validated on their decimals scaled to integers (the
-    /// decisions were made there; see `io::doubles_as_decimals`).
+    /// decisions were made there; see `io::ReadInput::from_doubles`).
     #[cfg(feature = "io")]
     pub(crate) fn with_point_set(self, point_set: PointSet) -> Self {
         debug_assert_eq!(
