@@ -46,8 +46,11 @@
 //! edge of a triangle). Brute force (all lune tests) is a test reference only.
 //! Ties use the distinct-point numbering.
 
+use super::minimum_spanning_tree::kruskal;
 use crate::error::Result;
-use crate::kernel::{side_of_direction, Metric, MetricProblem, Point};
+use crate::kernel::{
+    compare_rounded_keys, side_of_direction, LengthOrder, Metric, MetricProblem, Point,
+};
 use crate::parallel::prelude::*;
 use crate::spatial::bounding_box;
 use crate::structures::PointSet;
@@ -257,20 +260,17 @@ fn wedge_may_meet(w: [Point; 2], p: Point, b: [f64; 4]) -> bool {
 }
 
 /// The octant of `r − p` when the rounded differences decide it (the signs
-/// of rounded differences are exact; `|dx|` against `|dy|` is clear when they
-/// differ by more than their rounding errors); `None` on a boundary ray or
-/// near one, where the exact wedge tests decide.
+/// of rounded differences are exact; `|dx|` against `|dy|` is decided by the
+/// kernel's filter for rounded keys, each within one rounding of the exact
+/// difference); `None` on a boundary ray or near one, where the exact wedge
+/// tests decide.
 #[inline]
 fn clear_octant(p: Point, r: Point) -> Option<usize> {
     let (dx, dy) = (r[0] - p[0], r[1] - p[1]);
     if dx == 0.0 || dy == 0.0 {
         return None;
     }
-    let (ax, ay) = (dx.abs(), dy.abs());
-    if (ax - ay).abs() <= 4.0 * f64::EPSILON * (ax + ay) {
-        return None;
-    }
-    let x_major = ax > ay;
+    let x_major = compare_rounded_keys(dx.abs(), dy.abs())? == Ordering::Greater;
     Some(match (dx > 0.0, dy > 0.0) {
         (true, true) => {
             if x_major {
@@ -492,7 +492,7 @@ fn lune_is_empty(points: &[Point], metric: &Metric, grid: &Buckets, [p, q]: [u32
                 if metric.length(pp, px) > slack || metric.length(pq, px) > slack {
                     continue;
                 }
-                if metric.in_lune_symbolic(points, p, q, x) {
+                if metric.in_lune(points, p, q, x) {
                     return false;
                 }
             }
@@ -517,37 +517,11 @@ pub(crate) fn rng_under(
         .collect())
 }
 
-/// Kruskal over `edges` in the metric's tie-broken order.
-pub(crate) fn mst_under(
-    points: &[Point],
-    metric: &Metric,
-    mut edges: Vec<[u32; 2]>,
-) -> Vec<[u32; 2]> {
-    edges.par_sort_unstable_by(|a, b| metric.compare_lengths_symbolic(points, *a, *b));
-    let mut parent: Vec<u32> = (0..points.len() as u32).collect();
-    fn find(parent: &mut [u32], mut x: u32) -> u32 {
-        while parent[x as usize] != x {
-            parent[x as usize] = parent[parent[x as usize] as usize];
-            x = parent[x as usize];
-        }
-        x
-    }
-    let mut tree = Vec::with_capacity(points.len().saturating_sub(1));
-    for [u, v] in edges {
-        let (a, b) = (find(&mut parent, u), find(&mut parent, v));
-        if a != b {
-            parent[a as usize] = b;
-            tree.push([u, v]);
-        }
-    }
-    tree
-}
-
 /// The relative neighbourhood graph of `points` under `metric`: `pq` is an
 /// edge iff no other point `x` has `max(|px|, |qx|) < |pq|` (lengths and
 /// ties as in [`Metric::compare_lengths_symbolic`]). Sorted input-index pairs.
 /// The Euclidean metric gives [`crate::relative_neighborhood_graph`].
-pub fn relative_neighborhood_graph_under(
+pub(crate) fn relative_neighborhood_graph_under(
     points: &PointSet,
     metric: &Metric,
 ) -> Result<Vec<[u32; 2]>> {
@@ -561,12 +535,15 @@ pub fn relative_neighborhood_graph_under(
 /// The minimum spanning tree of `points` under `metric` (unique under the
 /// tie-break). Sorted input-index pairs. The Euclidean metric gives
 /// [`crate::minimum_spanning_tree`].
-pub fn minimum_spanning_tree_under(points: &PointSet, metric: &Metric) -> Result<Vec<[u32; 2]>> {
+pub(crate) fn minimum_spanning_tree_under(
+    points: &PointSet,
+    metric: &Metric,
+) -> Result<Vec<[u32; 2]>> {
     if metric.is_euclidean() {
         return super::minimum_spanning_tree(points);
     }
     let pts = points.points();
     let rng = rng_under(pts, metric).map_err(crate::Error::InvalidMetric)?;
-    let tree = mst_under(pts, metric, rng);
+    let tree = kruskal(pts, metric, rng);
     Ok(points.to_input_edges(tree.into_iter()))
 }

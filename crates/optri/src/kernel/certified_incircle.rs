@@ -25,10 +25,7 @@
 //! Undecided cases (exact zeros, inexact translations) go to `robust`.
 
 use super::expansion::{two_diff, two_product, two_sum};
-use super::Point;
-
-/// Unit roundoff of `f64` (2⁻⁵³).
-const U: f64 = f64::EPSILON * 0.5;
+use super::{Point, UNIT_ROUNDOFF as U};
 
 /// Shewchuk's `iccerrboundA`: the plain evaluation's error is below this
 /// times the permanent.

@@ -38,10 +38,7 @@ use num_bigint::{BigInt, BigUint, Sign};
 use num_traits::{Signed, Zero};
 use std::cmp::Ordering;
 
-use super::Point;
-
-/// Unit roundoff of `f64` (2⁻⁵³).
-const U: f64 = f64::EPSILON * 0.5;
+use super::{Point, UNIT_ROUNDOFF as U};
 
 /// A certified enclosure `[lo, hi]` of a sum of Euclidean lengths.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -62,15 +62,13 @@
 use super::expansion::{sign_of_sum, two_diff, Expansion};
 use super::predicates::{compare_lengths, orient_sign};
 use super::symbolic::{compare_lengths_symbolic, orient_symbolic};
-use super::{check_coordinate, Point};
+use super::{check_coordinate, Point, UNIT_ROUNDOFF as U};
 use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::{One, Signed, Zero};
 use std::cmp::Ordering;
 use std::collections::BTreeMap;
 use std::fmt;
-
-const U: f64 = f64::EPSILON / 2.0;
 
 /// Largest exponent accepted by [`Metric::lp`] (the exact tie-break expands
 /// `(v + δ)ᵖ`, O(p²) exact terms per coordinate).

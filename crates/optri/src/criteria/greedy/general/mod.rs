@@ -88,18 +88,20 @@ mod guard;
 mod partial;
 mod segment_index;
 
-use super::{keyed_by_length, rounded_squared_length, sort_keyed_runs, sort_runs};
 use crate::error::{Error, Result};
 use crate::kernel::{
-    compare_equal_lengths_symbolic, compare_lengths, exact_squared_length, orient_sign, Point,
+    compare_equal_lengths_symbolic, compare_lengths, exact_squared_length, orient_sign,
+    shorter_than, Point,
 };
 use crate::parallel::prelude::*;
-use crate::spatial::{bounding_box, fmax, fmin, morton_order};
+use crate::spatial::{
+    bounding_box, fmax, fmin, inverse_permutation, keyed_by_length, morton_order, sort_keyed_runs,
+    sort_runs,
+};
 use crate::timing::{Phase, Stopwatch};
 use guard::{next_floor, next_growth, round_grid, MIN_RELATIVE_STEP, NO_LINE, THRESHOLD_GROWTH};
 use partial::{OpenGaps, Partial};
 use segment_index::{PointsNear, Query, SegmentIndex, Step};
-use std::cmp::Ordering;
 
 /// No candidate at a vertex yet (the lowest rank found so far).
 const NO_RANK: u32 = u32::MAX;
@@ -136,28 +138,6 @@ const MIN_COARSENING: f64 = 4.0;
 /// points. Results do not depend on them.
 const OPEN_VERTICES_PER_TASK: usize = 4096;
 const CANDIDATES_PER_TASK: usize = 4096;
-
-/// The relative margin of [`shorter_than`]'s rounded shortcut. Derived
-/// need, chosen value: the rounded `|pq|²` and `t²` are within 4·2⁻⁵³ and
-/// 2⁻⁵³ (relative) of the exact ones, as nothing underflows or overflows
-/// (coordinates, hence differences and thresholds, stay within the range of
-/// [`crate::kernel`]), so any margin above 5·2⁻⁵³ ≈ 6·10⁻¹⁶ is sound;
-/// closer cases go to the exact comparison.
-const SHORTER_THAN_MARGIN: f64 = 1e-9;
-
-/// Exact `|pq| < t` for a threshold length `t`, with a rounded shortcut.
-#[inline]
-fn shorter_than(p: Point, q: Point, t: f64) -> bool {
-    let d2 = rounded_squared_length(p, q);
-    let t2 = t * t;
-    if d2 < t2 * (1.0 - SHORTER_THAN_MARGIN) {
-        return true;
-    }
-    if d2 > t2 * (1.0 + SHORTER_THAN_MARGIN) {
-        return false;
-    }
-    compare_lengths(p, q, [0.0, 0.0], [t, 0.0]) == Ordering::Less
-}
 
 /// GT triangles of `points` (distinct, not all collinear), counter-clockwise;
 /// `hull` is their [`convex_hull_cycle`](crate::spatial::convex_hull_cycle) (computed once, by the caller's
@@ -368,7 +348,7 @@ impl Renumbering<'_> {
     }
 
     /// [`Self::ranking`]'s order by the exact comparison (see
-    /// [`super::sort_keyed_runs`]): squared lengths that `f64` computes
+    /// [`sort_keyed_runs`]): squared lengths that `f64` computes
     /// exactly are compared as numbers, the others by [`compare_lengths`].
     fn order_by_comparison(&self, points: &[Point], segments: &[[u32; 2]]) -> Vec<u32> {
         let mut keyed = keyed_by_length(points, segments, |i, _| i as u32);
@@ -397,19 +377,6 @@ impl Renumbering<'_> {
 struct Ranking {
     order: Vec<u32>,
     rank: Vec<u32>,
-}
-
-/// The inverse of the permutation `order` of `0..order.len()`, in parallel
-/// (each slot is written once; relaxed atomics only make the scattered
-/// writes safe).
-fn inverse_permutation(order: &[u32]) -> Vec<u32> {
-    use std::sync::atomic::{AtomicU32, Ordering::Relaxed};
-    let inverse: Vec<AtomicU32> = (0..order.len()).map(|_| AtomicU32::new(0)).collect();
-    order
-        .par_iter()
-        .enumerate()
-        .for_each(|(at, &v)| inverse[v as usize].store(at as u32, Relaxed));
-    inverse.into_iter().map(AtomicU32::into_inner).collect()
 }
 
 /// The length rounds of the module docs on `points` (local numbering; ties

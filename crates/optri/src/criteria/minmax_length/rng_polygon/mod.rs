@@ -14,7 +14,7 @@
 //!
 //! | function | file | paper |
 //! |---|---|---|
-//! | [`LengthOrder::nearer_to_edge`] | `../length_order.rs` | §5.1 step 1: distance of a lune vertex from `pq` ([`crate::kernel::height_sign`]), or under a metric the remark's `max(|xp|, |xq|)` |
+//! | [`LengthOrder::nearer_to_edge`] | the kernel's length orders | §5.1 step 1: distance of a lune vertex from `pq` ([`crate::kernel::height_sign`]), or under a metric the remark's `max(|xp|, |xq|)` |
 //! | [`RngPolygon::triangulate`] | here | §5.1 for an incomplete rng-polygon, else §5.3 |
 //! | [`RngPolygon::incomplete`] | `incomplete.rs` | §5.1, incomplete rng-polygons (1-Edge Lemma) |
 //! | [`RngPolygon::visible_offsets`] | `visibility.rs` | diagonals at a vertex in angular order (§6 step 1) |
@@ -50,9 +50,12 @@ mod visibility;
 pub(crate) use mesh::Mesh;
 
 use super::counters::Counters;
-use super::length_order::{EuclideanOrder, LengthOrder};
+use super::fallback::{cubic_fallback, Fallback};
 use super::polygon::Region;
-use crate::kernel::Point;
+use super::regions::is_boundary;
+#[cfg(test)]
+use super::{regions, rng_perturbed, rng_perturbed_flags};
+use crate::kernel::{EuclideanOrder, LengthOrder, Point};
 use crate::parallel::prelude::*;
 use std::collections::HashMap;
 use std::fmt;
@@ -441,7 +444,6 @@ impl<'a, L: LengthOrder> RngPolygon<'a, L> {
 #[cfg(test)]
 mod consistency_tests {
     use super::*;
-    use crate::criteria::minmax_length::{regions, rng_perturbed, rng_perturbed_flags};
     use crate::spatial::convex_hull_cycle;
     use crate::structures::DelaunayGraph;
     use rand::{rngs::StdRng, Rng, SeedableRng};
