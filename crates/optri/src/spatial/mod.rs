@@ -3,6 +3,7 @@
 //! topology; they import only the kernel (and the rayon shim).
 
 mod bbox;
+mod cell_geometry;
 mod grid;
 mod hull;
 mod morton;
