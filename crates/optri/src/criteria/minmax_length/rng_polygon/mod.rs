@@ -92,6 +92,15 @@ fn map_range<T: Send, R: FromIterator<T> + FromParallelIterator<T>>(
     }
 }
 
+/// The triangles that tile a region, with their local adjacency (the
+/// fields of [`RngPolygon`] of the same names).
+struct Tiling {
+    corners: Vec<[u32; 3]>,
+    neighbours: Vec<[u32; 3]>,
+    positions: Vec<[u32; 3]>,
+    fan_start: Vec<(u32, u8)>,
+}
+
 /// One region of `ch(S) ∪ rng(S′)` (an rng-polygon), prepared for the §6
 /// scans: its Delaunay triangles with local adjacency (no hashing during the
 /// walks). Lengths are compared by `L` (Euclidean unless a metric is given,
@@ -212,25 +221,21 @@ impl<'a, L: LengthOrder> RngPolygon<'a, L> {
         if positions.iter().flatten().any(|&p| p == NONE) {
             return Err(Inconsistent("corner without position"));
         }
-        let geo = Region {
-            points,
-            vertices: v,
-            symbolic: true,
-        };
-        Ok(Self {
-            points,
-            order,
-            convex: L::CHOICE_IS_VISIBLE || geo.is_strictly_convex(),
-            v,
-            k,
-            mesh: Some(mesh),
-            counters,
+        let tiling = Tiling {
             corners,
             neighbours,
             positions,
             fan_start,
-            geo,
-        })
+        };
+        Ok(Self::assemble(
+            points,
+            v,
+            counters,
+            order,
+            Some(mesh),
+            None,
+            tiling,
+        ))
     }
 
     /// A complete, strictly convex region (every corner a strict left turn
@@ -255,7 +260,7 @@ impl<'a, L: LengthOrder> RngPolygon<'a, L> {
             return Err(Inconsistent("fan of a region that is not strictly convex"));
         }
         let fan: Vec<[u32; 3]> = (0..k as u32 - 2).map(|t| [0, t + 1, t + 2]).collect();
-        Self::from_tiling(points, v, counters, order, fan, true)
+        Self::from_tiling(points, v, counters, order, fan, Some(true))
     }
 
     /// A complete region with distinct corners that is simple in `S′`, tiled
@@ -345,21 +350,20 @@ impl<'a, L: LengthOrder> RngPolygon<'a, L> {
             return Err(Inconsistent("last ear not a left turn"));
         }
         tiles.push([p as u32, a as u32, n as u32]);
-        let convex = L::CHOICE_IS_VISIBLE || geo.is_strictly_convex();
-        Self::from_tiling(points, v, counters, order, tiles, convex)
+        Self::from_tiling(points, v, counters, order, tiles, None)
     }
 
     /// The local adjacency of a tiling of the region given by position
     /// triples (counter-clockwise): neighbours across shared sides, and each
     /// corner's fan starting at the triangle left of its boundary edge
-    /// `a → a+1`.
+    /// `a → a+1`. `convex` as in [`Self::assemble`].
     fn from_tiling(
         points: &'a [Point],
         v: &'a [u32],
         counters: &'a Counters,
         order: L,
         positions: Vec<[u32; 3]>,
-        convex: bool,
+        convex: Option<bool>,
     ) -> Result<Self, Inconsistent> {
         let k = v.len();
         let mut side_of: HashMap<(u32, u32), (u32, u8)> =
@@ -392,26 +396,54 @@ impl<'a, L: LengthOrder> RngPolygon<'a, L> {
                     .ok_or(Inconsistent("boundary edge outside the tiling"))
             })
             .collect::<Result<_, _>>()?;
-        let corners: Vec<[u32; 3]> = positions.iter().map(|c| c.map(|a| v[a as usize])).collect();
+        let tiling = Tiling {
+            corners: positions.iter().map(|c| c.map(|a| v[a as usize])).collect(),
+            neighbours,
+            positions,
+            fan_start,
+        };
+        Ok(Self::assemble(
+            points, v, counters, order, None, convex, tiling,
+        ))
+    }
+
+    /// The region with corners `v` and its tiling; `convex` is the known
+    /// answer of the §5.1 visibility check's convexity test, or `None` to
+    /// compute it where `L` needs it ([`LengthOrder::CHOICE_IS_VISIBLE`]).
+    fn assemble(
+        points: &'a [Point],
+        v: &'a [u32],
+        counters: &'a Counters,
+        order: L,
+        mesh: Option<&'a Mesh<'a>>,
+        convex: Option<bool>,
+        tiling: Tiling,
+    ) -> Self {
         let geo = Region {
             points,
             vertices: v,
             symbolic: true,
         };
-        Ok(Self {
+        let Tiling {
+            corners,
+            neighbours,
+            positions,
+            fan_start,
+        } = tiling;
+        Self {
             points,
             order,
-            convex,
+            convex: convex.unwrap_or_else(|| L::CHOICE_IS_VISIBLE || geo.is_strictly_convex()),
             v,
-            k,
-            mesh: None,
+            k: v.len(),
+            mesh,
             counters,
             corners,
             neighbours,
             positions,
             fan_start,
             geo,
-        })
+        }
     }
 
     #[inline]
