@@ -141,24 +141,13 @@ impl CellGeometry {
     /// The column of the coordinate `x`, clamped to the grid.
     #[inline]
     pub(crate) fn column(&self, x: f64) -> u64 {
-        // Truncation is the floor for c ≥ 1 (and avoids a libm call).
-        let c = (x - self.x0) * self.inv;
-        if c >= 1.0 {
-            (c as u64).min(self.columns - 1)
-        } else {
-            0
-        }
+        clamped_floor((x - self.x0) * self.inv, self.columns)
     }
 
     /// The row of the coordinate `y`, clamped to the grid.
     #[inline]
     pub(crate) fn row(&self, y: f64) -> u64 {
-        let c = (y - self.y0) * self.inv;
-        if c >= 1.0 {
-            (c as u64).min(self.rows - 1)
-        } else {
-            0
-        }
+        clamped_floor((y - self.y0) * self.inv, self.rows)
     }
 
     /// The half-widths of the box a lookup with `pad` scans around its
@@ -197,6 +186,17 @@ impl CellGeometry {
     #[inline]
     pub(crate) fn cell_of(&self, p: Point) -> [u64; 2] {
         [self.column(p[0]), self.row(p[1])]
+    }
+}
+
+/// `⌊c⌋` clamped to `0..count`.
+#[inline]
+fn clamped_floor(c: f64, count: u64) -> u64 {
+    // Truncation is the floor for c ≥ 1 (and avoids a libm call).
+    if c >= 1.0 {
+        (c as u64).min(count - 1)
+    } else {
+        0
     }
 }
 
