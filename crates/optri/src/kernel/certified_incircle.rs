@@ -19,7 +19,7 @@
 //!    determinants are about `u·P`: stage 1 never decides them and the
 //!    `robust` crate's adaptive stages (which zero several kilobytes of
 //!    buffers per call) did every in-circle test of the convex Delaunay
-//!    triangulation in the greedy triangulation of issue 15. Stage 2 decides
+//!    triangulation in the greedy triangulation of such points. Stage 2 decides
 //!    all but near-exact ties.
 //!
 //! Undecided cases (exact zeros, inexact translations) go to `robust`.

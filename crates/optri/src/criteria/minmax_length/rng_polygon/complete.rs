@@ -238,7 +238,8 @@ mod tests {
 
     impl RngPolygon<'_> {
         /// The reference for the bit tables: §6 steps 1–3 with sorted offset
-        /// lists per corner and binary searches (the layout before issue 15).
+        /// lists per corner and binary searches (the layout before the bit
+        /// tables).
         fn shortest_expandable_2_edge_by_lists(&self) -> Result<[usize; 6], Inconsistent> {
             let k = self.k;
             let cached: Vec<Vec<usize>> = map_range(k >= PARALLEL_CORNERS, k, |a| self.visible(a));
