@@ -67,7 +67,7 @@ pub use criteria::{
 pub use error::{Error, Interruption, PolygonProblem, Result, UnsupportedReason};
 pub use graphs::{
     convex_hull, convex_hull_edges, delaunay, delaunay_edges, gabriel_graph, minimum_spanning_tree,
-    minimum_spanning_tree_under, relative_neighborhood_graph, relative_neighborhood_graph_under,
+    relative_neighborhood_graph,
 };
 pub use interrupt::Cancel;
 pub use registry::{

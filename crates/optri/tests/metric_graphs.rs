@@ -3,7 +3,7 @@
 //! the kernel's norm comparison against independent rational arithmetic.
 
 use optri::kernel::{Metric, Point};
-use optri::{minimum_spanning_tree_under, relative_neighborhood_graph_under, PointSet};
+use optri::{graph_with, GraphKind, Options, PointSet};
 use optri_oracle::exact::to_rational;
 use optri_oracle::inputs::{
     collinear_runs, grid, grid_subset, integer_circle_points, lattice_points, uniform_unit_square,
@@ -95,11 +95,11 @@ fn rng_and_mst_equal_their_definitions_under_every_metric() {
         for (name, pts) in &sets {
             let ps = PointSet::new(pts).unwrap();
             let d = ps.points().to_vec();
-            let got = relative_neighborhood_graph_under(&ps, &m).unwrap();
+            let options = Options::default().with_metric(m.clone());
+            let (got, _) = graph_with(&ps, GraphKind::Rng, &options).unwrap();
             let want: Vec<[u32; 2]> = ps_to_input(&ps, brute_rng(&d, &m));
             assert_eq!(got, want, "RNG under {m} on {name}");
-            let got = minimum_spanning_tree_under(&ps, &m).unwrap();
-            let mut got = got;
+            let (mut got, _) = graph_with(&ps, GraphKind::Mst, &options).unwrap();
             got.sort_unstable();
             let want = ps_to_input(&ps, brute_mst(&d, &m));
             assert_eq!(got, want, "MST under {m} on {name}");

@@ -39,17 +39,21 @@
 //!   argument (on each edge of the arc `q ↦ ‖q − e‖` is convex), every
 //!   `r ∈ K \ {p}` is then strictly nearer to `q` than `p` is.
 //!
-//! Candidates are found with a bucket grid, scanning rings of cells around
+//! Candidates are found with the points bucketed in cells
+//! ([`crate::spatial::PointCells`]), scanning rings of cells around
 //! `p` until every wedge is settled; then every candidate's lune is tested
 //! exactly. The MST is Kruskal over the RNG in the tie-broken order (every
 //! MST edge is an RNG edge: a point in the lune of `pq` makes `pq` the longest
 //! edge of a triangle). Brute force (all lune tests) is a test reference only.
 //! Ties use the distinct-point numbering.
 
+use super::minimum_spanning_tree::kruskal;
 use crate::error::Result;
-use crate::kernel::{side_of_direction, Metric, MetricProblem, Point};
+use crate::kernel::{
+    compare_rounded_keys, side_of_direction, LengthOrder, Metric, MetricProblem, Point,
+};
 use crate::parallel::prelude::*;
-use crate::spatial::bounding_box;
+use crate::spatial::{bounding_box, PointCells};
 use crate::structures::PointSet;
 use std::cmp::Ordering;
 
@@ -135,106 +139,14 @@ fn arc_is_short(metric: &Metric, polygon: &[Point], w: [Point; 2]) -> bool {
     true
 }
 
-/// A uniform bucket grid over the points (about two points per cell).
-struct Buckets {
-    origin: Point,
-    cell: f64,
-    width: usize,
-    height: usize,
-    start: Vec<u32>,
-    items: Vec<u32>,
-    /// The coordinates of `items`, in the same (cell) order: scans read
-    /// contiguous memory.
-    coords: Vec<Point>,
-}
-
-impl Buckets {
-    fn new(points: &[Point]) -> Self {
-        let [x0, y0, x1, y1] = bounding_box(points);
-        let area =
-            ((x1 - x0) * (y1 - y0)).max(((x1 - x0).max(y1 - y0)).powi(2) / points.len() as f64);
-        let mut cell = (2.0 * area / points.len() as f64).sqrt();
-        if !(cell.is_finite() && cell > 0.0) {
-            cell = 1.0;
-        }
-        let dim = |extent: f64| ((extent / cell).floor() as usize + 1).min(1 << 15);
-        let (width, height) = (dim(x1 - x0), dim(y1 - y0));
-        let cell = cell
-            .max((x1 - x0) / (width as f64 - 0.5))
-            .max((y1 - y0) / (height as f64 - 0.5));
-        let mut b = Buckets {
-            origin: [x0, y0],
-            cell,
-            width,
-            height,
-            start: vec![],
-            items: vec![],
-            coords: vec![],
-        };
-        let mut count = vec![0u32; width * height + 1];
-        for p in points {
-            count[b.index(b.cell_of(*p)) + 1] += 1;
-        }
-        for i in 1..count.len() {
-            count[i] += count[i - 1];
-        }
-        let mut fill = count.clone();
-        let mut items = vec![0u32; points.len()];
-        for (i, p) in points.iter().enumerate() {
-            let k = b.index(b.cell_of(*p));
-            items[fill[k] as usize] = i as u32;
-            fill[k] += 1;
-        }
-        b.start = count;
-        b.coords = items.iter().map(|&i| points[i as usize]).collect();
-        b.items = items;
-        b
-    }
-    fn cell_of(&self, p: Point) -> [usize; 2] {
-        let c = |v: f64, o: f64, n: usize| (((v - o) / self.cell) as usize).min(n - 1);
-        [
-            c(p[0], self.origin[0], self.width),
-            c(p[1], self.origin[1], self.height),
-        ]
-    }
-    fn index(&self, [i, j]: [usize; 2]) -> usize {
-        j * self.width + i
-    }
-    /// The points of cell `c` with their coordinates.
-    fn entries(&self, c: [usize; 2]) -> impl Iterator<Item = (u32, Point)> + '_ {
-        let k = self.index(c);
-        let r = self.start[k] as usize..self.start[k + 1] as usize;
-        self.items[r.clone()]
-            .iter()
-            .copied()
-            .zip(self.coords[r].iter().copied())
-    }
-    fn bounds(&self, [i, j]: [usize; 2]) -> [f64; 4] {
-        let (x, y) = (
-            self.origin[0] + i as f64 * self.cell,
-            self.origin[1] + j as f64 * self.cell,
-        );
-        [x, y, x + self.cell, y + self.cell]
-    }
-    /// The in-grid cells at Chebyshev cell distance exactly `k` from `c`.
-    fn ring(&self, c: [usize; 2], k: usize, mut f: impl FnMut([usize; 2])) {
-        let (ci, cj) = (c[0] as isize, c[1] as isize);
-        let k = k as isize;
-        let (w, h) = (self.width as isize, self.height as isize);
-        for j in (cj - k).max(0)..=(cj + k).min(h - 1) {
-            if j == cj - k || j == cj + k {
-                for i in (ci - k).max(0)..=(ci + k).min(w - 1) {
-                    f([i as usize, j as usize]);
-                }
-            } else {
-                for i in [ci - k, ci + k] {
-                    if (0..w).contains(&i) {
-                        f([i as usize, j as usize]);
-                    }
-                }
-            }
-        }
-    }
+/// The points bucketed in cells of about two points each.
+fn point_cells(points: &[Point]) -> PointCells {
+    let bbox = bounding_box(points);
+    let [x0, y0, x1, y1] = bbox;
+    let (w, h) = (x1 - x0, y1 - y0);
+    // A flat box counts as at least `max(w, h)² / n`.
+    let area = (w * h).max(w.max(h).powi(2) / points.len() as f64);
+    PointCells::new(points, bbox, (2.0 * area / points.len() as f64).sqrt())
 }
 
 /// Can the closed wedge `w` at `p` meet the box (conservative: `false` only
@@ -257,20 +169,17 @@ fn wedge_may_meet(w: [Point; 2], p: Point, b: [f64; 4]) -> bool {
 }
 
 /// The octant of `r − p` when the rounded differences decide it (the signs
-/// of rounded differences are exact; `|dx|` against `|dy|` is clear when they
-/// differ by more than their rounding errors); `None` on a boundary ray or
-/// near one, where the exact wedge tests decide.
+/// of rounded differences are exact; `|dx|` against `|dy|` is decided by the
+/// kernel's filter for rounded keys, each within one rounding of the exact
+/// difference); `None` on a boundary ray or near one, where the exact wedge
+/// tests decide.
 #[inline]
 fn clear_octant(p: Point, r: Point) -> Option<usize> {
     let (dx, dy) = (r[0] - p[0], r[1] - p[1]);
     if dx == 0.0 || dy == 0.0 {
         return None;
     }
-    let (ax, ay) = (dx.abs(), dy.abs());
-    if (ax - ay).abs() <= 4.0 * f64::EPSILON * (ax + ay) {
-        return None;
-    }
-    let x_major = ax > ay;
+    let x_major = compare_rounded_keys(dx.abs(), dy.abs())? == Ordering::Greater;
     Some(match (dx > 0.0, dy > 0.0) {
         (true, true) => {
             if x_major {
@@ -325,7 +234,7 @@ const SEARCH_CHUNK: usize = 2048;
 /// kept), as sorted, deduplicated edges.
 fn candidates(
     points: &[Point],
-    grid: &Buckets,
+    grid: &PointCells,
     metric: &Metric,
     wedges: &[[Point; 2]],
     octants: bool,
@@ -347,7 +256,7 @@ fn candidates(
             };
             for slot in chunk * SEARCH_CHUNK..((chunk + 1) * SEARCH_CHUNK).min(n) {
                 search_one(points, grid, metric, wedges, octants, reach, slot, &mut st);
-                let pi = grid.items[slot];
+                let pi = grid.ids()[slot];
                 let edge = |q: u32| [pi.min(q), pi.max(q)];
                 out.extend(st.first.iter().filter(|&&q| q != NONE).map(|&q| edge(q)));
                 out.extend(st.ties.iter().map(|&(_, q)| edge(q)));
@@ -363,10 +272,16 @@ fn candidates(
 
 /// The nearest points of every wedge at the point of grid slot `slot`, into
 /// `st.first` and `st.ties` (see the Sector Lemma in the module docs).
+///
+/// Rings of cells around the point's cell, until every wedge is settled:
+/// a point of ring `k + 1` or beyond lies in the box of its cell widened by
+/// the grid's slack (the cell geometry's `cell_box`), at least `k` cells
+/// from the point's own, so at `L∞` distance at least `k·cell − 2·slack`,
+/// and its norm is at least that over `reach`.
 #[allow(clippy::too_many_arguments)]
 fn search_one(
     points: &[Point],
-    grid: &Buckets,
+    grid: &PointCells,
     metric: &Metric,
     wedges: &[[Point; 2]],
     octants: bool,
@@ -375,14 +290,15 @@ fn search_one(
     st: &mut Search,
 ) {
     let ws = wedges.len();
-    let (pi, p) = (grid.items[slot], grid.coords[slot]);
-    let c = grid.cell_of(p);
+    let (pi, p) = (grid.ids()[slot], grid.coords()[slot]);
+    let geometry = grid.geometry();
+    let c = geometry.cell_of(p);
     st.first.iter_mut().for_each(|f| *f = NONE);
     st.first_len.iter_mut().for_each(|l| *l = f64::INFINITY);
     st.ties.clear();
     st.open.iter_mut().for_each(|o| *o = true);
     let mut open_count = ws;
-    let mut k = 0usize;
+    let mut k = 0u64;
     let offer = |s: usize, ri: u32, r: Point, st: &mut Search| {
         let q = st.first[s];
         let lr = metric.length(p, r);
@@ -407,8 +323,8 @@ fn search_one(
     };
     while open_count > 0 {
         st.met.iter_mut().for_each(|m| *m = false);
-        grid.ring(c, k, |cell| {
-            let bounds = grid.bounds(cell);
+        grid.for_each_cell_in_ring(c, k, |cell| {
+            let bounds = geometry.cell_box(cell);
             // Only the open wedges this cell can still improve: it may
             // meet the wedge and is not beyond the wedge's best (norm ≥
             // the cell's L∞ distance / reach).
@@ -426,7 +342,8 @@ fn search_one(
             if !useful {
                 return;
             }
-            for (ri, r) in grid.entries(cell) {
+            let (coords, ids) = grid.cell(cell);
+            for (&ri, &r) in ids.iter().zip(coords) {
                 if ri == pi {
                     continue;
                 }
@@ -456,8 +373,10 @@ fn search_one(
                 }
             }
         });
-        // Points of ring k+1 are at L∞ distance ≥ k·cell, norm ≥ that / reach.
-        let lower = k as f64 * grid.cell / reach * (1.0 - 1e-9);
+        // Points of ring k+1 are at L∞ distance ≥ k·cell − 2·slack, norm ≥
+        // that / reach.
+        let distance = k as f64 * geometry.cell_size() - 2.0 * geometry.slack();
+        let lower = distance.max(0.0) / reach * (1.0 - 1e-9);
         for s in 0..ws {
             let settled = if st.first[s] == NONE {
                 !st.met[s]
@@ -474,31 +393,25 @@ fn search_one(
 }
 
 /// Is the lune of `pq` free of points (under the metric's tie-break)?
-fn lune_is_empty(points: &[Point], metric: &Metric, grid: &Buckets, [p, q]: [u32; 2]) -> bool {
+fn lune_is_empty(points: &[Point], metric: &Metric, grid: &PointCells, [p, q]: [u32; 2]) -> bool {
     let (pp, pq) = (points[p as usize], points[q as usize]);
     let len = metric.length(pp, pq);
-    let r = metric.sup_radius() * len * (1.0 + 1e-9) + grid.cell * 1e-9;
+    let r = metric.sup_radius() * len * (1.0 + 1e-9);
     // The lune lies in both balls of radius |pq| about p and q, so in the
-    // intersection of their bounding squares (half-side `r` ≥ R·|pq|).
-    let lo = grid.cell_of([pp[0].max(pq[0]) - r, pp[1].max(pq[1]) - r]);
-    let hi = grid.cell_of([pp[0].min(pq[0]) + r, pp[1].min(pq[1]) + r]);
+    // intersection of their bounding squares (half-side `r` ≥ R·|pq|); the
+    // lookup's slack covers the rounding of its corners.
+    let lo = [pp[0].max(pq[0]) - r, pp[1].max(pq[1]) - r];
+    let hi = [pp[0].min(pq[0]) + r, pp[1].min(pq[1]) + r];
     let slack = len * (1.0 + 1e-9);
-    for j in lo[1]..=hi[1] {
-        for i in lo[0]..=hi[0] {
-            for (x, px) in grid.entries([i, j]) {
-                if x == p || x == q {
-                    continue;
-                }
-                if metric.length(pp, px) > slack || metric.length(pq, px) > slack {
-                    continue;
-                }
-                if metric.in_lune_symbolic(points, p, q, x) {
-                    return false;
-                }
-            }
-        }
-    }
-    true
+    !grid.any_near(lo, hi, 0.0, |coords, ids| {
+        ids.iter().zip(coords).any(|(&x, &px)| {
+            x != p
+                && x != q
+                && metric.length(pp, px) <= slack
+                && metric.length(pq, px) <= slack
+                && metric.in_lune(points, p, q, x)
+        })
+    })
 }
 
 /// The RNG under `metric` on distinct points (distinct indices, sorted pairs).
@@ -509,7 +422,7 @@ pub(crate) fn rng_under(
     let octants =
         metric.unit_polygon().is_none() || metric.name() == "l1" || metric.name() == "linf";
     let wedges = wedges(metric)?;
-    let grid = Buckets::new(points);
+    let grid = point_cells(points);
     let cands = candidates(points, &grid, metric, &wedges, octants);
     Ok(cands
         .into_par_iter()
@@ -517,37 +430,11 @@ pub(crate) fn rng_under(
         .collect())
 }
 
-/// Kruskal over `edges` in the metric's tie-broken order.
-pub(crate) fn mst_under(
-    points: &[Point],
-    metric: &Metric,
-    mut edges: Vec<[u32; 2]>,
-) -> Vec<[u32; 2]> {
-    edges.par_sort_unstable_by(|a, b| metric.compare_lengths_symbolic(points, *a, *b));
-    let mut parent: Vec<u32> = (0..points.len() as u32).collect();
-    fn find(parent: &mut [u32], mut x: u32) -> u32 {
-        while parent[x as usize] != x {
-            parent[x as usize] = parent[parent[x as usize] as usize];
-            x = parent[x as usize];
-        }
-        x
-    }
-    let mut tree = Vec::with_capacity(points.len().saturating_sub(1));
-    for [u, v] in edges {
-        let (a, b) = (find(&mut parent, u), find(&mut parent, v));
-        if a != b {
-            parent[a as usize] = b;
-            tree.push([u, v]);
-        }
-    }
-    tree
-}
-
 /// The relative neighbourhood graph of `points` under `metric`: `pq` is an
 /// edge iff no other point `x` has `max(|px|, |qx|) < |pq|` (lengths and
 /// ties as in [`Metric::compare_lengths_symbolic`]). Sorted input-index pairs.
 /// The Euclidean metric gives [`crate::relative_neighborhood_graph`].
-pub fn relative_neighborhood_graph_under(
+pub(crate) fn relative_neighborhood_graph_under(
     points: &PointSet,
     metric: &Metric,
 ) -> Result<Vec<[u32; 2]>> {
@@ -561,12 +448,15 @@ pub fn relative_neighborhood_graph_under(
 /// The minimum spanning tree of `points` under `metric` (unique under the
 /// tie-break). Sorted input-index pairs. The Euclidean metric gives
 /// [`crate::minimum_spanning_tree`].
-pub fn minimum_spanning_tree_under(points: &PointSet, metric: &Metric) -> Result<Vec<[u32; 2]>> {
+pub(crate) fn minimum_spanning_tree_under(
+    points: &PointSet,
+    metric: &Metric,
+) -> Result<Vec<[u32; 2]>> {
     if metric.is_euclidean() {
         return super::minimum_spanning_tree(points);
     }
     let pts = points.points();
     let rng = rng_under(pts, metric).map_err(crate::Error::InvalidMetric)?;
-    let tree = mst_under(pts, metric, rng);
+    let tree = kruskal(pts, metric, rng);
     Ok(points.to_input_edges(tree.into_iter()))
 }

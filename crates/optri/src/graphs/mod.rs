@@ -14,8 +14,9 @@ mod relative_neighborhood_graph;
 pub use convex_hull::{convex_hull, convex_hull_edges};
 pub use delaunay::{delaunay, delaunay_edges};
 pub use gabriel_graph::gabriel_graph;
-pub(crate) use metric_graphs::rng_under;
-pub use metric_graphs::{minimum_spanning_tree_under, relative_neighborhood_graph_under};
+pub(crate) use metric_graphs::{
+    minimum_spanning_tree_under, relative_neighborhood_graph_under, rng_under,
+};
 pub use minimum_spanning_tree::minimum_spanning_tree;
 pub(crate) use relative_neighborhood_graph::perturbed_rng_from_delaunay;
 pub use relative_neighborhood_graph::relative_neighborhood_graph;

@@ -9,8 +9,9 @@
 //! crossed by a cocircular edge `rs` has an angle `prq` or `psq` of at least
 //! 90°; either point lies in the lune.
 //!
-//! Testing only the Delaunay neighbours of `p` and `q` is *wrong* (see
-//! `shared/notes/literature.md` §a). Instead we use the greedy-routing lemma:
+//! Testing only the Delaunay neighbours of `p` and `q` is *wrong*: a point
+//! of the lune need not be adjacent to either. Instead we use the
+//! greedy-routing lemma:
 //! in a Delaunay triangulation every vertex `r ≠ p` has a neighbour strictly
 //! closer to `p`. So from any point `x` of the *closed* disc `D(p, |pq|)`
 //! there is a Delaunay path to `p` along vertices strictly closer to `p` than
@@ -19,14 +20,14 @@
 //! every candidate of the lune ([`empty_lune_edges`]).
 //!
 //! The same search serves two tie rules ([`LuneBoundary`]): the open lune
-//! ([`OpenLune`], the RNG of the input `S`) and the lune of the kernel's
-//! symbolic perturbation `S′` ([`SymbolicLune`], `rng(S′)`, which the
+//! (the RNG of the input `S`) and the lune of the kernel's Euclidean length
+//! order on its symbolic perturbation `S′` (`rng(S′)`, which the
 //! minmax-length triangulation cuts its regions along). A perturbed lune
 //! differs from the open one only in points on its boundary circles, all of
 //! which lie in the closed disc, so the search covers them too.
 
 use crate::error::Result;
-use crate::kernel::{compare_lengths, in_lune_symbolic, Point};
+use crate::kernel::{compare_lengths, EuclideanOrder, LengthOrder, Point};
 use crate::parallel::prelude::*;
 use crate::spatial::morton_order;
 use crate::structures::DelaunayGraph;
@@ -38,42 +39,16 @@ use std::cmp::Ordering::{Equal, Greater, Less};
 /// overhead not to dominate.
 const VERTICES_PER_TASK: usize = 4096;
 
-/// How a lune search treats points on the lune's boundary: at distance
+/// How a lune search decides the points on the lune's boundary: at distance
 /// exactly `|pq|` from `p` or `q` (and no farther from the other one).
-trait LuneBoundary {
-    /// Can a boundary point be inside at all? If not, the search skips it
-    /// after one comparison.
-    const MAY_CONTAIN: bool;
-
-    /// Is the boundary point `x` inside the lune of `pq`? Indices into the
-    /// searched points.
-    fn contains(points: &[Point], p: u32, q: u32, x: u32) -> bool;
-}
-
-/// The open lune: no boundary point is inside (the RNG of the input).
-struct OpenLune;
-
-impl LuneBoundary for OpenLune {
-    const MAY_CONTAIN: bool = false;
-
-    #[inline]
-    fn contains(_: &[Point], _: u32, _: u32, _: u32) -> bool {
-        false
-    }
-}
-
-/// The lune of the kernel's symbolic perturbation `S′`
-/// ([`crate::kernel::in_lune_symbolic`]): the perturbation decides each
-/// boundary point. Its results depend on the numbering of the points.
-struct SymbolicLune;
-
-impl LuneBoundary for SymbolicLune {
-    const MAY_CONTAIN: bool = true;
-
-    #[inline]
-    fn contains(points: &[Point], p: u32, q: u32, x: u32) -> bool {
-        in_lune_symbolic(points, p, q, x)
-    }
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum LuneBoundary {
+    /// Outside: the open lune, the RNG of the input `S`.
+    Open,
+    /// As the kernel's Euclidean length order on `S′` decides
+    /// ([`LengthOrder::in_lune`]): `rng(S′)`, which depends on the numbering
+    /// of the points.
+    Perturbed,
 }
 
 /// A vertex adjacency in CSR form (the layout of [`DelaunayGraph`]): the
@@ -100,14 +75,15 @@ impl<'a> Adjacency<'a> {
     }
 }
 
-/// Does some point lie in the lune of the Delaunay edge `pq`, with `B`
-/// deciding its boundary? `inside` is scratch space (the expanded vertices).
+/// Does some point lie in the lune of the Delaunay edge `pq`, with
+/// `boundary` deciding its boundary? `inside` is scratch space (the expanded
+/// vertices).
 #[inline]
-fn lune_is_occupied<B: LuneBoundary>(
+fn lune_is_occupied(
     points: &[Point],
     graph: Adjacency,
-    p: u32,
-    q: u32,
+    boundary: LuneBoundary,
+    [p, q]: [u32; 2],
     inside: &mut Vec<u32>,
 ) -> bool {
     let (pp, pq) = (points[p as usize], points[q as usize]);
@@ -128,13 +104,14 @@ fn lune_is_occupied<B: LuneBoundary>(
             }
             let px = points[x as usize];
             let to_p = compare_lengths(px, pp, pp, pq);
-            if to_p == Greater || (to_p == Equal && !B::MAY_CONTAIN) || inside.contains(&x) {
+            let open = boundary == LuneBoundary::Open;
+            if to_p == Greater || (to_p == Equal && open) || inside.contains(&x) {
                 continue; // outside the (open) disc around p, or already expanded
             }
             let occupied = match (to_p, compare_lengths(px, pq, pp, pq)) {
                 (Less, Less) => true,
                 (_, Greater) => false,
-                _ => B::contains(points, p, q, x),
+                _ => !open && EuclideanOrder.in_lune(points, p, q, x),
             };
             if occupied {
                 return true;
@@ -149,14 +126,15 @@ fn lune_is_occupied<B: LuneBoundary>(
     false
 }
 
-/// The Delaunay edges whose lune (with `B` deciding its boundary) is empty,
+/// The Delaunay edges whose lune (with `boundary` deciding its boundary) is empty,
 /// each as `keep(p, q, slot)`, where `slot` is the adjacency slot of `q` in
 /// `p`'s list. Each edge is searched once, from its endpoint of lower degree;
 /// vertices are visited in index order, so that the searches of consecutive
 /// vertices share cache lines when the numbering is spatially coherent.
-fn empty_lune_edges<B: LuneBoundary, T: Send>(
+fn empty_lune_edges<T: Send>(
     points: &[Point],
     graph: Adjacency,
+    boundary: LuneBoundary,
     keep: impl Fn(u32, u32, u32) -> T + Sync + Send,
 ) -> Vec<T> {
     (0..points.len() as u32)
@@ -169,7 +147,7 @@ fn empty_lune_edges<B: LuneBoundary, T: Send>(
                 let first = graph.offsets[p as usize];
                 for (i, &q) in graph.neighbors(p).iter().enumerate() {
                     if (dp, p) < (graph.neighbors(q).len(), q)
-                        && !lune_is_occupied::<B>(points, graph, p, q, &mut inside)
+                        && !lune_is_occupied(points, graph, boundary, [p, q], &mut inside)
                     {
                         kept.push(keep(p, q, first + i as u32));
                     }
@@ -208,7 +186,7 @@ pub(crate) fn rng_from_delaunay(points: &[Point], g: &DelaunayGraph) -> Vec<[u32
         offsets: &offsets,
         targets: &targets,
     };
-    empty_lune_edges::<OpenLune, _>(&local_points, graph, |p, q, _| {
+    empty_lune_edges(&local_points, graph, LuneBoundary::Open, |p, q, _| {
         [original[p as usize], original[q as usize]]
     })
 }
@@ -224,7 +202,7 @@ pub(crate) fn perturbed_rng_from_delaunay<T: Send>(
     g: &DelaunayGraph,
     keep: impl Fn(u32, u32, u32) -> T + Sync + Send,
 ) -> Vec<T> {
-    empty_lune_edges::<SymbolicLune, _>(points, Adjacency::of(g), keep)
+    empty_lune_edges(points, Adjacency::of(g), LuneBoundary::Perturbed, keep)
 }
 
 /// The relative neighbourhood graph: edges as sorted `[min, max]` input-index pairs.
@@ -240,7 +218,7 @@ pub fn relative_neighborhood_graph(points: &PointSet) -> Result<Vec<[u32; 2]>> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::kernel::in_lune;
+    use crate::kernel::{in_lune, in_lune_symbolic};
     use rand::{rngs::StdRng, Rng, SeedableRng};
 
     /// Seed of the degenerate grids below.

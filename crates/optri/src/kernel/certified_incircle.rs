@@ -19,16 +19,13 @@
 //!    determinants are about `u·P`: stage 1 never decides them and the
 //!    `robust` crate's adaptive stages (which zero several kilobytes of
 //!    buffers per call) did every in-circle test of the convex Delaunay
-//!    triangulation in the greedy triangulation of issue 15. Stage 2 decides
+//!    triangulation in the greedy triangulation of such points. Stage 2 decides
 //!    all but near-exact ties.
 //!
 //! Undecided cases (exact zeros, inexact translations) go to `robust`.
 
 use super::expansion::{two_diff, two_product, two_sum};
-use super::Point;
-
-/// Unit roundoff of `f64` (2⁻⁵³).
-const U: f64 = f64::EPSILON * 0.5;
+use super::{Point, UNIT_ROUNDOFF as U};
 
 /// Shewchuk's `iccerrboundA`: the plain evaluation's error is below this
 /// times the permanent.

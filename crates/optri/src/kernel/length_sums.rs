@@ -29,19 +29,15 @@
 //!    bounds the precision needed, but is never needed to *decide*: stage 2
 //!    proves equality exactly.
 //!
-//! The literature brief (`../shared/notes/literature.md` §c) records a bug in
-//! a published solver's exact fallback that only the fallback path could
-//! show; every stage here is reachable on its own from the tests
+//! A bug in an exact fallback shows only on the fallback path, so every
+//! stage here is reachable on its own from the tests
 //! ([`compare_length_sums_exactly`] skips stage 1).
 
 use num_bigint::{BigInt, BigUint, Sign};
 use num_traits::{Signed, Zero};
 use std::cmp::Ordering;
 
-use super::Point;
-
-/// Unit roundoff of `f64` (2⁻⁵³).
-const U: f64 = f64::EPSILON * 0.5;
+use super::{Point, UNIT_ROUNDOFF as U};
 
 /// A certified enclosure `[lo, hi]` of a sum of Euclidean lengths.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -382,7 +378,7 @@ mod tests {
 
     #[test]
     fn many_terms_with_mixed_classes() {
-        // 8 and more terms (the literature's bug was in the ≥ 8-term path):
+        // 8 and more terms (a separate path of the exact stage):
         // Σ_{k=1..9} √(2k²) = 45√2 = √4050 and one term off by one part in
         // 10^15 on the other side.
         let a: Vec<_> = (1..=9).map(|k| s(k as f64, k as f64)).collect();

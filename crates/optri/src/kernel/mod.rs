@@ -1,6 +1,6 @@
 //! The exact geometry kernel: predicates, the symbolic tie-break, lunes,
-//! certified squared-length keys and reporting metrics. Layer 0: it imports
-//! nothing else of the crate.
+//! certified squared-length keys, the length orders and reporting metrics.
+//! Layer 0: it imports nothing else of the crate.
 //!
 //! Every combinatorial decision in optri (orientation, in-circle, which of two
 //! lengths, areas or angles is larger, lune membership, segment crossings) is
@@ -42,6 +42,7 @@
 
 mod certified_incircle;
 pub(crate) mod expansion;
+mod length_order;
 mod length_sums;
 mod lune;
 pub mod metrics;
@@ -53,14 +54,21 @@ mod symbolic;
 /// A point in the plane, `[x, y]`.
 pub type Point = [f64; 2];
 
+/// The unit roundoff of `f64`, `u = 2⁻⁵³`: a rounded operation's result is
+/// `(1 + δ)` times the exact one with `|δ| ≤ u` (no underflow or overflow).
+/// Every float filter's error bound is a multiple of it.
+pub(crate) const UNIT_ROUNDOFF: f64 = f64::EPSILON * 0.5;
+
 /// Largest accepted absolute coordinate value, 2²⁰¹.
 pub const MAX_COORDINATE: f64 = 3.2138760885179806e60; // 2^201
 /// Smallest accepted non-zero absolute coordinate value, 2⁻¹⁴².
 pub const MIN_COORDINATE: f64 = 1.793662034335766e-43; // 2^-142
 
+pub(crate) use length_order::{EuclideanOrder, LengthOrder};
 pub use length_sums::{compare_length_sums, compare_length_sums_exactly, LengthInterval};
 pub use lune::{in_half_lune, in_half_lune_symbolic, in_lune, in_lune_symbolic};
 pub use norm::{side_of_direction, Metric, MetricProblem, MAX_LP_EXPONENT};
+pub(crate) use predicates::shorter_than;
 pub use predicates::{
     angle_at_least_30_degrees, angle_below_diamond, certainly_outside_diamonds, compare_angles,
     compare_areas, compare_corner_angles, compare_doubled_area, compare_lengths, cross_sign,
@@ -68,6 +76,7 @@ pub use predicates::{
     segments_intersect, DiamondPosition, DiamondTriangles,
 };
 pub use squared_length::SquaredLength;
+pub(crate) use squared_length::{compare_rounded_keys, in_one_key_run, rounded_squared_length};
 pub use symbolic::{
     compare_equal_lengths_symbolic, compare_lengths_symbolic, height_sign, orient_symbolic,
     segment_order,

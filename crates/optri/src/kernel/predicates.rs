@@ -7,11 +7,9 @@
 
 use super::certified_incircle::certified_incircle_sign;
 use super::expansion::{sign_of_sum, two_diff, two_product, two_sum, Expansion};
-use super::Point;
+use super::squared_length::{compare_rounded_keys, rounded_squared_length};
+use super::{Point, UNIT_ROUNDOFF as U};
 use std::cmp::Ordering;
-
-/// Unit roundoff of `f64` (2⁻⁵³).
-const U: f64 = f64::EPSILON * 0.5;
 
 #[inline]
 fn coord(p: Point) -> robust::Coord<f64> {
@@ -52,20 +50,21 @@ pub fn incircle_sign(a: Point, b: Point, c: Point, d: Point) -> i32 {
 /// Never computes a rounded length: a filtered `f64` evaluation decides
 /// clear cases, and an exact expansion of `(a-b)² - (c-d)²` decides the rest.
 pub fn compare_lengths(a: Point, b: Point, c: Point, d: Point) -> Ordering {
-    let (dx1, dy1, dx2, dy2) = (a[0] - b[0], a[1] - b[1], c[0] - d[0], c[1] - d[1]);
-    let l1 = dx1 * dx1 + dy1 * dy1;
-    let l2 = dx2 * dx2 + dy2 * dy2;
-    let diff = l1 - l2;
-    // Each squared length carries relative error below 4u (one rounded
-    // difference squared, one product, one sum); the subtraction adds u.
-    let bound = 8.0 * U * (l1 + l2);
-    if diff > bound {
-        return Ordering::Greater;
-    }
-    if -diff > bound {
-        return Ordering::Less;
-    }
-    exact_length_difference_sign(a, b, c, d).cmp(&0)
+    // Rounded squared lengths are rounded keys (the squared-length module's
+    // docs derive the filter).
+    compare_rounded_keys(rounded_squared_length(a, b), rounded_squared_length(c, d))
+        .unwrap_or_else(|| exact_length_difference_sign(a, b, c, d).cmp(&0))
+}
+
+/// Exact `|pq| < t` for a length `t ≥ 0` (a threshold): [`compare_lengths`]
+/// of `pq` with the segment from the origin to `(t, 0)`, inlined for the
+/// loops that test many pairs against one threshold.
+#[inline]
+pub fn shorter_than(p: Point, q: Point, t: f64) -> bool {
+    let (o, e) = ([0.0, 0.0], [t, 0.0]);
+    compare_rounded_keys(rounded_squared_length(p, q), rounded_squared_length(o, e))
+        .unwrap_or_else(|| exact_length_difference_sign(p, q, o, e).cmp(&0))
+        == Ordering::Less
 }
 
 /// `|pq|²` when `f64` arithmetic computes it exactly, else `None`: both

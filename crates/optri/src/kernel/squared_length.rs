@@ -1,25 +1,94 @@
-//! A certified double-double squared length: `|pq|²` as an unevaluated sum
-//! `hi + lo` with a proven error bound, so that two nearly equal squared
-//! lengths are ordered without expansion arithmetic.
+//! Squared-length keys: the rounded `f64` key that orders almost every pair
+//! of segments, and a certified double-double key for the near-ties it
+//! leaves. Every float filter of a Euclidean length comparison in the crate
+//! is one of these two, with the error bounds derived here once.
 //!
-//! The error-free transformations are those of T. J. Dekker, *A
+//! # Rounded keys
+//! A *rounded key* is a non-negative `f64` `x` computed from an exact
+//! non-negative quantity `X`, a sum of non-negative terms, such that each
+//! term picks up at most four factors `(1 + δ)` with `|δ| ≤ u = 2⁻⁵³`
+//! ([`UNIT_ROUNDOFF`](super::UNIT_ROUNDOFF)): no underflow or overflow.
+//! Then `|x − X| ≤ γ·X` with `γ = (1 + u)⁴ − 1 < 4.0001u`. The rounded
+//! squared length `fl(fl(fl(px − qx)²) + fl(fl(py − qy)²))`
+//! ([`rounded_squared_length`]) is one (each square: the difference's factor
+//! twice and the product's; then the sum's); so are `fl(t·t)` for a length
+//! `t` and `|fl(a − b)|` for a coordinate difference (one factor).
+//! The kernel's coordinate range ([`crate::kernel`]) keeps them clear of
+//! underflow and overflow: differences are multiples of 2⁻¹⁹⁴ and at most
+//! 2²⁰², so squares lie in `[2⁻³⁸⁸, 2⁴⁰⁵]`.
+//!
+//! **Deciding a comparison** ([`compare_rounded_keys`]). If `X ≤ Y` then
+//! `x − y ≤ X − Y + γ(X + Y) ≤ γ(X + Y) ≤ γ/(1 − γ)·(x + y)`; the computed
+//! `fl(x − y)` is at most `(1 + u)` times that, below `4.001u·(x + y)`,
+//! while the computed bound `fl(8u·fl(x + y))` is at least
+//! `8u(1 − u)(x + y)` (`8u` is a power of two: that product is exact). So
+//! `fl(x − y)` above the bound proves `X > Y`, symmetrically for `X < Y`,
+//! and an exact tie `X = Y` is never decided.
+//!
+//! **Sorting by keys** ([`in_one_key_run`]). Sort by rounded keys, ascending,
+//! and let `x ≤ y` be the keys of two quantities in the wrong exact order or
+//! exactly tied (`X ≥ Y`). As above, `y − x ≤ γ/(1 − γ)·(x + y) < 8.001u·y`,
+//! and every key `z` between them differs from its neighbours by less than
+//! that, which is below `8.002u·z` since `z ≥ x > (1 − 8.001u)·y`. Consecutive
+//! keys `z ≤ z′` with `fl(z′ − z) > fl(16u·z′)` are therefore in the exact
+//! order, strictly: the sorted keys split into runs at such steps, and
+//! re-sorting each run of two or more by the exact comparison gives the
+//! exact order.
+//!
+//! # Double-double keys
+//! [`SquaredLength`]: the error-free transformations of T. J. Dekker, *A
 //! floating-point technique for extending the available precision*, Numer.
 //! Math. 18 (1971) (TwoSum, TwoProduct, here by a fused multiply-add), as in
-//! Shewchuk 1997, §2 ([`super::expansion`]). A rounded `f64` key is within
-//! about `4u` (`u = 2⁻⁵³`) of the exact squared length, which cannot order
-//! the chords of one offset of a regular polygon sampled with cos/sin: they
-//! are equal up to rounding, and every such comparison needed the exact
-//! expansion (issue 15). The double-double key is within about `12u²`, so it
-//! decides every pair except those within ~`10⁻³⁰` relative of each other,
-//! in practice exact ties (mirror-image chords), which only the symbolic
-//! tie-break can order anyway.
+//! J. R. Shewchuk, *Adaptive precision floating-point arithmetic and fast
+//! robust geometric predicates*, 1997, §2 ([`super::expansion`]). A rounded
+//! key cannot order the chords of one offset of a regular polygon sampled
+//! with cos/sin: they are equal up to rounding, and every such comparison
+//! would need the exact expansion. The double-double key is within about
+//! `12u²`, so it decides every pair except those within ~`10⁻³⁰` relative of
+//! each other, in practice exact ties (mirror-image chords), which only the
+//! symbolic tie-break can order anyway.
 
 use super::expansion::{two_diff, two_product, two_sum};
-use super::Point;
+use super::{Point, UNIT_ROUNDOFF as U};
 use std::cmp::Ordering;
 
-/// Unit roundoff of `f64` (2⁻⁵³).
-const U: f64 = f64::EPSILON * 0.5;
+/// The rounded squared length of `pq`, `fl(fl(dx)² + fl(dy)²)`: a rounded
+/// key (module docs), equal to `SquaredLength::of_segment(p, q).hi`.
+#[inline]
+pub fn rounded_squared_length(p: Point, q: Point) -> f64 {
+    let (dx, dy) = (p[0] - q[0], p[1] - q[1]);
+    dx * dx + dy * dy
+}
+
+/// The exact order of the two quantities behind the rounded keys `x` and
+/// `y` when the keys decide it, `None` when they are too close (always for
+/// an exact tie); never `Some(Equal)`. See the module docs, "Deciding a
+/// comparison".
+#[inline]
+pub fn compare_rounded_keys(x: f64, y: f64) -> Option<Ordering> {
+    let difference = x - y;
+    let bound = 8.0 * U * (x + y);
+    if difference > bound {
+        Some(Ordering::Greater)
+    } else if -difference > bound {
+        Some(Ordering::Less)
+    } else {
+        None
+    }
+}
+
+/// Relative step between consecutive sorted rounded keys at or below which
+/// they may be out of exact order (module docs, "Sorting by keys").
+const KEY_RUN_STEP: f64 = 16.0 * U;
+
+/// For consecutive rounded keys `lower ≤ upper` of a sort: may their exact
+/// quantities be tied or in the other order, so that they belong to one run
+/// that the exact comparison re-sorts? `false` proves the strict exact order
+/// (module docs, "Sorting by keys").
+#[inline]
+pub fn in_one_key_run(lower: f64, upper: f64) -> bool {
+    upper - lower <= KEY_RUN_STEP * upper
+}
 
 /// Two keys whose certified difference is at most this times the sum of
 /// their `hi` parts are left undecided: the proof in
@@ -237,5 +306,104 @@ mod tests {
         let (p, q) = ([0.1, -0.7], [3.3, 1e-3]);
         let (dx, dy) = (p[0] - q[0], p[1] - q[1]);
         assert_eq!(SquaredLength::of_segment(p, q).hi, dx * dx + dy * dy);
+        assert_eq!(rounded_squared_length(p, q), dx * dx + dy * dy);
+    }
+
+    /// `|pq|²` in exact rational arithmetic (independent of the kernel's
+    /// expansions).
+    fn exact_squared(p: Point, q: Point) -> num_rational::BigRational {
+        let r = |v: f64| num_rational::BigRational::from_float(v).expect("finite");
+        let (dx, dy) = (r(p[0]) - r(q[0]), r(p[1]) - r(q[1]));
+        &dx * &dx + &dy * &dy
+    }
+
+    /// Segment pairs of every kind used above: sampled-circle chords
+    /// (equal up to rounding), mirror images (exact ties), rotated copies
+    /// nudged by an ulp, far pairs.
+    fn mixed_pairs(rng: &mut StdRng) -> Vec<([Point; 2], [Point; 2])> {
+        let mut pairs = sampled_chords(200, 1000.0, [0.0, 0.0]);
+        pairs.extend(sampled_chords(120, 2f64.powi(-100), [2f64.powi(-99), 0.0]));
+        for _ in 0..3000 {
+            let (a, s) = random_point(rng);
+            let b: Point = [coordinate(rng, s), coordinate(rng, s)];
+            let c: Point = [a[1] + 4.0 * s, -a[0]];
+            let mut d: Point = [b[1] + 4.0 * s, -b[0]];
+            match rng.gen_range(0..4) {
+                0 => {}
+                1 => d[0] = d[0].next_up(),
+                2 => d = [-b[0], b[1]],
+                _ => d = [d[0] * 1.5, d[1] * 3.0],
+            }
+            let c = if d == [-b[0], b[1]] { [-a[0], a[1]] } else { c };
+            pairs.push(([a, b], [c, d]));
+        }
+        pairs
+    }
+
+    /// The rounded-key filter never decides a pair against the exact
+    /// rational order, never decides a tie, and decides most far pairs;
+    /// `shorter_than` is the exact `|pq| < t`.
+    #[test]
+    fn rounded_keys_decide_only_what_is_certain() {
+        let mut rng = StdRng::seed_from_u64(2027);
+        let (mut decided, mut ties) = (0, 0);
+        let pairs = mixed_pairs(&mut rng);
+        for &([a, b], [c, d]) in &pairs {
+            let exact = exact_squared(a, b).cmp(&exact_squared(c, d));
+            ties += usize::from(exact == Ordering::Equal);
+            let keys = (rounded_squared_length(a, b), rounded_squared_length(c, d));
+            if let Some(o) = compare_rounded_keys(keys.0, keys.1) {
+                assert_eq!(o, exact, "{a:?}{b:?} vs {c:?}{d:?}");
+                decided += 1;
+            }
+            // `|ab| < |cd|` through a threshold equal to `|cd|` when that
+            // length is a double (the square root of the exact square).
+            let t = keys.1.sqrt();
+            let threshold = num_rational::BigRational::from_float(t).unwrap();
+            let want = exact_squared(a, b) < &threshold * &threshold;
+            assert_eq!(super::super::shorter_than(a, b, t), want);
+        }
+        assert!(ties > 500, "{ties}");
+        assert!(decided > pairs.len() / 3, "{decided} of {}", pairs.len());
+    }
+
+    /// Sorting by rounded keys, then re-sorting each run that
+    /// `in_one_key_run` joins by the exact order, gives the exact order, on
+    /// lengths equal up to rounding; and the runs stay as short as the
+    /// near-ties allow.
+    #[test]
+    fn key_runs_contain_every_disorder() {
+        let mut rng = StdRng::seed_from_u64(2028);
+        let mut segments: Vec<[Point; 2]> = Vec::new();
+        for &(s, t) in &mixed_pairs(&mut rng) {
+            segments.push(s);
+            segments.push(t);
+        }
+        segments.sort_by(|s, t| {
+            rounded_squared_length(s[0], s[1]).total_cmp(&rounded_squared_length(t[0], t[1]))
+        });
+        let mut start = 0;
+        let mut longest = 0;
+        for end in 1..=segments.len() {
+            let joined = end < segments.len() && {
+                let [s, t] = [segments[end - 1], segments[end]];
+                in_one_key_run(
+                    rounded_squared_length(s[0], s[1]),
+                    rounded_squared_length(t[0], t[1]),
+                )
+            };
+            if !joined {
+                segments[start..end]
+                    .sort_by(|s, t| exact_squared(s[0], s[1]).cmp(&exact_squared(t[0], t[1])));
+                longest = longest.max(end - start);
+                start = end;
+            }
+        }
+        for w in segments.windows(2) {
+            assert!(exact_squared(w[0][0], w[0][1]) <= exact_squared(w[1][0], w[1][1]));
+        }
+        // The longest runs are the chords of one offset of a sampled circle
+        // (400 segments equal up to rounding), not the whole list.
+        assert!(longest <= 400, "{longest} of {}", segments.len());
     }
 }

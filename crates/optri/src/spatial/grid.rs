@@ -9,6 +9,7 @@
 //! segments together with the earlier active edges, and (rebuilt only when
 //! the rounds outgrow its cells) for the points.
 
+use super::cell_geometry::{dense_budget, CellGeometry};
 use crate::kernel::Point;
 use crate::parallel::prelude::*;
 
@@ -17,46 +18,6 @@ type Key = (u64, u64);
 
 /// An empty cell in the dense table.
 const EMPTY: u32 = u32::MAX;
-
-/// Smallest cell, as a fraction of the bounding box's longer side: 2⁻⁶².
-/// Derived bound: a cell's row and column are kept apart (no product key),
-/// each below 2⁶² + 1, which `f64 → u64` conversion represents exactly. Why
-/// so fine: a cluster's cells must follow its spacing however small it is
-/// against the box (issue 15: 10⁵ points in a 10⁻⁹ box inside a unit box put
-/// the whole cluster in a few cells of the former 2⁻³⁰ grid, and the greedy
-/// rounds went quadratic). Doubles of magnitude `m` are `m·2⁻⁵²` apart, so
-/// cells of 2⁻⁶² of the box separate every cluster whose coordinates are at
-/// least 2⁻¹⁰ of the box's side in magnitude; only clusters closer still to
-/// the origin (or below 2⁻⁶² of the box) share cells, which costs time, never
-/// correctness.
-pub(super) const MIN_CELL_FRACTION: f64 = 1.0 / (1u64 << 62) as f64;
-
-/// The lookup slack: `SLACK_PER_CELL` (10⁻⁹) per unit of cell size plus
-/// `SLACK_RELATIVE` (2·10⁻¹⁵) per unit of coordinate magnitude and of pad.
-/// Derived need, chosen margins: the column of a coordinate is monotone in
-/// its rounded argument, so the slack only has to cover rounding. An item
-/// position the callers compute (a midpoint) is within 2⁻⁵³ of the exact one
-/// relative to the magnitude `m` of the box's coordinates; the query's padded
-/// box `x ± (pad + slack)` takes two roundings, each within 2⁻⁵³ relative to
-/// `m + pad + slack`. That is below `4·2⁻⁵³·(m + pad)` ≈ 4.4·10⁻¹⁶·(m + pad)
-/// (the slack's own share being negligible), a quarter of `SLACK_RELATIVE`.
-/// The pad lengths the callers compute (half-lengths, thresholds) are within a
-/// few units of 2⁻⁵³ of a pad of about one cell; `SLACK_PER_CELL` is about
-/// 10⁶ times that. (The relative part was 10⁻¹³ of the magnitude alone; at
-/// 10¹⁵ that slack spanned 800 units in the last place, so a cluster a few
-/// hundred units wide there was one lookup for each of its points.)
-pub(super) const SLACK_PER_CELL: f64 = 1e-9;
-pub(super) const SLACK_RELATIVE: f64 = 2e-15;
-
-/// A table over all cells (dense mode) is used while there are at most
-/// `DENSE_CELLS_PER_ITEM` cells per item plus `DENSE_EXTRA_CELLS`; beyond
-/// that only the occupied cells are kept and found by binary search. A
-/// tuning choice (no measurement of it is recorded, commit 752d473): the
-/// table costs time and memory per cell, so it must stay within a constant
-/// factor of the items, and 65 536 cells (a 256 KiB table) are cheap at any
-/// size.
-const DENSE_CELLS_PER_ITEM: u64 = 4;
-const DENSE_EXTRA_CELLS: u64 = 65536;
 
 /// Cells per parallel task when a dense grid sorts its cells. A tuning
 /// choice: a task's cells hold a few items each, so it does enough work to
@@ -70,15 +31,9 @@ const CELLS_PER_TASK: usize = 1 << 16;
 /// choose which exact tests to run; they are padded by a slack that covers
 /// their rounding.
 pub(crate) struct SparseGrid<T> {
-    x0: f64,
-    y0: f64,
-    inv: f64,
-    /// Columns; a cell's key is `(row, column)`, and its index in the dense
-    /// table `row * columns + column`.
-    columns: u64,
-    rows: u64,
-    slack_x: f64,
-    slack_y: f64,
+    /// A cell's key is `(row, column)`, and its index in the dense table
+    /// `row * columns + column`.
+    geometry: CellGeometry,
     /// The occupied cells' keys, ascending, and their items' ranges.
     keys: Vec<Key>,
     start: Vec<u32>,
@@ -94,9 +49,8 @@ pub(crate) struct SparseGrid<T> {
 
 impl<T: Copy + Send + Sync> SparseGrid<T> {
     /// Buckets items `0..len` (`item(i)`, at `point(i)`) by cell, cells of
-    /// about `cell` (never below [`MIN_CELL_FRACTION`] of the box); within a
-    /// cell, by
-    /// ascending `order`.
+    /// about `cell` (never below the geometry's smallest cell, a fraction of
+    /// the box); within a cell, by ascending `order`.
     pub(crate) fn new(
         bbox: [f64; 4],
         cell: f64,
@@ -105,30 +59,18 @@ impl<T: Copy + Send + Sync> SparseGrid<T> {
         item: impl Fn(usize) -> T + Sync,
         order: impl Fn(usize) -> u32 + Sync,
     ) -> Self {
-        let [x0, y0, x1, y1] = bbox;
-        let (w, h) = (x1 - x0, y1 - y0);
-        let cell = fmax(cell, fmax(w, h) * MIN_CELL_FRACTION);
-        let cell = if cell > 0.0 { cell } else { 1.0 };
-        let columns = (w / cell) as u64 + 1;
-        let rows = (h / cell) as u64 + 1;
-        let mag_x = fmax(x0.abs(), x1.abs());
-        let mag_y = fmax(y0.abs(), y1.abs());
+        let geometry = CellGeometry::new(bbox, cell);
+        let (columns, rows) = (geometry.columns(), geometry.rows());
         let mut grid = Self {
-            x0,
-            y0,
-            inv: 1.0 / cell,
-            columns,
-            rows,
-            slack_x: SLACK_PER_CELL * cell + SLACK_RELATIVE * mag_x,
-            slack_y: SLACK_PER_CELL * cell + SLACK_RELATIVE * mag_y,
+            geometry,
             keys: Vec::new(),
             start: Vec::new(),
             table: Vec::new(),
             row_start: Vec::new(),
             items: Vec::new(),
         };
-        let cells = columns.saturating_mul(rows);
-        if cells <= DENSE_CELLS_PER_ITEM * len as u64 + DENSE_EXTRA_CELLS {
+        let cells = geometry.cells();
+        if cells <= dense_budget(len) {
             // Counting sort over all cells, then each cell by `order`.
             let cells = cells as usize;
             let keys: Vec<u64> = (0..len)
@@ -228,7 +170,7 @@ impl<T: Copy + Send + Sync> SparseGrid<T> {
                 }
             }
             grid.start.push(keyed.len() as u32);
-            if rows <= DENSE_CELLS_PER_ITEM * len as u64 + DENSE_EXTRA_CELLS {
+            if rows <= dense_budget(len) {
                 // A binary search over all keys per row of a lookup was a
                 // fifth of greedy's time on Gaussian clusters (the active
                 // edges' index); a row's keys are few and close together.
@@ -245,11 +187,11 @@ impl<T: Copy + Send + Sync> SparseGrid<T> {
         grid
     }
 
-    /// The inverse of the cell size actually used (after the clamp to
-    /// [`MIN_CELL_FRACTION`]).
+    /// The inverse of the cell size actually used (after the clamp to the
+    /// geometry's smallest cell).
     #[inline]
     pub(crate) fn inverse_cell(&self) -> f64 {
-        self.inv
+        self.geometry.inverse_cell()
     }
 
     /// The number of occupied cells.
@@ -259,37 +201,8 @@ impl<T: Copy + Send + Sync> SparseGrid<T> {
     }
 
     #[inline]
-    fn column(&self, x: f64) -> u64 {
-        // Truncation is the floor for c ≥ 1 (and avoids a libm call).
-        let c = (x - self.x0) * self.inv;
-        if c >= 1.0 {
-            (c as u64).min(self.columns - 1)
-        } else {
-            0
-        }
-    }
-
-    #[inline]
-    fn row(&self, y: f64) -> u64 {
-        let c = (y - self.y0) * self.inv;
-        if c >= 1.0 {
-            (c as u64).min(self.rows - 1)
-        } else {
-            0
-        }
-    }
-
-    #[inline]
     fn key(&self, p: Point) -> Key {
-        (self.row(p[1]), self.column(p[0]))
-    }
-
-    /// The half-widths of the box a lookup with `pad` scans around its
-    /// query: `pad` plus the slack (see [`SLACK_RELATIVE`]).
-    #[inline]
-    fn padding(&self, pad: f64) -> (f64, f64) {
-        let pad = pad + SLACK_RELATIVE * pad;
-        (pad + self.slack_x, pad + self.slack_y)
+        (self.geometry.row(p[1]), self.geometry.column(p[0]))
     }
 
     /// The items of the `k`-th occupied cell.
@@ -326,7 +239,8 @@ impl<T: Copy + Send + Sync> SparseGrid<T> {
                 k += 1;
             }
         } else {
-            let (lo, hi) = (r * self.columns + c0, r * self.columns + c1);
+            let columns = self.geometry.columns();
+            let (lo, hi) = (r * columns + c0, r * columns + c1);
             for &k in &self.table[lo as usize..=hi as usize] {
                 if k != EMPTY && f(k as usize) {
                     return true;
@@ -347,15 +261,13 @@ impl<T: Copy + Send + Sync> SparseGrid<T> {
         pad: f64,
         mut f: impl FnMut(&[T]) -> bool,
     ) -> bool {
-        let (px, py) = self.padding(pad);
+        let g = &self.geometry;
+        let (px, py) = g.padding(pad);
         let (c0, c1) = (
-            self.column(fmin(a[0], b[0]) - px),
-            self.column(fmax(a[0], b[0]) + px),
+            g.column(fmin(a[0], b[0]) - px),
+            g.column(fmax(a[0], b[0]) + px),
         );
-        let (r0, r1) = (
-            self.row(fmin(a[1], b[1]) - py),
-            self.row(fmax(a[1], b[1]) + py),
-        );
+        let (r0, r1) = (g.row(fmin(a[1], b[1]) - py), g.row(fmax(a[1], b[1]) + py));
         if self.table.is_empty() && r1 - r0 >= self.keys.len() as u64 {
             // More rows than occupied cells (a long query on a fine sparse
             // grid): scan the occupied cells in the key range instead.
@@ -374,8 +286,9 @@ impl<T: Copy + Send + Sync> SparseGrid<T> {
     /// occupied neighbours.
     pub(crate) fn for_block(&self, k: usize, mut f: impl FnMut(&[T])) {
         let (row, column) = self.keys[k];
-        let (c0, c1) = (column.saturating_sub(1), (column + 1).min(self.columns - 1));
-        for r in row.saturating_sub(1)..=(row + 1).min(self.rows - 1) {
+        let (columns, rows) = (self.geometry.columns(), self.geometry.rows());
+        let (c0, c1) = (column.saturating_sub(1), (column + 1).min(columns - 1));
+        for r in row.saturating_sub(1)..=(row + 1).min(rows - 1) {
             self.any_cell_in_row(r, c0, c1, |m| {
                 f(self.cell(m));
                 false
@@ -386,15 +299,8 @@ impl<T: Copy + Send + Sync> SparseGrid<T> {
     /// The number of items in the occupied cell `k` and its eight
     /// neighbours.
     pub(crate) fn block_len(&self, k: usize) -> usize {
-        let (row, column) = self.keys[k];
-        let (c0, c1) = (column.saturating_sub(1), (column + 1).min(self.columns - 1));
         let mut len = 0;
-        for r in row.saturating_sub(1)..=(row + 1).min(self.rows - 1) {
-            self.any_cell_in_row(r, c0, c1, |m| {
-                len += self.cell(m).len();
-                false
-            });
-        }
+        self.for_block(k, |items| len += items.len());
         len
     }
 }
@@ -425,13 +331,8 @@ mod tests {
 
     use rand::{rngs::StdRng, Rng, SeedableRng};
 
-    #[test]
-    fn the_smallest_cell_fraction_is_two_to_the_minus_sixty_two() {
-        assert_eq!(MIN_CELL_FRACTION, 2f64.powi(-62));
-    }
-
-    /// A cluster 10⁻⁹ wide in a unit box (below the former 2⁻³⁰ cells)
-    /// spreads over many cells of 10⁻¹¹.
+    /// A cluster 10⁻⁹ wide in a unit box (below cells of 2⁻³⁰) spreads over
+    /// many cells of 10⁻¹¹.
     #[test]
     fn cells_follow_a_cluster_far_below_the_box() {
         let mut points: Vec<Point> = vec![[0.0, 0.0], [1.0, 1.0]];

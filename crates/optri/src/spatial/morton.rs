@@ -7,7 +7,7 @@
 //! their own bounding box (a quadtree-like refinement, as in the Z-order of
 //! Samet, *Foundations of Multidimensional and Metric Data Structures*, 2006,
 //! §1.6, with the levels chosen by the data). Why: a cluster far below the
-//! box's resolution (issue 15: 10⁶ points in a 10⁻⁹ box inside a unit box)
+//! box's resolution (10⁶ points in a 10⁻⁹ box inside a unit box)
 //! otherwise keeps the input's order, and the greedy rounds over it read
 //! memory at random (16.8 s of round 0 at 10⁶ points against 1.0 s at 10⁵).
 

@@ -11,25 +11,15 @@
 //! each point; through [`super::SparseGrid`] each cell of about one point
 //! cost a table entry, a key, a range and the gather of the point.
 
-use super::grid::{fmax, fmin, MIN_CELL_FRACTION, SLACK_PER_CELL, SLACK_RELATIVE};
+use super::cell_geometry::CellGeometry;
+use super::grid::{fmax, fmin};
 use crate::kernel::Point;
 use crate::parallel::prelude::*;
-
-/// At most this many cells per point (plus [`EXTRA_CELLS`]); a coarser cell
-/// is used beyond. A chosen bound: the offset table costs 4 bytes a cell.
-const CELLS_PER_POINT: f64 = 4.0;
-const EXTRA_CELLS: f64 = 65536.0;
 
 /// Points in the cells of a grid over their bounding box, in row-major cell
 /// order, each cell's points by ascending index.
 pub(crate) struct PointCells {
-    x0: f64,
-    y0: f64,
-    inv: f64,
-    columns: u64,
-    rows: u64,
-    slack_x: f64,
-    slack_y: f64,
+    geometry: CellGeometry,
     /// The slots of cell `row · columns + column` are
     /// `start[cell]..start[cell + 1]`.
     start: Vec<u32>,
@@ -49,36 +39,15 @@ pub(crate) struct CellBlock {
 
 impl PointCells {
     /// Buckets `pts` (finite) into cells of about `cell` over `bbox` (their
-    /// bounding box), coarsened to at most about four cells per point.
+    /// bounding box), coarsened to at most about four cells per point (the
+    /// geometry's dense budget).
     pub(crate) fn new(pts: &[Point], bbox: [f64; 4], cell: f64) -> Self {
-        let [x0, y0, x1, y1] = bbox;
-        let (w, h) = (x1 - x0, y1 - y0);
-        let cell = fmax(cell, fmax(w, h) * MIN_CELL_FRACTION);
-        // Zero (one point, or all equal) or NaN: any positive cell will do.
-        let mut cell = if cell > 0.0 { cell } else { 1.0 };
-        let budget = CELLS_PER_POINT * pts.len() as f64 + EXTRA_CELLS;
-        while (w / cell + 1.0) * (h / cell + 1.0) > budget {
-            cell *= 1.5;
-        }
-        let columns = (w / cell) as u64 + 1;
-        let rows = (h / cell) as u64 + 1;
-        let (mag_x, mag_y) = (fmax(x0.abs(), x1.abs()), fmax(y0.abs(), y1.abs()));
-        let mut grid = PointCells {
-            x0,
-            y0,
-            inv: 1.0 / cell,
-            columns,
-            rows,
-            slack_x: SLACK_PER_CELL * cell + SLACK_RELATIVE * mag_x,
-            slack_y: SLACK_PER_CELL * cell + SLACK_RELATIVE * mag_y,
-            start: Vec::new(),
-            coords: Vec::new(),
-            ids: Vec::new(),
-        };
-        let cells = (columns * rows) as usize;
+        let geometry = CellGeometry::within_dense_budget(bbox, cell, pts.len());
+        let columns = geometry.columns();
+        let cells = geometry.cells() as usize;
         let keys: Vec<u32> = pts
             .par_iter()
-            .map(|&p| (grid.row(p[1]) * columns + grid.column(p[0])) as u32)
+            .map(|&p| (geometry.row(p[1]) * columns + geometry.column(p[0])) as u32)
             .collect();
         let mut start = vec![0u32; cells + 1];
         for &k in &keys {
@@ -93,15 +62,23 @@ impl PointCells {
             ids[fill[k as usize] as usize] = i as u32;
             fill[k as usize] += 1;
         }
-        grid.coords = ids.par_iter().map(|&i| pts[i as usize]).collect();
-        grid.start = start;
-        grid.ids = ids;
-        grid
+        PointCells {
+            geometry,
+            coords: ids.par_iter().map(|&i| pts[i as usize]).collect(),
+            start,
+            ids,
+        }
+    }
+
+    /// The cells' geometry.
+    #[inline]
+    pub(crate) fn geometry(&self) -> &CellGeometry {
+        &self.geometry
     }
 
     /// The side of a cell.
     pub(crate) fn cell_size(&self) -> f64 {
-        1.0 / self.inv
+        self.geometry.cell_size()
     }
 
     /// The point indices in cell order.
@@ -109,25 +86,10 @@ impl PointCells {
         &self.ids
     }
 
-    #[inline]
-    fn column(&self, x: f64) -> u64 {
-        // Truncation is the floor for c ≥ 1 (and avoids a libm call).
-        let c = (x - self.x0) * self.inv;
-        if c >= 1.0 {
-            (c as u64).min(self.columns - 1)
-        } else {
-            0
-        }
-    }
-
-    #[inline]
-    fn row(&self, y: f64) -> u64 {
-        let c = (y - self.y0) * self.inv;
-        if c >= 1.0 {
-            (c as u64).min(self.rows - 1)
-        } else {
-            0
-        }
+    /// The points' coordinates in cell order (`coords()[i]` is the point
+    /// `ids()[i]`).
+    pub(crate) fn coords(&self) -> &[Point] {
+        &self.coords
     }
 
     /// The cells meeting the box `[lo, hi]` widened by `pad` and the slack
@@ -135,25 +97,59 @@ impl PointCells {
     /// [`super::SparseGrid`]); the block grows with the box.
     #[inline]
     pub(crate) fn block(&self, lo: Point, hi: Point, pad: f64) -> CellBlock {
-        let pad = pad + SLACK_RELATIVE * pad;
-        let (px, py) = (pad + self.slack_x, pad + self.slack_y);
+        let g = &self.geometry;
+        let (px, py) = g.padding(pad);
         CellBlock {
-            c0: self.column(lo[0] - px),
-            c1: self.column(hi[0] + px),
-            r0: self.row(lo[1] - py),
-            r1: self.row(hi[1] + py),
+            c0: g.column(lo[0] - px),
+            c1: g.column(hi[0] + px),
+            r0: g.row(lo[1] - py),
+            r1: g.row(hi[1] + py),
         }
     }
 
     /// The points of row `r`, columns `c0..=c1`.
     #[inline]
     fn run(&self, r: u64, c0: u64, c1: u64) -> (&[Point], &[u32]) {
-        let base = r * self.columns;
+        let base = r * self.geometry.columns();
         let (a, b) = (
             self.start[(base + c0) as usize] as usize,
             self.start[(base + c1 + 1) as usize] as usize,
         );
         (&self.coords[a..b], &self.ids[a..b])
+    }
+
+    /// The points (coordinates, indices) of the cell `[column, row]`.
+    #[inline]
+    pub(crate) fn cell(&self, [column, row]: [u64; 2]) -> (&[Point], &[u32]) {
+        self.run(row, column, column)
+    }
+
+    /// Calls `f` on every cell `[column, row]` of the grid, empty ones
+    /// included, at Chebyshev distance exactly `k` (in cells) from `centre`:
+    /// the rings `k = 0, 1, …` visit each cell once.
+    pub(crate) fn for_each_cell_in_ring(
+        &self,
+        centre: [u64; 2],
+        k: u64,
+        mut f: impl FnMut([u64; 2]),
+    ) {
+        let (columns, rows) = (self.geometry.columns(), self.geometry.rows());
+        let [c, r] = centre;
+        let (c0, c1) = (c.saturating_sub(k), (c + k).min(columns - 1));
+        for row in r.saturating_sub(k)..=(r + k).min(rows - 1) {
+            if row + k == r || row == r + k {
+                for column in c0..=c1 {
+                    f([column, row]);
+                }
+            } else {
+                if k <= c {
+                    f([c - k, row]);
+                }
+                if c + k < columns {
+                    f([c + k, row]);
+                }
+            }
+        }
     }
 
     /// Calls `f` on the points (coordinates, indices) of the cells meeting
@@ -285,5 +281,43 @@ mod tests {
             }
         }
         assert!(checked > 50_000, "{checked}");
+    }
+
+    /// The rings around any cell visit every cell of the grid once, in
+    /// order of Chebyshev distance, and `cell` lists each point in its own.
+    #[test]
+    fn rings_visit_every_cell_once() {
+        let mut rng = StdRng::seed_from_u64(42);
+        let pts: Vec<Point> = (0..500)
+            .map(|_| [rng.gen_range(0.0..3.0), rng.gen_range(0.0..1.0)])
+            .collect();
+        let grid = PointCells::new(&pts, crate::spatial::bounding_box(&pts), 0.1);
+        let g = grid.geometry();
+        let (columns, rows) = (g.columns(), g.rows());
+        assert!(columns > 20 && rows > 5, "{columns} × {rows}");
+        for centre in [
+            [0, 0],
+            [columns / 2, rows / 3],
+            [columns - 1, rows - 1],
+            [3, 0],
+        ] {
+            let mut seen = vec![0u32; (columns * rows) as usize];
+            let mut points = 0;
+            for k in 0..columns.max(rows) {
+                grid.for_each_cell_in_ring(centre, k, |[c, r]| {
+                    let distance = c.abs_diff(centre[0]).max(r.abs_diff(centre[1]));
+                    assert_eq!(distance, k);
+                    seen[(r * columns + c) as usize] += 1;
+                    let (coords, ids) = grid.cell([c, r]);
+                    for (p, &i) in coords.iter().zip(ids) {
+                        assert_eq!(g.cell_of(*p), [c, r]);
+                        assert_eq!(*p, pts[i as usize]);
+                    }
+                    points += ids.len();
+                });
+            }
+            assert!(seen.iter().all(|&v| v == 1), "{centre:?}");
+            assert_eq!(points, pts.len());
+        }
     }
 }

@@ -80,7 +80,7 @@
 //! `D`-degree of the cut vertex; length comparisons: O(log n) per heap entry,
 //! and entries are created O(1) per split plus one per new `D`-edge. The
 //! adjacency lists are sorted vectors (insertion O(degree)). On every input
-//! measured (BENCHMARKS.md, issue 15) this is near-linear; the worst case
+//! measured (BENCHMARKS.md) this is near-linear; the worst case
 //! stays within the expected O(n²) of Thm 4.2, since the `D`-degrees of the cut
 //! vertices sum to O(n²). Space is O(n) plus the heap.
 
@@ -259,7 +259,7 @@ impl<'a> Splitting<'a> {
     /// decide unless the squared lengths agree to about 10⁻³⁰ relative
     /// ([`SquaredLength::certainly_compare`]). A rounded `f64` key could not
     /// decide the chords of one offset of a regular polygon sampled with
-    /// cos/sin, equal up to rounding (issue 15); with these keys only exact
+    /// cos/sin, equal up to rounding; with these keys only exact
     /// ties such as mirror-image chords reach the exact comparison and the
     /// symbolic tie-break.
     #[inline]

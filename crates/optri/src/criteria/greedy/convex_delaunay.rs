@@ -1,5 +1,7 @@
 //! Delaunay triangulation of a convex polygon in expected O(k) time:
-//! Chew's randomised algorithm (literature.md §e). The polygon may have
+//! Chew's randomised algorithm (L. P. Chew, *Building Voronoi diagrams for
+//! convex polygons in linear expected time*, Dartmouth TR PCS-TR90-147,
+//! 1990). The polygon may have
 //! straight-angle vertices (points in weakly convex position: all on the hull
 //! boundary, some on the interior of hull edges); its Delaunay triangulation
 //! is then the Delaunay triangulation of its vertex set, which has no flat

@@ -35,7 +35,6 @@ mod semicircular;
 use super::{CriterionEntry, CriterionInfo, Diagnostics, Optimality, Options, Solved};
 use crate::error::Result;
 use crate::kernel::{orient_sign, Point};
-use crate::parallel::prelude::*;
 use crate::spatial::convex_hull_cycle;
 use crate::structures::{PlanarGraph, PointSet, Triangulation};
 use crate::timing::{Phase, Stopwatch};
@@ -217,7 +216,7 @@ pub fn greedy_naive_edges(points: &PointSet) -> Vec<[u32; 2]> {
             segments.push([a, b]);
         }
     }
-    sort_segments(pts, &mut segments);
+    crate::spatial::sort_by_length(pts, crate::kernel::EuclideanOrder, &mut segments);
     let p = |i: u32| pts[i as usize];
     let mut added: Vec<[u32; 2]> = Vec::new();
     for [a, b] in segments {
@@ -236,124 +235,6 @@ pub fn greedy_naive_edges(points: &PointSet) -> Vec<[u32; 2]> {
     }
     normalized(added)
 }
-
-/// Sorts segments by the global order of [`crate::kernel::segment_order`].
-///
-/// A rounded squared length orders almost everything; runs whose rounded
-/// keys are within a relative [`KEY_RUN_GAP`] of their neighbours are
-/// re-sorted with the exact symbolic comparator. Rounded keys carry a
-/// relative error below 4·2⁻⁵³, so two segments in the wrong rounded order
-/// always have keys that close, and so does every key between them: they
-/// land in one run.
-#[cfg(any(test, feature = "internals"))]
-pub(crate) fn sort_segments(points: &[Point], segments: &mut Vec<[u32; 2]>) {
-    let mut keyed = keyed_by_length(points, segments, |_, s| s);
-    let order = crate::kernel::segment_order(points);
-    sort_keyed_runs(&mut keyed, |s| s, |x, y| order(x, y));
-    segments.clear();
-    segments.extend(keyed.into_iter().map(|(_, s)| s));
-}
-
-/// Two rounded squared lengths closer than this relative gap may be in the
-/// wrong order and are compared exactly. Derived need, chosen value: a
-/// rounded key is within 4·2⁻⁵³ of the exact squared length (coordinate
-/// differences never underflow or overflow: the coordinate range of
-/// [`crate::kernel`]), so two keys in the wrong order differ by less than
-/// 8·2⁻⁵³ ≈ 9·10⁻¹⁶ relative; 10⁻¹² is about a thousand times that. Larger
-/// gaps only make exact runs longer.
-pub(crate) const KEY_RUN_GAP: f64 = 1e-12;
-
-/// The rounded squared length of `pq`, the key of [`sort_keyed_runs`].
-#[inline]
-pub(crate) fn rounded_squared_length(p: Point, q: Point) -> f64 {
-    let (dx, dy) = (p[0] - q[0], p[1] - q[1]);
-    dx * dx + dy * dy
-}
-
-/// `(rounded squared length, item(i, segment))` for every segment, in order:
-/// the input of [`sort_keyed_runs`].
-pub(crate) fn keyed_by_length<T: Send>(
-    points: &[Point],
-    segments: &[[u32; 2]],
-    item: impl Fn(usize, [u32; 2]) -> T + Sync + Send,
-) -> Vec<(f64, T)> {
-    segments
-        .par_iter()
-        .enumerate()
-        .map(|(i, &[a, b])| {
-            let key = rounded_squared_length(points[a as usize], points[b as usize]);
-            (key, item(i, [a, b]))
-        })
-        .collect()
-}
-
-/// Sorts `(rounded squared length, item)` pairs into the exact order
-/// `exact`: by the rounded key first, then runs of keys within a relative
-/// [`KEY_RUN_GAP`] of their neighbours by `exact` (see `sort_segments`
-/// for why that is enough), which compares what `gather` takes from each
-/// item of the run.
-///
-/// Why the gathering and the parallel runs: on integer coordinates (a file
-/// of six-decimal points, scaled) equal squared lengths are common, most
-/// keys sit in runs, and the exact comparisons are most of the sort's work.
-/// A run's items lie anywhere in the input, so `gather` reads each one's
-/// data once (one scattered read per item, not two per comparison) into a
-/// buffer that the comparisons then share.
-pub(crate) fn sort_keyed_runs<T: Send + Copy, U: Send>(
-    keyed: &mut [(f64, T)],
-    gather: impl Fn(T) -> U + Sync,
-    exact: impl Fn(&U, &U) -> std::cmp::Ordering + Sync,
-) {
-    keyed.par_sort_unstable_by(|x, y| x.0.total_cmp(&y.0));
-    sort_runs(
-        keyed,
-        |x, y| y.0 - x.0 <= KEY_RUN_GAP * y.0,
-        |buffer: &mut Vec<(f64, T, U)>, run| {
-            buffer.clear();
-            buffer.extend(run.iter().map(|&(key, item)| (key, item, gather(item))));
-            buffer.sort_unstable_by(|x, y| exact(&x.2, &y.2));
-            for (slot, &(key, item, _)) in run.iter_mut().zip(&*buffer) {
-                *slot = (key, item);
-            }
-        },
-    );
-}
-
-/// Calls `sort` on every run of two or more consecutive items of `items`
-/// that `same_run` joins (each item with the next), in parallel,
-/// [`RUNS_PER_TASK`] runs a task, each task with its own scratch `S`: the
-/// second step of a sort by a coarse key, which leaves the order within
-/// a run of equal coarse keys to `sort`.
-pub(crate) fn sort_runs<T: Send, S: Default>(
-    items: &mut [T],
-    same_run: impl Fn(&T, &T) -> bool,
-    sort: impl Fn(&mut S, &mut [T]) + Sync,
-) {
-    let mut runs: Vec<&mut [T]> = Vec::new();
-    let mut rest = items;
-    while !rest.is_empty() {
-        let mut end = 1;
-        while end < rest.len() && same_run(&rest[end - 1], &rest[end]) {
-            end += 1;
-        }
-        let (run, tail) = rest.split_at_mut(end);
-        if end > 1 {
-            runs.push(run);
-        }
-        rest = tail;
-    }
-    runs.par_chunks_mut(RUNS_PER_TASK).for_each(|chunk| {
-        let mut scratch = S::default();
-        for run in chunk.iter_mut() {
-            sort(&mut scratch, run);
-        }
-    });
-}
-
-/// Runs per parallel task in [`sort_runs`]. A tuning choice: most runs
-/// hold a few segments, so a task takes many; the result does not depend
-/// on it.
-const RUNS_PER_TASK: usize = 1024;
 
 /// Edges as sorted `[min, max]` pairs, sorted.
 #[cfg(any(test, feature = "internals"))]

@@ -14,8 +14,10 @@
 //! non-ear diagonals cannot exist at `v_j`, and the heap uses the same
 //! symbolic order as every other algorithm.
 
-use super::{rounded_squared_length, KEY_RUN_GAP};
-use crate::kernel::{compare_lengths, compare_lengths_symbolic, dot_sign, Point};
+use crate::kernel::{
+    compare_lengths, compare_lengths_symbolic, compare_rounded_keys, dot_sign,
+    rounded_squared_length, Point,
+};
 use std::cmp::Ordering;
 use std::collections::BinaryHeap;
 
@@ -61,16 +63,10 @@ impl PartialOrd for Ear<'_> {
 impl Ord for Ear<'_> {
     /// Reversed, so the max-heap pops the shortest diagonal.
     fn cmp(&self, other: &Self) -> Ordering {
-        // Rounded keys carry relative error < 4·2⁻⁵³: far apart keys decide
-        // (see `KEY_RUN_GAP`).
-        let (a, b) = (self.key, other.key);
-        let by_key = if a < b * (1.0 - KEY_RUN_GAP) {
-            Ordering::Less
-        } else if b < a * (1.0 - KEY_RUN_GAP) {
-            Ordering::Greater
-        } else {
+        // The rounded keys decide clear cases (the kernel's filter).
+        let by_key = compare_rounded_keys(self.key, other.key).unwrap_or_else(|| {
             compare_lengths_symbolic(self.points, self.diagonal, other.diagonal)
-        };
+        });
         by_key.reverse().then(other.apex.cmp(&self.apex))
     }
 }

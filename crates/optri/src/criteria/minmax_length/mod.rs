@@ -138,7 +138,6 @@
 //! | `regions.rs` | the regions of `ch(S) ∪ rng(S′)` read off the Delaunay triangles |
 //! | `certificate.rs` | the Length Lemma and apex lower-bound certificates |
 //! | `rng_polygon/` | the O(k²) rng-polygon algorithm (§5.1–§6), one file per part |
-//! | `length_order.rs` | the length order it compares by: Euclidean, or a metric (§7) |
 //! | `under_metric.rs` | the driver under a non-Euclidean metric (§7) |
 //! | `polygon.rs` | a region's exact geometry and the cubic program |
 //! | `fallback.rs` | the cubic safety net |
@@ -148,7 +147,6 @@
 mod certificate;
 mod counters;
 mod fallback;
-mod length_order;
 pub(crate) mod polygon;
 pub(crate) mod regions;
 mod repair;
@@ -158,7 +156,7 @@ mod under_metric;
 use super::{CriterionEntry, CriterionInfo, Diagnostics, Optimality, Options, Solved};
 use crate::error::Result;
 use crate::graphs::perturbed_rng_from_delaunay;
-use crate::kernel::{compare_lengths, Point};
+use crate::kernel::{compare_lengths, EuclideanOrder, Point};
 use crate::parallel::prelude::*;
 use crate::spatial::morton_order;
 use crate::structures::{DelaunayGraph, PointSet, Triangulation};
@@ -166,7 +164,6 @@ use crate::timing::{timed, Phase};
 use certificate::{length_lemma_bound, longest_side, small_region};
 use counters::Counters;
 use fallback::{cubic_fallback, Fallback};
-use length_order::EuclideanOrder;
 use polygon::Region;
 use regions::Regions;
 use repair::repair_flat_triangles;

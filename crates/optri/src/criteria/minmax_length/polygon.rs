@@ -69,16 +69,7 @@ impl ChordLengths {
     /// (same error bound as [`compare_lengths`]).
     #[inline]
     pub fn filtered(l1: f64, l2: f64, exact: impl FnOnce() -> Ordering) -> Ordering {
-        const U: f64 = f64::EPSILON * 0.5;
-        let diff = l1 - l2;
-        let tolerance = 8.0 * U * (l1 + l2);
-        if diff > tolerance {
-            Ordering::Greater
-        } else if -diff > tolerance {
-            Ordering::Less
-        } else {
-            exact()
-        }
+        crate::kernel::compare_rounded_keys(l1, l2).unwrap_or_else(exact)
     }
 }
 

@@ -21,7 +21,8 @@
 //!      plus the O(k) visibility tests otherwise;
 //!    * *complete* (every edge in `rng_N(S′)`): the Euclidean product's
 //!      §5.3/§6 algorithm ([`super::rng_polygon`]) under the metric's order
-//!      ([`MetricOrder`]: the simulated norm's comparisons, lunes and
+//!      (the kernel's `LengthOrder` of a [`Metric`]: the simulated norm's
+//!      comparisons, lunes and
 //!      half-lunes, and in §5.1 the remark's choice again, its visibility
 //!      checked in O(k) where the region is not convex). O(k²). Its
 //!      visibility walk needs a triangulation of the region: a fan if the
@@ -68,7 +69,7 @@
 //! triangulation and one pass over its edges.
 
 use super::counters::{Count, Counters};
-use super::length_order::{LengthOrder, MetricOrder};
+use super::fallback::cubic_program;
 use super::polygon::Region;
 use super::repair::repair_flat_triangles;
 use super::rng_polygon::{Mesh, RngPolygon};
@@ -176,7 +177,7 @@ pub(crate) fn run_under(
     let mesh = delaunay.as_ref().map(|(g, flags)| Mesh::new(g, flags));
     let counters = Counters::default();
     let (by_5_1, by_5_3, outside_mesh) = (Count::default(), Count::default(), Count::default());
-    let order = MetricOrder(metric);
+    let order = metric;
     let triangles: Vec<[u32; 3]> = timed(phases, "polygons", || {
         faces
             .par_iter()
@@ -207,7 +208,9 @@ pub(crate) fn run_under(
                                     }
                                     // A dangling edge walked twice repeats a
                                     // corner: no simple polygon to clip.
-                                    None if !distinct_corners(face) => return order.cubic(&region),
+                                    None if !distinct_corners(face) => {
+                                        return cubic_program(order, &region)
+                                    }
                                     None => {
                                         outside_mesh.add(1);
                                         RngPolygon::ear_clipped(pts, face, &counters, order)
@@ -223,7 +226,7 @@ pub(crate) fn run_under(
                         _ => {}
                     }
                 }
-                order.cubic(&region)
+                cubic_program(order, &region)
             })
             .collect()
     });

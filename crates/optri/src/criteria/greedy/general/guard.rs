@@ -88,7 +88,7 @@ const QUIET_ROUND_RATIO: usize = 4;
 /// shorter than the last threshold and pairs no edge can join. Where those
 /// dominate (a regular polygon's chords come in lengths a spacing apart)
 /// a fixed floor made thousands of rounds with no candidate at relative
-/// steps of 10⁻³ (issue 15: 2400 rounds for two concentric circles of 1000
+/// steps of 10⁻³ (2400 rounds for two concentric circles of 1000
 /// points each). Growing the floor geometrically makes such a stretch
 /// O(log) rounds, and a busy round brings the guard back. Only the running
 /// time depends on it.
@@ -113,7 +113,7 @@ const MAX_GROWTH: f64 = 256.0;
 /// round (up to [`MAX_GROWTH`]), else [`THRESHOLD_GROWTH`].
 ///
 /// Why: points at several length scales (a tiny cluster inside a cluster
-/// inside a box, issue 15) leave most vertices open and without candidates
+/// inside a box) leave most vertices open and without candidates
 /// while the threshold doubles from one scale to the next, a round over all
 /// of them for each doubling (2¹⁹ between scales 10⁻¹⁴ and 10⁻⁸: 19 rounds).
 /// Squaring the growth crosses such a gap in O(log log) rounds; the guard

@@ -8,10 +8,8 @@
 //! goes to the cubic program on `S′`, and a hull chain failing its
 //! boundary-order check sends the whole remainder there.
 
-use super::{Inconsistent, RngPolygon};
-use crate::criteria::minmax_length::fallback::{cubic_fallback, Fallback};
-use crate::criteria::minmax_length::length_order::LengthOrder;
-use crate::criteria::minmax_length::polygon::Region;
+use super::{cubic_fallback, Fallback, Inconsistent, Region, RngPolygon};
+use crate::kernel::LengthOrder;
 use std::cmp::Ordering;
 
 impl<L: LengthOrder> RngPolygon<'_, L> {

@@ -4,7 +4,7 @@
 
 use super::bits::{in_range, set, BitRows, WORD};
 use super::{map_range, Inconsistent, RngPolygon, NONE, PARALLEL_CORNERS};
-use crate::criteria::minmax_length::length_order::LengthOrder;
+use crate::kernel::LengthOrder;
 use std::cmp::Ordering;
 use std::sync::atomic::{AtomicBool, Ordering::Relaxed};
 
@@ -226,10 +226,8 @@ impl<L: LengthOrder> RngPolygon<'_, L> {
 
 #[cfg(test)]
 mod tests {
-    use super::super::{Mesh, RngPolygon};
+    use super::super::{regions, rng_perturbed, rng_perturbed_flags, Counters, Mesh, RngPolygon};
     use super::*;
-    use crate::criteria::minmax_length::counters::Counters;
-    use crate::criteria::minmax_length::{regions, rng_perturbed, rng_perturbed_flags};
     use crate::kernel::{in_half_lune_symbolic, Point};
     use crate::spatial::convex_hull_cycle;
     use crate::structures::DelaunayGraph;
@@ -240,7 +238,8 @@ mod tests {
 
     impl RngPolygon<'_> {
         /// The reference for the bit tables: §6 steps 1–3 with sorted offset
-        /// lists per corner and binary searches (the layout before issue 15).
+        /// lists per corner and binary searches (the layout before the bit
+        /// tables).
         fn shortest_expandable_2_edge_by_lists(&self) -> Result<[usize; 6], Inconsistent> {
             let k = self.k;
             let cached: Vec<Vec<usize>> = map_range(k >= PARALLEL_CORNERS, k, |a| self.visible(a));

@@ -2,7 +2,7 @@
 //! them (1-Edge Lemma).
 
 use super::{Inconsistent, RngPolygon};
-use crate::criteria::minmax_length::length_order::LengthOrder;
+use crate::kernel::LengthOrder;
 
 impl<L: LengthOrder> RngPolygon<'_, L> {
     /// §5.1 on the chain of positions `s, s+1, …, s+m` whose closing edge

@@ -2,7 +2,7 @@
 //! boundaries marked: what an [`super::RngPolygon`] reads its triangles and
 //! its hull edges from.
 
-use crate::criteria::minmax_length::regions::is_boundary;
+use super::is_boundary;
 use crate::structures::{DelaunayGraph, NO_TRIANGLE};
 
 /// Delaunay triangles addressed by directed edge, with the region

@@ -14,7 +14,7 @@
 //!
 //! | function | file | paper |
 //! |---|---|---|
-//! | [`LengthOrder::nearer_to_edge`] | `../length_order.rs` | §5.1 step 1: distance of a lune vertex from `pq` ([`crate::kernel::height_sign`]), or under a metric the remark's `max(|xp|, |xq|)` |
+//! | [`LengthOrder::nearer_to_edge`] | the kernel's length orders | §5.1 step 1: distance of a lune vertex from `pq` ([`crate::kernel::height_sign`]), or under a metric the remark's `max(|xp|, |xq|)` |
 //! | [`RngPolygon::triangulate`] | here | §5.1 for an incomplete rng-polygon, else §5.3 |
 //! | [`RngPolygon::incomplete`] | `incomplete.rs` | §5.1, incomplete rng-polygons (1-Edge Lemma) |
 //! | [`RngPolygon::visible_offsets`] | `visibility.rs` | diagonals at a vertex in angular order (§6 step 1) |
@@ -50,9 +50,12 @@ mod visibility;
 pub(crate) use mesh::Mesh;
 
 use super::counters::Counters;
-use super::length_order::{EuclideanOrder, LengthOrder};
+use super::fallback::{cubic_fallback, Fallback};
 use super::polygon::Region;
-use crate::kernel::Point;
+use super::regions::is_boundary;
+#[cfg(test)]
+use super::{regions, rng_perturbed, rng_perturbed_flags};
+use crate::kernel::{EuclideanOrder, LengthOrder, Point};
 use crate::parallel::prelude::*;
 use std::collections::HashMap;
 use std::fmt;
@@ -87,6 +90,15 @@ fn map_range<T: Send, R: FromIterator<T> + FromParallelIterator<T>>(
     } else {
         (0..n).map(f).collect()
     }
+}
+
+/// The triangles that tile a region, with their local adjacency (the
+/// fields of [`RngPolygon`] of the same names).
+struct Tiling {
+    corners: Vec<[u32; 3]>,
+    neighbours: Vec<[u32; 3]>,
+    positions: Vec<[u32; 3]>,
+    fan_start: Vec<(u32, u8)>,
 }
 
 /// One region of `ch(S) ∪ rng(S′)` (an rng-polygon), prepared for the §6
@@ -209,25 +221,21 @@ impl<'a, L: LengthOrder> RngPolygon<'a, L> {
         if positions.iter().flatten().any(|&p| p == NONE) {
             return Err(Inconsistent("corner without position"));
         }
-        let geo = Region {
-            points,
-            vertices: v,
-            symbolic: true,
-        };
-        Ok(Self {
-            points,
-            order,
-            convex: L::CHOICE_IS_VISIBLE || geo.is_strictly_convex(),
-            v,
-            k,
-            mesh: Some(mesh),
-            counters,
+        let tiling = Tiling {
             corners,
             neighbours,
             positions,
             fan_start,
-            geo,
-        })
+        };
+        Ok(Self::assemble(
+            points,
+            v,
+            counters,
+            order,
+            Some(mesh),
+            None,
+            tiling,
+        ))
     }
 
     /// A complete, strictly convex region (every corner a strict left turn
@@ -252,7 +260,7 @@ impl<'a, L: LengthOrder> RngPolygon<'a, L> {
             return Err(Inconsistent("fan of a region that is not strictly convex"));
         }
         let fan: Vec<[u32; 3]> = (0..k as u32 - 2).map(|t| [0, t + 1, t + 2]).collect();
-        Self::from_tiling(points, v, counters, order, fan, true)
+        Self::from_tiling(points, v, counters, order, fan, Some(true))
     }
 
     /// A complete region with distinct corners that is simple in `S′`, tiled
@@ -342,21 +350,20 @@ impl<'a, L: LengthOrder> RngPolygon<'a, L> {
             return Err(Inconsistent("last ear not a left turn"));
         }
         tiles.push([p as u32, a as u32, n as u32]);
-        let convex = L::CHOICE_IS_VISIBLE || geo.is_strictly_convex();
-        Self::from_tiling(points, v, counters, order, tiles, convex)
+        Self::from_tiling(points, v, counters, order, tiles, None)
     }
 
     /// The local adjacency of a tiling of the region given by position
     /// triples (counter-clockwise): neighbours across shared sides, and each
     /// corner's fan starting at the triangle left of its boundary edge
-    /// `a → a+1`.
+    /// `a → a+1`. `convex` as in [`Self::assemble`].
     fn from_tiling(
         points: &'a [Point],
         v: &'a [u32],
         counters: &'a Counters,
         order: L,
         positions: Vec<[u32; 3]>,
-        convex: bool,
+        convex: Option<bool>,
     ) -> Result<Self, Inconsistent> {
         let k = v.len();
         let mut side_of: HashMap<(u32, u32), (u32, u8)> =
@@ -389,26 +396,54 @@ impl<'a, L: LengthOrder> RngPolygon<'a, L> {
                     .ok_or(Inconsistent("boundary edge outside the tiling"))
             })
             .collect::<Result<_, _>>()?;
-        let corners: Vec<[u32; 3]> = positions.iter().map(|c| c.map(|a| v[a as usize])).collect();
+        let tiling = Tiling {
+            corners: positions.iter().map(|c| c.map(|a| v[a as usize])).collect(),
+            neighbours,
+            positions,
+            fan_start,
+        };
+        Ok(Self::assemble(
+            points, v, counters, order, None, convex, tiling,
+        ))
+    }
+
+    /// The region with corners `v` and its tiling; `convex` is the known
+    /// answer of the §5.1 visibility check's convexity test, or `None` to
+    /// compute it where `L` needs it ([`LengthOrder::CHOICE_IS_VISIBLE`]).
+    fn assemble(
+        points: &'a [Point],
+        v: &'a [u32],
+        counters: &'a Counters,
+        order: L,
+        mesh: Option<&'a Mesh<'a>>,
+        convex: Option<bool>,
+        tiling: Tiling,
+    ) -> Self {
         let geo = Region {
             points,
             vertices: v,
             symbolic: true,
         };
-        Ok(Self {
+        let Tiling {
+            corners,
+            neighbours,
+            positions,
+            fan_start,
+        } = tiling;
+        Self {
             points,
             order,
-            convex,
+            convex: convex.unwrap_or_else(|| L::CHOICE_IS_VISIBLE || geo.is_strictly_convex()),
             v,
-            k,
-            mesh: None,
+            k: v.len(),
+            mesh,
             counters,
             corners,
             neighbours,
             positions,
             fan_start,
             geo,
-        })
+        }
     }
 
     #[inline]
@@ -441,7 +476,6 @@ impl<'a, L: LengthOrder> RngPolygon<'a, L> {
 #[cfg(test)]
 mod consistency_tests {
     use super::*;
-    use crate::criteria::minmax_length::{regions, rng_perturbed, rng_perturbed_flags};
     use crate::spatial::convex_hull_cycle;
     use crate::structures::DelaunayGraph;
     use rand::{rngs::StdRng, Rng, SeedableRng};

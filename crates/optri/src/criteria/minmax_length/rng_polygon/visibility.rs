@@ -3,7 +3,7 @@
 
 use super::bits::set;
 use super::{RngPolygon, NONE};
-use crate::criteria::minmax_length::length_order::LengthOrder;
+use crate::kernel::LengthOrder;
 
 impl<L: LengthOrder> RngPolygon<'_, L> {
     /// Positions visible from corner `a` (diagonals and the two boundary
@@ -80,9 +80,7 @@ impl<L: LengthOrder> RngPolygon<'_, L> {
 
 #[cfg(test)]
 mod tests {
-    use super::super::{Mesh, RngPolygon};
-    use crate::criteria::minmax_length::counters::Counters;
-    use crate::criteria::minmax_length::{regions, rng_perturbed, rng_perturbed_flags};
+    use super::super::{regions, rng_perturbed, rng_perturbed_flags, Counters, Mesh, RngPolygon};
     use crate::kernel::Point;
     use crate::spatial::convex_hull_cycle;
     use crate::structures::DelaunayGraph;

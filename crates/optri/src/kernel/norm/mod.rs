@@ -59,18 +59,19 @@
 //! of any perturbed strictly convex norm. For the Euclidean metric this
 //! module defers to [`crate::kernel::compare_lengths_symbolic`] unchanged.
 
-use super::expansion::{sign_of_sum, two_diff, Expansion};
-use super::predicates::{compare_lengths, orient_sign};
-use super::symbolic::{compare_lengths_symbolic, orient_symbolic};
-use super::{check_coordinate, Point};
-use num_bigint::BigInt;
-use num_rational::BigRational;
-use num_traits::{One, Signed, Zero};
-use std::cmp::Ordering;
-use std::collections::BTreeMap;
-use std::fmt;
+mod polygon;
+mod series;
 
-const U: f64 = f64::EPSILON / 2.0;
+use super::expansion::{sign_of_sum, two_diff, Expansion};
+use super::predicates::compare_lengths;
+use super::symbolic::{compare_lengths_symbolic, orient_symbolic};
+use super::{check_coordinate, Point, UNIT_ROUNDOFF as U};
+use num_rational::BigRational;
+use num_traits::Signed;
+use polygon::PolygonNorm;
+use series::{exponent, power_series, var, Series};
+use std::cmp::Ordering;
+use std::fmt;
 
 /// Largest exponent accepted by [`Metric::lp`] (the exact tie-break expands
 /// `(v + δ)ᵖ`, O(p²) exact terms per coordinate).
@@ -130,14 +131,17 @@ impl fmt::Display for MetricProblem {
     }
 }
 
-/// A polygonal unit disk: its counter-clockwise vertices and facet functionals.
-#[derive(Clone, Debug)]
-struct PolygonNorm {
-    vertices: Vec<Point>,
-    facets: Vec<[BigRational; 2]>,
-    facets_f64: Vec<[f64; 2]>,
-    /// An upper bound on `max |aᵢ| + |bᵢ|` (for the filter).
-    weight: f64,
+fn rational(v: f64) -> BigRational {
+    BigRational::from_float(v).expect("kernel coordinates are finite")
+}
+
+fn diff(a: f64, b: f64) -> BigRational {
+    rational(a) - rational(b)
+}
+
+fn to_f64(r: &BigRational) -> f64 {
+    use num_traits::ToPrimitive;
+    r.to_f64().unwrap_or(f64::NAN)
 }
 
 #[derive(Clone, Debug)]
@@ -171,98 +175,6 @@ impl fmt::Display for Metric {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.write_str(&self.name())
     }
-}
-
-fn rational(v: f64) -> BigRational {
-    BigRational::from_float(v).expect("kernel coordinates are finite")
-}
-
-fn diff(a: f64, b: f64) -> BigRational {
-    rational(a) - rational(b)
-}
-
-impl PolygonNorm {
-    fn new(vertices: &[Point]) -> Result<Self, MetricProblem> {
-        let k = vertices.len();
-        if k < 4 || k % 2 == 1 {
-            return Err(MetricProblem::VertexCount(k));
-        }
-        for i in 0..k / 2 {
-            let (v, w) = (vertices[i], vertices[i + k / 2]);
-            if v[0] != -w[0] || v[1] != -w[1] {
-                return Err(MetricProblem::NotCentrallySymmetric(i));
-            }
-        }
-        let o = [0.0, 0.0];
-        let mut vs = vertices.to_vec();
-        if orient_sign(o, vs[0], vs[1]) < 0 {
-            vs.reverse();
-        }
-        // Strictly convex corners, the origin strictly left of every edge,
-        // and exactly one edge crossing the ray from the origin along +x
-        // (winding number one, so not a star polygon).
-        let mut crossings = 0;
-        for i in 0..k {
-            let (a, b, c) = (vs[i], vs[(i + 1) % k], vs[(i + 2) % k]);
-            if orient_sign(o, a, b) <= 0 || orient_sign(a, b, c) <= 0 {
-                return Err(MetricProblem::NotStrictlyConvex((i + 1) % k));
-            }
-            // Edge a→b (counter-clockwise about o) crosses the +x ray iff a is
-            // below or on it and b above it (half-open, counts once).
-            if a[1] <= 0.0 && b[1] > 0.0 && orient_sign(o, a, b) > 0 {
-                crossings += 1;
-            }
-        }
-        if crossings != 1 {
-            return Err(MetricProblem::NotStrictlyConvex(0));
-        }
-        let mut facets = Vec::with_capacity(k);
-        let mut facets_f64 = Vec::with_capacity(k);
-        let mut weight: f64 = 0.0;
-        for i in 0..k {
-            let (a, b) = (vs[i], vs[(i + 1) % k]);
-            let (ax, ay, bx, by) = (
-                rational(a[0]),
-                rational(a[1]),
-                rational(b[0]),
-                rational(b[1]),
-            );
-            // Outer normal (e_y, −e_x) of e = b − a; support value cross(a, b) > 0.
-            let support = &ax * &by - &ay * &bx;
-            let fa = (&by - &ay) / &support;
-            let fb = (&ax - &bx) / &support;
-            let f = [to_f64(&fa), to_f64(&fb)];
-            weight = weight.max(f[0].abs() + f[1].abs());
-            facets.push([fa, fb]);
-            facets_f64.push(f);
-        }
-        Ok(PolygonNorm {
-            vertices: vs,
-            facets,
-            facets_f64,
-            weight: weight * (1.0 + 8.0 * U),
-        })
-    }
-
-    fn value_f64(&self, dx: f64, dy: f64) -> f64 {
-        self.facets_f64
-            .iter()
-            .map(|f| f[0] * dx + f[1] * dy)
-            .fold(f64::NEG_INFINITY, f64::max)
-    }
-
-    fn value_exact(&self, dx: &BigRational, dy: &BigRational) -> BigRational {
-        self.facets
-            .iter()
-            .map(|f| &f[0] * dx + &f[1] * dy)
-            .max()
-            .expect("at least 4 facets")
-    }
-}
-
-fn to_f64(r: &BigRational) -> f64 {
-    use num_traits::ToPrimitive;
-    r.to_f64().unwrap_or(f64::NAN)
 }
 
 impl Metric {
@@ -604,138 +516,6 @@ impl Metric {
     }
 }
 
-/// The position of the perturbation variable of coordinate `c` (0 = x,
-/// 1 = y) of point `m` in the base-3 exponent: `ε^(3^pos)`.
-fn var(m: u32, c: usize) -> u64 {
-    2 * m as u64 + if c == 0 { 1 } else { 0 }
-}
-
-/// An exponent of ε, `Σ digit·3^pos`, normalised to base-3 digits and stored
-/// from the highest position down, so that the derived order is numeric.
-#[derive(Clone, Debug, PartialEq, Eq)]
-struct Exponent(Vec<(u64, u64)>);
-
-impl Ord for Exponent {
-    fn cmp(&self, other: &Self) -> Ordering {
-        for (x, y) in self.0.iter().zip(&other.0) {
-            if x.0 != y.0 {
-                return x.0.cmp(&y.0);
-            }
-            if x.1 != y.1 {
-                return x.1.cmp(&y.1);
-            }
-        }
-        self.0.len().cmp(&other.0.len())
-    }
-}
-impl PartialOrd for Exponent {
-    fn partial_cmp(&self, other: &Self) -> Option<Ordering> {
-        Some(self.cmp(other))
-    }
-}
-
-fn exponent(terms: &[(u64, u64)]) -> Exponent {
-    let mut digits: BTreeMap<u64, u64> = BTreeMap::new();
-    for &(pos, k) in terms {
-        if k > 0 {
-            *digits.entry(pos).or_insert(0) += k;
-        }
-    }
-    // Carry in base 3.
-    let mut out = Vec::new();
-    let mut carry = 0u64;
-    let mut pos = match digits.keys().next() {
-        Some(&p) => p,
-        None => return Exponent(out),
-    };
-    loop {
-        let d = digits.remove(&pos).unwrap_or(0) + carry;
-        if !d.is_multiple_of(3) {
-            out.push((pos, d % 3));
-        }
-        carry = d / 3;
-        if carry == 0 {
-            match digits.keys().next() {
-                Some(&p) => pos = p,
-                None => break,
-            }
-        } else {
-            pos += 1;
-        }
-    }
-    out.reverse();
-    Exponent(out)
-}
-
-/// A finite series `Σ coefficient · ε^exponent`.
-#[derive(Clone, Debug, Default)]
-struct Series(BTreeMap<Exponent, BigRational>);
-
-impl Series {
-    fn add(&mut self, e: Exponent, c: BigRational) {
-        if c.is_zero() {
-            return;
-        }
-        let entry = self.0.entry(e).or_insert_with(BigRational::zero);
-        *entry += c;
-    }
-    fn subtract(&mut self, other: &Series) {
-        for (e, c) in &other.0 {
-            self.add(e.clone(), -c.clone());
-        }
-    }
-    /// The smallest exponent with a non-zero coefficient, and its sign.
-    fn leading(&self) -> Option<(Exponent, Ordering)> {
-        self.0
-            .iter()
-            .find(|(_, c)| !c.is_zero())
-            .map(|(e, c)| (e.clone(), c.cmp(&BigRational::zero())))
-    }
-}
-
-fn binomial(n: u32, k: u32) -> BigInt {
-    let mut r = BigInt::one();
-    for i in 0..k {
-        r = r * BigInt::from(n - i) / BigInt::from(i + 1);
-    }
-    r
-}
-
-/// `Σ_c |v_c + δ_c|ᵖ − |v_c|ᵖ` for segment `ab` (`v = b − a`,
-/// `δ_c = ε_{b,c} − ε_{a,c}`), expanded exactly.
-fn power_series(points: &[Point], ab: [u32; 2], p: u32) -> Series {
-    let [a, b] = ab;
-    let (pa, pb) = (points[a as usize], points[b as usize]);
-    let mut s = Series::default();
-    for c in 0..2 {
-        let v = diff(pb[c], pa[c]);
-        let (tb, ta) = (var(b, c), var(a, c));
-        // (σ·(t_b − t_a))^k = σ^k Σ_j C(k,j) t_b^j (−t_a)^(k−j)
-        let mut add_power = |k: u32, sigma: i32, scale: BigRational| {
-            for j in 0..=k {
-                let sign =
-                    if (k - j) % 2 == 1 { -1 } else { 1 } * if k % 2 == 1 { sigma } else { 1 };
-                let coef = &scale * BigRational::from_integer(binomial(k, j) * BigInt::from(sign));
-                s.add(exponent(&[(tb, j as u64), (ta, (k - j) as u64)]), coef);
-            }
-        };
-        if v.is_zero() {
-            // |δ| = σδ, σ the sign of the dominant (lower-position) variable.
-            let sigma = if tb < ta { 1 } else { -1 };
-            add_power(p, sigma, BigRational::one());
-        } else {
-            let sigma = if v.is_positive() { 1 } else { -1 };
-            let m = v.abs();
-            for k in 1..=p {
-                let scale = BigRational::from_integer(binomial(p, k))
-                    * num_traits::pow(m.clone(), (p - k) as usize);
-                add_power(k, sigma, scale);
-            }
-        }
-    }
-    s
-}
-
 /// Exact sign of `d × (r − p)` for an exact direction `d`: which side of the
 /// ray from `p` along `d` the point `r` lies (`1` left, `-1` right).
 pub fn side_of_direction(d: Point, p: Point, r: Point) -> i32 {
@@ -757,15 +537,6 @@ pub fn side_of_direction(d: Point, p: Point, r: Point) -> i32 {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn exponents_carry_in_base_3() {
-        // t0³ = ε^3 equals the next variable's ε^(3^1).
-        assert_eq!(exponent(&[(0, 3)]), exponent(&[(1, 1)]));
-        assert!(exponent(&[(0, 2)]) < exponent(&[(1, 1)]));
-        assert!(exponent(&[(0, 1), (1, 1)]) > exponent(&[(1, 1)]));
-        assert!(exponent(&[(2, 1)]) > exponent(&[(0, 2), (1, 2)]));
-    }
 
     #[test]
     fn polygons_are_validated() {
