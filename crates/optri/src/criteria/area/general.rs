@@ -46,7 +46,7 @@
 //!
 //! The faces of `RNG ∪ hull` are *weakly* simple polygons (zero-width cracks,
 //! repeated vertices), not simple as L3891 says: the program indexes boundary
-//! *corners* and [`Region::is_diagonal`] decides chords between corners
+//! *corners* and [`PolygonCycle::is_diagonal`] decides chords between corners
 //! (brief §5). The cost is `O(n log n)` for `DT`, the RNG and the faces,
 //! `O(Σ k³)` time and `O(max k²)` memory for faces of `k` corners (cubic in
 //! the worst case, e.g. points in convex position, where the RNG is nearly
@@ -106,7 +106,6 @@
 // Registered as a criterion by `criteria/area` (in progress); until then only
 // the tests call it.
 
-use crate::criteria::minmax_length::polygon::Region;
 use crate::error::{Error, Result};
 use crate::graphs::rng_from_delaunay;
 use crate::kernel::{
@@ -115,7 +114,7 @@ use crate::kernel::{
 };
 use crate::polygon_program::{optimal_triangulation, Objective};
 use crate::spatial::convex_hull_cycle;
-use crate::structures::{DelaunayGraph, PlanarGraph, PointSet, NO_TRIANGLE};
+use crate::structures::{DelaunayGraph, PlanarGraph, PointSet, PolygonCycle, NO_TRIANGLE};
 use std::cmp::Ordering;
 use std::collections::VecDeque;
 
@@ -358,11 +357,7 @@ fn triangulate_faces(
     let p = |v: u32| pts[v as usize];
     let mut out = Vec::with_capacity(2 * pts.len());
     for face in faces {
-        let region = Region {
-            points: pts,
-            vertices: face,
-            symbolic: false,
-        };
+        let region = PolygonCycle::exact(pts, face);
         let convex = region.is_strictly_convex();
         let v = face.as_slice();
         let allowed = |i: usize, m: usize, j: usize| {
