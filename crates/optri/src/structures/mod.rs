@@ -5,6 +5,8 @@
 //! [`SimplePolygon`] input and the weakly simple [`PolygonCycle`] its
 //! diagonals are decided on. They import the kernel and spatial layers only.
 
+mod constrained_delaunay;
+mod csr;
 mod delaunay_graph;
 #[cfg(feature = "geo-types")]
 mod geo;
@@ -14,6 +16,8 @@ mod polygon;
 mod polygon_cycle;
 mod triangulation;
 
+pub(crate) use constrained_delaunay::ConstrainedDelaunay;
+pub(crate) use csr::Csr;
 pub(crate) use delaunay_graph::{DelaunayGraph, NO_TRIANGLE};
 pub(crate) use planar_graph::PlanarGraph;
 pub use point_set::PointSet;

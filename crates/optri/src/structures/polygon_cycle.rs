@@ -25,7 +25,8 @@ use crate::spatial::is_strictly_convex_cycle;
 ///
 /// Exact predicates on the points, or, for a [`perturbed`](Self::perturbed)
 /// cycle, on the kernel's perturbed points (no three collinear, module docs
-/// of the kernel, "Ties"); coordinates are compared exactly in both.
+/// of the kernel, "Ties", for distinct points); coordinates are compared
+/// exactly in both.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct PolygonCycle<'a> {
     points: &'a [Point],
@@ -43,15 +44,6 @@ impl<'a> PolygonCycle<'a> {
         }
     }
 
-    /// A cycle decided on the perturbed points (distinct points only).
-    pub fn perturbed(points: &'a [Point], corners: &'a [u32]) -> Self {
-        Self {
-            points,
-            corners,
-            perturbed: true,
-        }
-    }
-
     /// A cycle decided exactly, or on the perturbed points if `perturbed`.
     pub fn new(points: &'a [Point], corners: &'a [u32], perturbed: bool) -> Self {
         Self {
@@ -64,11 +56,6 @@ impl<'a> PolygonCycle<'a> {
     /// Number of corners.
     pub fn len(&self) -> usize {
         self.corners.len()
-    }
-
-    /// The point index of each corner.
-    pub fn corners(&self) -> &'a [u32] {
-        self.corners
     }
 
     #[inline]
@@ -228,7 +215,7 @@ mod tests {
         let corners = [0, 1, 2, 3, 0, 4];
         for cycle in [
             PolygonCycle::exact(&points, &corners),
-            PolygonCycle::perturbed(&points, &corners),
+            PolygonCycle::new(&points, &corners, true),
         ] {
             assert!(!cycle.is_strictly_convex());
             // The tip 4 (corner 5): every direction but back along the crack.
