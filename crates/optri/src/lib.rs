@@ -56,7 +56,6 @@ pub use criteria::area::{maxmin_area, maxmin_area_at_least, minmax_area, MaxMinA
 pub use criteria::greedy::greedy;
 pub use criteria::min_weight::min_weight;
 pub use criteria::minmax_length::minmax_length;
-pub use criteria::polygon_criteria::MAX_POLYGON_VERTICES;
 pub use criteria::{
     BoundMeasure, CertifiedBound, CriterionInfo, Diagnostics, Optimality, Options, Progress,
     Requirement,
@@ -66,6 +65,7 @@ pub use graphs::{
     convex_hull, convex_hull_edges, delaunay, delaunay_edges, gabriel_graph, minimum_spanning_tree,
     minimum_spanning_tree_under, relative_neighborhood_graph, relative_neighborhood_graph_under,
 };
+pub use polygon_program::MAX_POLYGON_VERTICES;
 pub use registry::{
     compare, compare_polygon, graph, graph_of_points, graph_of_points_with, graph_with,
     triangulate, triangulate_polygon, triangulate_polygon_with, triangulate_with, Comparison,

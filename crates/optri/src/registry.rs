@@ -63,12 +63,11 @@ impl Criterion {
 
     /// The criterion's entry point for simple polygons, if it has one.
     fn polygon_entry(self) -> Option<PolygonSolver> {
-        use criteria::polygon_criteria as polygon;
         match self {
-            Criterion::Delaunay => Some(polygon::solve_delaunay),
-            Criterion::MinmaxLength => Some(polygon::solve_minmax_length),
-            Criterion::Greedy => Some(polygon::solve_greedy),
-            Criterion::MinWeight => Some(polygon::solve_min_weight),
+            Criterion::Delaunay => Some(criteria::delaunay::solve_polygon),
+            Criterion::MinmaxLength => Some(criteria::minmax_length::polygon::solve_polygon),
+            Criterion::Greedy => Some(criteria::greedy::polygon::solve),
+            Criterion::MinWeight => Some(criteria::min_weight::solve_polygon),
             Criterion::MaxminArea => Some(criteria::area::solve_maxmin_polygon),
             Criterion::MinmaxArea => Some(criteria::area::solve_minmax_polygon),
         }

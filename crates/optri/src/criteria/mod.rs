@@ -13,15 +13,14 @@
 //! | `maxmin-area`, `minmax-area` | `area` | Vassilev 2005 |
 //!
 //! Simple polygons ([`crate::triangulate_polygon`]): every criterion has a
-//! [`PolygonSolver`]; those of `delaunay`, `minmax-length`, `greedy` and
-//! `min-weight` are in `polygon_criteria`, the area ones in `area`.
+//! [`PolygonSolver`] in its own module; the decomposable ones run the shared
+//! polygon program on the polygon ([`crate::polygon_program`]).
 
 pub(crate) mod area;
 pub(crate) mod delaunay;
 pub(crate) mod greedy;
 pub(crate) mod min_weight;
 pub(crate) mod minmax_length;
-pub(crate) mod polygon_criteria;
 
 use crate::error::Result;
 use crate::structures::{PointSet, SimplePolygon, Triangulation};

@@ -35,13 +35,13 @@ pub(crate) mod polygon;
 
 pub use decision::{maxmin_area_at_least, MaxMinAreaDecision};
 
-use super::polygon_criteria::{check_size, corner_point, polygon_program, MAX_POLYGON_VERTICES};
 use super::{
     BoundMeasure, CertifiedBound, CriterionInfo, Diagnostics, Optimality, Options, Requirement,
     Solved,
 };
 use crate::error::{Error, Result, UnsupportedReason};
 use crate::kernel::metrics::area;
+use crate::polygon_program::{check_size, corner_point, on_simple_polygon, MAX_POLYGON_VERTICES};
 use crate::spatial::{convex_hull_cycle, is_strictly_convex_cycle};
 use crate::structures::{PointSet, SimplePolygon, Triangulation};
 use crate::timing::{timed, Phase};
@@ -243,7 +243,7 @@ fn solve_polygon(
     check_size(polygon, criterion)?;
     let p = corner_point(polygon);
     let objective = BottleneckArea { point: &p, kind };
-    let triangulation = polygon_program(polygon, criterion, &objective, phases)?;
+    let triangulation = on_simple_polygon(polygon, criterion, &objective, phases)?;
     Ok(solved(
         triangulation,
         "Klincsek dynamic program on the polygon's diagonals, O(n^3), exact area comparisons",

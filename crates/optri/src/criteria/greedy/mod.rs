@@ -30,6 +30,7 @@
 mod convex;
 mod convex_delaunay;
 mod general;
+pub(crate) mod polygon;
 mod semicircular;
 
 use super::{CriterionInfo, Diagnostics, Optimality, Options, Requirement, Solved};

@@ -5,12 +5,18 @@
 //!
 //! This file holds a region's length comparisons, on the exact or the
 //! perturbed points (its corners and diagonals are a
-//! [`PolygonCycle`]), and §3's straightforward cubic dynamic program
-//! (Klincsek) used as the test reference and as the fallback.
+//! [`PolygonCycle`]), §3's straightforward cubic dynamic program
+//! (Klincsek) used as the test reference and as the fallback, and the same
+//! program on a simple polygon given as input ([`solve_polygon`]).
 
+use crate::criteria::{Diagnostics, Optimality, Options, Solved};
+use crate::error::Result;
 use crate::kernel::{compare_lengths, compare_lengths_symbolic, Point};
-use crate::polygon_program::{optimal_triangulation, LargestDiagonal};
-use crate::structures::PolygonCycle;
+use crate::polygon_program::{
+    corner_point, on_simple_polygon, optimal_triangulation, LargestDiagonal,
+};
+use crate::structures::{PolygonCycle, SimplePolygon};
+use crate::timing::Phase;
 use std::cmp::Ordering;
 
 /// A region: `vertices[i]` is the distinct-point index at position `i`, in
@@ -255,4 +261,30 @@ impl<'a> Region<'a> {
             .map(|t| t.map(|c| v[c]))
             .collect()
     }
+}
+
+/// `minmax-length` on a simple polygon ([`crate::triangulate_polygon`]):
+/// the polygon program with the longest diagonal as a bottleneck, compared
+/// exactly. The longest edge of a polygon triangulation is the longer of
+/// the longest boundary edge, which every triangulation has, and the
+/// longest diagonal; so minimising the longest diagonal minimises the
+/// longest edge.
+pub(crate) fn solve_polygon(
+    polygon: &SimplePolygon,
+    _: &Options,
+    phases: &mut Vec<Phase>,
+) -> Result<Solved> {
+    let p = corner_point(polygon);
+    let objective = LargestDiagonal::new(polygon.len(), |s: [usize; 2], t: [usize; 2]| {
+        compare_lengths(p(s[0]), p(s[1]), p(t[0]), p(t[1]))
+    });
+    let triangulation = on_simple_polygon(polygon, "minmax-length", &objective, phases)?;
+    Ok(Solved {
+        triangulation,
+        algorithm: "Klincsek dynamic program on the polygon, O(n^3), exact length comparisons"
+            .to_string(),
+        optimality: Optimality::Exact,
+        diagnostics: Diagnostics::default(),
+        bound: None,
+    })
 }
