@@ -68,19 +68,15 @@ impl<T> Csr<T> {
         &self.items
     }
 
-    /// Every key's items as its own mutable slice (to sort or fill the rows
-    /// independently, e.g. in parallel).
-    pub fn rows_mut(&mut self) -> Vec<&mut [T]> {
-        let mut rows = Vec::with_capacity(self.keys());
-        let offsets = &self.offsets;
+    /// Every key's items as its own mutable slice, key by key (to sort or
+    /// fill the rows independently; collect them to do so in parallel).
+    pub fn rows_mut(&mut self) -> impl Iterator<Item = &mut [T]> + '_ {
         let mut rest = &mut self.items[..];
-        for k in 0..offsets.len() - 1 {
-            let len = (offsets[k + 1] - offsets[k]) as usize;
-            let (head, tail) = rest.split_at_mut(len);
-            rows.push(head);
+        self.offsets.windows(2).map(move |w| {
+            let (head, tail) = std::mem::take(&mut rest).split_at_mut((w[1] - w[0]) as usize);
             rest = tail;
-        }
-        rows
+            head
+        })
     }
 
     /// Sorts each key's items.

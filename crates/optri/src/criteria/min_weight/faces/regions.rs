@@ -61,6 +61,7 @@ pub(super) fn traced_faces(pts: &[Point], sk: &Skeleton) -> Option<Vec<Vec<u32>>
     // (never expected; the general way then decides).
     let plane = around
         .rows_mut()
+        .collect::<Vec<_>>()
         .into_par_iter()
         .enumerate()
         .all(|(v, list)| {
