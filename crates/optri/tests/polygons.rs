@@ -601,50 +601,6 @@ fn area_criteria_on_general_point_sets_are_honest() {
     assert!(Criterion::MaxminArea.info().reference.contains("Vassilev"));
 }
 
-/// Timings of the polygon program on random star-shaped polygons:
-/// `cargo test --release -p optri --test polygons -- --ignored --nocapture`.
-#[test]
-#[ignore]
-fn polygon_program_timings() {
-    let mut rng = StdRng::seed_from_u64(TIMING_SEED);
-    for n in [200, 500, 1000] {
-        // A random star (few diagonals), and a circle with one dent (vertex 0
-        // pulled in to a reflex corner: almost every chord is a diagonal,
-        // the program's worst case).
-        let star: Vec<Point> = op::star_polygon(&mut rng, n, 1e6);
-        let mut dented: Vec<Point> = (0..n)
-            .map(|k| {
-                let a = k as f64 * std::f64::consts::TAU / n as f64;
-                [(1e6 * a.cos()).round(), (1e6 * a.sin()).round()]
-            })
-            .collect();
-        dented[0] = [9e5, 0.0];
-        for (shape, ring) in [("star", star), ("dented circle", dented)] {
-            let polygon = SimplePolygon::new(&ring).unwrap();
-            for c in [
-                Criterion::MinmaxArea,
-                Criterion::MinmaxLength,
-                Criterion::MinWeight,
-            ] {
-                let start = std::time::Instant::now();
-                let s = triangulate_polygon(&polygon, c).unwrap();
-                let ms = start.elapsed().as_secs_f64() * 1e3;
-                s.triangulation.validate().unwrap();
-                let phases: Vec<String> = s
-                    .phases
-                    .iter()
-                    .map(|p| format!("{} {:.0} ms", p.name, p.ms))
-                    .collect();
-                println!(
-                    "n = {n:5} {shape:14} {:14} {ms:9.0} ms ({})",
-                    c.name(),
-                    phases.join(", ")
-                );
-            }
-        }
-    }
-}
-
 /// Points in strictly convex position (Algorithm 44) against the exhaustive
 /// optimum, n ≤ 9: random lenses, rounded circles kept only when strictly
 /// convex, lattice-symmetric octagons and huge or negative coordinates.

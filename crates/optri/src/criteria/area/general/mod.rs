@@ -1,9 +1,10 @@
 //! MaxMin-area and MinMax-area triangulations of general point sets (not in
 //! convex position): the approximations of T. S. Vassilev, *Optimal area
 //! triangulation*, PhD thesis, University of Saskatchewan, 2005, Chapter 3
-//! (§3.4, Algorithms 75 and 76; Theorem 74) as repaired in the project's
-//! implementation brief (`shared/notes/area-optimal.md` §4), plus a certified
-//! bound on the optimum that proves some results optimal.
+//! (§3.4, Algorithms 75 and 76; Theorem 74), with Algorithm 76's flips made
+//! angle-safe and area-equalising by exact comparisons, an optimum over the
+//! triangulations containing `RNG ∪ hull`, and a certified bound on the
+//! optimum that proves some results optimal.
 //!
 //! No polynomial algorithm is known for either criterion on general point
 //! sets (Table 4.1 of the thesis). We compute four candidates and return the
@@ -12,7 +13,7 @@
 //! its triangle, never as a rounded area):
 //!
 //! 1. **Delaunay**: the Delaunay triangulation `DT` (spade).
-//! 2. **Algorithm 75** (thesis L4372–4445, brief §4.1): if `DT`'s smallest
+//! 2. **Algorithm 75** (thesis L4372–4445): if `DT`'s smallest
 //!    angle `α*` is at least 30° (exact: [`angle_at_least_30_degrees`]), the
 //!    optimal area *30°-triangulation*: by Theorem 74 (L4336) the relative
 //!    neighbourhood graph lies in every triangulation whose angles are all at
@@ -22,12 +23,12 @@
 //!    such a triangulation and contains `RNG ∪ hull`. If `α* < 30°` no
 //!    30°-triangulation exists (`DT` maximises the smallest angle, Property
 //!    13) and the algorithm returns `DT`.
-//! 3. **The `RNG ∪ hull` optimum** (brief §4.1, "Option"): the same face
+//! 3. **The `RNG ∪ hull` optimum**: the same face
 //!    programs without the angle filter, i.e. the optimum over all
 //!    triangulations containing `RNG ∪ hull`. Both `DT` and Algorithm 75's
 //!    result are in that set, so this candidate is never worse than either
 //!    and keeps Algorithm 75's guarantee.
-//! 4. **Algorithm 76** (L4466–4520, brief §4.2): from `DT`, flip an interior
+//! 4. **Algorithm 76** (L4466–4520): from `DT`, flip an interior
 //!    edge `xy` of a strictly convex quadrilateral `x b y a` to `ab` while
 //!    (i) `xy` is locally Delaunay (`b` strictly outside the circle `xya`:
 //!    a *reverse* Delaunay flip), (ii) the flip equalises areas,
@@ -46,8 +47,8 @@
 //!
 //! The faces of `RNG ∪ hull` are *weakly* simple polygons (zero-width cracks,
 //! repeated vertices), not simple as L3891 says: the program indexes boundary
-//! *corners* and [`PolygonCycle::is_diagonal`] decides chords between corners
-//! (brief §5). The cost is `O(n log n)` for `DT`, the RNG and the faces,
+//! *corners* and [`PolygonCycle::is_diagonal`] decides chords between
+//! corners. The cost is `O(n log n)` for `DT`, the RNG and the faces,
 //! `O(Σ k³)` time and `O(max k²)` memory for faces of `k` corners (cubic in
 //! the worst case, e.g. points in convex position, where the RNG is nearly
 //! the hull cycle and there is one face; faces above [`MAX_FACE_CORNERS`]
@@ -58,7 +59,7 @@
 //!
 //! # Guarantees
 //! The thesis bounds the approximation only relative to `β`, the smallest
-//! angle of the *unknown* optimum (Theorem 81, brief §4.3): nothing is
+//! angle of the *unknown* optimum (Theorem 81): nothing is
 //! guaranteed a priori, so the result is an approximation unless the bound
 //! below certifies it.
 //!
@@ -95,7 +96,7 @@
 //! triangulation. Cocircular points: spade's Delaunay completion is the
 //! starting point; its smallest angle is the same for every completion. An
 //! angle of exactly 30° cannot occur with rational coordinates (`tan 30° =
-//! 1/√3`), so Theorem 74's equality case (brief §4.1) never arises; the
+//! 1/√3`), so Theorem 74's equality case never arises; the
 //! theorem assumes general position, and on other inputs Algorithm 75 still
 //! returns a valid 30°-triangulation (its optimality among those is what
 //! the tests check by enumeration). Equal areas: the first candidate in the
@@ -103,36 +104,27 @@
 //! (the program's rule); Algorithm 76's order is the FIFO above. Everything
 //! works on the distinct-point numbering of [`PointSet`].
 
-// Registered as a criterion by `criteria/area` (in progress); until then only
-// the tests call it.
-
+use super::polygon::BottleneckArea;
+use super::AreaBottleneck;
 use crate::error::{Error, Result};
 use crate::graphs::rng_from_delaunay;
 use crate::kernel::{
     angle_at_least_30_degrees, compare_areas, compare_corner_angles, incircle_sign, orient_sign,
     Point,
 };
-use crate::polygon_program::{optimal_triangulation, Objective};
+use crate::polygon_program::optimal_triangulation;
 use crate::spatial::convex_hull_cycle;
 use crate::structures::{DelaunayGraph, PlanarGraph, PointSet, PolygonCycle, NO_TRIANGLE};
 use std::cmp::Ordering;
 use std::collections::VecDeque;
-
-/// Which bottleneck is optimised.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(crate) enum AreaObjective {
-    /// Maximise the smallest triangle area.
-    MaxMin,
-    /// Minimise the largest triangle area.
-    MinMax,
-}
 
 /// The best triangulation found, which candidate it is, and the bound.
 #[derive(Clone, Debug)]
 pub(crate) struct GeneralAreaResult {
     /// Triangles as distinct-point indices.
     pub triangles: Vec<[u32; 3]>,
-    /// The winning candidate (one of [`CANDIDATE_NAMES`]).
+    /// The winning candidate's name ([`DELAUNAY`], [`ALGORITHM_75`],
+    /// [`RNG_HULL_OPTIMUM`] or [`ALGORITHM_76`]).
     pub algorithm: String,
     /// Proven optimal: the result attains [`Self::bound`].
     pub exact: bool,
@@ -153,10 +145,6 @@ pub(crate) const RNG_HULL_OPTIMUM: &str = "optimum over triangulations containin
 /// Candidate 4.
 pub(crate) const ALGORITHM_76: &str =
     "Vassilev Algorithm 76: angle-safe area-equalising reverse-Delaunay flips";
-/// The candidates in their tie-breaking order.
-#[cfg_attr(not(test), allow(dead_code))] // the ratio tests print them
-pub(crate) const CANDIDATE_NAMES: [&str; 4] =
-    [DELAUNAY, ALGORITHM_75, RNG_HULL_OPTIMUM, ALGORITHM_76];
 
 /// One candidate triangulation with its bottleneck triangle.
 #[derive(Clone, Debug)]
@@ -177,9 +165,9 @@ pub(crate) struct Candidate {
 /// exact path); 900 took 21 s.
 pub(crate) const MAX_FACE_CORNERS: usize = 500;
 
-/// Every candidate, in [`CANDIDATE_NAMES`] order, with what the algorithms
+/// Every candidate, in the tie-breaking order of the module docs, with what the algorithms
 /// learnt on the way.
-#[cfg_attr(not(test), allow(dead_code))] // statistics read by the tests
+#[cfg_attr(not(test), allow(dead_code))] // the angle statistics serve the tests
 pub(crate) struct Candidates {
     /// The candidates computed: all four, or without the face programs
     /// (Algorithm 75's step 3 and the `RNG ∪ hull` optimum) when a face
@@ -203,29 +191,42 @@ pub(crate) struct Candidates {
 /// triangulation (a bug).
 pub(crate) fn area_general(
     points: &PointSet,
-    objective: AreaObjective,
+    objective: AreaBottleneck,
 ) -> Result<GeneralAreaResult> {
+    Ok(best_of(points, objective, &candidates(points, objective)?))
+}
+
+/// The best of `candidates` under `objective` (the first of the best), with
+/// the certified bound (module docs).
+pub(crate) fn best_of(
+    points: &PointSet,
+    objective: AreaBottleneck,
+    candidates: &Candidates,
+) -> GeneralAreaResult {
     let pts = points.points();
-    let candidates = candidates(points, objective)?;
     let mut best = 0;
     for (i, c) in candidates.list.iter().enumerate() {
-        if objective.better(pts, c.bottleneck, candidates.list[best].bottleneck) {
+        if objective.better(
+            |v| pts[v as usize],
+            c.bottleneck,
+            candidates.list[best].bottleneck,
+        ) {
             best = i;
         }
     }
     let winner = &candidates.list[best];
     let bound = certified_bound(pts, &convex_hull_cycle(pts), objective);
     let exact = bound.is_some_and(|b| area_order(pts, winner.bottleneck, b) == Ordering::Equal);
-    Ok(GeneralAreaResult {
+    GeneralAreaResult {
         triangles: winner.triangles.clone(),
         algorithm: winner.name.to_string(),
         exact,
         bound,
-    })
+    }
 }
 
 /// The four candidates of the module docs for `objective`.
-pub(crate) fn candidates(points: &PointSet, objective: AreaObjective) -> Result<Candidates> {
+pub(crate) fn candidates(points: &PointSet, objective: AreaBottleneck) -> Result<Candidates> {
     candidates_with_cap(points, objective, MAX_FACE_CORNERS)
 }
 
@@ -233,14 +234,14 @@ pub(crate) fn candidates(points: &PointSet, objective: AreaObjective) -> Result<
 /// [`MAX_FACE_CORNERS`].
 fn candidates_with_cap(
     points: &PointSet,
-    objective: AreaObjective,
+    objective: AreaBottleneck,
     max_face: usize,
 ) -> Result<Candidates> {
     let pts = points.points();
     let g = DelaunayGraph::with_topology(pts)?;
     let with_bottleneck = |name: &'static str, triangles: Vec<[u32; 3]>| Candidate {
         name,
-        bottleneck: objective.bottleneck(pts, &triangles),
+        bottleneck: bottleneck(pts, objective, &triangles),
         triangles,
     };
     let smallest_angle = smallest_angle(pts, &g.triangles);
@@ -280,33 +281,19 @@ fn area_order(pts: &[Point], s: [u32; 3], t: [u32; 3]) -> Ordering {
     compare_areas(s.map(|v| pts[v as usize]), t.map(|v| pts[v as usize]))
 }
 
-impl AreaObjective {
-    /// Is bottleneck `s` strictly better than `t`?
-    fn better(self, pts: &[Point], s: [u32; 3], t: [u32; 3]) -> bool {
-        let order = area_order(pts, s, t);
-        match self {
-            AreaObjective::MaxMin => order == Ordering::Greater,
-            AreaObjective::MinMax => order == Ordering::Less,
-        }
-    }
-
-    /// The worse (the new bottleneck) of two triangles.
-    fn worse(self, pts: &[Point], s: [u32; 3], t: [u32; 3]) -> [u32; 3] {
-        if self.better(pts, s, t) {
-            t
-        } else {
-            s
-        }
-    }
-
-    /// The bottleneck triangle of a (non-empty) triangulation.
-    pub(crate) fn bottleneck(self, pts: &[Point], triangles: &[[u32; 3]]) -> [u32; 3] {
-        triangles
-            .iter()
-            .copied()
-            .reduce(|s, t| self.worse(pts, s, t))
-            .expect("a triangulation has a triangle")
-    }
+/// The bottleneck triangle of a (non-empty) triangulation under `objective`:
+/// the first of the worst.
+pub(crate) fn bottleneck(
+    pts: &[Point],
+    objective: AreaBottleneck,
+    triangles: &[[u32; 3]],
+) -> [u32; 3] {
+    let point = |v: u32| pts[v as usize];
+    triangles
+        .iter()
+        .copied()
+        .reduce(|s, t| if objective.better(point, s, t) { t } else { s })
+        .expect("a triangulation has a triangle")
 }
 
 /// `DT`'s smallest angle as a corner `[apex, a, b]` (exact comparisons).
@@ -351,7 +338,7 @@ pub(crate) fn rng_hull_faces(pts: &[Point], g: &DelaunayGraph) -> Vec<Vec<u32>> 
 fn triangulate_faces(
     pts: &[Point],
     faces: &[Vec<u32>],
-    objective: AreaObjective,
+    objective: AreaBottleneck,
     thirty_degrees: bool,
 ) -> Result<Vec<[u32; 3]>> {
     let p = |v: u32| pts[v as usize];
@@ -372,10 +359,9 @@ fn triangulate_faces(
             face.len(),
             |i, j| convex || region.is_diagonal(i, j),
             allowed,
-            &FaceBottleneck {
-                pts,
-                vertices: v,
-                objective,
+            &BottleneckArea {
+                point: &|c: usize| p(v[c]),
+                kind: objective,
             },
         )
         .ok_or_else(|| {
@@ -388,41 +374,6 @@ fn triangulate_faces(
         out.extend(solved.triangles.into_iter().map(|t| t.map(|c| v[c])));
     }
     Ok(out)
-}
-
-/// The bottleneck area of a face triangulation as a point triple (`None`
-/// while there is no triangle: the neutral value, +∞ for MaxMin and 0 for
-/// MinMax).
-struct FaceBottleneck<'a> {
-    pts: &'a [Point],
-    vertices: &'a [u32],
-    objective: AreaObjective,
-}
-
-impl Objective for FaceBottleneck<'_> {
-    type Value = Option<[u32; 3]>;
-    fn empty(&self) -> Self::Value {
-        None
-    }
-    fn diagonal(&self, _: usize, _: usize) -> Option<Self::Value> {
-        None
-    }
-    fn triangle(&self, i: usize, m: usize, j: usize) -> Option<Self::Value> {
-        Some(Some([self.vertices[i], self.vertices[m], self.vertices[j]]))
-    }
-    fn combine(&self, s: Self::Value, t: Self::Value) -> Self::Value {
-        match (s, t) {
-            (None, x) | (x, None) => x,
-            (Some(s), Some(t)) => Some(self.objective.worse(self.pts, s, t)),
-        }
-    }
-    fn better(&self, s: Self::Value, t: Self::Value) -> bool {
-        match (s, t) {
-            (_, None) => false,
-            (None, Some(_)) => true,
-            (Some(s), Some(t)) => self.objective.better(self.pts, s, t),
-        }
-    }
 }
 
 /// Algorithm 76 from `DT` with the angle floor `alpha` (a corner
@@ -516,7 +467,7 @@ fn algorithm_76(pts: &[Point], g: &DelaunayGraph, alpha: [u32; 3]) -> (Vec<[u32;
 pub(crate) fn certified_bound(
     pts: &[Point],
     hull: &[u32],
-    objective: AreaObjective,
+    objective: AreaBottleneck,
 ) -> Option<[u32; 3]> {
     let p = |v: u32| pts[v as usize];
     let h = hull.len();
@@ -531,7 +482,7 @@ pub(crate) fn certified_bound(
             continue;
         }
         let edge_value = match objective {
-            AreaObjective::MaxMin => {
+            AreaBottleneck::MaxMin => {
                 // By the angle at a (counter-clockwise from ab), ties by the
                 // angle at b (clockwise from ba): both are orientations.
                 inner.sort_unstable_by(|&q, &r| match orient_sign(pa, p(q), p(r)) {
@@ -554,7 +505,7 @@ pub(crate) fn certified_bound(
                 }
                 largest
             }
-            AreaObjective::MinMax => inner.iter().map(|&r| [a, b, r]).reduce(|s, t| {
+            AreaBottleneck::MinMax => inner.iter().map(|&r| [a, b, r]).reduce(|s, t| {
                 if area_order(pts, t, s) == Ordering::Less {
                     t
                 } else {
@@ -566,8 +517,8 @@ pub(crate) fn certified_bound(
         // MaxMin: the smallest of the per-edge maxima; MinMax: the largest of
         // the per-edge minima.
         let tighter = bound.is_none_or(|b| match objective {
-            AreaObjective::MaxMin => area_order(pts, value, b) == Ordering::Less,
-            AreaObjective::MinMax => area_order(pts, value, b) == Ordering::Greater,
+            AreaBottleneck::MaxMin => area_order(pts, value, b) == Ordering::Less,
+            AreaBottleneck::MinMax => area_order(pts, value, b) == Ordering::Greater,
         });
         if tighter {
             bound = Some(value);
@@ -576,755 +527,68 @@ pub(crate) fn certified_bound(
     bound
 }
 
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::structures::Triangulation;
-    use optri_oracle as oracle;
-    use oracle::{to_rational, BigRational};
-    use rand::rngs::StdRng;
-    use rand::{Rng, SeedableRng};
-
-    const OBJECTIVES: [AreaObjective; 2] = [AreaObjective::MaxMin, AreaObjective::MinMax];
-
-    /// The point-set families of the tests, by name.
-    const FAMILIES: [&str; 5] = ["uniform", "real", "clustered", "grid", "collinear runs"];
-
-    /// `n` points of `family` (duplicates possible: `PointSet` merges them).
-    fn sample(rng: &mut StdRng, family: &str, n: usize) -> Vec<Point> {
-        let int = |rng: &mut StdRng, lo: i32, hi: i32| rng.gen_range(lo..hi) as f64;
-        match family {
-            "uniform" => (0..n)
-                .map(|_| [int(rng, 0, 100), int(rng, 0, 100)])
-                .collect(),
-            "real" => (0..n)
-                .map(|_| [rng.gen_range(0.0..1.0), rng.gen_range(0.0..1.0)])
-                .collect(),
-            "clustered" => {
-                let centres: Vec<Point> = (0..3)
-                    .map(|_| [int(rng, 0, 1000), int(rng, 0, 1000)])
-                    .collect();
-                (0..n)
-                    .map(|i| {
-                        let c = centres[i % 3];
-                        [c[0] + int(rng, -20, 21), c[1] + int(rng, -20, 21)]
-                    })
-                    .collect()
-            }
-            "grid" => {
-                let side = ((n as f64).sqrt().ceil() as i32 + 1).max(3);
-                (0..n)
-                    .map(|_| [int(rng, 0, side), int(rng, 0, side)])
-                    .collect()
-            }
-            "collinear runs" => {
-                // Points on three lines with integer steps, plus a few others.
-                let lines: Vec<(Point, Point)> = (0..3)
-                    .map(|_| {
-                        (
-                            [int(rng, 0, 50), int(rng, 0, 50)],
-                            [int(rng, -3, 4), int(rng, -3, 4)],
-                        )
-                    })
-                    .collect();
-                (0..n)
-                    .map(|i| {
-                        if i % 5 == 4 {
-                            return [int(rng, 0, 60), int(rng, 0, 60)];
-                        }
-                        let (a, d) = lines[i % 3];
-                        let t = int(rng, 0, 12);
-                        [a[0] + t * d[0], a[1] + t * d[1]]
-                    })
-                    .collect()
-            }
-            _ => unreachable!(),
-        }
-    }
-
-    /// The exact doubled bottleneck area of `triangles` (oracle).
-    fn value(pts: &[Point], triangles: &[[u32; 3]], objective: AreaObjective) -> BigRational {
-        match objective {
-            AreaObjective::MaxMin => oracle::min_twice_area(pts, triangles),
-            AreaObjective::MinMax => oracle::max_twice_area(pts, triangles),
-        }
-    }
-
-    fn twice_area(pts: &[Point], t: [u32; 3]) -> BigRational {
-        let p = |v: u32| pts[v as usize];
-        oracle::twice_area(p(t[0]), p(t[1]), p(t[2]))
-    }
-
-    /// Is `s` at least as good as `t` (exact, oracle)?
-    fn at_least_as_good(objective: AreaObjective, s: &BigRational, t: &BigRational) -> bool {
-        match objective {
-            AreaObjective::MaxMin => s >= t,
-            AreaObjective::MinMax => s <= t,
-        }
-    }
-
-    /// The angle at `o` is at least 30°, by the definition in rationals:
-    /// `u·v ≤ 0` or `4(u·v)² ≤ 3|u|²|v|²` (independent of the kernel).
-    fn at_least_30_rational(o: Point, a: Point, b: Point) -> bool {
-        let d = |p: Point, k: usize| to_rational(p[k]) - to_rational(o[k]);
-        let (ux, uy, vx, vy) = (d(a, 0), d(a, 1), d(b, 0), d(b, 1));
-        let dot = ux.clone() * vx.clone() + uy.clone() * vy.clone();
-        let uu = ux.clone() * ux + uy.clone() * uy;
-        let vv = vx.clone() * vx + vy.clone() * vy;
-        let int = |k: i64| BigRational::from_integer(k.into());
-        dot <= int(0) || int(4) * dot.clone() * dot <= int(3) * uu * vv
-    }
-
-    fn is_thirty_degree(pts: &[Point], triangles: &[[u32; 3]]) -> bool {
-        triangles.iter().all(|t| {
-            let [a, b, c] = t.map(|v| pts[v as usize]);
-            at_least_30_rational(a, b, c)
-                && at_least_30_rational(b, c, a)
-                && at_least_30_rational(c, a, b)
-        })
-    }
-
-    fn edges_of(triangles: &[[u32; 3]]) -> std::collections::HashSet<[u32; 2]> {
-        oracle::triangle_edges(triangles).into_iter().collect()
-    }
-
-    /// Every candidate validates and is never worse than Delaunay; the
-    /// `RNG ∪ hull` optimum is never worse than Algorithm 75; Algorithm 75 is
-    /// a 30°-triangulation when it runs; Algorithm 76 stays within `C(n, 2)`
-    /// flips and keeps every angle at least `DT`'s smallest; the returned
-    /// result is the best candidate.
-    #[test]
-    fn candidates_are_valid_and_never_worse_than_delaunay() {
-        const SEED: u64 = 0xA4EA_0001;
-        let mut rng = StdRng::seed_from_u64(SEED);
-        let sizes = [3, 4, 5, 7, 10, 16, 30, 60, 120];
-        let (mut cases, mut flipped, mut thirty) = (0, 0, 0);
-        for family in FAMILIES {
-            for &n in &sizes {
-                for _ in 0..6 {
-                    let input = sample(&mut rng, family, n);
-                    let Ok(ps) = PointSet::new(&input) else {
-                        continue;
-                    };
-                    let pts = ps.points();
-                    for objective in OBJECTIVES {
-                        let c = candidates(&ps, objective).unwrap();
-                        assert_eq!(c.list.len(), 4);
-                        for (cand, name) in c.list.iter().zip(CANDIDATE_NAMES) {
-                            assert_eq!(cand.name, name);
-                            Triangulation::from_distinct(&ps, cand.triangles.clone())
-                                .validate()
-                                .unwrap_or_else(|e| panic!("{family} n={n} {name}: {e}"));
-                            assert_eq!(
-                                value(pts, &cand.triangles, objective),
-                                twice_area(pts, cand.bottleneck)
-                            );
-                        }
-                        let v: Vec<BigRational> = c
-                            .list
-                            .iter()
-                            .map(|cand| value(pts, &cand.triangles, objective))
-                            .collect();
-                        for (k, vk) in v.iter().enumerate() {
-                            assert!(
-                                at_least_as_good(objective, vk, &v[0]),
-                                "{family} n={n} {objective:?}: {} worse than Delaunay",
-                                CANDIDATE_NAMES[k]
-                            );
-                        }
-                        assert!(at_least_as_good(objective, &v[2], &v[1]));
-                        if c.thirty_degrees {
-                            assert!(is_thirty_degree(pts, &c.list[1].triangles));
-                            thirty += 1;
-                        } else {
-                            assert_eq!(c.list[1].triangles, c.list[0].triangles);
-                        }
-                        let n_distinct = pts.len();
-                        assert!(c.flips <= n_distinct * (n_distinct - 1) / 2);
-                        flipped += (c.flips > 0) as usize;
-                        let alpha = c.smallest_angle.map(|v| pts[v as usize]);
-                        for t in &c.list[3].triangles {
-                            for k in 0..3 {
-                                let corner =
-                                    [t[k], t[(k + 1) % 3], t[(k + 2) % 3]].map(|v| pts[v as usize]);
-                                assert_ne!(
-                                    compare_corner_angles(corner, alpha),
-                                    Ordering::Less,
-                                    "Algorithm 76 went below the Delaunay angle"
-                                );
-                            }
-                        }
-                        let result = area_general(&ps, objective).unwrap();
-                        let best = v.iter().skip(1).fold(&v[0], |b, x| {
-                            if at_least_as_good(objective, b, x) {
-                                b
-                            } else {
-                                x
-                            }
-                        });
-                        assert_eq!(&value(pts, &result.triangles, objective), best);
-                        cases += 1;
-                    }
-                }
-            }
-        }
-        assert!(cases >= 500, "{cases} cases");
-        assert!(flipped > 50, "Algorithm 76 flipped in only {flipped} cases");
-        eprintln!("{cases} cases, Algorithm 76 flipped in {flipped}, step 3 of Algorithm 75 ran in {thirty}");
-    }
-
-    /// With the face programs capped away, the candidates are Delaunay,
-    /// Algorithm 75 (= Delaunay when its step 3 does not run) and
-    /// Algorithm 76, and the result is still valid and no worse than
-    /// Delaunay.
-    #[test]
-    fn face_cap_skips_the_face_programs() {
-        const SEED: u64 = 0xA4EA_0005;
-        let mut rng = StdRng::seed_from_u64(SEED);
-        let mut capped = 0;
-        for _ in 0..40 {
-            let ps = PointSet::new(&sample(&mut rng, "real", 30)).unwrap();
-            let pts = ps.points();
-            for objective in OBJECTIVES {
-                let c = candidates_with_cap(&ps, objective, 5).unwrap();
-                if c.largest_face <= 5 {
-                    assert_eq!(c.list.len(), 4);
-                    continue;
-                }
-                let names: Vec<&str> = c.list.iter().map(|k| k.name).collect();
-                if c.thirty_degrees {
-                    assert_eq!(names, [DELAUNAY, ALGORITHM_76]);
-                } else {
-                    assert_eq!(names, [DELAUNAY, ALGORITHM_75, ALGORITHM_76]);
-                }
-                let dt = value(pts, &c.list[0].triangles, objective);
-                for k in &c.list {
-                    Triangulation::from_distinct(&ps, k.triangles.clone())
-                        .validate()
-                        .unwrap();
-                    assert!(at_least_as_good(
-                        objective,
-                        &value(pts, &k.triangles, objective),
-                        &dt
-                    ));
-                }
-                capped += 1;
-            }
-        }
-        assert!(capped >= 60, "{capped}");
-    }
-
-    /// The bound never contradicts the exhaustive optimum, the result never
-    /// beats it, and `exact` results attain it (n ≤ 9).
-    #[test]
-    fn bound_is_a_true_bound_and_exact_results_are_optimal() {
-        const SEED: u64 = 0xA4EA_0002;
-        let mut rng = StdRng::seed_from_u64(SEED);
-        let (mut cases, mut exact, mut fixtures) = (0, 0, 0);
-        let mut inputs: Vec<Vec<Point>> = FIXTURES.iter().map(|f| f.to_vec()).collect();
-        for i in 0..400 {
-            let family = FAMILIES[i % FAMILIES.len()];
-            let n = rng.gen_range(3..=9);
-            inputs.push(sample(&mut rng, family, n));
-        }
-        for input in &inputs {
-            let Ok(ps) = PointSet::new(input) else {
-                continue;
-            };
-            let pts = ps.points();
-            if pts.len() > 9 {
-                continue;
-            }
-            let all = oracle::all_triangulations(pts);
-            for objective in OBJECTIVES {
-                let optimum = all
-                    .iter()
-                    .map(|t| value(pts, t, objective))
-                    .reduce(|a, b| {
-                        if at_least_as_good(objective, &a, &b) {
-                            a
-                        } else {
-                            b
-                        }
-                    })
-                    .unwrap();
-                let r = area_general(&ps, objective).unwrap();
-                let got = value(pts, &r.triangles, objective);
-                assert!(at_least_as_good(objective, &optimum, &got));
-                let bound = twice_area(pts, r.bound.expect("a hull edge"));
-                assert_eq!(
-                    bound,
-                    brute_force_bound(pts, objective),
-                    "{objective:?} {pts:?}"
-                );
-                assert!(
-                    at_least_as_good(objective, &bound, &optimum),
-                    "{objective:?} bound {bound} beats the optimum {optimum} on {pts:?}"
-                );
-                if r.exact {
-                    assert_eq!(got, optimum, "exact but not optimal on {pts:?}");
-                    assert_eq!(got, bound);
-                    exact += 1;
-                }
-                cases += 1;
-            }
-            fixtures += (inputs.iter().position(|x| x == input).unwrap() < FIXTURES.len()) as usize;
-        }
-        assert_eq!(fixtures, FIXTURES.len());
-        assert!(cases >= 600, "{cases} cases");
-        assert!(exact >= 50, "only {exact} of {cases} certified");
-        eprintln!("{cases} cases, {exact} certified exact");
-    }
-
-    /// The bound of the module docs by its definition (oracle predicates):
-    /// over hull edges `ab` (counter-clockwise), the largest empty triangle
-    /// `abr` (MaxMin), of which the smallest; or the smallest triangle `abr`
-    /// (MinMax), of which the largest. O(h n²).
-    fn brute_force_bound(pts: &[Point], objective: AreaObjective) -> BigRational {
-        let n = pts.len() as u32;
-        let p = |v: u32| pts[v as usize];
-        let hull = oracle::convex_hull_edges(pts);
-        let per_edge = hull.iter().map(|&[a, b]| {
-            // The oracle's hull edges are sorted pairs: orient them
-            // counter-clockwise (every point on the left or on the line).
-            let (a, b) = if (0..n).any(|r| oracle::orient(p(a), p(b), p(r)) < 0) {
-                (b, a)
-            } else {
-                (a, b)
-            };
-            let inner = (0..n).filter(|&r| oracle::orient(p(a), p(b), p(r)) > 0);
-            let areas = inner
-                .filter(|&r| {
-                    objective == AreaObjective::MinMax
-                        || (0..n).all(|q| {
-                            q == a
-                                || q == b
-                                || q == r
-                                || oracle::orient(p(a), p(b), p(q)) < 0
-                                || oracle::orient(p(b), p(r), p(q)) < 0
-                                || oracle::orient(p(r), p(a), p(q)) < 0
-                        })
-                })
-                .map(|r| twice_area(pts, [a, b, r]));
-            match objective {
-                AreaObjective::MaxMin => areas.max().unwrap(),
-                AreaObjective::MinMax => areas.min().unwrap(),
-            }
-        });
-        match objective {
-            AreaObjective::MaxMin => per_edge.min().unwrap(),
-            AreaObjective::MinMax => per_edge.max().unwrap(),
-        }
-    }
-
-    /// Small fixtures (distinct points): the square with its centre (one
-    /// triangulation), the brief's convex hexagons (§7; MaxMin / MinMax
-    /// doubled areas 4 / 8, 9 / 18, 94 / 309) and a lattice with an interior
-    /// point.
-    const FIXTURES: [&[Point]; 5] = [
-        &[[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [0.0, 2.0], [1.0, 1.0]],
-        &[
-            [0.0, 0.0],
-            [-1.0, 2.0],
-            [0.0, 4.0],
-            [2.0, 4.0],
-            [3.0, 2.0],
-            [2.0, 0.0],
-        ],
-        &[
-            [0.0, 0.0],
-            [0.0, 3.0],
-            [2.0, 5.0],
-            [5.0, 5.0],
-            [7.0, 2.0],
-            [6.0, 0.0],
-        ],
-        &[
-            [-6.0, 10.0],
-            [12.0, 11.0],
-            [10.0, 3.0],
-            [-5.0, -10.0],
-            [-9.0, -8.0],
-            [-12.0, 8.0],
-        ],
-        &[
-            [0.0, 0.0],
-            [3.0, 0.0],
-            [0.0, 3.0],
-            [3.0, 3.0],
-            [1.0, 2.0],
-            [2.0, 1.0],
-        ],
-    ];
-
-    #[test]
-    fn fixtures_have_the_briefs_optima() {
-        let want = [(2, 2), (4, 8), (9, 18), (94, 309)];
-        for (f, (maxmin, minmax)) in FIXTURES.iter().zip(want) {
-            let ps = PointSet::new(f).unwrap();
-            let pts = ps.points();
-            let all = oracle::all_triangulations(pts);
-            let best = |o: AreaObjective| {
-                all.iter()
-                    .map(|t| value(pts, t, o))
-                    .reduce(|a, b| if at_least_as_good(o, &a, &b) { a } else { b })
-                    .unwrap()
-            };
-            let int = |k: i64| BigRational::from_integer(k.into());
-            assert_eq!(best(AreaObjective::MaxMin), int(maxmin), "{f:?}");
-            assert_eq!(best(AreaObjective::MinMax), int(minmax), "{f:?}");
-        }
-        // The square with its centre has one triangulation, and the bound
-        // proves it optimal for both objectives.
-        let ps = PointSet::new(FIXTURES[0]).unwrap();
-        for objective in OBJECTIVES {
-            let r = area_general(&ps, objective).unwrap();
-            assert!(r.exact, "{objective:?}");
-            assert_eq!(
-                twice_area(ps.points(), r.bound.unwrap()),
-                BigRational::from_integer(2.into())
-            );
-        }
-    }
-
-    /// Candidate 3 is the optimum over all triangulations containing
-    /// `RNG ∪ hull` (exhaustive, n ≤ 9, RNG by the oracle's definition).
-    #[test]
-    fn rng_hull_candidate_is_optimal_among_triangulations_containing_rng_and_hull() {
-        const SEED: u64 = 0xA4EA_0003;
-        let mut rng = StdRng::seed_from_u64(SEED);
-        let mut cases = 0;
-        for i in 0..240 {
-            let n = rng.gen_range(4..=9);
-            let input = sample(&mut rng, FAMILIES[i % FAMILIES.len()], n);
-            let Ok(ps) = PointSet::new(&input) else {
-                continue;
-            };
-            let pts = ps.points();
-            let mut fixed = oracle::rng_edges(pts);
-            fixed.extend(
-                oracle::convex_hull_edges(pts)
-                    .into_iter()
-                    .map(|[a, b]| [a.min(b), a.max(b)]),
-            );
-            let containing: Vec<Vec<[u32; 3]>> = oracle::all_triangulations(pts)
-                .into_iter()
-                .filter(|t| {
-                    let e = edges_of(t);
-                    fixed.iter().all(|f| e.contains(f))
-                })
-                .collect();
-            assert!(!containing.is_empty(), "DT contains RNG ∪ hull");
-            for objective in OBJECTIVES {
-                let best = containing
-                    .iter()
-                    .map(|t| value(pts, t, objective))
-                    .reduce(|a, b| {
-                        if at_least_as_good(objective, &a, &b) {
-                            a
-                        } else {
-                            b
-                        }
-                    })
-                    .unwrap();
-                let c = candidates(&ps, objective).unwrap();
-                assert_eq!(value(pts, &c.list[2].triangles, objective), best, "{pts:?}");
-                let e = edges_of(&c.list[2].triangles);
-                assert!(fixed.iter().all(|f| e.contains(f)));
-                cases += 1;
-            }
-        }
-        assert!(cases >= 400, "{cases} cases");
-    }
-
-    /// Near-equilateral sets: a patch of the triangular lattice with spacing
-    /// 100, each point moved by up to ±`jitter` (integers, so exact).
-    fn lattice_patch(rng: &mut StdRng, n: usize, jitter: i32) -> Vec<Point> {
-        let mut sites: Vec<Point> = Vec::new();
-        for j in 0..4 {
-            for i in 0..4 {
-                let x = 100.0 * i as f64 + 50.0 * j as f64;
-                let y = (100.0 * 3f64.sqrt() / 2.0 * j as f64).round();
-                sites.push([x, y]);
-            }
-        }
-        // n sites near a random centre site, so the patch is compact.
-        let centre = sites[rng.gen_range(0..sites.len())];
-        sites.sort_by(|a, b| {
-            let d = |p: &Point| (p[0] - centre[0]).powi(2) + (p[1] - centre[1]).powi(2);
-            d(a).total_cmp(&d(b))
-        });
-        sites
-            .into_iter()
-            .take(n)
-            .map(|p| {
-                [
-                    p[0] + rng.gen_range(-jitter..=jitter) as f64,
-                    p[1] + rng.gen_range(-jitter..=jitter) as f64,
-                ]
-            })
-            .collect()
-    }
-
-    /// Theorem 74 by enumeration: every RNG edge (oracle definition) is in
-    /// every triangulation whose angles are all at least 30° (rational test);
-    /// and Algorithm 75, when it runs its step 3, attains the best area over
-    /// the enumerated 30°-triangulations.
-    #[test]
-    fn theorem_74_and_algorithm_75_by_enumeration() {
-        const SEED: u64 = 0xA4EA_0074;
-        let mut rng = StdRng::seed_from_u64(SEED);
-        let (mut sets, mut thirty_triangulations, mut step_3) = (0, 0, 0);
-        for i in 0..600 {
-            let n = 6 + i % 3;
-            let jitter = [1, 4, 8][(i / 3) % 3];
-            let ps = PointSet::new(&lattice_patch(&mut rng, n, jitter)).unwrap();
-            let pts = ps.points();
-            let rng_edges = oracle::rng_edges(pts);
-            let fat: Vec<Vec<[u32; 3]>> = oracle::all_triangulations(pts)
-                .into_iter()
-                .filter(|t| is_thirty_degree(pts, t))
-                .collect();
-            for t in &fat {
-                let e = edges_of(t);
-                for f in &rng_edges {
-                    assert!(
-                        e.contains(f),
-                        "RNG edge {f:?} missing from a 30°-triangulation of {pts:?}"
-                    );
-                }
-            }
-            thirty_triangulations += fat.len();
-            for objective in OBJECTIVES {
-                let c = candidates(&ps, objective).unwrap();
-                assert_eq!(
-                    c.thirty_degrees,
-                    !fat.is_empty(),
-                    "DT maximises the smallest angle"
-                );
-                if !c.thirty_degrees {
-                    continue;
-                }
-                let best = fat
-                    .iter()
-                    .map(|t| value(pts, t, objective))
-                    .reduce(|a, b| {
-                        if at_least_as_good(objective, &a, &b) {
-                            a
-                        } else {
-                            b
-                        }
-                    })
-                    .unwrap();
-                assert_eq!(value(pts, &c.list[1].triangles, objective), best);
-                step_3 += 1;
-            }
-            sets += 1;
-        }
-        assert_eq!(sets, 600);
-        assert!(
-            thirty_triangulations >= 150 && step_3 >= 200,
-            "{thirty_triangulations} {step_3}"
-        );
-        eprintln!("{sets} sets, {thirty_triangulations} 30°-triangulations, Algorithm 75 step 3 in {step_3} runs");
-    }
-
-    /// Prints the approximation ratios optimum/result (MaxMin) and
-    /// result/optimum (MinMax), mean and worst, per candidate and for the
-    /// returned result, against the exhaustive optimum (n ≤ 9), with the
-    /// improvement over Delaunay and how often each candidate wins. Run with
-    /// `cargo test -p optri --lib area_general_ratios -- --ignored --nocapture`.
-    #[test]
-    #[ignore]
-    fn area_general_ratios() {
-        const SEED: u64 = 0xA4EA_0076;
-        const SETS_PER_SIZE: usize = 300;
-        let mut rng = StdRng::seed_from_u64(SEED);
-        let f = |r: &BigRational| oracle::rational_to_f64(r);
-        for family in ["real", "uniform"] {
-            for objective in OBJECTIVES {
-                // Per candidate (+ the result): sum and worst of the ratio to
-                // the optimum, sum and best of the improvement over DT.
-                let mut ratio = [(0.0f64, 1.0f64); 5];
-                let mut over_dt = [(0.0f64, 1.0f64); 5];
-                let (mut strict_wins, mut attains_best, mut optimal) = ([0; 4], [0; 4], [0; 5]);
-                let (mut cases, mut exact, mut result_optimal) = (0, 0, 0);
-                for n in 5..=9 {
-                    for _ in 0..SETS_PER_SIZE {
-                        let Ok(ps) = PointSet::new(&sample(&mut rng, family, n)) else {
-                            continue;
-                        };
-                        let pts = ps.points();
-                        let optimum = oracle::all_triangulations(pts)
-                            .iter()
-                            .map(|t| value(pts, t, objective))
-                            .reduce(|a, b| {
-                                if at_least_as_good(objective, &a, &b) {
-                                    a
-                                } else {
-                                    b
-                                }
-                            })
-                            .unwrap();
-                        let c = candidates(&ps, objective).unwrap();
-                        let r = area_general(&ps, objective).unwrap();
-                        let mut values: Vec<BigRational> = c
-                            .list
-                            .iter()
-                            .map(|k| value(pts, &k.triangles, objective))
-                            .collect();
-                        values.push(value(pts, &r.triangles, objective));
-                        let best = &values[4];
-                        for k in 0..4 {
-                            if &values[k] == best {
-                                attains_best[k] += 1;
-                                if (0..4).all(|o| o == k || &values[o] != best) {
-                                    strict_wins[k] += 1;
-                                }
-                            }
-                        }
-                        for (k, v) in values.iter().enumerate() {
-                            let (q, d) = match objective {
-                                AreaObjective::MaxMin => {
-                                    (f(&(optimum.clone() / v)), f(&(v / &values[0])))
-                                }
-                                AreaObjective::MinMax => {
-                                    (f(&(v / &optimum)), f(&(values[0].clone() / v)))
-                                }
-                            };
-                            ratio[k] = (ratio[k].0 + q, ratio[k].1.max(q));
-                            over_dt[k] = (over_dt[k].0 + d, over_dt[k].1.max(d));
-                            optimal[k] += (v == &optimum) as usize;
-                        }
-                        exact += r.exact as usize;
-                        result_optimal += (values[4] == optimum) as usize;
-                        cases += 1;
-                    }
-                }
-                assert!(cases >= 4 * SETS_PER_SIZE, "{cases}");
-                let what = match objective {
-                    AreaObjective::MaxMin => "MaxMin area: optimum / candidate",
-                    AreaObjective::MinMax => "MinMax area: candidate / optimum",
-                };
-                println!("\n{what} — {family} points, n = 5..9, {cases} sets (seed {SEED:#x})");
-                println!(
-                    "{:<56} {:>8} {:>8} {:>8} {:>9} {:>9} {:>7} {:>7}",
-                    "candidate",
-                    "mean",
-                    "worst",
-                    "optimal",
-                    "vs DT avg",
-                    "vs DT max",
-                    "attains",
-                    "strict"
-                );
-                let names = [
-                    DELAUNAY,
-                    "Algorithm 75",
-                    "RNG ∪ hull optimum",
-                    "Algorithm 76",
-                    "returned result (best of the four)",
-                ];
-                for k in 0..5 {
-                    let (wins, strict) = if k < 4 {
-                        (attains_best[k].to_string(), strict_wins[k].to_string())
-                    } else {
-                        (String::new(), String::new())
-                    };
-                    println!(
-                        "{:<56} {:>8.4} {:>8.4} {:>8} {:>9.4} {:>9.4} {:>7} {:>7}",
-                        names[k],
-                        ratio[k].0 / cases as f64,
-                        ratio[k].1,
-                        optimal[k],
-                        over_dt[k].0 / cases as f64,
-                        over_dt[k].1,
-                        wins,
-                        strict
-                    );
-                }
-                println!(
-                    "certified exact: {exact} of {cases}; actually optimal: {result_optimal} of {cases}"
-                );
-            }
-        }
-    }
-
-    /// Prints the running time of each step at n = 1000 and 10⁴ uniform
-    /// points. Run with `cargo test --release -p optri --lib
-    /// area_general_timings -- --ignored --nocapture`.
-    #[test]
-    #[ignore]
-    fn area_general_timings() {
-        use std::time::Instant;
-        const SEED: u64 = 0xA4EA_1000;
-        let mut rng = StdRng::seed_from_u64(SEED);
-        for n in [1000, 10_000] {
-            let input: Vec<Point> = (0..n)
-                .map(|_| [rng.gen_range(0.0..1.0), rng.gen_range(0.0..1.0)])
-                .collect();
-            let ps = PointSet::new(&input).unwrap();
-            let pts = ps.points();
-            let clock = Instant::now();
-            let g = DelaunayGraph::with_topology(pts).unwrap();
-            let t_dt = clock.elapsed();
-            let clock = Instant::now();
-            let faces = rng_hull_faces(pts, &g);
-            let t_faces = clock.elapsed();
-            let largest = faces.iter().map(Vec::len).max().unwrap();
-            let cubes: usize = faces.iter().map(|f| f.len().pow(3)).sum();
-            let clock = Instant::now();
-            let _ = triangulate_faces(pts, &faces, AreaObjective::MaxMin, false).unwrap();
-            let t_maxmin = clock.elapsed();
-            let clock = Instant::now();
-            let _ = triangulate_faces(pts, &faces, AreaObjective::MinMax, false).unwrap();
-            let t_minmax = clock.elapsed();
-            let clock = Instant::now();
-            let (_, flips) = algorithm_76(pts, &g, smallest_angle(pts, &g.triangles));
-            let t_76 = clock.elapsed();
-            let hull = convex_hull_cycle(pts);
-            let clock = Instant::now();
-            let _ = certified_bound(pts, &hull, AreaObjective::MaxMin);
-            let t_bound_max = clock.elapsed();
-            let clock = Instant::now();
-            let _ = certified_bound(pts, &hull, AreaObjective::MinMax);
-            let t_bound_min = clock.elapsed();
-            let mut totals = Vec::new();
-            for objective in OBJECTIVES {
-                let clock = Instant::now();
-                let r = area_general(&ps, objective).unwrap();
-                totals.push((objective, clock.elapsed(), r.algorithm, r.exact));
-            }
-            println!(
-                "n = {n}: Delaunay {t_dt:.2?}; RNG ∪ hull faces {t_faces:.2?} ({} faces, largest {largest} corners, Σk³ = {cubes}); \
-                 face programs MaxMin {t_maxmin:.2?}, MinMax {t_minmax:.2?}; Algorithm 76 {t_76:.2?} ({flips} flips); \
-                 bound MaxMin {t_bound_max:.2?}, MinMax {t_bound_min:.2?} (h = {})",
-                faces.len(),
-                hull.len()
-            );
-            for (objective, t, name, exact) in totals {
-                println!("  area_general {objective:?}: {t:.2?}, winner: {name}, exact: {exact}");
-            }
-        }
-        // Convex position: one face with every point, just under and over
-        // the cap.
-        for n in [500, 501] {
-            let input: Vec<Point> = (0..n)
-                .map(|i| {
-                    let t = std::f64::consts::TAU * i as f64 / n as f64;
-                    [1e6 * t.cos(), 1e6 * t.sin()]
-                })
-                .collect();
-            let ps = PointSet::new(&input).unwrap();
-            let clock = Instant::now();
-            let c = candidates(&ps, AreaObjective::MaxMin).unwrap();
-            println!(
-                "{n} points on a circle: candidates {:.2?} (largest face {} corners, {} candidates, {} flips)",
-                clock.elapsed(),
-                c.largest_face,
-                c.list.len(),
-                c.flips
-            );
-        }
-    }
+/// How long each step of the approximation took on one input, and what it
+/// worked on (for the benchmark harness; both objectives' face programs and
+/// bounds).
+#[cfg(feature = "internals")]
+pub struct AreaGeneralSteps {
+    /// `Delaunay`, `RNG ∪ hull faces`, `face programs MaxMin`, `face
+    /// programs MinMax`, `Algorithm 76`, `bound MaxMin`, `bound MinMax`.
+    pub phases: Vec<crate::timing::Phase>,
+    /// Bounded faces of `RNG ∪ hull`.
+    pub faces: usize,
+    /// Corners of the largest face.
+    pub largest_face: usize,
+    /// The sum of the cubes of the faces' corner counts (the programs' work).
+    pub cubed_corners: usize,
+    /// Flips made by Algorithm 76.
+    pub flips: usize,
+    /// Points on the convex hull (the bound's edges).
+    pub hull_points: usize,
 }
+
+/// Runs and times every step of the approximation on `points`.
+///
+/// # Errors
+/// As [`area_general`].
+#[cfg(feature = "internals")]
+pub(crate) fn step_times(points: &PointSet) -> Result<AreaGeneralSteps> {
+    use crate::timing::timed;
+    let pts = points.points();
+    let mut phases = Vec::new();
+    let g = timed(&mut phases, "Delaunay", || {
+        DelaunayGraph::with_topology(pts)
+    })?;
+    let faces = timed(&mut phases, "RNG ∪ hull faces", || {
+        rng_hull_faces(pts, &g)
+    });
+    for (name, objective) in [
+        ("face programs MaxMin", AreaBottleneck::MaxMin),
+        ("face programs MinMax", AreaBottleneck::MinMax),
+    ] {
+        timed(&mut phases, name, || {
+            triangulate_faces(pts, &faces, objective, false)
+        })?;
+    }
+    let (_, flips) = timed(&mut phases, "Algorithm 76", || {
+        algorithm_76(pts, &g, smallest_angle(pts, &g.triangles))
+    });
+    let hull = convex_hull_cycle(pts);
+    timed(&mut phases, "bound MaxMin", || {
+        certified_bound(pts, &hull, AreaBottleneck::MaxMin)
+    });
+    timed(&mut phases, "bound MinMax", || {
+        certified_bound(pts, &hull, AreaBottleneck::MinMax)
+    });
+    Ok(AreaGeneralSteps {
+        phases,
+        faces: faces.len(),
+        largest_face: faces.iter().map(Vec::len).max().unwrap_or(0),
+        cubed_corners: faces.iter().map(|f| f.len().pow(3)).sum(),
+        flips,
+        hull_points: hull.len(),
+    })
+}
+
+#[cfg(test)]
+mod tests;

@@ -62,7 +62,6 @@ pub(crate) use lmt_loop::LOOP_CHUNK;
 
 use crate::error::{Error, UnsupportedReason};
 use crate::kernel::Point;
-use crate::parallel::prelude::*;
 use crate::spatial::{convex_hull_cycle, PointCells};
 use crate::structures::Csr;
 
@@ -185,6 +184,7 @@ pub(crate) fn lmt_skeleton_in_chunks(
         edges.windows(2).all(|w| w[0] < w[1]) && edges.iter().all(|&[u, v]| u < v),
         "candidates: sorted distinct pairs u < v"
     );
+    use crate::parallel::prelude::*;
     let n = pts.len();
     let m = edges.len();
     let order = crate::spatial::morton_order(pts);
