@@ -50,6 +50,20 @@ enum Outcome {
     Failed(std::mem::Discriminant<Error>),
 }
 
+/// Triangles as a set: each sorted, then the list.
+fn sorted_triangles(triangles: &[[u32; 3]]) -> Vec<[u32; 3]> {
+    let mut t: Vec<[u32; 3]> = triangles
+        .iter()
+        .map(|t| {
+            let mut t = *t;
+            t.sort_unstable();
+            t
+        })
+        .collect();
+    t.sort_unstable();
+    t
+}
+
 fn criterion_outcome(points: &[Point], criterion: Criterion) -> Result<Outcome, TestCaseError> {
     let set = match PointSet::new(points) {
         Ok(set) => set,
@@ -61,18 +75,9 @@ fn criterion_outcome(points: &[Point], criterion: Criterion) -> Result<Outcome, 
                 .triangulation
                 .validate()
                 .map_err(|e| TestCaseError::fail(format!("{criterion:?}: invalid: {e}")))?;
-            let mut t: Vec<[u32; 3]> = solution
-                .triangulation
-                .triangles()
-                .iter()
-                .map(|t| {
-                    let mut t = *t;
-                    t.sort_unstable();
-                    t
-                })
-                .collect();
-            t.sort_unstable();
-            Ok(Outcome::Triangles(t))
+            Ok(Outcome::Triangles(sorted_triangles(
+                solution.triangulation.triangles(),
+            )))
         }
         Err(e) => Ok(Outcome::Failed(std::mem::discriminant(&e))),
     }
@@ -359,16 +364,7 @@ fn polygon_outcome(ring: &[Point], criterion: Criterion) -> Result<Outcome, Test
             .map_err(|e| TestCaseError::fail(format!("{ring:?}: {e}")))?;
         prop_assert_eq!(checked, ring.len() - 3);
     }
-    let mut t: Vec<[u32; 3]> = triangles
-        .iter()
-        .map(|t| {
-            let mut t = *t;
-            t.sort_unstable();
-            t
-        })
-        .collect();
-    t.sort_unstable();
-    Ok(Outcome::Triangles(t))
+    Ok(Outcome::Triangles(sorted_triangles(triangles)))
 }
 
 fn polygon_answers(ring: &[Point]) -> Result<Vec<(Criterion, Outcome)>, TestCaseError> {
@@ -404,17 +400,12 @@ fn check_polygon_symmetries(ring: &[Point], offsets: &[Point]) -> Result<usize, 
         let Outcome::Triangles(t) = polygon_outcome(&rotated, Criterion::Delaunay)? else {
             return Err(TestCaseError::fail(format!("{rotated:?} failed")));
         };
-        let mut back: Vec<[u32; 3]> = t
+        let back: Vec<[u32; 3]> = t
             .iter()
-            .map(|t| {
-                let mut t = t.map(|i| ((i as usize + start) % n) as u32);
-                t.sort_unstable();
-                t
-            })
+            .map(|t| t.map(|i| ((i as usize + start) % n) as u32))
             .collect();
-        back.sort_unstable();
         prop_assert_eq!(
-            &Outcome::Triangles(back),
+            &Outcome::Triangles(sorted_triangles(&back)),
             &delaunay,
             "ring {:?} started at {}",
             ring,

@@ -118,20 +118,7 @@ mod tests {
     /// through a point, are refused.
     #[test]
     fn cocircular_faces_are_fanned_around_the_constraints() {
-        let mut points: Vec<Point> = vec![
-            [5.0, 0.0],
-            [4.0, 3.0],
-            [3.0, 4.0],
-            [0.0, 5.0],
-            [-3.0, 4.0],
-            [-4.0, 3.0],
-            [-5.0, 0.0],
-            [-4.0, -3.0],
-            [-3.0, -4.0],
-            [0.0, -5.0],
-            [3.0, -4.0],
-            [4.0, -3.0],
-        ];
+        let mut points = optri_oracle::inputs::circle_r5_ccw();
         let cdt = ConstrainedDelaunay::new(&points, &[[1, 7], [5, 2], [8, 11]]).unwrap();
         assert_eq!(cdt.triangles.len(), 10);
         let sides = |c: &ConstrainedDelaunay| -> Vec<[u32; 2]> {

@@ -280,7 +280,7 @@ fn solve_polygon(
 
 /// General point sets (not in convex position): the best of Delaunay,
 /// Algorithm 75, the optimum over triangulations containing RNG ∪ hull and
-/// Algorithm 76 (`general.rs`), exact only when it meets the certified bound.
+/// Algorithm 76 (`general`), exact only when it meets the certified bound.
 fn solve_general(
     points: &PointSet,
     kind: AreaBottleneck,

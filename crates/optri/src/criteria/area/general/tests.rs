@@ -84,6 +84,24 @@ fn twice_area(pts: &[Point], t: [u32; 3]) -> BigRational {
     oracle::twice_area(p(t[0]), p(t[1]), p(t[2]))
 }
 
+/// The best exact bottleneck value over `triangulations` (oracle).
+fn best_value<'a>(
+    pts: &[Point],
+    triangulations: impl Iterator<Item = &'a Vec<[u32; 3]>>,
+    objective: AreaBottleneck,
+) -> BigRational {
+    triangulations
+        .map(|t| value(pts, t, objective))
+        .reduce(|a, b| {
+            if at_least_as_good(objective, &a, &b) {
+                a
+            } else {
+                b
+            }
+        })
+        .expect("at least one triangulation")
+}
+
 /// Is `s` at least as good as `t` (exact, oracle)?
 fn at_least_as_good(objective: AreaBottleneck, s: &BigRational, t: &BigRational) -> bool {
     match objective {
@@ -268,17 +286,7 @@ fn bound_is_a_true_bound_and_exact_results_are_optimal() {
         }
         let all = oracle::all_triangulations(pts);
         for objective in OBJECTIVES {
-            let optimum = all
-                .iter()
-                .map(|t| value(pts, t, objective))
-                .reduce(|a, b| {
-                    if at_least_as_good(objective, &a, &b) {
-                        a
-                    } else {
-                        b
-                    }
-                })
-                .unwrap();
+            let optimum = best_value(pts, all.iter(), objective);
             let r = area_general(&ps, objective).unwrap();
             let got = value(pts, &r.triangles, objective);
             assert!(at_least_as_good(objective, &optimum, &got));
@@ -395,12 +403,7 @@ fn fixtures_have_their_known_optima() {
         let ps = PointSet::new(f).unwrap();
         let pts = ps.points();
         let all = oracle::all_triangulations(pts);
-        let best = |o: AreaBottleneck| {
-            all.iter()
-                .map(|t| value(pts, t, o))
-                .reduce(|a, b| if at_least_as_good(o, &a, &b) { a } else { b })
-                .unwrap()
-        };
+        let best = |o: AreaBottleneck| best_value(pts, all.iter(), o);
         let int = |k: i64| BigRational::from_integer(k.into());
         assert_eq!(best(AreaBottleneck::MaxMin), int(maxmin), "{f:?}");
         assert_eq!(best(AreaBottleneck::MinMax), int(minmax), "{f:?}");
@@ -447,17 +450,7 @@ fn rng_hull_candidate_is_optimal_among_triangulations_containing_rng_and_hull() 
             .collect();
         assert!(!containing.is_empty(), "DT contains RNG ∪ hull");
         for objective in OBJECTIVES {
-            let best = containing
-                .iter()
-                .map(|t| value(pts, t, objective))
-                .reduce(|a, b| {
-                    if at_least_as_good(objective, &a, &b) {
-                        a
-                    } else {
-                        b
-                    }
-                })
-                .unwrap();
+            let best = best_value(pts, containing.iter(), objective);
             let c = candidates(&ps, objective).unwrap();
             assert_eq!(value(pts, &c.list[2].triangles, objective), best, "{pts:?}");
             let e = edges_of(&c.list[2].triangles);
@@ -536,17 +529,7 @@ fn theorem_74_and_algorithm_75_by_enumeration() {
             if !c.thirty_degrees {
                 continue;
             }
-            let best = fat
-                .iter()
-                .map(|t| value(pts, t, objective))
-                .reduce(|a, b| {
-                    if at_least_as_good(objective, &a, &b) {
-                        a
-                    } else {
-                        b
-                    }
-                })
-                .unwrap();
+            let best = best_value(pts, fat.iter(), objective);
             assert_eq!(value(pts, &c.list[1].triangles, objective), best);
             step_3 += 1;
         }

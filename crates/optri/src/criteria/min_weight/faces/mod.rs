@@ -185,12 +185,7 @@ fn solve_region(
         // Most faces with holes are small: the plain search first, within
         // a fraction of the budget.
         let quick = budget.min(QUICK_FRONTS);
-        let (solved, fronts) = search(pts, sk, &region, &face, None, quick);
-        let solved = solved.found();
-        result.fronts = fronts;
-        if let Some(s) = solved {
-            result.triangles = s.triangles;
-            result.method = Method::Search;
+        if plain_search(pts, sk, &region, &face, quick, &mut result) {
             return result;
         }
         let (outcome, stats) = solve_by_program(pts, sk, &region, &face, budget);
@@ -209,12 +204,7 @@ fn solve_region(
                 program_lower = lower.unwrap_or(0.0);
                 if lower.is_none() && budget > quick {
                     // No certificate: the plain search with the whole budget.
-                    let (solved, fronts) = search(pts, sk, &region, &face, None, budget);
-                    let solved = solved.found();
-                    result.fronts = fronts;
-                    if let Some(s) = solved {
-                        result.triangles = s.triangles;
-                        result.method = Method::Search;
+                    if plain_search(pts, sk, &region, &face, budget, &mut result) {
                         return result;
                     }
                 }
@@ -230,6 +220,26 @@ fn solve_region(
         .max(program_lower);
     result.triangles = incumbent.unwrap_or(region.cdt_triangles);
     result
+}
+
+/// The plain exact search on `face` within `budget` fronts: records the
+/// fronts it took and, if it decided the region, its triangles.
+fn plain_search(
+    pts: &[Point],
+    sk: &Skeleton,
+    region: &Region,
+    face: &search::FaceTriangles,
+    budget: usize,
+    result: &mut RegionResult,
+) -> bool {
+    let (outcome, fronts) = search(pts, sk, region, face, None, budget);
+    result.fronts = fronts;
+    let Some(solved) = outcome.found() else {
+        return false;
+    };
+    result.triangles = solved.triangles;
+    result.method = Method::Search;
+    true
 }
 
 /// Fronts the plain search may memoise before the triangle program is set

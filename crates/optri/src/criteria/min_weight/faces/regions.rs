@@ -11,6 +11,16 @@ use crate::structures::{ConstrainedDelaunay, Csr};
 use std::cmp::Ordering;
 use std::collections::{BTreeSet, HashMap, HashSet};
 
+/// The skeleton's certain edges.
+fn certain_edges(sk: &Skeleton) -> Vec<[u32; 2]> {
+    sk.edges
+        .iter()
+        .zip(&sk.certain)
+        .filter(|(_, &c)| c)
+        .map(|(&e, _)| e)
+        .collect()
+}
+
 /// The faces of the plane graph of the certain edges (the hull among them)
 /// when it connects every point, as boundary walks (the face on the left,
 /// each starting at its least half-edge `(from, to)`, as [`regions`] starts
@@ -23,13 +33,7 @@ use std::collections::{BTreeSet, HashMap, HashSet};
 /// next certain edge clockwise (exact angular order).
 pub(super) fn traced_faces(pts: &[Point], sk: &Skeleton) -> Option<Vec<Vec<u32>>> {
     let n = pts.len();
-    let certain: Vec<[u32; 2]> = sk
-        .edges
-        .iter()
-        .zip(&sk.certain)
-        .filter(|(_, &c)| c)
-        .map(|(&e, _)| e)
-        .collect();
+    let certain = certain_edges(sk);
     if certain.len() + 1 < n {
         return None; // a spanning connected graph has at least n − 1 edges
     }
@@ -132,13 +136,7 @@ pub(super) fn traced_faces(pts: &[Point], sk: &Skeleton) -> Option<Vec<Vec<u32>>
 /// boundary walks (each from its least half-edge `(from, to)`), isolated
 /// points and triangles.
 pub(super) fn regions(pts: &[Point], sk: &Skeleton) -> crate::error::Result<Vec<Region>> {
-    let constraints: Vec<[u32; 2]> = sk
-        .edges
-        .iter()
-        .zip(&sk.certain)
-        .filter(|(_, &c)| c)
-        .map(|(&e, _)| e)
-        .collect();
+    let constraints = certain_edges(sk);
     let cdt = ConstrainedDelaunay::new(pts, &constraints)?;
     drop(constraints);
     // Side `j` of triangle `t` is the half-edge `3t + j`.

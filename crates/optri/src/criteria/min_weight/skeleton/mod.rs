@@ -181,7 +181,7 @@ pub(crate) fn lmt_skeleton_in_chunks(
     loop_chunk: usize,
 ) -> crate::error::Result<Skeleton> {
     debug_assert!(
-        edges.windows(2).all(|w| w[0] < w[1]) && edges.iter().all(|&[u, v]| u < v),
+        sorted_pairs(&edges),
         "candidates: sorted distinct pairs u < v"
     );
     use crate::parallel::prelude::*;
@@ -260,6 +260,12 @@ pub(crate) fn lmt_skeleton_in_chunks(
     Ok(skeleton)
 }
 
+/// Are the candidate edges sorted distinct pairs `u < v` (as the diamond
+/// filter gives them)?
+fn sorted_pairs(edges: &[[u32; 2]]) -> bool {
+    edges.windows(2).all(|w| w[0] < w[1]) && edges.iter().all(|&[u, v]| u < v)
+}
+
 /// The error for `count` ids (of edges or triangles) above `limit` on `n`
 /// points: the limit on points is estimated at this input's density.
 fn too_many_points(n: usize, count: usize, limit: usize, because: &'static str) -> Error {
@@ -286,7 +292,7 @@ pub(crate) fn z_order_skeleton(
     loop_chunk: usize,
 ) -> crate::error::Result<Skeleton> {
     debug_assert!(
-        edges.windows(2).all(|w| w[0] < w[1]) && edges.iter().all(|&[u, v]| u < v),
+        sorted_pairs(&edges),
         "candidates: sorted distinct pairs u < v"
     );
     let n = pts.len();
