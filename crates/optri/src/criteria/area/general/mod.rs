@@ -93,7 +93,8 @@
 //! # Degenerate input
 //! Collinear points: flat triangles are never allowed (exact orientation);
 //! collinear hull points are hull vertices and their hull edges are in every
-//! triangulation. Cocircular points: spade's Delaunay completion is the
+//! triangulation. Cocircular points: the Delaunay graph's canonical
+//! completion (cocircular faces fanned from their smallest index) is the
 //! starting point; its smallest angle is the same for every completion. An
 //! angle of exactly 30° cannot occur with rational coordinates (`tan 30° =
 //! 1/√3`), so Theorem 74's equality case never arises; the
