@@ -10,6 +10,7 @@ use rand::rngs::StdRng;
 use rand::seq::SliceRandom;
 use rand::SeedableRng;
 use std::cmp::Ordering;
+use std::collections::{HashMap, HashSet};
 
 /// Points as exact scaled integers.
 struct Exact<T> {
@@ -273,6 +274,67 @@ pub fn delaunay_check(points: &[Point], tris: &[[u32; 3]]) -> Result<(), String>
         }
     }
     Ok(())
+}
+
+/// Checks that every edge shared by two of the triangles `tris` is a
+/// constraint (an unordered pair of `constraints`) or *locally constrained
+/// Delaunay*: the apex of either triangle is not strictly inside the other's
+/// circumcircle (a triangulation of a polygon with this property is its
+/// constrained Delaunay triangulation; Lee & Lin 1986, Chew 1989). Exact.
+/// Returns the number of shared edges that are not constraints (each
+/// checked). Does not check that the triangles form a triangulation.
+pub fn constrained_delaunay_check(
+    points: &[Point],
+    tris: &[[u32; 3]],
+    constraints: &[[u32; 2]],
+) -> Result<usize, String> {
+    let n = points.len();
+    let constraint: HashSet<[u32; 2]> = constraints
+        .iter()
+        .map(|&[u, v]| [u.min(v), u.max(v)])
+        .collect();
+    // The apex of the triangle left of each directed side.
+    let mut apex: HashMap<(u32, u32), u32> = HashMap::new();
+    for t in tris {
+        if t.iter().any(|&v| v as usize >= n) {
+            return Err(format!("triangle {t:?} has an index out of range"));
+        }
+        let [a, b, c] = if orient(
+            points[t[0] as usize],
+            points[t[1] as usize],
+            points[t[2] as usize],
+        ) < 0
+        {
+            [t[0], t[2], t[1]]
+        } else {
+            *t
+        };
+        if orient(points[a as usize], points[b as usize], points[c as usize]) == 0 {
+            return Err(format!("flat triangle {t:?}"));
+        }
+        for (u, v, w) in [(a, b, c), (b, c, a), (c, a, b)] {
+            if apex.insert((u, v), w).is_some() {
+                return Err(format!("directed side ({u}, {v}) is in two triangles"));
+            }
+        }
+    }
+    let p = |i: u32| points[i as usize];
+    let mut checked = 0;
+    for (&(u, v), &w) in &apex {
+        let Some(&x) = apex.get(&(v, u)) else {
+            continue;
+        };
+        if u > v || constraint.contains(&[u, v]) {
+            continue; // each shared side once; constraints need not be Delaunay
+        }
+        if incircle(p(u), p(v), p(w), p(x)) > 0 || incircle(p(v), p(u), p(x), p(w)) > 0 {
+            return Err(format!(
+                "edge ({u}, {v}) is neither a constraint nor locally Delaunay"
+            ));
+        }
+        checked += 1;
+    }
+    Ok(checked)
 }
 
 /// The bounded faces of the plane graph `(points, edges)` (straight, pairwise

@@ -459,6 +459,48 @@ pub fn convex_by_construction(
         .collect()
 }
 
+/// The strictly convex hull of `points`, counter-clockwise, without
+/// collinear vertices (Andrew's monotone chain with the exact orientation;
+/// duplicates dropped).
+pub fn strict_hull(mut points: Vec<Point>) -> Vec<Point> {
+    points.sort_by(|a, b| a.partial_cmp(b).expect("finite coordinates"));
+    points.dedup();
+    if points.len() < 3 {
+        return points;
+    }
+    let chain = |iter: &mut dyn Iterator<Item = Point>| {
+        let mut out: Vec<Point> = Vec::new();
+        for p in iter {
+            while out.len() >= 2 && orient(out[out.len() - 2], out[out.len() - 1], p) <= 0 {
+                out.pop();
+            }
+            out.push(p);
+        }
+        out.pop();
+        out
+    };
+    let mut hull = chain(&mut points.iter().copied());
+    hull.extend(chain(&mut points.iter().rev().copied()));
+    hull
+}
+
+/// A strictly convex polygon, counter-clockwise: the [`strict_hull`] of `n`
+/// random points on an ellipse with semi-axes `radius` and `radius /
+/// aspect`, turned by a random angle and rounded to integers (so at most
+/// `n` vertices; nearly equal areas everywhere).
+pub fn ellipse_polygon(rng: &mut StdRng, n: usize, radius: f64, aspect: f64) -> Vec<Point> {
+    let tilt: f64 = rng.gen_range(0.0..std::f64::consts::PI);
+    let (s, c) = tilt.sin_cos();
+    let points = (0..n)
+        .map(|_| {
+            let t: f64 = rng.gen_range(0.0..std::f64::consts::TAU);
+            let (x, y) = (radius * t.cos(), radius / aspect * t.sin());
+            [(c * x - s * y).round(), (s * x + c * y).round()]
+        })
+        .collect();
+    strict_hull(points)
+}
+
 // ---- named degenerate fixtures ----
 
 /// The 12 integer points of `x² + y² = 25`, counter-clockwise from `(5, 0)`:

@@ -51,8 +51,8 @@ pub use exact::{
     rational_to_f64, squared_length, to_rational, twice_area, Point,
 };
 pub use graphs::{
-    bounded_faces, convex_hull_edges, delaunay_check, gabriel_edges, is_cracked,
-    is_minimum_spanning_tree, rng_edges,
+    bounded_faces, constrained_delaunay_check, convex_hull_edges, delaunay_check, gabriel_edges,
+    is_cracked, is_minimum_spanning_tree, rng_edges,
 };
 pub use greedy::greedy_edges;
 pub use inputs::integer_circle_points;

@@ -3,6 +3,7 @@
 //! the test suite and the benchmarks can reach one algorithm variant or
 //! reference directly.
 
+pub use crate::criteria::area::general::AreaGeneralSteps;
 pub use crate::criteria::greedy::{
     greedy_edges_by, greedy_naive_edges, greedy_triangulation, is_convex_position, is_semicircular,
     is_weakly_convex_position, GreedyAlgorithm,
@@ -17,7 +18,7 @@ pub use crate::structures::planar_graph::{Face, PlanarGraph};
 /// program (the reference Algorithm 44 is measured against): `maxmin`
 /// selects MaxMin, else MinMax. Triangles as distinct indices.
 pub fn area_by_polygon_program(points: &crate::PointSet, maxmin: bool) -> Vec<[u32; 3]> {
-    use crate::criteria::area::polygon::{convex_polygon_program, AreaBottleneck};
+    use crate::criteria::area::{polygon::convex_polygon_program, AreaBottleneck};
     let hull = crate::spatial::convex_hull_cycle(points.points());
     let kind = if maxmin {
         AreaBottleneck::MaxMin
@@ -25,6 +26,70 @@ pub fn area_by_polygon_program(points: &crate::PointSet, maxmin: bool) -> Vec<[u
         AreaBottleneck::MinMax
     };
     convex_polygon_program(points.points(), &hull, kind)
+}
+
+/// One run of the area criteria's approximation for general point sets on
+/// any point set (convex ones included, which the product sends to the
+/// convex algorithm instead).
+pub struct AreaGeneralRun {
+    /// The candidates computed, in their tie-breaking order: name and
+    /// triangles (distinct indices).
+    pub candidates: Vec<(&'static str, Vec<[u32; 3]>)>,
+    /// The returned triangulation (distinct indices).
+    pub triangles: Vec<[u32; 3]>,
+    /// The name of the candidate returned.
+    pub algorithm: String,
+    /// Whether it attains the certified bound (proven optimal).
+    pub exact: bool,
+    /// Corners of the largest face of `RNG ∪ hull`.
+    pub largest_face: usize,
+    /// Flips made by Algorithm 76.
+    pub flips: usize,
+}
+
+/// The approximation of `criterion` (`MaxminArea` or `MinmaxArea`) on
+/// `points`: its candidates and its result.
+///
+/// # Errors
+/// [`crate::Error::Internal`] on a bug; `Unsupported` for another criterion.
+pub fn area_general(
+    points: &crate::PointSet,
+    criterion: crate::Criterion,
+) -> crate::Result<AreaGeneralRun> {
+    use crate::criteria::area::{general, AreaBottleneck};
+    let objective = match criterion {
+        crate::Criterion::MaxminArea => AreaBottleneck::MaxMin,
+        crate::Criterion::MinmaxArea => AreaBottleneck::MinMax,
+        _ => {
+            return Err(crate::Error::Internal(format!(
+                "{} is not an area criterion",
+                criterion.name()
+            )))
+        }
+    };
+    let candidates = general::candidates(points, objective)?;
+    let result = general::best_of(points, objective, &candidates);
+    Ok(AreaGeneralRun {
+        candidates: candidates
+            .list
+            .into_iter()
+            .map(|c| (c.name, c.triangles))
+            .collect(),
+        triangles: result.triangles,
+        algorithm: result.algorithm,
+        exact: result.exact,
+        largest_face: candidates.largest_face,
+        flips: candidates.flips,
+    })
+}
+
+/// Runs and times each step of the area approximation for general point
+/// sets on `points`, both objectives.
+///
+/// # Errors
+/// [`crate::Error::Internal`] on a bug.
+pub fn area_general_steps(points: &crate::PointSet) -> crate::Result<AreaGeneralSteps> {
+    crate::criteria::area::general::step_times(points)
 }
 
 /// The general min-weight pipeline (diamond filter, LMT-skeleton, faces)

@@ -59,7 +59,6 @@ pub use criteria::area::{maxmin_area, maxmin_area_at_least, minmax_area, MaxMinA
 pub use criteria::greedy::greedy;
 pub use criteria::min_weight::min_weight;
 pub use criteria::minmax_length::minmax_length;
-pub use criteria::polygon_criteria::MAX_POLYGON_VERTICES;
 pub use criteria::{
     BoundMeasure, CertifiedBound, CriterionInfo, Diagnostics, InputKind, Optimality, OptionInfo,
     Options, Progress, OPTIONS,
@@ -70,6 +69,7 @@ pub use graphs::{
     relative_neighborhood_graph,
 };
 pub use interrupt::Cancel;
+pub use polygon_program::MAX_POLYGON_VERTICES;
 pub use registry::{
     compare, compare_polygon, graph, graph_of_points, graph_of_points_with, graph_with,
     triangulate, triangulate_polygon, triangulate_polygon_with, triangulate_with, Comparison,

@@ -7,8 +7,8 @@
 
 use optri::kernel::{
     angle_at_least_30_degrees, compare_areas, compare_corner_angles, compare_lengths, dot_sign,
-    exact_squared_length, in_half_lune, in_lune, incircle_sign, orient_sign, MAX_COORDINATE,
-    MIN_COORDINATE,
+    exact_squared_length, in_half_lune, in_lune, incircle_sign, orient_sign, same_direction,
+    strictly_inside_wedge, strictly_inside_wedge_symbolic, MAX_COORDINATE, MIN_COORDINATE,
 };
 use optri_oracle as oracle;
 use rand::rngs::StdRng;
@@ -23,6 +23,8 @@ const SEED_LUNES_AT_LIMITS: u64 = 2142;
 const SEED_HUGE_AND_TINY_MIXED: u64 = 343;
 const SEED_DIAMOND_FILTER: u64 = 46;
 const SEED_EXACT_SQUARED_LENGTHS: u64 = 1_000_000;
+const SEED_WEDGES: u64 = 360;
+const SEED_WEDGES_PERTURBED: u64 = 361;
 
 fn next_up_or_down(v: f64, rng: &mut StdRng) -> f64 {
     let k: i64 = rng.gen_range(-2..=2);
@@ -1072,4 +1074,180 @@ fn exact_squared_lengths_are_exact_where_claimed() {
         claimed > 1000 && declined > 1000 && ties > 100,
         "{claimed} {declined} {ties}"
     );
+}
+
+/// The wedge at `o` from ray `first` counter-clockwise to ray `last` by
+/// angular order in exact rationals, independent of the kernel's case
+/// analysis: directions are ordered by the half-turn `[0, π)` or
+/// `[π, 2π)` they lie in, measured from `first − o`, then by their cross
+/// product; `x` is inside iff it is not on the ray `first` and comes before
+/// `last` (or `last` is on the ray `first`: a full turn).
+fn wedge_by_angular_order(o: Point, first: Point, last: Point, x: Point) -> bool {
+    use oracle::{to_rational, BigRational};
+    let offset = |p: Point| {
+        [
+            to_rational(p[0]) - to_rational(o[0]),
+            to_rational(p[1]) - to_rational(o[1]),
+        ]
+    };
+    let zero = BigRational::from_integer(0.into());
+    let cross = |a: &[BigRational; 2], b: &[BigRational; 2]| {
+        (a[0].clone() * b[1].clone() - a[1].clone() * b[0].clone()).cmp(&zero)
+    };
+    let dot = |a: &[BigRational; 2], b: &[BigRational; 2]| {
+        (a[0].clone() * b[0].clone() + a[1].clone() * b[1].clone()).cmp(&zero)
+    };
+    let (u, w, d) = (offset(first), offset(last), offset(x));
+    if d[0] == zero && d[1] == zero {
+        return false;
+    }
+    use std::cmp::Ordering::{Equal, Greater};
+    let at_zero = |a: &[BigRational; 2]| cross(&u, a) == Equal && dot(&u, a) == Greater;
+    let half = |a: &[BigRational; 2]| u8::from(!(cross(&u, a) == Greater || at_zero(a)));
+    let before = |a: &[BigRational; 2], b: &[BigRational; 2]| {
+        half(a) < half(b) || (half(a) == half(b) && cross(a, b) == Greater)
+    };
+    !at_zero(&d) && (at_zero(&w) || before(&d, &w))
+}
+
+/// `strictly_inside_wedge` against the angular-order reference on small
+/// integer configurations (collinear rays, straight and reflex corners,
+/// full turns with `last` on the ray `first` or equal to it, `x` on either
+/// ray or at `o`), on nearly degenerate doubles and at huge and tiny
+/// magnitudes; every kind of corner and both answers occur often.
+#[test]
+fn wedges_match_the_angular_order() {
+    let mut rng = StdRng::seed_from_u64(SEED_WEDGES);
+    let mut seen = [[0usize; 2]; 4]; // per corner kind: [outside, inside]
+    let mut check = |o: Point, first: Point, last: Point, x: Point| {
+        if first == o || last == o {
+            return;
+        }
+        let expected = wedge_by_angular_order(o, first, last, x);
+        assert_eq!(
+            strictly_inside_wedge(o, first, last, x),
+            expected,
+            "o {o:?}, first {first:?}, last {last:?}, x {x:?}"
+        );
+        let kind = match oracle::orient(o, first, last) {
+            1 => 0,
+            -1 => 1,
+            _ if oracle::dot_sign(o, first, last) < 0 => 2,
+            _ => 3,
+        };
+        seen[kind][expected as usize] += 1;
+    };
+    let small = |rng: &mut StdRng| [rng.gen_range(-3..=3) as f64, rng.gen_range(-3..=3) as f64];
+    for _ in 0..40_000 {
+        let (o, first) = (small(&mut rng), small(&mut rng));
+        let last = match rng.gen_range(0..4) {
+            // On the line of the first ray: a half or a full turn.
+            0 => {
+                let k = [-2.0, -1.0, 1.0, 2.0][rng.gen_range(0..4)];
+                [o[0] + k * (first[0] - o[0]), o[1] + k * (first[1] - o[1])]
+            }
+            1 => first,
+            _ => small(&mut rng),
+        };
+        let x = match rng.gen_range(0..6) {
+            0 => o,
+            1 => first,
+            2 => last,
+            _ => small(&mut rng),
+        };
+        check(o, first, last, x);
+    }
+    for &(scale, offset) in &[
+        (1.0, 0.0),
+        (1e-3, 2f64.powi(40)),
+        (2f64.powi(-120), 0.0),
+        (2f64.powi(180), 0.0),
+    ] {
+        for _ in 0..5000 {
+            let [o, first, last, x] = sample(&mut rng, scale, offset);
+            check(o, first, last, x);
+            // The same corner with x exactly on the line through o and
+            // first, on either side.
+            let k = [-3.0, 2.0][rng.gen_range(0..2)];
+            let on_line = [o[0] + k * (first[0] - o[0]), o[1] + k * (first[1] - o[1])];
+            check(o, first, last, on_line);
+        }
+    }
+    assert!(
+        seen.iter().all(|kind| kind[0] > 500 && kind[1] > 500),
+        "{seen:?}"
+    );
+}
+
+/// `strictly_inside_wedge_symbolic` against the same angular order on the
+/// perturbed points (the oracle's perturbed orientation), on lattice sets
+/// full of collinear triples; the perturbation never leaves a direction on
+/// a ray but its own point's.
+#[test]
+fn perturbed_wedges_match_the_perturbed_angular_order() {
+    let mut rng = StdRng::seed_from_u64(SEED_WEDGES_PERTURBED);
+    let mut answers = [0usize; 2];
+    for _ in 0..200 {
+        let mut points: Vec<Point> = Vec::new();
+        while points.len() < 8 {
+            let p = [rng.gen_range(-2..=2) as f64, rng.gen_range(-2..=2) as f64];
+            if !points.contains(&p) {
+                points.push(p);
+            }
+        }
+        for _ in 0..100 {
+            let label = |rng: &mut StdRng| rng.gen_range(0..points.len() as u32);
+            let (o, first, last, x) = (
+                label(&mut rng),
+                label(&mut rng),
+                label(&mut rng),
+                label(&mut rng),
+            );
+            if first == o || last == o {
+                continue;
+            }
+            let orient = |a: u32, b: u32, c: u32| oracle::orient_perturbed(&points, a, b, c);
+            // Angles from the ray `first`: half-turn, then orientation.
+            let half = |a: u32| u8::from(!(a == first || orient(o, first, a) > 0));
+            let before = |a: u32, b: u32| {
+                half(a) < half(b) || (half(a) == half(b) && a != b && orient(o, a, b) > 0)
+            };
+            let expected = x != o && x != first && (last == first || before(x, last));
+            assert_eq!(
+                strictly_inside_wedge_symbolic(&points, o, first, last, x),
+                expected,
+                "{points:?}: o {o}, first {first}, last {last}, x {x}"
+            );
+            answers[expected as usize] += 1;
+        }
+    }
+    assert!(answers.iter().all(|&k| k > 3000), "{answers:?}");
+}
+
+/// Zero-length rays bound no wedge and are refused; a zero direction is
+/// inside no wedge; `same_direction` is the ray rule.
+#[test]
+fn zero_lengths_in_wedges() {
+    let o = [1.0, 1.0];
+    assert!(!strictly_inside_wedge(o, [2.0, 1.0], [1.0, 2.0], o));
+    assert!(!strictly_inside_wedge(o, [2.0, 1.0], [2.0, 1.0], o));
+    assert!(strictly_inside_wedge(o, [2.0, 1.0], [2.0, 1.0], [0.0, 1.0]));
+    assert!(!strictly_inside_wedge(
+        o,
+        [2.0, 1.0],
+        [3.0, 1.0],
+        [5.0, 1.0]
+    ));
+    assert!(same_direction(o, [2.0, 1.0], [5.0, 1.0]));
+    assert!(!same_direction(o, [2.0, 1.0], [0.0, 1.0]));
+    assert!(!same_direction(o, [2.0, 1.0], o));
+    for (first, last) in [(o, [2.0, 1.0]), ([2.0, 1.0], o)] {
+        let refused =
+            std::panic::catch_unwind(|| strictly_inside_wedge(o, first, last, [0.0, 0.0]));
+        assert!(refused.is_err(), "first {first:?}, last {last:?}");
+    }
+    let points = [[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]];
+    let refused = std::panic::catch_unwind(|| strictly_inside_wedge_symbolic(&points, 0, 0, 1, 2));
+    assert!(refused.is_err());
+    assert!(!strictly_inside_wedge_symbolic(&points, 0, 1, 2, 0));
 }

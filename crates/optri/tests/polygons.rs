@@ -31,8 +31,8 @@ use optri::{
 };
 use optri_oracle::polygon as op;
 use optri_oracle::{
-    all_triangulations, incircle, klincsek, max_edge_squared, max_twice_area, min_twice_area,
-    total_length, BigRational, MaxMinArea, MinMaxArea, MinMaxLength, MinWeight,
+    all_triangulations, constrained_delaunay_check, klincsek, max_edge_squared, max_twice_area,
+    min_twice_area, total_length, BigRational, MaxMinArea, MinMaxArea, MinMaxLength, MinWeight,
 };
 use rand::rngs::StdRng;
 use rand::seq::SliceRandom;
@@ -158,30 +158,6 @@ fn diagonals_of(n: usize, tris: &[[u32; 3]]) -> Vec<[u32; 2]> {
     e
 }
 
-/// Every interior edge of the triangulation is locally Delaunay: the apex of
-/// the triangle on one side is not strictly inside the other's circumcircle.
-fn assert_locally_delaunay(ring: &[Point], tris: &[[u32; 3]], what: &str) -> usize {
-    use std::collections::HashMap;
-    let mut apex: HashMap<(u32, u32), u32> = HashMap::new();
-    for &[a, b, c] in tris {
-        for (u, v, w) in [(a, b, c), (b, c, a), (c, a, b)] {
-            apex.insert((u, v), w);
-        }
-    }
-    let p = |i: u32| ring[i as usize];
-    let mut checked = 0;
-    for (&(u, v), &w) in &apex {
-        if let Some(&x) = apex.get(&(v, u)) {
-            assert!(
-                incircle(p(u), p(v), p(w), p(x)) <= 0,
-                "{what}: edge ({u}, {v}) is not locally Delaunay"
-            );
-            checked += 1;
-        }
-    }
-    checked / 2
-}
-
 /// Checks every criterion on one polygon against `best` (or, without it,
 /// against Klincsek), and greedy and delaunay against their definitions.
 fn check_polygon(ring: &[Point], best: &Values, what: &str) {
@@ -198,7 +174,11 @@ fn check_polygon(ring: &[Point], best: &Values, what: &str) {
     );
     let cdt = run(&polygon, Criterion::Delaunay, what);
     // Every one of the n − 3 interior edges is checked.
-    assert_eq!(assert_locally_delaunay(ring, &cdt, what), ring.len() - 3);
+    let n = ring.len() as u32;
+    let boundary: Vec<[u32; 2]> = (0..n).map(|i| [i, (i + 1) % n]).collect();
+    let checked =
+        constrained_delaunay_check(ring, &cdt, &boundary).unwrap_or_else(|e| panic!("{what}: {e}"));
+    assert_eq!(checked, ring.len() - 3, "{what}");
 }
 
 /// What the inputs of a test covered: polygons with a straight (180°)
@@ -619,50 +599,6 @@ fn area_criteria_on_general_point_sets_are_honest() {
     );
     assert_eq!(Criterion::MinmaxArea.name(), "minmax-area");
     assert!(Criterion::MaxminArea.info().reference.contains("Vassilev"));
-}
-
-/// Timings of the polygon program on random star-shaped polygons:
-/// `cargo test --release -p optri --test polygons -- --ignored --nocapture`.
-#[test]
-#[ignore]
-fn polygon_program_timings() {
-    let mut rng = StdRng::seed_from_u64(TIMING_SEED);
-    for n in [200, 500, 1000] {
-        // A random star (few diagonals), and a circle with one dent (vertex 0
-        // pulled in to a reflex corner: almost every chord is a diagonal,
-        // the program's worst case).
-        let star: Vec<Point> = op::star_polygon(&mut rng, n, 1e6);
-        let mut dented: Vec<Point> = (0..n)
-            .map(|k| {
-                let a = k as f64 * std::f64::consts::TAU / n as f64;
-                [(1e6 * a.cos()).round(), (1e6 * a.sin()).round()]
-            })
-            .collect();
-        dented[0] = [9e5, 0.0];
-        for (shape, ring) in [("star", star), ("dented circle", dented)] {
-            let polygon = SimplePolygon::new(&ring).unwrap();
-            for c in [
-                Criterion::MinmaxArea,
-                Criterion::MinmaxLength,
-                Criterion::MinWeight,
-            ] {
-                let start = std::time::Instant::now();
-                let s = triangulate_polygon(&polygon, c).unwrap();
-                let ms = start.elapsed().as_secs_f64() * 1e3;
-                s.triangulation.validate().unwrap();
-                let phases: Vec<String> = s
-                    .phases
-                    .iter()
-                    .map(|p| format!("{} {:.0} ms", p.name, p.ms))
-                    .collect();
-                println!(
-                    "n = {n:5} {shape:14} {:14} {ms:9.0} ms ({})",
-                    c.name(),
-                    phases.join(", ")
-                );
-            }
-        }
-    }
 }
 
 /// Points in strictly convex position (Algorithm 44) against the exhaustive

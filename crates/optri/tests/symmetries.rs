@@ -12,9 +12,20 @@
 //! and cocircular sets from `optri_oracle::inputs`, drawn from a proptest
 //! seed. The default case counts keep CI fast; `heavy_symmetry_sweep`
 //! (`#[ignore]`) runs many more, larger sets.
+//!
+//! Simple polygons too: every polygon criterion gives the same triangles
+//! (as ring positions) under exact scalings and translations, and the
+//! constrained Delaunay triangulation also wherever the ring starts (its
+//! cocircular faces are fanned from a vertex chosen by coordinates), on
+//! cocircular polygons (the integer points of a circle, with and without
+//! the centre), rectangles, lattice histograms full of cocircular unit
+//! squares and random star polygons.
 
-use optri::{graph, triangulate, Criterion, Error, GraphKind, PointSet};
-use optri_oracle::inputs;
+use optri::{
+    graph, triangulate, triangulate_polygon, Criterion, Error, GraphKind, PointSet, SimplePolygon,
+};
+use optri_oracle::polygon as op;
+use optri_oracle::{constrained_delaunay_check, inputs};
 use proptest::prelude::*;
 use proptest::test_runner::TestCaseError;
 use rand::rngs::StdRng;
@@ -39,6 +50,20 @@ enum Outcome {
     Failed(std::mem::Discriminant<Error>),
 }
 
+/// Triangles as a set: each sorted, then the list.
+fn sorted_triangles(triangles: &[[u32; 3]]) -> Vec<[u32; 3]> {
+    let mut t: Vec<[u32; 3]> = triangles
+        .iter()
+        .map(|t| {
+            let mut t = *t;
+            t.sort_unstable();
+            t
+        })
+        .collect();
+    t.sort_unstable();
+    t
+}
+
 fn criterion_outcome(points: &[Point], criterion: Criterion) -> Result<Outcome, TestCaseError> {
     let set = match PointSet::new(points) {
         Ok(set) => set,
@@ -50,18 +75,9 @@ fn criterion_outcome(points: &[Point], criterion: Criterion) -> Result<Outcome, 
                 .triangulation
                 .validate()
                 .map_err(|e| TestCaseError::fail(format!("{criterion:?}: invalid: {e}")))?;
-            let mut t: Vec<[u32; 3]> = solution
-                .triangulation
-                .triangles()
-                .iter()
-                .map(|t| {
-                    let mut t = *t;
-                    t.sort_unstable();
-                    t
-                })
-                .collect();
-            t.sort_unstable();
-            Ok(Outcome::Triangles(t))
+            Ok(Outcome::Triangles(sorted_triangles(
+                solution.triangulation.triangles(),
+            )))
         }
         Err(e) => Ok(Outcome::Failed(std::mem::discriminant(&e))),
     }
@@ -292,4 +308,189 @@ fn heavy_symmetry_sweep() {
             symmetry_case(kind, seed, size)
         })
         .unwrap();
+}
+
+/// A polygon family, drawn from a seed: cocircular (an arc of the integer
+/// points of `x² + y² = 25` in order, sometimes closed through the centre),
+/// a rectangle, a lattice histogram, or a random star.
+fn polygon_family(kind: u8, seed: u64, size: usize) -> Vec<Point> {
+    let mut rng = StdRng::seed_from_u64(seed);
+    match kind % 4 {
+        0 => {
+            let circle = inputs::circle_r5_ccw();
+            let start = rng.gen_range(0..circle.len());
+            let keep = 3 + size % 10;
+            let mut ring: Vec<Point> = (0..keep)
+                .map(|k| circle[(start + k) % circle.len()])
+                .collect();
+            if keep < circle.len() && rng.gen_bool(0.5) {
+                ring.push([0.0, 0.0]);
+            }
+            ring
+        }
+        1 => {
+            let (w, h) = (rng.gen_range(1..20) as f64, rng.gen_range(1..20) as f64);
+            vec![[0.0, 0.0], [w, 0.0], [w, h], [0.0, h]]
+        }
+        2 => {
+            let lattice = rng.gen_bool(0.7);
+            op::histogram(&mut rng, 2 + size % 6, 4, lattice)
+        }
+        _ => op::star_polygon(&mut rng, 5 + size % 12, 100.0),
+    }
+}
+
+/// The sorted triangles (each sorted) of a polygon criterion's answer, or
+/// the error's variant; the constrained Delaunay triangulation is checked
+/// against the oracle (every interior edge locally Delaunay).
+fn polygon_outcome(ring: &[Point], criterion: Criterion) -> Result<Outcome, TestCaseError> {
+    let polygon = match SimplePolygon::new(ring) {
+        Ok(polygon) => polygon,
+        Err(e) => return Ok(Outcome::Failed(std::mem::discriminant(&e))),
+    };
+    let solution = match triangulate_polygon(&polygon, criterion) {
+        Ok(solution) => solution,
+        Err(e) => return Ok(Outcome::Failed(std::mem::discriminant(&e))),
+    };
+    solution
+        .triangulation
+        .validate()
+        .map_err(|e| TestCaseError::fail(format!("{criterion:?}: invalid: {e}")))?;
+    let triangles = solution.triangulation.triangles();
+    if criterion == Criterion::Delaunay {
+        let n = ring.len() as u32;
+        let boundary: Vec<[u32; 2]> = (0..n).map(|i| [i, (i + 1) % n]).collect();
+        let checked = constrained_delaunay_check(ring, triangles, &boundary)
+            .map_err(|e| TestCaseError::fail(format!("{ring:?}: {e}")))?;
+        prop_assert_eq!(checked, ring.len() - 3);
+    }
+    Ok(Outcome::Triangles(sorted_triangles(triangles)))
+}
+
+fn polygon_answers(ring: &[Point]) -> Result<Vec<(Criterion, Outcome)>, TestCaseError> {
+    Criterion::ALL
+        .iter()
+        .filter(|c| c.supports_polygons())
+        .map(|&c| Ok((c, polygon_outcome(ring, c)?)))
+        .collect()
+}
+
+/// The polygon answers of `ring` equal those of its power-of-two scalings
+/// and the given exact translations, and its constrained Delaunay
+/// triangulation is the same, mapped back, for every start of the ring.
+/// Returns how many transformed copies were compared.
+fn check_polygon_symmetries(ring: &[Point], offsets: &[Point]) -> Result<usize, TestCaseError> {
+    let base = polygon_answers(ring)?;
+    let mut compared = 0;
+    for &k in SCALES {
+        let got = polygon_answers(&scaled(ring, k))?;
+        prop_assert_eq!(&got, &base, "scale 2^{} of {:?}", k, ring);
+        compared += 1;
+    }
+    for &offset in offsets {
+        let q = translated(ring, offset).expect("the test's offsets are exact");
+        let got = polygon_answers(&q)?;
+        prop_assert_eq!(&got, &base, "offset {:?} of {:?}", offset, ring);
+        compared += 1;
+    }
+    let delaunay = polygon_outcome(ring, Criterion::Delaunay)?;
+    let n = ring.len();
+    for start in 1..n {
+        let rotated: Vec<Point> = (0..n).map(|i| ring[(i + start) % n]).collect();
+        let Outcome::Triangles(t) = polygon_outcome(&rotated, Criterion::Delaunay)? else {
+            return Err(TestCaseError::fail(format!("{rotated:?} failed")));
+        };
+        let back: Vec<[u32; 3]> = t
+            .iter()
+            .map(|t| t.map(|i| ((i as usize + start) % n) as u32))
+            .collect();
+        prop_assert_eq!(
+            &Outcome::Triangles(sorted_triangles(&back)),
+            &delaunay,
+            "ring {:?} started at {}",
+            ring,
+            start
+        );
+        compared += 1;
+    }
+    Ok(compared)
+}
+
+fn polygon_symmetry_case(kind: u8, seed: u64, size: usize) -> Result<(), TestCaseError> {
+    let ring = polygon_family(kind, seed, size);
+    let compared = check_polygon_symmetries(&ring, &offsets(seed))?;
+    prop_assert!(compared >= SCALES.len() + 2 + ring.len() - 1);
+    Ok(())
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(CASES))]
+
+    #[test]
+    fn cocircular_polygons(seed in any::<u64>(), size in 0usize..12) {
+        polygon_symmetry_case(0, seed, size)?;
+    }
+
+    #[test]
+    fn rectangles(seed in any::<u64>(), size in 0usize..4) {
+        polygon_symmetry_case(1, seed, size)?;
+    }
+
+    #[test]
+    fn lattice_histograms(seed in any::<u64>(), size in 0usize..12) {
+        polygon_symmetry_case(2, seed, size)?;
+    }
+
+    #[test]
+    fn star_polygons(seed in any::<u64>(), size in 0usize..12) {
+        polygon_symmetry_case(3, seed, size)?;
+    }
+}
+
+/// The twelve integer points `(±5, 0)`, `(0, ±5)`, `(±3, ±4)`, `(±4, ±3)`
+/// of a circle as a polygon, an octagon of eight of them, and a rectangle:
+/// all cocircular, so every triangulation is Delaunay and only the fan rule
+/// decides; the answer is the fan from the lexicographically smallest
+/// vertex, wherever the ring starts.
+#[test]
+fn cocircular_polygons_are_fanned_from_their_lowest_vertex() {
+    let circle = inputs::circle_r5_ccw();
+    let octagon: Vec<Point> = circle
+        .iter()
+        .step_by(3)
+        .chain(circle.iter().skip(1).step_by(3))
+        .copied()
+        .collect();
+    let mut octagon_sorted: Vec<Point> = octagon.clone();
+    // The octagon's corners in counter-clockwise order.
+    octagon_sorted.sort_by(|a, b| a[1].atan2(a[0]).total_cmp(&b[1].atan2(b[0])));
+    for ring in [
+        circle.clone(),
+        octagon_sorted,
+        vec![[0.0, 0.0], [7.0, 0.0], [7.0, 3.0], [0.0, 3.0]],
+    ] {
+        let n = ring.len();
+        let lowest = (0..n)
+            .min_by(|&a, &b| {
+                (ring[a][0], ring[a][1])
+                    .partial_cmp(&(ring[b][0], ring[b][1]))
+                    .unwrap()
+            })
+            .unwrap() as u32;
+        for start in 0..n {
+            let rotated: Vec<Point> = (0..n).map(|i| ring[(i + start) % n]).collect();
+            let polygon = SimplePolygon::new(&rotated).unwrap();
+            let s = triangulate_polygon(&polygon, Criterion::Delaunay).unwrap();
+            s.triangulation.validate().unwrap();
+            let apex = ((lowest as usize + n - start) % n) as u32;
+            assert_eq!(s.triangulation.triangles().len(), n - 2);
+            assert!(
+                s.triangulation
+                    .triangles()
+                    .iter()
+                    .all(|t| t.contains(&apex)),
+                "{ring:?} from {start}: not the fan from its lowest vertex"
+            );
+        }
+    }
 }

@@ -6,16 +6,21 @@
 //! cargo build --release -p optri-bench --bin area_timing
 //! target/release/area_timing ratio 500 1000 2000     # product vs cubic, both criteria
 //! target/release/area_timing scale 2000 4000 8000    # product only
+//! target/release/area_timing routes 500 1000 2000    # the routes' CPU times
 //! ```
+//! `routes`: both MaxMin routes of Algorithm 44 (range-max and
+//! sort-and-search) and MinMax on ellipse polygons, CPU (wall) seconds and
+//! their growth against `n² log n`.
 
 use optri::kernel::compare_areas;
-use optri::{triangulate, Criterion, PointSet};
-use optri_oracle::inputs::convex_lens;
+use optri::{triangulate, triangulate_polygon, Criterion, PointSet};
+use optri_oracle::inputs::{convex_lens, ellipse_polygon};
 use rand::{rngs::StdRng, SeedableRng};
 use std::cmp::Ordering;
 use std::time::Instant;
 
 const SEED_CONVEX: u64 = 44;
+const SEED_ROUTES: u64 = 0x5449_4d45_0000_000a;
 
 fn secs<T>(f: impl FnOnce() -> T) -> (T, f64) {
     let start = Instant::now();
@@ -39,10 +44,81 @@ fn median(mut v: Vec<f64>) -> f64 {
     v[v.len() / 2]
 }
 
+/// CPU seconds of this thread so far (Linux), if readable.
+fn thread_cpu_seconds() -> Option<f64> {
+    let stat = std::fs::read_to_string("/proc/thread-self/schedstat").ok()?;
+    let nanos: f64 = stat.split_whitespace().next()?.parse().ok()?;
+    Some(nanos * 1e-9)
+}
+
+/// Runs `f`, returning its result, wall-clock seconds and CPU seconds.
+fn timed<T>(f: impl FnOnce() -> T) -> (T, f64, f64) {
+    let (wall, cpu) = (Instant::now(), thread_cpu_seconds());
+    let out = f();
+    let cpu = match (cpu, thread_cpu_seconds()) {
+        (Some(a), Some(b)) => b - a,
+        _ => f64::NAN,
+    };
+    (out, wall.elapsed().as_secs_f64(), cpu)
+}
+
+/// The two MaxMin routes and MinMax on strictly convex ellipse polygons:
+/// CPU (wall) seconds, the routes' optima equal, and the growth of the CPU
+/// times against `n² log n`.
+fn routes(sizes: &[usize]) {
+    let mut rng = StdRng::seed_from_u64(SEED_ROUTES);
+    let mut previous: Option<(usize, [f64; 3])> = None;
+    for &n in sizes {
+        let points = ellipse_polygon(&mut rng, n, 1e12, 1.0);
+        let m = points.len();
+        let polygon = optri::SimplePolygon::new(&points).expect("a convex polygon");
+        assert!(polygon.is_strictly_convex());
+        let (a, wall_a, cpu_a) = timed(|| triangulate_polygon(&polygon, Criterion::MaxminArea));
+        let (b, wall_b, cpu_b) = timed(|| {
+            optri::MaxMinAreaDecision::new(&polygon)
+                .expect("a strictly convex polygon")
+                .optimum()
+        });
+        let (c, wall_c, cpu_c) = timed(|| triangulate_polygon(&polygon, Criterion::MinmaxArea));
+        let (a, c) = (
+            a.expect("range-max").triangulation,
+            c.expect("minmax").triangulation,
+        );
+        for t in [&a, &b, &c] {
+            t.validate().expect("a triangulation");
+        }
+        assert_eq!(
+            optri_oracle::min_twice_area(&points, a.triangles()),
+            optri_oracle::min_twice_area(&points, b.triangles()),
+            "n = {m}: the MaxMin routes disagree"
+        );
+        println!(
+            "n = {m:5}  CPU (wall) seconds: maxmin range-max {cpu_a:7.3} ({wall_a:7.3}), \
+             maxmin sort-and-search {cpu_b:7.3} ({wall_b:7.3}), minmax {cpu_c:7.3} ({wall_c:7.3})"
+        );
+        let times = [cpu_a, cpu_b, cpu_c];
+        if let Some((m0, t0)) = previous {
+            let model = (m * m) as f64 * (m as f64).ln() / ((m0 * m0) as f64 * (m0 as f64).ln());
+            println!(
+                "  CPU ratio to n = {m0}: {:.2} / {:.2} / {:.2}  (n² log n predicts {model:.2}, n³ {:.2})",
+                times[0] / t0[0],
+                times[1] / t0[1],
+                times[2] / t0[2],
+                (m as f64 / m0 as f64).powi(3)
+            );
+        }
+        previous = Some((m, times));
+    }
+}
+
 fn main() {
     let mut args = std::env::args().skip(1);
     let mode = args.next().unwrap_or_else(|| "ratio".into());
     let sizes: Vec<usize> = args.map(|a| a.parse().expect("a size")).collect();
+    if mode == "routes" {
+        routes(&sizes);
+        return;
+    }
     let runs: usize = std::env::var("RUNS")
         .ok()
         .and_then(|r| r.parse().ok())

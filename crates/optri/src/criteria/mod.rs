@@ -13,17 +13,15 @@
 //! | `min-weight` | `min_weight` | Dickerson et al. 1997 (LMT-skeleton); Klincsek 1980 |
 //! | `maxmin-area`, `minmax-area` | `area` | Vassilev 2005 |
 //!
-//! Simple polygons ([`crate::triangulate_polygon`]): a criterion that takes
-//! them has a [`PolygonSolver`] in its entry; those of `delaunay`,
-//! `minmax-length`, `greedy` and `min-weight` are in `polygon_criteria`, the
-//! area ones in `area`.
+//! Simple polygons ([`crate::triangulate_polygon`]): every criterion has a
+//! [`PolygonSolver`] in its own module; the decomposable ones run the shared
+//! polygon program on the polygon ([`crate::polygon_program`]).
 
 pub(crate) mod area;
 pub(crate) mod delaunay;
 pub(crate) mod greedy;
 pub(crate) mod min_weight;
 pub(crate) mod minmax_length;
-pub(crate) mod polygon_criteria;
 
 use crate::error::Result;
 use crate::structures::{PointSet, SimplePolygon, Triangulation};

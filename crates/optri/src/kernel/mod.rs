@@ -50,6 +50,7 @@ mod norm;
 mod predicates;
 mod squared_length;
 mod symbolic;
+mod wedge;
 
 /// A point in the plane, `[x, y]`.
 pub type Point = [f64; 2];
@@ -81,6 +82,7 @@ pub use symbolic::{
     compare_equal_lengths_symbolic, compare_lengths_symbolic, height_sign, orient_symbolic,
     segment_order,
 };
+pub use wedge::{same_direction, strictly_inside_wedge, strictly_inside_wedge_symbolic};
 
 /// Why a coordinate is not accepted (see the module docs for the range).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

@@ -25,6 +25,11 @@
 //! [`combine`]: Objective::combine
 //! [`better`]: Objective::better
 
+mod simple_polygon;
+
+pub use simple_polygon::MAX_POLYGON_VERTICES;
+pub(crate) use simple_polygon::{check_size, corner_point, on_simple_polygon};
+
 /// A decomposable objective: the cost of a triangulation is the
 /// [`combine`](Self::combine) of the costs of its diagonals and triangles.
 pub(crate) trait Objective {

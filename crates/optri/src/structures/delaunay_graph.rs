@@ -17,9 +17,25 @@ use crate::error::{Error, Result};
 use crate::kernel::{incircle_sign, Point};
 use spade::{DelaunayTriangulation, HasPosition, Point2, Triangulation as _};
 
-struct Vertex {
+/// A point handed to spade with its index, so that every triangle read back
+/// names its corners by the caller's numbering.
+pub(super) struct Vertex {
     position: Point2<f64>,
     id: u32,
+}
+
+impl Vertex {
+    /// The points `points` with their indices as ids.
+    pub(super) fn numbered(points: &[Point]) -> Vec<Vertex> {
+        points
+            .iter()
+            .enumerate()
+            .map(|(i, p)| Vertex {
+                position: Point2::new(p[0], p[1]),
+                id: i as u32,
+            })
+            .collect()
+    }
 }
 
 impl HasPosition for Vertex {
@@ -79,7 +95,7 @@ impl DelaunayGraph {
 
 fn build(points: &[Point], with_topology: bool) -> Result<DelaunayGraph> {
     let (mut triangles, mut neighbours) = spade_triangles(points)?;
-    fan_cocircular_faces(points, &mut triangles, &mut neighbours);
+    fan_cocircular_faces(points, &mut triangles, &mut neighbours, |_, _| false);
     canonical_order(&mut triangles, &mut neighbours);
     // Edges in the order their first triangle meets them: side `j` of `t`
     // is new unless the triangle across it comes earlier.
@@ -165,16 +181,9 @@ fn side_towards(neighbours: &[[u32; 3]], u: u32, t: u32) -> usize {
 /// spade's own structure is dropped before returning.
 #[allow(clippy::type_complexity)]
 fn spade_triangles(points: &[Point]) -> Result<(Vec<[u32; 3]>, Vec<[u32; 3]>)> {
-    let vertices: Vec<Vertex> = points
-        .iter()
-        .enumerate()
-        .map(|(i, p)| Vertex {
-            position: Point2::new(p[0], p[1]),
-            id: i as u32,
-        })
-        .collect();
-    let dt: DelaunayTriangulation<Vertex> = DelaunayTriangulation::bulk_load(vertices)
-        .map_err(|e| Error::Internal(format!("spade's Delaunay bulk load failed: {e:?}")))?;
+    let dt: DelaunayTriangulation<Vertex> =
+        DelaunayTriangulation::bulk_load(Vertex::numbered(points))
+            .map_err(|e| Error::Internal(format!("spade's Delaunay bulk load failed: {e:?}")))?;
     if dt.num_vertices() != points.len() {
         return Err(Error::Internal(format!(
             "spade's Delaunay triangulation kept {} of {} distinct points",
@@ -182,6 +191,18 @@ fn spade_triangles(points: &[Point]) -> Result<(Vec<[u32; 3]>, Vec<[u32; 3]>)> {
             points.len()
         )));
     }
+    Ok(triangle_arrays(&dt))
+}
+
+/// The inner triangles of a spade triangulation (Delaunay or constrained)
+/// of numbered vertices, counter-clockwise in the vertices' ids, and per
+/// side `j` (corner `j` to corner `j + 1`) the triangle across it
+/// ([`NO_TRIANGLE`] on the outer face).
+#[allow(clippy::type_complexity)]
+pub(super) fn triangle_arrays<T>(dt: &T) -> (Vec<[u32; 3]>, Vec<[u32; 3]>)
+where
+    T: spade::Triangulation<Vertex = Vertex>,
+{
     let mut triangles = Vec::with_capacity(dt.num_inner_faces());
     let mut neighbours = Vec::with_capacity(dt.num_inner_faces());
     // spade numbers the outer face 0 and lists inner faces in index order,
@@ -199,11 +220,13 @@ fn spade_triangles(points: &[Point]) -> Result<(Vec<[u32; 3]>, Vec<[u32; 3]>)> {
             }
         }));
     }
-    Ok((triangles, neighbours))
+    (triangles, neighbours)
 }
 
 /// Makes the triangulation independent of how spade built it: every face of
-/// four or more cocircular points is fanned from its smallest index.
+/// four or more cocircular points is fanned from its smallest index. Sides
+/// that are `fixed` (the constraints of a constrained triangulation) are
+/// never flipped, so a face they cut is fanned part by part.
 ///
 /// This is the regular triangulation of the points lifted to the paraboloid
 /// and then lowered by `δ_m` with `δ_0 ≫ δ_1 ≫ …` infinitesimal (a lowered
@@ -215,8 +238,17 @@ fn spade_triangles(points: &[Point]) -> Result<(Vec<[u32; 3]>, Vec<[u32; 3]>)> {
 /// perturbed (never zero) in-circle test end in the unique regular
 /// triangulation (each flip lowers the lifted surface; locally convex means
 /// convex), and starting from a Delaunay triangulation only cocircular
-/// quadrilaterals — always convex — are ever flipped.
-fn fan_cocircular_faces(points: &[Point], triangles: &mut [[u32; 3]], neighbours: &mut [[u32; 3]]) {
+/// quadrilaterals — always convex — are ever flipped. With fixed sides the
+/// same flips end in the constrained regular triangulation (every side not
+/// fixed locally regular), unique for the perturbed points and constrained
+/// Delaunay for the points themselves; starting from a constrained Delaunay
+/// triangulation, again only cocircular quadrilaterals are flipped.
+pub(super) fn fan_cocircular_faces(
+    points: &[Point],
+    triangles: &mut [[u32; 3]],
+    neighbours: &mut [[u32; 3]],
+    fixed: impl Fn(u32, u32) -> bool,
+) {
     let p = |v: u32| points[v as usize];
     let mut stack: Vec<(u32, u8)> = Vec::new();
     for (t, across) in neighbours.iter().enumerate() {
@@ -240,7 +272,7 @@ fn fan_cocircular_faces(points: &[Point], triangles: &mut [[u32; 3]], neighbours
         let k = side_towards(neighbours, u, t);
         let d = triangles[u as usize][(k + 2) % 3];
         let s = incircle_sign(p(a), p(b), p(c), p(d));
-        (s > 0 || (s == 0 && c.min(d) < a.min(b))).then_some((u, k))
+        ((s > 0 || (s == 0 && c.min(d) < a.min(b))) && !fixed(a, b)).then_some((u, k))
     };
     for &(t, j) in &stack {
         if illegal(triangles, neighbours, t, j as usize).is_some() {
@@ -283,7 +315,7 @@ fn fan_cocircular_faces(points: &[Point], triangles: &mut [[u32; 3]], neighbours
 /// corner, then sorted, so that the graph depends only on the triangles and
 /// never on spade's construction order (which depends on rounding: its bulk
 /// load compares projections with an absolute `f64::EPSILON`).
-fn canonical_order(triangles: &mut Vec<[u32; 3]>, neighbours: &mut Vec<[u32; 3]>) {
+pub(super) fn canonical_order(triangles: &mut Vec<[u32; 3]>, neighbours: &mut Vec<[u32; 3]>) {
     let rotation = |t: &[u32; 3]| {
         if t[0] < t[1] && t[0] < t[2] {
             0

@@ -6,6 +6,7 @@
 //! their left, so a zero-width crack is traversed on both sides and a vertex
 //! may occur several times in one boundary.
 
+use super::Csr;
 use crate::kernel::{compare_angles, Point};
 
 /// Half-edge representation of a plane graph on distinct points.
@@ -45,23 +46,10 @@ impl PlanarGraph {
         }
         let dest = |h: u32| origin[(h ^ 1) as usize];
         // Outgoing half-edges of each vertex, sorted counter-clockwise.
-        let mut offsets = vec![0usize; n + 1];
-        for &o in &origin {
-            offsets[o as usize + 1] += 1;
-        }
-        for v in 0..n {
-            offsets[v + 1] += offsets[v];
-        }
-        let mut fill = offsets.clone();
-        let mut around = vec![0u32; 2 * m];
-        for (h, &o) in origin.iter().enumerate() {
-            around[fill[o as usize]] = h as u32;
-            fill[o as usize] += 1;
-        }
+        let mut around = Csr::from_pairs(n, origin.iter().enumerate().map(|(h, &o)| (o, h as u32)));
         let mut outgoing = vec![u32::MAX; n];
         let mut next = vec![0u32; 2 * m];
-        for v in 0..n {
-            let star = &mut around[offsets[v]..offsets[v + 1]];
+        for (v, star) in around.rows_mut().enumerate() {
             if star.is_empty() {
                 continue;
             }

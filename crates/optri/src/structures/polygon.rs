@@ -2,8 +2,9 @@
 //! boundary order, the input of the polygon criteria (the thesis's
 //! decomposable criteria on simple polygons, minimum weight on polygons).
 
+use super::PolygonCycle;
 use crate::error::{Error, PolygonProblem, Result};
-use crate::kernel::{dot_sign, on_open_segment, orient_sign, segments_intersect, Point};
+use crate::kernel::{dot_sign, orient_sign, segments_intersect, Point};
 use crate::spatial::is_strictly_convex_cycle;
 use crate::structures::PointSet;
 
@@ -172,103 +173,35 @@ impl SimplePolygon {
         self.clockwise_input
     }
 
-    /// The ring position after `a` in counter-clockwise order.
-    #[inline]
-    fn ccw_next(&self, a: usize) -> usize {
-        let n = self.len();
-        if self.clockwise_input {
-            (a + n - 1) % n
-        } else {
-            (a + 1) % n
-        }
+    /// The polygon as a counter-clockwise cycle of its ring positions.
+    pub(crate) fn cycle(&self) -> PolygonCycle<'_> {
+        PolygonCycle::exact(self.vertices(), &self.counter_clockwise)
     }
 
-    /// The ring position before `a` in counter-clockwise order.
+    /// The counter-clockwise corner of ring position `a`.
     #[inline]
-    fn ccw_prev(&self, a: usize) -> usize {
-        let n = self.len();
+    fn corner_of(&self, a: usize) -> usize {
         if self.clockwise_input {
-            (a + 1) % n
+            (self.len() - a) % self.len()
         } else {
-            (a + n - 1) % n
+            a
         }
     }
 
     /// Is the chord between ring positions `a` and `b` a *diagonal*: does its
     /// open segment lie in the polygon's open interior? Exact (kernel
-    /// predicates only), O(n).
+    /// predicates only), O(n): the test of the polygon's corner cycle.
     ///
     /// Boundary edges, `a == b` and out-of-range positions are not
     /// diagonals; neither is a chord through a vertex (e.g. along a straight
     /// run of the boundary) or one that touches an edge.
-    ///
-    /// Why the test suffices: the open chord is connected and, once it is
-    /// known to meet the boundary nowhere, lies entirely inside or entirely
-    /// outside (Jordan); near `a` it is inside iff it leaves `a` strictly
-    /// into the interior angle. It meets a closed edge not incident to `a` or
-    /// `b` iff the closed segments intersect (a simple polygon has no vertex
-    /// on a non-incident edge, so such a meeting is never at `a` or `b`); it
-    /// meets an edge `ax` beyond `a` only if the two are collinear and
-    /// overlap, i.e. iff `x` is on the open chord (`b` cannot lie inside the
-    /// edge `ax`, again by simplicity), and likewise at `b`.
     pub fn is_diagonal(&self, a: usize, b: usize) -> bool {
         let n = self.len();
-        if a >= n || b >= n || a == b || self.ccw_next(a) == b || self.ccw_next(b) == a {
-            return false;
-        }
-        let v = self.vertices();
-        let (pa, pb) = (v[a], v[b]);
-        if !self.leaves_into_interior(a, pb) {
-            return false;
-        }
-        // Bounding boxes (exact coordinate comparisons) skip the edges far
-        // from the chord: an edge that meets the chord meets its box.
-        let lo = [pa[0].min(pb[0]), pa[1].min(pb[1])];
-        let hi = [pa[0].max(pb[0]), pa[1].max(pb[1])];
-        for u in 0..n {
-            let w = (u + 1) % n;
-            let (pu, pw) = (v[u], v[w]);
-            if (pu[0] < lo[0] && pw[0] < lo[0])
-                || (pu[0] > hi[0] && pw[0] > hi[0])
-                || (pu[1] < lo[1] && pw[1] < lo[1])
-                || (pu[1] > hi[1] && pw[1] > hi[1])
-            {
-                continue;
-            }
-            let incident = [u, w].iter().any(|&x| x == a || x == b);
-            if incident {
-                // The far endpoint(s) of an edge at a or b on the open chord.
-                if (u != a && u != b && on_open_segment(pu, pa, pb))
-                    || (w != a && w != b && on_open_segment(pw, pa, pb))
-                {
-                    return false;
-                }
-            } else if segments_intersect(pa, pb, pu, pw) {
-                return false;
-            }
-        }
-        true
-    }
-
-    /// Does the direction `target − vertex a` point strictly into the
-    /// interior angle at `a`? The interior is left of every counter-clockwise
-    /// edge, so the angle sweeps counter-clockwise from the ray towards the
-    /// next vertex to the ray towards the previous one.
-    fn leaves_into_interior(&self, a: usize, target: Point) -> bool {
-        let v = self.vertices();
-        let (o, next, prev) = (v[a], v[self.ccw_next(a)], v[self.ccw_prev(a)]);
-        let left_of_next = orient_sign(o, next, target);
-        let left_of_prev = orient_sign(o, prev, target);
-        match orient_sign(o, next, prev) {
-            // A convex corner: strictly left of `next`, strictly right of `prev`.
-            1 => left_of_next > 0 && left_of_prev < 0,
-            // A reflex corner: outside the closed convex exterior wedge that
-            // sweeps from `prev` to `next`.
-            -1 => !(left_of_prev >= 0 && left_of_next <= 0),
-            // A straight corner (a simple polygon never folds back): the open
-            // half-plane left of `next`.
-            _ => left_of_next > 0,
-        }
+        a < n
+            && b < n
+            && self
+                .cycle()
+                .is_diagonal(self.corner_of(a), self.corner_of(b))
     }
 
     /// Is every vertex a strict left turn (a strictly convex polygon)? Then

@@ -6,7 +6,7 @@ use crate::error::{Error, Result};
 use crate::kernel::{self, compare_areas, compare_lengths, orient_sign, Point};
 use crate::parallel::prelude::*;
 use crate::spatial::convex_hull_cycle;
-use crate::structures::{PointSet, SimplePolygon};
+use crate::structures::{Csr, PointSet, SimplePolygon};
 #[cfg(feature = "io")]
 use serde::Serialize;
 use std::sync::OnceLock;
@@ -331,29 +331,13 @@ impl Triangulation {
         // few hundred MB): at v, one entry (a, b) per triangle (v, a, b),
         // sorted, so directed edge v → a exists iff some entry at v starts
         // with a (binary search).
-        let mut offsets = vec![0u32; n + 1];
-        for t in &tris {
-            for &c in t {
-                offsets[c as usize + 1] += 1;
-            }
-        }
-        for v in 0..n {
-            offsets[v + 1] += offsets[v];
-        }
-        let mut fans = vec![(0u32, 0u32); 3 * tris.len()];
-        {
-            let mut fill: Vec<u32> = offsets[..n].to_vec();
-            for &[a, b, c] in &tris {
-                for (v, x, y) in [(a, b, c), (b, c, a), (c, a, b)] {
-                    fans[fill[v as usize] as usize] = (x, y);
-                    fill[v as usize] += 1;
-                }
-            }
-        }
-        for v in 0..n {
-            fans[offsets[v] as usize..offsets[v + 1] as usize].sort_unstable();
-        }
-        let fan = |v: u32| &fans[offsets[v as usize] as usize..offsets[v as usize + 1] as usize];
+        let mut fans = Csr::from_pairs(
+            n,
+            tris.iter()
+                .flat_map(|&[a, b, c]| [(a, (b, c)), (b, (c, a)), (c, (a, b))]),
+        );
+        fans.sort_rows();
+        let fan = |v: u32| fans.row(v);
         let has_edge = |u: u32, v: u32| fan(u).binary_search_by(|&(a, _)| a.cmp(&v)).is_ok();
         for v in 0..n as u32 {
             if let Some(w) = fan(v).windows(2).find(|w| w[0].0 == w[1].0) {

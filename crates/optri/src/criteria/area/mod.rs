@@ -11,12 +11,12 @@
 //! | other point sets | `general`: the best of Delaunay, Algorithm 75 (30°-triangulations over RNG ∪ hull), the optimum over all triangulations containing RNG ∪ hull, and Algorithm 76 (area-equalising flips); exact only when it meets a certified bound (reported in `Solution::bound`) | O(Σ k_f³) over the faces of RNG ∪ hull |
 //!
 //! Both measures are bottlenecks, so they decompose over a diagonal (thesis
-//! §2.1; brief §5: an optimum of a polygon is assembled from optima of the
-//! two sides of its first triangle's diagonals) and fit the
+//! §2.1: an optimum of a polygon is assembled from optima of the two sides
+//! of its first triangle's diagonals) and fit the
 //! [polygon program](crate::polygon_program) (objectives in `polygon`).
 //! Algorithm 44 needs strict convexity (Lemma 23 is strict only then), so
 //! collinear boundary points go to the polygon program; there a flat triangle
-//! would have area 0 and "win" minmax-area, so it is forbidden (brief §1.1).
+//! would have area 0 and "win" minmax-area, so it is forbidden.
 //!
 //! # Exactness
 //! Areas are compared, never added: every comparison is the kernel's exact
@@ -30,22 +30,24 @@
 
 mod convex;
 mod decision;
-mod general;
+pub(crate) mod general;
 pub(crate) mod polygon;
 
 pub use decision::{maxmin_area_at_least, MaxMinAreaDecision};
 
-use super::polygon_criteria::{check_size, corner_point, polygon_program, MAX_POLYGON_VERTICES};
 use super::{
     BoundMeasure, CertifiedBound, CriterionEntry, CriterionInfo, Diagnostics, Optimality, Options,
     Solved,
 };
 use crate::error::{Error, Result, UnsupportedReason};
 use crate::kernel::metrics::area;
+use crate::kernel::{compare_areas, Point};
+use crate::polygon_program::{check_size, corner_point, on_simple_polygon, MAX_POLYGON_VERTICES};
 use crate::spatial::{convex_hull_cycle, is_strictly_convex_cycle};
 use crate::structures::{PointSet, SimplePolygon, Triangulation};
 use crate::timing::{timed, Phase};
-use polygon::{convex_polygon_program, AreaBottleneck, BottleneckArea};
+use polygon::{convex_polygon_program, BottleneckArea};
+use std::cmp::Ordering;
 
 const REFERENCE: &str = "T. S. Vassilev, Optimal area triangulation, PhD thesis, \
                          University of Saskatchewan, 2005 (Algorithms 21 and 44)";
@@ -89,7 +91,33 @@ pub(crate) const MINMAX_INFO: CriterionInfo = CriterionInfo {
     reference: REFERENCE,
 };
 
+/// Which area bottleneck is optimised: the one enum of the area criteria
+/// (the convex algorithm, the polygon program and the general
+/// approximation all read it).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum AreaBottleneck {
+    /// Maximise the smallest triangle area.
+    MaxMin,
+    /// Minimise the largest triangle area.
+    MinMax,
+}
+
 impl AreaBottleneck {
+    /// Is the triangle `s` a strictly better bottleneck than `t` (corners
+    /// by index, `point` their coordinates): strictly larger for MaxMin,
+    /// strictly smaller for MinMax? Exact.
+    #[inline]
+    pub(crate) fn better(self, point: impl Fn(u32) -> Point, s: [u32; 3], t: [u32; 3]) -> bool {
+        if s == t {
+            return false;
+        }
+        let want = match self {
+            AreaBottleneck::MaxMin => Ordering::Greater,
+            AreaBottleneck::MinMax => Ordering::Less,
+        };
+        compare_areas(s.map(&point), t.map(&point)) == want
+    }
+
     fn criterion(self) -> &'static str {
         match self {
             AreaBottleneck::MaxMin => MAXMIN_INFO.name,
@@ -97,7 +125,7 @@ impl AreaBottleneck {
         }
     }
 
-    fn convex(self, points: &[crate::kernel::Point], polygon: &[u32]) -> Vec<[u32; 3]> {
+    fn convex(self, points: &[Point], polygon: &[u32]) -> Vec<[u32; 3]> {
         match self {
             AreaBottleneck::MaxMin => convex::maxmin_area_convex(points, polygon),
             AreaBottleneck::MinMax => convex::minmax_area_convex(points, polygon),
@@ -255,7 +283,7 @@ fn solve_polygon(
     check_size(polygon, criterion)?;
     let p = corner_point(polygon);
     let objective = BottleneckArea { point: &p, kind };
-    let triangulation = polygon_program(polygon, criterion, &objective, phases)?;
+    let triangulation = on_simple_polygon(polygon, criterion, &objective, phases)?;
     Ok(solved(
         triangulation,
         "Klincsek dynamic program on the polygon's diagonals, O(n^3), exact area comparisons",
@@ -264,18 +292,14 @@ fn solve_polygon(
 
 /// General point sets (not in convex position): the best of Delaunay,
 /// Algorithm 75, the optimum over triangulations containing RNG ∪ hull and
-/// Algorithm 76 (`general.rs`), exact only when it meets the certified bound.
+/// Algorithm 76 (`general`), exact only when it meets the certified bound.
 fn solve_general(
     points: &PointSet,
     kind: AreaBottleneck,
     phases: &mut Vec<Phase>,
 ) -> Result<Solved> {
-    let objective = match kind {
-        AreaBottleneck::MaxMin => general::AreaObjective::MaxMin,
-        AreaBottleneck::MinMax => general::AreaObjective::MinMax,
-    };
     let result = timed(phases, kind.criterion(), || {
-        general::area_general(points, objective)
+        general::area_general(points, kind)
     })?;
     let triangulation = Triangulation::from_distinct(points, result.triangles);
     let pts = points.points();

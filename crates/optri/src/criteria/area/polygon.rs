@@ -4,21 +4,12 @@
 //!
 //! A value is the bottleneck triangle itself, as its three corners (never an
 //! `f64` area): two values are compared by the kernel's exact
-//! [`compare_areas`] of the triangles' absolute areas (brief §1.2: comparisons
-//! only, no area is ever stored or rounded).
+//! [`compare_areas`](crate::kernel::compare_areas) of the triangles' absolute areas (comparisons only: no
+//! area is ever stored or rounded).
 
-use crate::kernel::{compare_areas, orient_sign, Point};
+use super::AreaBottleneck;
+use crate::kernel::{orient_sign, Point};
 use crate::polygon_program::{optimal_triangulation, Objective};
-use std::cmp::Ordering;
-
-/// Which area bottleneck is optimised.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(crate) enum AreaBottleneck {
-    /// Maximise the smallest triangle area.
-    MaxMin,
-    /// Minimise the largest triangle area.
-    MinMax,
-}
 
 /// No triangle yet: `+∞` for [`AreaBottleneck::MaxMin`] (the identity of a
 /// minimum), `0` for [`AreaBottleneck::MinMax`].
@@ -32,15 +23,6 @@ pub(crate) struct BottleneckArea<'a, P: Fn(usize) -> Point> {
 }
 
 impl<P: Fn(usize) -> Point> BottleneckArea<'_, P> {
-    /// Exact comparison of the areas of two triangles (`NONE` excluded).
-    fn compare(&self, s: [u32; 3], t: [u32; 3]) -> Ordering {
-        if s == t {
-            return Ordering::Equal;
-        }
-        let tri = |t: [u32; 3]| t.map(|c| (self.point)(c as usize));
-        compare_areas(tri(s), tri(t))
-    }
-
     /// Is `s` strictly better than `t` as a bottleneck (`NONE` = the
     /// identity, better than every triangle)?
     fn strictly_better(&self, s: [u32; 3], t: [u32; 3]) -> bool {
@@ -50,11 +32,7 @@ impl<P: Fn(usize) -> Point> BottleneckArea<'_, P> {
         if s == NONE {
             return true;
         }
-        let want = match self.kind {
-            AreaBottleneck::MaxMin => Ordering::Greater,
-            AreaBottleneck::MinMax => Ordering::Less,
-        };
-        self.compare(s, t) == want
+        self.kind.better(|c| (self.point)(c as usize), s, t)
     }
 }
 

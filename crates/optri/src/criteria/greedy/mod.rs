@@ -30,6 +30,7 @@
 mod convex;
 mod convex_delaunay;
 mod general;
+pub(crate) mod polygon;
 mod semicircular;
 
 use super::{CriterionEntry, CriterionInfo, Diagnostics, Optimality, Options, Solved};
@@ -43,7 +44,7 @@ use crate::timing::{Phase, Stopwatch};
 pub(crate) const ENTRY: CriterionEntry = CriterionEntry {
     info: INFO,
     solve,
-    solve_polygon: Some(super::polygon_criteria::solve_greedy),
+    solve_polygon: Some(polygon::solve),
 };
 
 pub(crate) const INFO: CriterionInfo = CriterionInfo {

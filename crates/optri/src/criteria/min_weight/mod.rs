@@ -39,10 +39,9 @@ use super::{
 };
 use crate::error::{Error, Result};
 use crate::kernel::{compare_length_sums, orient_sign, LengthInterval, Point};
-use crate::polygon_program::{optimal_triangulation, Objective};
+use crate::polygon_program::{corner_point, on_simple_polygon, optimal_triangulation, Objective};
 use crate::spatial::{bounding_box, convex_hull_cycle, PointCells};
-use crate::structures::PointSet;
-use crate::structures::Triangulation;
+use crate::structures::{PointSet, SimplePolygon, Triangulation};
 use crate::timing::{Phase, Stopwatch};
 use faces::Method;
 use std::cmp::Ordering;
@@ -51,7 +50,7 @@ use std::cmp::Ordering;
 pub(crate) const ENTRY: CriterionEntry = CriterionEntry {
     info: INFO,
     solve,
-    solve_polygon: Some(super::polygon_criteria::solve_min_weight),
+    solve_polygon: Some(solve_polygon),
 };
 
 pub(crate) const INFO: CriterionInfo = CriterionInfo {
@@ -109,6 +108,28 @@ pub const MAX_POINTS: usize = 4000;
 pub fn min_weight(points: &PointSet) -> Result<Triangulation> {
     let mut phases = Vec::new();
     solve(points, &Options::default(), &mut phases).map(|s| s.triangulation)
+}
+
+/// `min-weight` on a simple polygon ([`crate::triangulate_polygon`]): the
+/// polygon program with the total length of the diagonals (the boundary's
+/// length is the same in every triangulation), exact sums of square roots
+/// on undecided comparisons.
+pub(crate) fn solve_polygon(
+    polygon: &SimplePolygon,
+    _: &Options,
+    phases: &mut Vec<Phase>,
+) -> Result<Solved> {
+    let p = corner_point(polygon);
+    let triangulation =
+        on_simple_polygon(polygon, "min-weight", &TotalLength { point: &p }, phases)?;
+    Ok(Solved {
+        triangulation,
+        algorithm: "Klincsek dynamic program on the polygon, O(n^3), exact sums of square roots"
+            .to_string(),
+        optimality: Optimality::Exact,
+        diagnostics: Diagnostics::default(),
+        bound: None,
+    })
 }
 
 fn convex_min_weight(points: &PointSet, polygon: &[u32]) -> Result<Triangulation> {

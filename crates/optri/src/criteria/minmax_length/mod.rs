@@ -174,7 +174,7 @@ use std::cmp::Ordering::Greater;
 pub(crate) const ENTRY: CriterionEntry = CriterionEntry {
     info: INFO,
     solve,
-    solve_polygon: Some(super::polygon_criteria::solve_minmax_length),
+    solve_polygon: Some(polygon::solve_polygon),
 };
 
 pub(crate) const INFO: CriterionInfo = CriterionInfo {

@@ -3,14 +3,20 @@
 //! positions when the region has zero-width cracks, and each position is
 //! treated as its own corner ("cracks opened up a tiny amount").
 //!
-//! This file holds the exact (unperturbed) geometry of a region: which
-//! position pairs are diagonals, and §3's straightforward cubic dynamic
-//! program (Klincsek) used as the test reference and as the fallback.
+//! This file holds a region's length comparisons, on the exact or the
+//! perturbed points (its corners and diagonals are a
+//! [`PolygonCycle`]), §3's straightforward cubic dynamic program
+//! (Klincsek) used as the test reference and as the fallback, and the same
+//! program on a simple polygon given as input ([`solve_polygon`]).
 
-use crate::kernel::{
-    compare_lengths, compare_lengths_symbolic, dot_sign, orient_sign, orient_symbolic, Point,
+use crate::criteria::{Diagnostics, Optimality, Options, Solved};
+use crate::error::Result;
+use crate::kernel::{compare_lengths, compare_lengths_symbolic, Point};
+use crate::polygon_program::{
+    corner_point, on_simple_polygon, optimal_triangulation, LargestDiagonal,
 };
-use crate::polygon_program::{optimal_triangulation, LargestDiagonal};
+use crate::structures::{PolygonCycle, SimplePolygon};
+use crate::timing::Phase;
 use std::cmp::Ordering;
 
 /// A region: `vertices[i]` is the distinct-point index at position `i`, in
@@ -78,19 +84,17 @@ impl<'a> Region<'a> {
         self.vertices.len()
     }
 
+    /// The region's corners as a polygon cycle, decided on the perturbed
+    /// points when `symbolic`.
+    #[inline]
+    pub fn cycle(&self) -> PolygonCycle<'a> {
+        PolygonCycle::new(self.points, self.vertices, self.symbolic)
+    }
+
     /// Orientation of three points by index (0 if two indices coincide).
     #[inline]
     pub fn orient(&self, i: u32, j: u32, k: u32) -> i32 {
-        if self.symbolic {
-            if i == j || j == k || i == k {
-                0
-            } else {
-                orient_symbolic(self.points, i, j, k)
-            }
-        } else {
-            let p = |m: u32| self.points[m as usize];
-            orient_sign(p(i), p(j), p(k))
-        }
+        self.cycle().orient(i, j, k)
     }
 
     /// Compares `|ab|` with `|cd|` (indices).
@@ -109,95 +113,21 @@ impl<'a> Region<'a> {
 
     /// Is the direction `x − o` strictly inside the counter-clockwise wedge
     /// that sweeps from ray `o → first` to ray `o → last`? Equal rays mean the
-    /// full turn (a crack tip).
+    /// full turn (a crack tip): the kernel's `strictly_inside_wedge`.
     pub fn strictly_inside_wedge(&self, o: u32, first: u32, last: u32, x: u32) -> bool {
-        let p = |m: u32| self.points[m as usize];
-        let on_ray = |r: u32| self.orient(o, r, x) == 0 && dot_sign(p(o), p(r), p(x)) > 0;
-        if first == last {
-            return !on_ray(first); // a crack tip: all but the crack itself
-        }
-        let left_of_first = self.orient(o, first, x);
-        let left_of_last = self.orient(o, last, x);
-        match self.orient(o, first, last) {
-            // Less than a half turn: left of the first ray, right of the last.
-            1 => left_of_first > 0 && left_of_last < 0,
-            // More than a half turn: outside the closed short wedge from
-            // `last` to `first`.
-            -1 => !(left_of_last >= 0 && left_of_first <= 0),
-            // Collinear rays, not equal: opposite (a half turn), or the same
-            // direction (a full turn minus that ray).
-            _ => {
-                if dot_sign(p(o), p(first), p(last)) < 0 {
-                    left_of_first > 0
-                } else {
-                    !on_ray(first)
-                }
-            }
-        }
+        self.cycle().wedge_contains(o, first, last, x)
     }
 
     /// Is the region a strictly convex polygon (no cracks, every corner a
     /// strict left turn)? Then every pair of non-adjacent positions is a diagonal.
     pub fn is_strictly_convex(&self) -> bool {
-        let k = self.len();
-        let v = self.vertices;
-        (0..k).all(|i| self.orient(v[i], v[(i + 1) % k], v[(i + 2) % k]) > 0)
+        self.cycle().is_strictly_convex()
     }
 
-    /// Is the segment between positions `a` and `b` (not adjacent) a diagonal:
-    /// its relatively open segment inside the region? Exact, O(k).
-    ///
-    /// It leaves both corners into the region's wedge, contains no vertex and
-    /// crosses no boundary edge; then it cannot leave the region.
+    /// Is the segment between positions `a` and `b` a diagonal: its
+    /// relatively open segment inside the region? Exact, O(k).
     pub fn is_diagonal(&self, a: usize, b: usize) -> bool {
-        let k = self.len();
-        let v = self.vertices;
-        let (va, vb) = (v[a], v[b]);
-        if va == vb {
-            return false;
-        }
-        let wedge_ok = |pos: usize, target: u32| {
-            self.strictly_inside_wedge(v[pos], v[(pos + 1) % k], v[(pos + k - 1) % k], target)
-        };
-        if !wedge_ok(a, vb) || !wedge_ok(b, va) {
-            return false;
-        }
-        // Bounding boxes (exact coordinate comparisons) skip the boundary
-        // edges far from the chord: a vertex on the chord lies in its box, and
-        // a crossing edge's box meets it. The side of each vertex relative to
-        // the chord's line is computed once and carried to the next edge.
-        let p = |m: u32| self.points[m as usize];
-        let (pa, pb) = (p(va), p(vb));
-        let lo = [pa[0].min(pb[0]), pa[1].min(pb[1])];
-        let hi = [pa[0].max(pb[0]), pa[1].max(pb[1])];
-        let side = |m: u32| self.orient(va, vb, m);
-        let mut carried: Option<i32> = None;
-        for i in 0..k {
-            let (u, w) = (v[i], v[(i + 1) % k]);
-            let (pu, pw) = (p(u), p(w));
-            if (pu[0] < lo[0] && pw[0] < lo[0])
-                || (pu[0] > hi[0] && pw[0] > hi[0])
-                || (pu[1] < lo[1] && pw[1] < lo[1])
-                || (pu[1] > hi[1] && pw[1] > hi[1])
-            {
-                carried = None;
-                continue;
-            }
-            let su = carried.unwrap_or_else(|| side(u));
-            let sw = side(w);
-            carried = Some(sw);
-            // u strictly inside the open segment ab?
-            if su == 0 && u != va && u != vb && dot_sign(p(u), pa, pb) < 0 {
-                return false;
-            }
-            if u == va || u == vb || w == va || w == vb {
-                continue;
-            }
-            if su * sw < 0 && self.orient(u, w, va) * self.orient(u, w, vb) < 0 {
-                return false;
-            }
-        }
-        true
+        self.cycle().is_diagonal(a, b)
     }
 
     /// §3's cubic dynamic program: a triangulation of the region minimising
@@ -322,4 +252,30 @@ impl<'a> Region<'a> {
             .map(|t| t.map(|c| v[c]))
             .collect()
     }
+}
+
+/// `minmax-length` on a simple polygon ([`crate::triangulate_polygon`]):
+/// the polygon program with the longest diagonal as a bottleneck, compared
+/// exactly. The longest edge of a polygon triangulation is the longer of
+/// the longest boundary edge, which every triangulation has, and the
+/// longest diagonal; so minimising the longest diagonal minimises the
+/// longest edge.
+pub(crate) fn solve_polygon(
+    polygon: &SimplePolygon,
+    _: &Options,
+    phases: &mut Vec<Phase>,
+) -> Result<Solved> {
+    let p = corner_point(polygon);
+    let objective = LargestDiagonal::new(polygon.len(), |s: [usize; 2], t: [usize; 2]| {
+        compare_lengths(p(s[0]), p(s[1]), p(t[0]), p(t[1]))
+    });
+    let triangulation = on_simple_polygon(polygon, "minmax-length", &objective, phases)?;
+    Ok(Solved {
+        triangulation,
+        algorithm: "Klincsek dynamic program on the polygon, O(n^3), exact length comparisons"
+            .to_string(),
+        optimality: Optimality::Exact,
+        diagnostics: Diagnostics::default(),
+        bound: None,
+    })
 }

@@ -1,13 +1,14 @@
 //! Algorithm 49 (Vassilev 2005, §2.4, L2366-2550; Lemma 50, Theorem 51):
 //! the MaxMin decision "is there a triangulation whose smallest triangle has
-//! area at least τ?", repaired and simplified as in brief §3 — O(n²) per
-//! query with prefix counts instead of van Emde Boas queues — and the
-//! sort-and-search route to the MaxMin optimum of brief §2.5.
+//! area at least τ?", simplified — O(n²) per query with prefix counts
+//! instead of van Emde Boas queues — and the sort-and-search route to the
+//! MaxMin optimum (the optimum is one of the table's values).
 
+use super::super::AreaBottleneck;
 use super::maxmin::{witness_apex, AdmissibilityRuns, RangeMaxSearch};
-use super::sleeve::{first_true, Objective, SleeveTable, Witness, UNSOLVED};
+use super::sleeve::{first_true, SleeveTable, Witness, UNSOLVED};
 use crate::kernel::compare_doubled_area;
-use crate::kernel::{compare_areas, Point};
+use crate::kernel::Point;
 use std::cmp::Ordering;
 
 /// The MaxMin sleeve table of a strictly convex polygon, ready for
@@ -28,7 +29,7 @@ impl<'a> MaxMinTable<'a> {
     /// If `polygon` is not a strictly convex counter-clockwise cycle of at
     /// least 3 indices into `points`.
     pub(crate) fn new(points: &'a [Point], polygon: &'a [u32]) -> Self {
-        let table = SleeveTable::new(points, polygon, Objective::MaxMin);
+        let table = SleeveTable::new(points, polygon, AreaBottleneck::MaxMin);
         let runs = AdmissibilityRuns::new(&table);
         MaxMinTable { table, runs }
     }
@@ -44,6 +45,7 @@ impl<'a> MaxMinTable<'a> {
 
     /// Is there a triangulation whose smallest triangle is at least as large
     /// as `threshold` (any three points)?
+    #[cfg(test)]
     pub(crate) fn admits_triangle(&self, threshold: [Point; 3]) -> bool {
         self.witness_triangle(threshold).is_some()
     }
@@ -65,12 +67,13 @@ impl<'a> MaxMinTable<'a> {
 
     /// A triangulation whose smallest triangle is at least as large as
     /// `threshold`, if one exists.
+    #[cfg(test)]
     pub(crate) fn witness_triangle(&self, threshold: [Point; 3]) -> Option<Vec<[u32; 3]>> {
-        let rank = self.rank_at_least(|t| compare_areas(t, threshold))?;
+        let rank = self.rank_at_least(|t| crate::kernel::compare_areas(t, threshold))?;
         self.witness_rank(rank)
     }
 
-    /// The MaxMin optimum by sorting and searching (brief §2.5): the optimum
+    /// The MaxMin optimum by sorting and searching: the optimum
     /// is a table value (every candidate of the candidate theorem is one),
     /// so binary-search the sorted distinct values with the O(n²) decision.
     /// O(n² log n) in all, about 2 log₂ n decisions.
@@ -88,7 +91,7 @@ impl<'a> MaxMinTable<'a> {
     }
 
     /// The MaxMin optimum by step iv of Algorithm 44 with range-max segment
-    /// trees (brief §2.4), O(n² log n).
+    /// trees, O(n² log n).
     pub(crate) fn optimum_by_range_max(&self) -> Vec<[u32; 3]> {
         if self.table.n() == 3 {
             return self.table.triangulation(Witness::Whole { i: 0 });
@@ -118,7 +121,7 @@ impl<'a> MaxMinTable<'a> {
             .map(|witness| self.table.triangulation(witness))
     }
 
-    /// M(τ) for the table value of rank `tau` (brief §3), O(n²): a witness
+    /// M(τ) for the table value of rank `tau` (Lemma 50), O(n²): a witness
     /// if some triangulation has smallest area ≥ that value.
     pub(super) fn decide(&self, tau: u32) -> Option<Witness> {
         let table = &self.table;
@@ -131,7 +134,7 @@ impl<'a> MaxMinTable<'a> {
             return ok(0, 2).then_some(Witness::Whole { i: 0 });
         }
         // Step 2: a proper 2-2 diagonal with both sides admissible. By the
-        // strengthening of Lemma 37 (brief §2.1) a triangulation with
+        // strengthening of Lemma 37 (module docs of `convex`) a triangulation with
         // smallest area ≥ τ has such a diagonal or an internal 2-2-2
         // triangle with all three pieces admissible.
         for i in 0..n {

@@ -1,9 +1,10 @@
 //! Step iv of Algorithm 44 for MaxMin area (Vassilev 2005, §2.3.2,
-//! L1919-2013), as repaired in brief §2.4: O(log n) per search pair with
+//! L1919-2013), repaired (T1, T2 of the module docs of `convex`), with a
+//! range maximum for its 3-sided query: O(log n) per search pair with
 //! range-max segment trees over the rows and columns of the sleeve table,
 //! O(n² log n) time and O(n²) space in all.
 //!
-//! The candidate theorem (brief §2.3): by the strengthening of Lemma 37,
+//! The candidate theorem: by the strengthening of Lemma 37,
 //! some optimal triangulation has a proper 2-2 diagonal — candidate (A),
 //! `min(μ*(P_ij), μ*(P_ji))` — or an internal 2-2-2 triangle `(i, k, j)`.
 //! Orient that triangle so that its weakest piece is `P_ji`; if `P_ij` is
@@ -17,12 +18,12 @@ use super::sleeve::{first_true, SleeveTable, Witness, UNSOLVED};
 /// Where `k ↦ μ*(P_ik)` (a row) or `k ↦ μ*(P_kj)` (a column) is
 /// quasi-concave (Lemma 40 / Corollary 41, L1560-1640): every superlevel
 /// set is an interval. Offsets are lengths of the varying piece, clipped to
-/// `≥ 2` so that boundary edges never count (trap T2).
+/// `≥ 2` so that boundary edges never count (repair T2).
 #[derive(Clone, Copy, Debug)]
 pub(super) struct QuasiConcaveRun {
     /// Smallest offset of the run.
     pub(super) lo: usize,
-    /// An offset where the maximum is attained (linear scan, trap T1: the
+    /// An offset where the maximum is attained (linear scan, repair T1: the
     /// function has plateaus, so a binary search can miss the maximum).
     pub(super) peak: usize,
     /// Largest offset of the run.
@@ -59,8 +60,8 @@ impl QuasiConcaveRun {
     }
 }
 
-/// The intervals I_i of every row and J_j of every column (brief §2.4,
-/// "Precompute").
+/// The intervals I_i of every row and J_j of every column (Lemma 40,
+/// Cor. 41).
 pub(super) struct AdmissibilityRuns {
     /// `rows[i]`: offsets `r` of I_i = [Top(i, a), a], `a = i + mcw(i)`,
     /// over `r ↦ μ*(P_{i,i+r})`.
@@ -137,7 +138,7 @@ impl RangeMax {
     }
 }
 
-/// Step iv for MaxMin with range-max structures (brief §2.4).
+/// Step iv for MaxMin with range-max structures.
 pub(super) struct RangeMaxSearch<'t, 'a> {
     table: &'t SleeveTable<'a>,
     runs: &'t AdmissibilityRuns,
@@ -183,7 +184,8 @@ impl<'t, 'a> RangeMaxSearch<'t, 'a> {
     /// μ*(P_{i+r,j}) ≥ τ? O(log n).
     ///
     /// Both pieces solved forces `len − mccw(j) ≤ r ≤ mcw(i)`, and that
-    /// range is covered by I_i ∪ J_j (coverage, L1598-1612; brief §2.1), so
+    /// range is covered by I_i ∪ J_j (coverage, L1598-1612: the chords
+    /// `v_i v_a` and `v_b v_j` cross, so `Top(i, a) ≤ Top(b, j)`), so
     /// every feasible `r` is in the row half's or the column half's
     /// superlevel interval.
     pub(super) fn pair_admits(&self, i: usize, len: usize, tau: u32) -> bool {

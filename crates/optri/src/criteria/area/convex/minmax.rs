@@ -1,8 +1,8 @@
 //! Step iv of Algorithm 44 for MinMax area (Vassilev 2005, §2.3.3,
-//! L2015-2337), as repaired in brief §2.6, implementation (b): the
+//! L2015-2337), repaired (T4, T5, T7 of the module docs of `convex`): the
 //! thesis's staircases, O(n² log n) time and O(n²) space.
 //!
-//! Candidate theorem (brief §2.3): the optimum is the smaller of
+//! Candidate theorem (strengthened Lemma 37): the optimum is the smaller of
 //! - (A′) `max(λ*(P_ij), λ*(P_ji))` over the proper 2-2 diagonals, and
 //! - (B′) `max(λ*(P_ji), min_{k ∈ F_ij} max(λ*(P_ik), λ*(P_kj), A(i,k,j)))`
 //!   over the search pairs (`P_ji` solved, `P_ij` not), with
@@ -11,15 +11,15 @@
 //! Some optimal triangulation has a 2-2 diagonal or an internal 2-2-2
 //! triangle (strengthened Lemma 37); taking that triangle's longest side as
 //! `(i, j)` puts its apex in the strip (the vertex opposite the longest side
-//! projects onto it), and both other pieces are solved (trap T7). The area
-//! `A(i,k,j)` stays in the objective (trap T4: an internal triangle can be
+//! projects onto it), and both other pieces are solved (repair T7). The area
+//! `A(i,k,j)` stays in the objective (repair T4: an internal triangle can be
 //! the largest, Fig. 2.10).
 //!
-//! Minimising over `F_ij` (brief §2.6): on the descending part
+//! Minimising over `F_ij`: on the descending part
 //! `D = F ∩ [Top(i,j), …]`, `A` is non-increasing and Lemma 42 (L1644, fan
 //! from `v_j`) gives `λ*(P_kj) ≤ max(λ*(P_k′j), A(i,k,j))` for `k < k′`, so
 //! `p(k) = [A(k) < λ*(P_kj)]` runs false…false, true…true (never a binary
-//! search for a minimum: trap T5). Before the switch the objective is
+//! search for a minimum: repair T5). Before the switch the objective is
 //! `max(λ*(P_ik), A)`, after it `max(λ*(P_ik), λ*(P_kj))` with the column
 //! non-decreasing. The ascending part `U` is the mirror image (fan from
 //! `v_i`). Each of the four blocks minimises `max(f, g)` with `f` a row or

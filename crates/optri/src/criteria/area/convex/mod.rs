@@ -4,19 +4,43 @@
 //! Source: T. S. Vassilev, *Optimal Area Triangulation*, PhD thesis,
 //! University of Saskatchewan, 2005, Chapter 2: Algorithm 44
 //! (§2.3, L1807-1864; Theorem 48, L2339) and the decision Algorithm 49
-//! (§2.4, L2366-2550; Lemma 50, Theorem 51), **as repaired** in the
-//! project's implementation brief on area-optimal triangulations §1–§3 (traps T1–T10 of
-//! §2.8). Where the printed step iv and the brief differ, this follows the
-//! brief.
+//! (§2.4, L2366-2550; Lemma 50, Theorem 51), **with its step iv repaired**.
+//! The repairs, named where they are made:
+//! - **T1** (§2.3.2, L2003): `k ↦ μ*(P_ik)` is only quasi-concave on `I_i`,
+//!   with plateaus, so the argmax is found by a linear scan, not by the
+//!   printed binary search.
+//! - **T2** (L1846-1860): boundary edges are never sub-problems of step iv
+//!   (only `k ∈ [i+2, j−2]`, only proper diagonals `(i, j)`): with a
+//!   neutral `+∞` on an edge, a small triangle on it would pass unseen.
+//! - **T4** (L2072): the MinMax objective of a triangle `(i, k, j)` keeps
+//!   its own area `A(i,k,j)`, which the printed rule drops (the thesis's
+//!   Fig. 2.10 has an internal triangle as the largest).
+//! - **T5, T6** (L2182; Cor. 43): `λ*(P_kj)` alone has plateaus above its
+//!   minimum; the search runs on the predicate `A(i,k,j) < λ*(P_kj)`,
+//!   monotone by Lemma 42, which proves the unimodality of
+//!   `G(k) = max(λ*(P_kj), A(i,k,j))` only.
+//! - **T7** (L2072-2110, L2232): the search stays in the strip of `(i, j)`
+//!   and where both pieces are solved, `[j − mccw(j), i + mcw(i)]`.
+//! - **T10** (Prop. 39): `mcw`/`mccw` come straight from the exact zonality
+//!   test, not from `Top` (whose tie case Property 39 misses).
+//!
+//! The zonality test is `z(P_ij) ≤ 2 ⟺ cross(v_{i+1} − v_i, v_{j−1} − v_j) ·
+//! orient(v_i, v_j, v_{i+1}) ≥ 0` (the base angles add up to at most a half
+//! turn), and zonality grows with the chain (its total turning does), which
+//! steps ii–iii use. Every triangulation has a proper diagonal with both
+//! pieces of zonality ≤ 2 or an internal triangle with all three (Lemma 37,
+//! strengthened: a boundary-edge triangle there has another side with both
+//! pieces ≤ 2-zone, as the turnings of disjoint chains add up to less than a
+//! full turn), which is why step iv needs only those two kinds of candidate.
 //!
 //! | step | what | rests on | module |
 //! |---|---|---|---|
-//! | i | `mcw`/`mccw` by two-pointers on the exact zonality test (T10); `Top` by binary search, or by rotating two-pointers along a row/column | Def. 26/27/38, Property 25; brief §1.4–1.5 | [`sleeve`] |
-//! | ii–iii | sleeve program over the pieces of zonality ≤ 2, O(n²); values as ranks after one exact sort | Lemmas 31/32, Cor. 36; monotone zonality (brief §1.4a) | [`sleeve`] |
+//! | i | `mcw`/`mccw` by two-pointers on the exact zonality test (T10); `Top` by binary search, or by rotating two-pointers along a row/column | Def. 26/27/38, Property 25 | [`sleeve`] |
+//! | ii–iii | sleeve program over the pieces of zonality ≤ 2, O(n²); values as ranks after one exact sort | Lemmas 31/32, Cor. 36; monotone zonality | [`sleeve`] |
 //! | iv MaxMin | 2-2 diagonals, and search pairs with range-max segment trees over rows/columns, O(log n) each | Lemma 23, strengthened Lemma 37, Lemma 40/Cor. 41 (argmax by linear scan, T1), coverage; boundary edges never sub-problems (T2) | [`maxmin`] |
-//! | iv MinMax | 2-2 diagonals, and for search pairs the four blocks of brief §2.6 solved on staircases (implementation (b)), O(log n) each | Lemma 42 on G (T5, T6), A(i,k,j) kept (T4), F_ij = strip ∩ solved range (T7) | [`minmax`] |
+//! | iv MinMax | 2-2 diagonals, and for search pairs the four blocks of [`minmax`] solved on the thesis's staircases, O(log n) each | Lemma 42 on G (T5, T6), A(i,k,j) kept (T4), F_ij = strip ∩ solved range (T7) | [`minmax`] |
 //! | v | follow the stored sleeve choices, O(n) | Cor. 36 | [`sleeve`] |
-//! | Alg. 49 | decision M(τ) in O(n²) with prefix counts; MaxMin by sort-and-search | brief §3, §2.5 | [`decision`] |
+//! | Alg. 49 | decision M(τ) in O(n²) with prefix counts; MaxMin by sort-and-search over the table's values | Lemma 50, Theorem 51 | [`decision`] |
 //!
 //! # Exactness
 //! Areas are never computed in floating point. Every decision is an exact
@@ -42,16 +66,12 @@
 //! # Tests
 //! `tests.rs` compares optimal *values* with optri-oracle's exact Klincsek
 //! program on random, lattice, symmetric, regular, cocircular, huge and
-//! tiny inputs and the brief's fixtures, checks every output is a
+//! tiny inputs and fixed polygons, checks every output is a
 //! triangulation, tests the two MaxMin routes against each other, and checks
 //! the lemmas as properties on every piece (zonality, Top, strips, sleeve =
 //! Klincsek, quasi-concavity on I_i/J_j (T1), coverage, monotone switch
 //! predicates (T5), Lemma 23 and the strengthened Lemma 37), and that the
 //! +∞-edge reading of step iv (T2) does fail.
-
-// The second MaxMin route, triangle thresholds and witness values serve the
-// tests that check the routes against each other.
-#![allow(dead_code)]
 
 mod decision;
 mod maxmin;
@@ -62,8 +82,9 @@ mod tests;
 
 pub(crate) use decision::MaxMinTable;
 
+use super::AreaBottleneck;
 use crate::kernel::Point;
-use sleeve::{Objective, SleeveTable, Witness};
+use sleeve::{SleeveTable, Witness};
 
 /// A MaxMin-area triangulation of a strictly convex polygon: the smallest
 /// triangle is as large as possible.
@@ -71,8 +92,8 @@ use sleeve::{Objective, SleeveTable, Witness};
 /// `polygon` is the vertex cycle (indices into `points`) of a strictly
 /// convex polygon in counter-clockwise order, n ≥ 3. Returns its n − 2
 /// triangles as vertex indices. Algorithm 44 with step iv by range-max
-/// segment trees (brief §2.4) up to [`RANGE_MAX_UP_TO`] vertices, and above
-/// that the sort-and-search route over the same table (brief §2.5); both
+/// segment trees up to [`RANGE_MAX_UP_TO`] vertices, and above that the
+/// sort-and-search route over the same table ([`MaxMinTable`]); both
 /// O(n² log n) time, O(n²) space, and tested against each other.
 ///
 /// # Panics
@@ -96,8 +117,9 @@ pub(crate) fn maxmin_area_convex(points: &[Point], polygon: &[u32]) -> Vec<[u32;
 const RANGE_MAX_UP_TO: usize = 5000;
 
 /// A MaxMin-area triangulation by the other route: binary search over the
-/// sorted table values with the O(n²) decision of Algorithm 49 (brief §2.5).
+/// sorted table values with the O(n²) decision of Algorithm 49.
 /// Same contract and bounds as [`maxmin_area_convex`].
+#[cfg(test)]
 pub(crate) fn maxmin_area_convex_by_search(points: &[Point], polygon: &[u32]) -> Vec<[u32; 3]> {
     MaxMinTable::new(points, polygon).optimum_by_search()
 }
@@ -106,13 +128,12 @@ pub(crate) fn maxmin_area_convex_by_search(points: &[Point], polygon: &[u32]) ->
 /// triangle is as small as possible.
 ///
 /// Same input contract as [`maxmin_area_convex`]. Algorithm 44 with step iv
-/// of brief §2.6, implementation (b) (staircases); O(n² log n) time, O(n²)
-/// space.
+/// of [`minmax`] (staircases); O(n² log n) time, O(n²) space.
 ///
 /// # Panics
 /// As [`maxmin_area_convex`].
 pub(crate) fn minmax_area_convex(points: &[Point], polygon: &[u32]) -> Vec<[u32; 3]> {
-    let table = SleeveTable::new(points, polygon, Objective::MinMax);
+    let table = SleeveTable::new(points, polygon, AreaBottleneck::MinMax);
     if table.n() == 3 {
         return table.triangulation(Witness::Whole { i: 0 });
     }
@@ -127,6 +148,7 @@ pub(crate) fn minmax_area_convex(points: &[Point], polygon: &[u32]) -> Vec<[u32;
 ///
 /// # Panics
 /// As [`maxmin_area_convex`], or if `doubled_area` is NaN.
+#[cfg(test)]
 pub(crate) fn maxmin_area_at_least(points: &[Point], polygon: &[u32], doubled_area: f64) -> bool {
     MaxMinTable::new(points, polygon).admits_doubled_area(doubled_area)
 }

@@ -3,29 +3,22 @@
 //! and the O(n²) sleeve dynamic program over the pieces of zonality ≤ 2;
 //! and step v, reconstruction from the stored sleeve choices.
 //!
-//! Conventions (brief §1.3): positions `0..n` along the counter-clockwise
+//! Conventions: positions `0..n` along the counter-clockwise
 //! cycle, read modulo `n`; the piece `P_ij` is stored as `(i, len)` with
 //! `j = i + len`, `1 ≤ len ≤ n − 1`, and `i < k < i + n` for positions
 //! inside a range are kept unreduced. Offsets `r = k − i` measure a vertex
 //! of `P_ij` from `i`.
 
+use super::super::AreaBottleneck;
 use crate::kernel::cross_sign;
 use crate::kernel::{compare_areas, dot_sign, orient_sign, Point, MAX_COORDINATE, MIN_COORDINATE};
 use std::cmp::Ordering;
 
 /// Marks a piece that the sleeve program does not solve: a boundary edge
-/// (`len = 1`, trap T2 of the brief: never a sub-problem in step iv) or a
+/// (`len = 1`: never a sub-problem in step iv, repair T2 of the module docs
+/// of `convex`) or a
 /// piece of zonality ≥ 3.
 pub(super) const UNSOLVED: u32 = u32::MAX;
-
-/// Which bottleneck the table optimises.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(super) enum Objective {
-    /// Maximise the smallest triangle (μ*).
-    MaxMin,
-    /// Minimise the largest triangle (λ*).
-    MinMax,
-}
 
 /// First index in `lo..=hi` where the monotone predicate (false…false,
 /// true…true) holds, or `hi + 1` if it never does.
@@ -119,7 +112,7 @@ impl<'a> ConvexPolygon<'a> {
         compare_areas(self.triangle(s), self.triangle(t))
     }
 
-    /// z(P_{i,i+len}) ≤ 2, for `len ≥ 2` (Def. 27; brief §1.4): the base
+    /// z(P_{i,i+len}) ≤ 2, for `len ≥ 2` (Def. 27): the base
     /// angles sum to at most 180°, i.e. the two side edges at the base turn
     /// by at most a half-turn: `cross(v_{i+1} − v_i, v_{j−1} − v_j)` has the
     /// sign of `orient(v_i, v_j, v_{i+1})` or is zero.
@@ -131,10 +124,10 @@ impl<'a> ConvexPolygon<'a> {
         cross_sign(vi, self.at(i + 1), vj, self.at(j - 1)) * side >= 0
     }
 
-    /// `mcw(i)` for every `i` (Def. 38, computed directly as brief §1.5 and
-    /// trap T10 advise): the largest `len ≤ n − 1` with z(P_{i,i+len}) ≤ 2.
+    /// `mcw(i)` for every `i` (Def. 38, computed directly from the
+    /// zonality test: repair T10): the largest `len ≤ n − 1` with z(P_{i,i+len}) ≤ 2.
     ///
-    /// Zonality grows with the chain (rotation view, brief §1.4a), so the end
+    /// Zonality grows with the chain (its total turning does), so the end
     /// `i + mcw(i)` never moves backwards as `i` advances: a two-pointer scan,
     /// O(n) exact tests.
     pub(super) fn max_clockwise(&self) -> Vec<usize> {
@@ -184,7 +177,7 @@ impl<'a> ConvexPolygon<'a> {
     /// chain farthest from the base line, the first of two on a tie.
     ///
     /// Heights along the chain rise strictly, then possibly two adjacent
-    /// vertices tie, then fall strictly (brief §1.5), so "the next vertex is
+    /// vertices tie, then fall strictly (Def. 26), so "the next vertex is
     /// strictly higher" is true…true, false…false: one binary search.
     pub(super) fn top_offset(&self, i: usize, len: usize) -> usize {
         debug_assert!(len >= 2);
@@ -193,7 +186,7 @@ impl<'a> ConvexPolygon<'a> {
 
     /// Restricts the offsets `[lo, hi]` (inside `[1, len − 1]`) to
     /// strip(i, i+len): the vertices whose projection on the line
-    /// `v_i v_j` falls on the segment (brief §2.3). Each half-plane cuts the
+    /// `v_i v_j` falls on the segment (L2232). Each half-plane cuts the
     /// convex chain in a contiguous run that starts (resp. ends) the chain,
     /// so both ends are binary searches. `None` if nothing remains.
     pub(super) fn clip_to_strip(
@@ -282,7 +275,7 @@ pub(super) enum Bottleneck {
     Triangle([usize; 3]),
 }
 
-/// What step iv found; step v turns it into triangles (brief §2.7).
+/// What step iv found; step v turns it into triangles (L2351-2358).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub(super) enum Witness {
     /// The whole polygon as the solved piece `P_{i,i+n−1}` (used for n = 3).
@@ -293,7 +286,7 @@ pub(super) enum Witness {
     Triangle { i: usize, r: usize, len: usize },
 }
 
-/// The sleeve table of steps ii–iii (brief §2.2): for every piece of
+/// The sleeve table of steps ii–iii (Lemma 45): for every piece of
 /// zonality ≤ 2 the optimum μ* (or λ*) and which base-adjacent triangle the
 /// optimal sleeve uses.
 ///
@@ -302,7 +295,6 @@ pub(super) enum Witness {
 /// step iv compares `u32`s. Ranks start at 1; a larger rank is a larger area.
 pub(super) struct SleeveTable<'a> {
     pub(super) poly: ConvexPolygon<'a>,
-    pub(super) objective: Objective,
     /// `mcw[i]`: P_{i,i+len} is solved iff `2 ≤ len ≤ mcw[i]`.
     pub(super) mcw: Vec<usize>,
     /// `mccw[j]`: P_{j−len,j} is solved iff `2 ≤ len ≤ mccw[j]`.
@@ -324,7 +316,7 @@ pub(super) struct SleeveTable<'a> {
 impl<'a> SleeveTable<'a> {
     /// Steps i–iii: O(n²) time and space, plus one exact sort of the
     /// distinct bottleneck triangles (O(n² log n) comparisons).
-    pub(super) fn new(points: &'a [Point], polygon: &'a [u32], objective: Objective) -> Self {
+    pub(super) fn new(points: &'a [Point], polygon: &'a [u32], objective: AreaBottleneck) -> Self {
         let poly = ConvexPolygon::new(points, polygon);
         let n = poly.n;
         let mcw = poly.max_clockwise();
@@ -347,7 +339,8 @@ impl<'a> SleeveTable<'a> {
         };
         // The better of two candidates under the objective.
         let better = |a: u32, b: u32| match (objective, compare_ears(a, b)) {
-            (Objective::MaxMin, Ordering::Less) | (Objective::MinMax, Ordering::Greater) => b,
+            (AreaBottleneck::MaxMin, Ordering::Less)
+            | (AreaBottleneck::MinMax, Ordering::Greater) => b,
             _ => a,
         };
         // The worse of two candidates: the bottleneck of their union.
@@ -358,7 +351,7 @@ impl<'a> SleeveTable<'a> {
         // Corollary 36 (L1433): a piece of zonality ≤ 2 has an optimal
         // triangulation that is a sleeve (Lemmas 31/32), so its optimum comes
         // from one of the two triangles at the base. Both sub-pieces are
-        // ≤2-zone again (brief §1.4a), hence already solved.
+        // ≤2-zone again (zonality grows with the chain), hence already solved.
         for len in 2..n {
             for i in 0..n {
                 if len > mcw[i] {
@@ -401,7 +394,6 @@ impl<'a> SleeveTable<'a> {
         }
         SleeveTable {
             poly,
-            objective,
             mcw,
             mccw,
             rank_by_end: (0..n * n)
@@ -499,7 +491,7 @@ impl<'a> SleeveTable<'a> {
         }
     }
 
-    /// Step v (brief §2.7): the n − 2 triangles of the triangulation that
+    /// Step v (L2351-2358): the n − 2 triangles of the triangulation that
     /// `witness` describes, O(n).
     pub(super) fn triangulation(&self, witness: Witness) -> Vec<[u32; 3]> {
         let n = self.n();
@@ -520,28 +512,5 @@ impl<'a> SleeveTable<'a> {
         }
         debug_assert_eq!(out.len(), n - 2);
         out
-    }
-
-    /// The value a witness attains: for a triangle witness, the bottleneck of
-    /// its three pieces together with the triangle itself.
-    pub(super) fn witness_value(&self, witness: Witness) -> Bottleneck {
-        let n = self.n();
-        let ranked = |i: usize, len: usize| Bottleneck::Ranked(self.rank(i, len));
-        let pick = |a: Bottleneck, b: Bottleneck| match (self.objective, self.compare(a, b)) {
-            (Objective::MaxMin, Ordering::Greater) | (Objective::MinMax, Ordering::Less) => b,
-            _ => a,
-        };
-        match witness {
-            Witness::Whole { i } => ranked(i, n - 1),
-            Witness::Diagonal { i, len } => pick(ranked(i, len), ranked(i + len, n - len)),
-            Witness::Triangle { i, r, len } => {
-                let t = Bottleneck::Triangle([i % n, (i + r) % n, (i + len) % n]);
-                let pieces = pick(
-                    pick(ranked(i, r), ranked(i + r, len - r)),
-                    ranked(i + len, n - len),
-                );
-                pick(pieces, t)
-            }
-        }
     }
 }

@@ -1,16 +1,18 @@
 //! Proof by oracle: every optimal *value* is compared with optri-oracle's
 //! independent exact Klincsek program (BigRational areas), every output is
 //! checked to be a triangulation of the polygon, and the lemmas the
-//! algorithm rests on are checked as properties on every piece (brief §7).
+//! algorithm rests on are checked as properties on every piece.
 
+use super::super::AreaBottleneck;
 use super::decision::MaxMinTable;
 use super::maxmin::RangeMaxSearch;
 use super::minmax::{search_pairs, BlockSink};
-use super::sleeve::{Bottleneck, Objective, SleeveTable, TopFromEnd, TopFromStart, UNSOLVED};
+use super::sleeve::{Bottleneck, SleeveTable, TopFromEnd, TopFromStart, UNSOLVED};
 use super::{maxmin_area_at_least, maxmin_area_convex, maxmin_area_convex_by_search};
 use super::{minmax_area_convex, Point};
 use crate::kernel::{compare_doubled_area, cross_sign};
 use crate::kernel::{dot_sign, orient_sign};
+use optri_oracle::inputs::{ellipse_polygon, strict_hull};
 use optri_oracle::klincsek::{klincsek, MaxMinArea, MinMaxArea};
 use optri_oracle::{
     max_twice_area, min_twice_area, rational_to_f64, to_rational, twice_area, BigInt, BigRational,
@@ -20,7 +22,6 @@ use rand::seq::SliceRandom;
 use rand::{Rng, SeedableRng};
 use std::cmp::{Ordering, Reverse};
 use std::collections::HashMap;
-use std::time::Instant;
 
 // ---------------------------------------------------------------------------
 // Generators (integer coordinates, strictly convex, counter-clockwise)
@@ -35,31 +36,6 @@ const SEED_PROPERTIES: u64 = 0x5052_4f50_0000_0006;
 const SEED_PREDICATES: u64 = 0x5052_4544_0000_0007;
 const SEED_METAMORPHIC: u64 = 0x4d45_5441_0000_0008;
 const SEED_HUGE: u64 = 0x4855_4745_0000_0009;
-const SEED_TIMING: u64 = 0x5449_4d45_0000_000a;
-
-/// The strict convex hull, counter-clockwise, without collinear vertices
-/// (Andrew's monotone chain with the exact orientation predicate).
-fn strict_hull(mut points: Vec<Point>) -> Vec<Point> {
-    points.sort_by(|a, b| a.partial_cmp(b).expect("finite coordinates"));
-    points.dedup();
-    if points.len() < 3 {
-        return points;
-    }
-    let chain = |iter: &mut dyn Iterator<Item = Point>| {
-        let mut out: Vec<Point> = Vec::new();
-        for p in iter {
-            while out.len() >= 2 && orient_sign(out[out.len() - 2], out[out.len() - 1], p) <= 0 {
-                out.pop();
-            }
-            out.push(p);
-        }
-        out.pop();
-        out
-    };
-    let mut hull = chain(&mut points.iter().copied());
-    hull.extend(chain(&mut points.iter().rev().copied()));
-    hull
-}
 
 /// Sorts integer vectors by angle in [0°, 360°) exactly.
 fn sort_by_angle(vectors: &mut [(i64, i64)]) {
@@ -115,21 +91,6 @@ fn valtr_polygon(rng: &mut StdRng, n: usize, range: i64) -> Vec<Point> {
     polygon_from_edges(&vectors)
 }
 
-/// Random points on a (rotated) ellipse with semi-axes `radius` and
-/// `radius / aspect`, rounded to integers, strict hull.
-fn ellipse_polygon(rng: &mut StdRng, n: usize, radius: f64, aspect: f64) -> Vec<Point> {
-    let tilt: f64 = rng.gen_range(0.0..std::f64::consts::PI);
-    let (s, c) = tilt.sin_cos();
-    let points = (0..n)
-        .map(|_| {
-            let t: f64 = rng.gen_range(0.0..std::f64::consts::TAU);
-            let (x, y) = (radius * t.cos(), radius / aspect * t.sin());
-            [(c * x - s * y).round(), (s * x + c * y).round()]
-        })
-        .collect();
-    strict_hull(points)
-}
-
 /// The regular n-gon of the given radius, rounded (many near-equal and, for
 /// small radii, equal areas).
 fn regular_polygon(n: usize, radius: f64) -> Vec<Point> {
@@ -152,7 +113,8 @@ fn gcd(a: i64, b: i64) -> i64 {
 
 /// A centrally symmetric lattice polygon (a zonogon): `k` primitive
 /// directions in the upper half-plane with random multiplicities, then
-/// their negatives — every edge has a parallel partner (brief §1.6).
+/// their negatives — every edge has a parallel partner (ties in `Top` and
+/// flat area runs everywhere).
 fn zonogon(rng: &mut StdRng, k: usize, max: i64) -> Vec<Point> {
     let mut directions: Vec<(i64, i64)> = Vec::new();
     let mut attempts = 0;
@@ -185,7 +147,8 @@ fn grid_polygon(rng: &mut StdRng, count: usize, grid: i64) -> Vec<Point> {
     strict_hull(points)
 }
 
-/// Brief §7 fixtures, given clockwise there: (points CW, MaxMin, MinMax).
+/// Fixed convex polygons, clockwise, with their optimal doubled areas:
+/// (points CW, MaxMin, MinMax).
 fn fixtures() -> Vec<(Vec<Point>, i64, i64)> {
     vec![
         (vec![[0., 0.], [0., 2.], [2., 2.], [2., 0.]], 4, 4),
@@ -203,8 +166,8 @@ fn fixtures() -> Vec<(Vec<Point>, i64, i64)> {
     ]
 }
 
-/// The "Fig. 2.10-like" hexagon of brief §7 (clockwise): its unique MinMax
-/// optimum has an internal largest triangle (trap T4).
+/// A hexagon like the thesis's Fig. 2.10 (clockwise): its unique MinMax
+/// optimum has an internal largest triangle (repair T4).
 fn fig_2_10_like_cw() -> Vec<Point> {
     vec![
         [-6., 10.],
@@ -295,7 +258,7 @@ fn our_values(points: &[Point], polygon: &[u32]) -> (BigRational, BigRational) {
     (max_min, max_twice_area(points, &minmax))
 }
 
-/// Decision consistency (brief §7.7): the optimum is admitted (with a
+/// Decision consistency: the optimum is admitted (with a
 /// witness attaining it), the next larger table value is not.
 fn check_decision(points: &[Point], polygon: &[u32], max_min: &BigRational) {
     let table = MaxMinTable::new(points, polygon);
@@ -307,7 +270,7 @@ fn check_decision(points: &[Point], polygon: &[u32], max_min: &BigRational) {
     let at = reps
         .iter()
         .position(|t| area(t) == *max_min)
-        .expect("the optimum is a table value (brief §2.5)");
+        .expect("the optimum is a table value");
     let witness = table.witness_triangle(reps[at]).expect("optimum admitted");
     assert_triangulation(points, polygon, &witness);
     assert!(min_twice_area(points, &witness) >= *max_min);
@@ -356,7 +319,7 @@ fn check_polygon(points: &[Point], polygon: &[u32]) -> (BigRational, BigRational
 // ---------------------------------------------------------------------------
 
 #[test]
-fn fixtures_of_the_brief() {
+fn fixed_hexagons_have_their_known_optima() {
     for (cw, max_min, min_max) in fixtures() {
         let mut ccw = cw.clone();
         ccw.reverse();
@@ -367,7 +330,7 @@ fn fixtures_of_the_brief() {
 
 #[test]
 fn fig_2_10_like_hexagon_has_internal_minmax_bottleneck() {
-    // Trap T4: the unique MinMax optimum (CW labels) is {(0,1,2), (2,3,4),
+    // Repair T4: the unique MinMax optimum (CW labels) is {(0,1,2), (2,3,4),
     // (0,2,4), (0,4,5)}; its largest triangle (0,2,4) is internal.
     let mut ccw = fig_2_10_like_cw();
     ccw.reverse(); // CW label c is now index 5 − c
@@ -594,7 +557,7 @@ fn optimal_values_are_invariant_under_relabelling_mirroring_and_affine_maps() {
 }
 
 // ---------------------------------------------------------------------------
-// Property tests of the lemmas (brief §7.6)
+// Property tests of the lemmas
 // ---------------------------------------------------------------------------
 
 /// A mixed sample of polygons for the property tests.
@@ -698,7 +661,7 @@ fn zonality_test_equals_the_angle_formula_and_mcw_mccw_agree() {
     let mut pieces = 0;
     for points in property_sample(&mut rng, 120) {
         let polygon = identity(points.len());
-        let table = SleeveTable::new(&points, &polygon, Objective::MaxMin);
+        let table = SleeveTable::new(&points, &polygon, AreaBottleneck::MaxMin);
         let (n, poly) = (table.n(), &table.poly);
         for i in 0..n {
             for len in 2..n {
@@ -734,7 +697,7 @@ fn top_and_strip_equal_brute_force() {
     let mut pieces = 0;
     for points in property_sample(&mut rng, 80) {
         let polygon = identity(points.len());
-        let table = SleeveTable::new(&points, &polygon, Objective::MinMax);
+        let table = SleeveTable::new(&points, &polygon, AreaBottleneck::MinMax);
         let (n, poly) = (table.n(), &table.poly);
         for i in 0..n {
             for len in 2..n {
@@ -785,7 +748,7 @@ fn rotating_top_trackers_equal_the_binary_search() {
     let mut queries = 0;
     for points in property_sample(&mut rng, 80) {
         let polygon = identity(points.len());
-        let table = SleeveTable::new(&points, &polygon, Objective::MinMax);
+        let table = SleeveTable::new(&points, &polygon, AreaBottleneck::MinMax);
         let (n, poly) = (table.n(), &table.poly);
         for v in 0..n {
             let (mut row, mut column) = (TopFromStart::new(poly, v), TopFromEnd::new(poly, v));
@@ -817,7 +780,7 @@ fn sleeve_table_equals_klincsek_on_every_solved_piece() {
         .filter(|p| p.len() <= 24)
     {
         let polygon = identity(points.len());
-        for objective in [Objective::MaxMin, Objective::MinMax] {
+        for objective in [AreaBottleneck::MaxMin, AreaBottleneck::MinMax] {
             let table = SleeveTable::new(&points, &polygon, objective);
             let n = table.n();
             for i in 0..n {
@@ -835,11 +798,11 @@ fn sleeve_table_equals_klincsek_on_every_solved_piece() {
                     table.push_sleeve(i, len, &mut sleeve);
                     assert_triangulation(&points, &sub, &sleeve);
                     let want = match objective {
-                        Objective::MaxMin => {
+                        AreaBottleneck::MaxMin => {
                             assert_eq!(min_twice_area(&points, &sleeve), value);
                             klincsek(&points, &sub, MaxMinArea).unwrap().0 .0
                         }
-                        Objective::MinMax => {
+                        AreaBottleneck::MinMax => {
                             assert_eq!(max_twice_area(&points, &sleeve), value);
                             klincsek(&points, &sub, MinMaxArea).unwrap().0
                         }
@@ -855,7 +818,7 @@ fn sleeve_table_equals_klincsek_on_every_solved_piece() {
 
 #[test]
 fn rows_and_columns_are_quasi_concave_on_their_intervals() {
-    // Trap T1 / Lemma 40: k ↦ μ*(P_ik) on I_i (and k ↦ μ*(P_kj) on J_j) is
+    // Repair T1 / Lemma 40: k ↦ μ*(P_ik) on I_i (and k ↦ μ*(P_kj) on J_j) is
     // non-decreasing up to its first maximum and non-increasing after it;
     // the superlevel intervals equal brute force; and plateaus below the
     // maximum occur (so a binary search for the maximum would be unsafe).
@@ -997,12 +960,12 @@ fn minmax_blocks_equal_brute_force_and_the_switch_predicates_are_monotone() {
     // For every search pair the four blocks (staircases) give min over F_ij
     // of max(λ*(P_ik), λ*(P_kj), A(i,k,j)), computed here by a scan over a
     // brute-force F_ij; and p(k) = [A < λ*(P_kj)] is monotone on D, q(k) =
-    // [A < λ*(P_ik)] on U (trap T5; Lemma 42).
+    // [A < λ*(P_ik)] on U (repair T5; Lemma 42).
     let mut rng = StdRng::seed_from_u64(SEED_PROPERTIES ^ 6);
     let (mut pairs, mut segments, mut column_plateaus) = (0, 0, 0);
     for points in property_sample(&mut rng, 160) {
         let polygon = identity(points.len());
-        let table = SleeveTable::new(&points, &polygon, Objective::MinMax);
+        let table = SleeveTable::new(&points, &polygon, AreaBottleneck::MinMax);
         let poly = &table.poly;
         let mut sink = PerPairMinimum::default();
         search_pairs(&table, &mut sink);
@@ -1106,14 +1069,14 @@ fn random_triangulation(rng: &mut StdRng, n: usize) -> Vec<[usize; 3]> {
 #[test]
 fn lemma_23_and_the_strengthened_lemma_37_hold_on_random_triangulations() {
     // Lemma 23: an internal triangle is strictly larger than the smallest
-    // of its three neighbours. Strengthened Lemma 37 (brief §2.1): every
+    // of its three neighbours. Strengthened Lemma 37 (module docs): every
     // triangulation has a proper 2-2 diagonal or an internal 2-2-2 triangle
     // — the completeness of step iv rests on it.
     let mut rng = StdRng::seed_from_u64(SEED_PROPERTIES ^ 9);
     let (mut triangulations, mut internal, mut only_triangle) = (0, 0, 0);
     for points in property_sample(&mut rng, 120) {
         let polygon = identity(points.len());
-        let table = SleeveTable::new(&points, &polygon, Objective::MaxMin);
+        let table = SleeveTable::new(&points, &polygon, AreaBottleneck::MaxMin);
         let (n, poly) = (table.n(), &table.poly);
         // Zonality of the piece from position a forwards to b (≤ 2 for edges).
         let small = |a: usize, b: usize| {
@@ -1185,7 +1148,7 @@ fn larger_polygons_match_klincsek() {
 
 #[test]
 fn boundary_edges_as_solved_pieces_would_be_wrong() {
-    // Trap T2: letting a search pair use k = i+1 or j−1 with the boundary
+    // Repair T2: letting a search pair use k = i+1 or j−1 with the boundary
     // edge as a +∞ piece ignores the triangle (i, k, j) and overshoots the
     // optimum on a sizeable share of polygons; the real routes never do.
     let mut rng = StdRng::seed_from_u64(SEED_PROPERTIES ^ 7);
@@ -1230,7 +1193,7 @@ fn boundary_edges_as_solved_pieces_would_be_wrong() {
         );
         polygons += 1;
     }
-    eprintln!("trap T2: the +∞-edge variant overshoots on {overshoots} of {polygons} polygons");
+    eprintln!("repair T2: the +∞-edge variant overshoots on {overshoots} of {polygons} polygons");
     assert!(polygons >= 190 && overshoots > 0, "{polygons} {overshoots}");
 }
 
@@ -1264,62 +1227,4 @@ fn collinear_boundary_points_are_rejected() {
 fn clockwise_polygons_are_rejected() {
     let points = [[0.0, 0.0], [0.0, 1.0], [1.0, 0.0]];
     minmax_area_convex(&points, &[0, 1, 2]);
-}
-
-// ---------------------------------------------------------------------------
-// Timing (run with --ignored --nocapture)
-// ---------------------------------------------------------------------------
-
-/// CPU time of this thread in seconds (Linux `schedstat`), or `None`. The
-/// machine is shared, so wall-clock time overstates the work.
-fn thread_cpu_seconds() -> Option<f64> {
-    let stat = std::fs::read_to_string("/proc/thread-self/schedstat").ok()?;
-    let nanos: f64 = stat.split_whitespace().next()?.parse().ok()?;
-    Some(nanos * 1e-9)
-}
-
-/// Runs `f`, returning its result, wall-clock seconds and CPU seconds.
-fn timed<T>(f: impl FnOnce() -> T) -> (T, f64, f64) {
-    let (wall, cpu) = (Instant::now(), thread_cpu_seconds());
-    let out = f();
-    let cpu = match (cpu, thread_cpu_seconds()) {
-        (Some(a), Some(b)) => b - a,
-        _ => f64::NAN,
-    };
-    (out, wall.elapsed().as_secs_f64(), cpu)
-}
-
-#[test]
-#[ignore = "timing; run with --ignored --nocapture"]
-fn timing_large_polygons() {
-    let mut rng = StdRng::seed_from_u64(SEED_TIMING);
-    let mut previous: Option<(usize, [f64; 3])> = None;
-    for n in [500, 1000, 2000] {
-        let points = ellipse_polygon(&mut rng, n, 1e12, 1.0);
-        let m = points.len();
-        let polygon = identity(m);
-        let (a, wall_a, cpu_a) = timed(|| maxmin_area_convex(&points, &polygon));
-        let (b, wall_b, cpu_b) = timed(|| maxmin_area_convex_by_search(&points, &polygon));
-        let (c, wall_c, cpu_c) = timed(|| minmax_area_convex(&points, &polygon));
-        assert_triangulation(&points, &polygon, &a);
-        assert_triangulation(&points, &polygon, &b);
-        assert_triangulation(&points, &polygon, &c);
-        assert_eq!(min_twice_area(&points, &a), min_twice_area(&points, &b));
-        println!(
-            "n = {m:5}  CPU (wall) seconds: maxmin range-max {cpu_a:7.3} ({wall_a:7.3}), \
-             maxmin sort-and-search {cpu_b:7.3} ({wall_b:7.3}), minmax {cpu_c:7.3} ({wall_c:7.3})"
-        );
-        let times = [cpu_a, cpu_b, cpu_c];
-        if let Some((m0, t0)) = previous {
-            let model = (m * m) as f64 * (m as f64).ln() / ((m0 * m0) as f64 * (m0 as f64).ln());
-            println!(
-                "  CPU ratio to n = {m0}: {:.2} / {:.2} / {:.2}  (n² log n predicts {model:.2}, n³ {:.2})",
-                times[0] / t0[0],
-                times[1] / t0[1],
-                times[2] / t0[2],
-                (m as f64 / m0 as f64).powi(3)
-            );
-        }
-        previous = Some((m, times));
-    }
 }

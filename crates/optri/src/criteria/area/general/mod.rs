@@ -1,0 +1,595 @@
+//! MaxMin-area and MinMax-area triangulations of general point sets (not in
+//! convex position): the approximations of T. S. Vassilev, *Optimal area
+//! triangulation*, PhD thesis, University of Saskatchewan, 2005, Chapter 3
+//! (§3.4, Algorithms 75 and 76; Theorem 74), with Algorithm 76's flips made
+//! angle-safe and area-equalising by exact comparisons, an optimum over the
+//! triangulations containing `RNG ∪ hull`, and a certified bound on the
+//! optimum that proves some results optimal.
+//!
+//! No polynomial algorithm is known for either criterion on general point
+//! sets (Table 4.1 of the thesis). We compute four candidates and return the
+//! best under the objective, with every area comparison exact
+//! ([`compare_areas`]; a bottleneck value is stored as the corner triple of
+//! its triangle, never as a rounded area):
+//!
+//! 1. **Delaunay**: the Delaunay triangulation `DT` (spade).
+//! 2. **Algorithm 75** (thesis L4372–4445): if `DT`'s smallest
+//!    angle `α*` is at least 30° (exact: [`angle_at_least_30_degrees`]), the
+//!    optimal area *30°-triangulation*: by Theorem 74 (L4336) the relative
+//!    neighbourhood graph lies in every triangulation whose angles are all at
+//!    least 30°, so each bounded face of `RNG(S) ∪ hull(S)` is triangulated
+//!    separately by Klincsek's program ([`optimal_triangulation`]) allowing
+//!    only triangles with all three angles ≥ 30°. Feasible because `DT` is
+//!    such a triangulation and contains `RNG ∪ hull`. If `α* < 30°` no
+//!    30°-triangulation exists (`DT` maximises the smallest angle, Property
+//!    13) and the algorithm returns `DT`.
+//! 3. **The `RNG ∪ hull` optimum**: the same face
+//!    programs without the angle filter, i.e. the optimum over all
+//!    triangulations containing `RNG ∪ hull`. Both `DT` and Algorithm 75's
+//!    result are in that set, so this candidate is never worse than either
+//!    and keeps Algorithm 75's guarantee.
+//! 4. **Algorithm 76** (L4466–4520): from `DT`, flip an interior
+//!    edge `xy` of a strictly convex quadrilateral `x b y a` to `ab` while
+//!    (i) `xy` is locally Delaunay (`b` strictly outside the circle `xya`:
+//!    a *reverse* Delaunay flip), (ii) the flip equalises areas,
+//!    `min(A(axb), A(bya)) > min(A(xya), A(yxb))`, and (iii) both new
+//!    triangles keep every angle at least `α*` ([`compare_corner_angles`]).
+//!    Both pairs cover the same quadrilateral, so (ii) is equivalent to
+//!    `max(A(axb), A(bya)) < max(A(xya), A(yxb))`: one rule serves MaxMin and
+//!    MinMax, and the result is one triangulation `T̃₃` for both, never worse
+//!    than `DT` under either objective (every flip raises the pair's minimum
+//!    and lowers its maximum). Edges are processed first-in first-out,
+//!    starting with `DT`'s interior edges in triangle order; a flip enqueues
+//!    the four outer sides of its quadrilateral. *Termination:* a reverse
+//!    Delaunay flip raises the lifted (paraboloid) surface, strictly above
+//!    the removed edge, and the surface never descends, so a removed edge
+//!    never returns: at most `C(n, 2)` flips.
+//!
+//! The faces of `RNG ∪ hull` are *weakly* simple polygons (zero-width cracks,
+//! repeated vertices), not simple as L3891 says: the program indexes boundary
+//! *corners* and [`PolygonCycle::is_diagonal`] decides chords between
+//! corners. The cost is `O(n log n)` for `DT`, the RNG and the faces,
+//! `O(Σ k³)` time and `O(max k²)` memory for faces of `k` corners (cubic in
+//! the worst case, e.g. points in convex position, where the RNG is nearly
+//! the hull cycle and there is one face; faces above [`MAX_FACE_CORNERS`]
+//! skip candidates 2 and 3), `O(n²)` flips worst case for Algorithm 76
+//! (`O(n)` observed), and `O(h · n log n)` for the bound. Measured (release,
+//! uniform points in the unit square, both objectives): about 10 ms at
+//! n = 1000 and 0.1 s at n = 10⁴ (largest face 184 corners).
+//!
+//! # Guarantees
+//! The thesis bounds the approximation only relative to `β`, the smallest
+//! angle of the *unknown* optimum (Theorem 81): nothing is
+//! guaranteed a priori, so the result is an approximation unless the bound
+//! below certifies it.
+//!
+//! # The certified bound
+//! Let `ab` be an edge of the convex hull between consecutive hull points
+//! (collinear hull points are vertices). Every triangulation `T` of `S`
+//! contains `ab` (no segment between points of `S` crosses it and no point
+//! lies on it) and exactly one triangle `abr` on its inner side, with `r`
+//! strictly inside the hull's half-plane of `ab`; that triangle is *empty*
+//! (its closed region holds no point of `S` but its corners), because `T`
+//! uses every point as a vertex.
+//!
+//! * **MaxMin**: `μ(T) ≤ A(abr) ≤ M(ab)`, the largest area of an empty
+//!   triangle on `ab`, for every `T` and every hull edge, so the optimum
+//!   `μ* ≤ min_ab M(ab)`. An apex `r` is empty iff no other point `q` of the
+//!   open half-plane has both `∠bаq ≤ ∠bar` and `∠abq ≤ ∠abr` (the closed
+//!   triangle is the intersection of the two closed wedges at `a` and `b`
+//!   with the half-plane, and the open segment `ab` holds no point): the
+//!   empty apexes are the minimal points of the two angles. Sorting the
+//!   points by the angle at `a` (ties by the angle at `b`) and keeping those
+//!   whose angle at `b` is a strict running minimum finds them, exactly by
+//!   orientation tests, in `O(n log n)` per edge.
+//! * **MinMax**: `λ(T) ≥ A(abr) ≥ m(ab) = min_r A(abr)` over all `r` in the
+//!   open half-plane, for every `T` and every hull edge, so the optimum
+//!   `λ* ≥ max_ab m(ab)`; `O(n)` per edge. (The nearest point to the line
+//!   `ab` always spans an empty triangle, so emptiness would not raise this.)
+//!
+//! The bound is reported as its triangle. A result whose smallest (largest)
+//! area equals it is optimal, and is reported `exact`.
+//!
+//! # Degenerate input
+//! Collinear points: flat triangles are never allowed (exact orientation);
+//! collinear hull points are hull vertices and their hull edges are in every
+//! triangulation. Cocircular points: the Delaunay graph's canonical
+//! completion (cocircular faces fanned from their smallest index) is the
+//! starting point; its smallest angle is the same for every completion. An
+//! angle of exactly 30° cannot occur with rational coordinates (`tan 30° =
+//! 1/√3`), so Theorem 74's equality case never arises; the
+//! theorem assumes general position, and on other inputs Algorithm 75 still
+//! returns a valid 30°-triangulation (its optimality among those is what
+//! the tests check by enumeration). Equal areas: the first candidate in the
+//! order above wins a tie; within a face program, the first split corner
+//! (the program's rule); Algorithm 76's order is the FIFO above. Everything
+//! works on the distinct-point numbering of [`PointSet`].
+
+use super::polygon::BottleneckArea;
+use super::AreaBottleneck;
+use crate::error::{Error, Result};
+use crate::graphs::rng_from_delaunay;
+use crate::kernel::{
+    angle_at_least_30_degrees, compare_areas, compare_corner_angles, incircle_sign, orient_sign,
+    Point,
+};
+use crate::polygon_program::optimal_triangulation;
+use crate::spatial::convex_hull_cycle;
+use crate::structures::{DelaunayGraph, PlanarGraph, PointSet, PolygonCycle, NO_TRIANGLE};
+use std::cmp::Ordering;
+use std::collections::VecDeque;
+
+/// The best triangulation found, which candidate it is, and the bound.
+#[derive(Clone, Debug)]
+pub(crate) struct GeneralAreaResult {
+    /// Triangles as distinct-point indices.
+    pub triangles: Vec<[u32; 3]>,
+    /// The winning candidate's name ([`DELAUNAY`], [`ALGORITHM_75`],
+    /// [`RNG_HULL_OPTIMUM`] or [`ALGORITHM_76`]).
+    pub algorithm: String,
+    /// Proven optimal: the result attains [`Self::bound`].
+    pub exact: bool,
+    /// A triangle whose (doubled) area bounds the optimum (module docs): for
+    /// MaxMin an upper bound on the optimal smallest area, for MinMax a lower
+    /// bound on the optimal largest area. `None` never happens today (every
+    /// accepted point set has a hull edge); kept for inputs without one.
+    pub bound: Option<[u32; 3]>,
+}
+
+/// Candidate 1.
+pub(crate) const DELAUNAY: &str = "Delaunay";
+/// Candidate 2.
+pub(crate) const ALGORITHM_75: &str =
+    "Vassilev Algorithm 75: optimal 30°-triangulation of the RNG ∪ hull faces";
+/// Candidate 3.
+pub(crate) const RNG_HULL_OPTIMUM: &str = "optimum over triangulations containing RNG ∪ hull";
+/// Candidate 4.
+pub(crate) const ALGORITHM_76: &str =
+    "Vassilev Algorithm 76: angle-safe area-equalising reverse-Delaunay flips";
+
+/// One candidate triangulation with its bottleneck triangle.
+#[derive(Clone, Debug)]
+pub(crate) struct Candidate {
+    pub name: &'static str,
+    pub triangles: Vec<[u32; 3]>,
+    /// The smallest (MaxMin) or largest (MinMax) triangle.
+    pub bottleneck: [u32; 3],
+}
+
+/// Faces of `RNG ∪ hull` with more corners than this are not given to the
+/// cubic face program: if any face is larger, candidates 2 (step 3) and 3
+/// are skipped and the result is the better of Delaunay and Algorithm 76.
+/// Near-convex inputs (most points on the hull) are the ones that reach it;
+/// points in convex position belong to the convex-polygon algorithm anyway.
+/// Measured worst case: 500 points on a circle, one face, about 4 s (nearly
+/// all triangles tie in area up to rounding, so most comparisons take the
+/// exact path); 900 took 21 s.
+pub(crate) const MAX_FACE_CORNERS: usize = 500;
+
+/// Every candidate, in the tie-breaking order of the module docs, with what the algorithms
+/// learnt on the way.
+#[cfg_attr(not(test), allow(dead_code))] // the angle statistics serve the tests
+pub(crate) struct Candidates {
+    /// The candidates computed: all four, or without the face programs
+    /// (Algorithm 75's step 3 and the `RNG ∪ hull` optimum) when a face
+    /// exceeds the cap.
+    pub list: Vec<Candidate>,
+    /// Corners of the largest face of `RNG ∪ hull`.
+    pub largest_face: usize,
+    /// `DT`'s smallest angle as a corner `[apex, a, b]`.
+    pub smallest_angle: [u32; 3],
+    /// Did Algorithm 75 run its step 3 (`α* ≥ 30°`)?
+    pub thirty_degrees: bool,
+    /// Flips made by Algorithm 76.
+    pub flips: usize,
+}
+
+/// The best of the four candidates under `objective`, with the certified
+/// bound (module docs).
+///
+/// # Errors
+/// [`Error::Internal`] if spade fails or a face program finds no
+/// triangulation (a bug).
+pub(crate) fn area_general(
+    points: &PointSet,
+    objective: AreaBottleneck,
+) -> Result<GeneralAreaResult> {
+    Ok(best_of(points, objective, &candidates(points, objective)?))
+}
+
+/// The best of `candidates` under `objective` (the first of the best), with
+/// the certified bound (module docs).
+pub(crate) fn best_of(
+    points: &PointSet,
+    objective: AreaBottleneck,
+    candidates: &Candidates,
+) -> GeneralAreaResult {
+    let pts = points.points();
+    let mut best = 0;
+    for (i, c) in candidates.list.iter().enumerate() {
+        if objective.better(
+            |v| pts[v as usize],
+            c.bottleneck,
+            candidates.list[best].bottleneck,
+        ) {
+            best = i;
+        }
+    }
+    let winner = &candidates.list[best];
+    let bound = certified_bound(pts, &convex_hull_cycle(pts), objective);
+    let exact = bound.is_some_and(|b| area_order(pts, winner.bottleneck, b) == Ordering::Equal);
+    GeneralAreaResult {
+        triangles: winner.triangles.clone(),
+        algorithm: winner.name.to_string(),
+        exact,
+        bound,
+    }
+}
+
+/// The four candidates of the module docs for `objective`.
+pub(crate) fn candidates(points: &PointSet, objective: AreaBottleneck) -> Result<Candidates> {
+    candidates_with_cap(points, objective, MAX_FACE_CORNERS)
+}
+
+/// [`candidates`] with the face-size cap `max_face` instead of
+/// [`MAX_FACE_CORNERS`].
+fn candidates_with_cap(
+    points: &PointSet,
+    objective: AreaBottleneck,
+    max_face: usize,
+) -> Result<Candidates> {
+    let pts = points.points();
+    let g = DelaunayGraph::with_topology(pts)?;
+    let with_bottleneck = |name: &'static str, triangles: Vec<[u32; 3]>| Candidate {
+        name,
+        bottleneck: bottleneck(pts, objective, &triangles),
+        triangles,
+    };
+    let smallest_angle = smallest_angle(pts, &g.triangles);
+    let [o, a, b] = smallest_angle.map(|v| pts[v as usize]);
+    let thirty_degrees = angle_at_least_30_degrees(o, a, b);
+    let faces = rng_hull_faces(pts, &g);
+    let largest_face = faces.iter().map(Vec::len).max().unwrap_or(0);
+    let mut list = vec![with_bottleneck(DELAUNAY, g.triangles.clone())];
+    if !thirty_degrees {
+        list.push(with_bottleneck(ALGORITHM_75, g.triangles.clone()));
+    }
+    if largest_face <= max_face {
+        if thirty_degrees {
+            let fat = triangulate_faces(pts, &faces, objective, true)?;
+            list.push(with_bottleneck(ALGORITHM_75, fat));
+        }
+        let rng_hull = triangulate_faces(pts, &faces, objective, false)?;
+        list.push(with_bottleneck(RNG_HULL_OPTIMUM, rng_hull));
+    }
+    let (algorithm_76, flips) = algorithm_76(pts, &g, smallest_angle);
+    list.push(with_bottleneck(ALGORITHM_76, algorithm_76));
+    Ok(Candidates {
+        list,
+        largest_face,
+        smallest_angle,
+        thirty_degrees,
+        flips,
+    })
+}
+
+/// Exact order of the areas of two triangles given by point indices.
+#[inline]
+fn area_order(pts: &[Point], s: [u32; 3], t: [u32; 3]) -> Ordering {
+    if s == t {
+        return Ordering::Equal;
+    }
+    compare_areas(s.map(|v| pts[v as usize]), t.map(|v| pts[v as usize]))
+}
+
+/// The bottleneck triangle of a (non-empty) triangulation under `objective`:
+/// the first of the worst.
+pub(crate) fn bottleneck(
+    pts: &[Point],
+    objective: AreaBottleneck,
+    triangles: &[[u32; 3]],
+) -> [u32; 3] {
+    let point = |v: u32| pts[v as usize];
+    triangles
+        .iter()
+        .copied()
+        .reduce(|s, t| if objective.better(point, s, t) { t } else { s })
+        .expect("a triangulation has a triangle")
+}
+
+/// `DT`'s smallest angle as a corner `[apex, a, b]` (exact comparisons).
+fn smallest_angle(pts: &[Point], triangles: &[[u32; 3]]) -> [u32; 3] {
+    let corner = |c: [u32; 3]| c.map(|v| pts[v as usize]);
+    let mut best: Option<[u32; 3]> = None;
+    for t in triangles {
+        for k in 0..3 {
+            let c = [t[k], t[(k + 1) % 3], t[(k + 2) % 3]];
+            if best.is_none_or(|b| compare_corner_angles(corner(c), corner(b)) == Ordering::Less) {
+                best = Some(c);
+            }
+        }
+    }
+    best.expect("a Delaunay triangulation has a triangle")
+}
+
+/// The bounded faces of `RNG(S) ∪ hull(S)` as counter-clockwise corner
+/// cycles (a vertex repeats at a crack or a pinch point). The graph is
+/// connected (the RNG contains every minimum spanning tree) and plane (a
+/// subgraph of `DT`), so each face has one boundary walk.
+pub(crate) fn rng_hull_faces(pts: &[Point], g: &DelaunayGraph) -> Vec<Vec<u32>> {
+    let mut edges = rng_from_delaunay(pts, g);
+    let hull = convex_hull_cycle(pts);
+    for i in 0..hull.len() {
+        edges.push([hull[i], hull[(i + 1) % hull.len()]]);
+    }
+    for e in &mut edges {
+        *e = [e[0].min(e[1]), e[0].max(e[1])];
+    }
+    edges.sort_unstable();
+    edges.dedup();
+    PlanarGraph::new(pts, &edges)
+        .bounded_faces(pts)
+        .into_iter()
+        .map(|f| f.vertices)
+        .collect()
+}
+
+/// Each face triangulated by the polygon program under `objective`, with
+/// only triangles whose angles are all at least 30° if `thirty_degrees`.
+fn triangulate_faces(
+    pts: &[Point],
+    faces: &[Vec<u32>],
+    objective: AreaBottleneck,
+    thirty_degrees: bool,
+) -> Result<Vec<[u32; 3]>> {
+    let p = |v: u32| pts[v as usize];
+    let mut out = Vec::with_capacity(2 * pts.len());
+    for face in faces {
+        let region = PolygonCycle::exact(pts, face);
+        let convex = region.is_strictly_convex();
+        let v = face.as_slice();
+        let allowed = |i: usize, m: usize, j: usize| {
+            let (a, b, c) = (p(v[i]), p(v[m]), p(v[j]));
+            orient_sign(a, b, c) > 0
+                && (!thirty_degrees
+                    || (angle_at_least_30_degrees(a, b, c)
+                        && angle_at_least_30_degrees(b, c, a)
+                        && angle_at_least_30_degrees(c, a, b)))
+        };
+        let solved = optimal_triangulation(
+            face.len(),
+            |i, j| convex || region.is_diagonal(i, j),
+            allowed,
+            &BottleneckArea {
+                point: &|c: usize| p(v[c]),
+                kind: objective,
+            },
+        )
+        .ok_or_else(|| {
+            Error::Internal(format!(
+                "a face of RNG ∪ hull with {} corners has no {}triangulation",
+                face.len(),
+                if thirty_degrees { "30°-" } else { "" }
+            ))
+        })?;
+        out.extend(solved.triangles.into_iter().map(|t| t.map(|c| v[c])));
+    }
+    Ok(out)
+}
+
+/// Algorithm 76 from `DT` with the angle floor `alpha` (a corner
+/// `[apex, a, b]`; `DT`'s smallest angle): the triangles and the number of
+/// flips (module docs for the rule, the order and termination).
+fn algorithm_76(pts: &[Point], g: &DelaunayGraph, alpha: [u32; 3]) -> (Vec<[u32; 3]>, usize) {
+    let p = |v: u32| pts[v as usize];
+    let alpha = alpha.map(p);
+    let mut tri = g.triangles.clone();
+    let mut nb = g.topology.neighbours.clone();
+    let mut queue: VecDeque<(u32, usize, [u32; 2])> = VecDeque::new();
+    for (t, n) in nb.iter().enumerate() {
+        for (j, &u) in n.iter().enumerate() {
+            if u != NO_TRIANGLE && u as usize > t {
+                queue.push_back((t as u32, j, [tri[t][j], tri[t][(j + 1) % 3]]));
+            }
+        }
+    }
+    let angles_ok = |[a, b, c]: [Point; 3]| {
+        [[a, b, c], [b, c, a], [c, a, b]]
+            .into_iter()
+            .all(|corner| compare_corner_angles(corner, alpha) != Ordering::Less)
+    };
+    let mut flips = 0;
+    while let Some((t, j, [x, y])) = queue.pop_front() {
+        let t = t as usize;
+        if tri[t][j] != x || tri[t][(j + 1) % 3] != y || nb[t][j] == NO_TRIANGLE {
+            continue; // stale: the side changed since it was queued
+        }
+        let a = tri[t][(j + 2) % 3];
+        let u = nb[t][j] as usize;
+        let i = (0..3)
+            .find(|&i| tri[u][i] == y)
+            .expect("neighbours share the side");
+        let b = tri[u][(i + 2) % 3];
+        let (pa, pb, px, py) = (p(a), p(b), p(x), p(y));
+        // A strictly convex quadrilateral x b y a; xy locally Delaunay.
+        if orient_sign(pa, pb, px) >= 0
+            || orient_sign(pa, pb, py) <= 0
+            || incircle_sign(px, py, pa, pb) >= 0
+        {
+            continue;
+        }
+        let smaller = |s: [u32; 3], r: [u32; 3]| {
+            if area_order(pts, s, r) == Ordering::Greater {
+                r
+            } else {
+                s
+            }
+        };
+        let (new1, new2) = ([a, x, b], [b, y, a]);
+        let old = smaller([x, y, a], [y, x, b]);
+        if area_order(pts, smaller(new1, new2), old) != Ordering::Greater
+            || !angles_ok(new1.map(p))
+            || !angles_ok(new2.map(p))
+        {
+            continue;
+        }
+        // t = (x, y, a), u = (y, x, b) become t = (a, x, b), u = (b, y, a).
+        let n_ya = nb[t][(j + 1) % 3];
+        let n_ax = nb[t][(j + 2) % 3];
+        let n_xb = nb[u][(i + 1) % 3];
+        let n_by = nb[u][(i + 2) % 3];
+        tri[t] = new1;
+        nb[t] = [n_ax, n_xb, u as u32];
+        tri[u] = new2;
+        nb[u] = [n_by, n_ya, t as u32];
+        for (n, from, to) in [(n_xb, u, t), (n_ya, t, u)] {
+            if n != NO_TRIANGLE {
+                for s in nb[n as usize].iter_mut() {
+                    if *s == from as u32 {
+                        *s = to as u32;
+                    }
+                }
+            }
+        }
+        flips += 1;
+        for (w, k) in [(t, 0), (t, 1), (u, 0), (u, 1)] {
+            if nb[w][k] != NO_TRIANGLE {
+                queue.push_back((w as u32, k, [tri[w][k], tri[w][(k + 1) % 3]]));
+            }
+        }
+    }
+    (tri, flips)
+}
+
+/// The certified bound of the module docs, as a triangle `[a, b, r]` on a
+/// hull edge `ab` (`hull`: the counter-clockwise hull cycle). `None` only
+/// without a hull edge that has a point on its inner side (all points
+/// collinear, which [`PointSet`] rejects).
+pub(crate) fn certified_bound(
+    pts: &[Point],
+    hull: &[u32],
+    objective: AreaBottleneck,
+) -> Option<[u32; 3]> {
+    let p = |v: u32| pts[v as usize];
+    let h = hull.len();
+    let mut bound: Option<[u32; 3]> = None;
+    let mut inner: Vec<u32> = Vec::with_capacity(pts.len());
+    for e in 0..h {
+        let (a, b) = (hull[e], hull[(e + 1) % h]);
+        let (pa, pb) = (p(a), p(b));
+        inner.clear();
+        inner.extend((0..pts.len() as u32).filter(|&r| orient_sign(pa, pb, p(r)) > 0));
+        if inner.is_empty() {
+            continue;
+        }
+        let edge_value = match objective {
+            AreaBottleneck::MaxMin => {
+                // By the angle at a (counter-clockwise from ab), ties by the
+                // angle at b (clockwise from ba): both are orientations.
+                inner.sort_unstable_by(|&q, &r| match orient_sign(pa, p(q), p(r)) {
+                    1 => Ordering::Less,
+                    -1 => Ordering::Greater,
+                    _ => orient_sign(pb, p(q), p(r)).cmp(&0),
+                });
+                let mut lowest_at_b: Option<u32> = None;
+                let mut largest: Option<[u32; 3]> = None;
+                for &r in &inner {
+                    // r is an empty apex iff its angle at b is strictly below
+                    // that of every point before it.
+                    if lowest_at_b.is_none_or(|m| orient_sign(pb, p(m), p(r)) > 0) {
+                        lowest_at_b = Some(r);
+                        let t = [a, b, r];
+                        if largest.is_none_or(|l| area_order(pts, t, l) == Ordering::Greater) {
+                            largest = Some(t);
+                        }
+                    }
+                }
+                largest
+            }
+            AreaBottleneck::MinMax => inner.iter().map(|&r| [a, b, r]).reduce(|s, t| {
+                if area_order(pts, t, s) == Ordering::Less {
+                    t
+                } else {
+                    s
+                }
+            }),
+        };
+        let Some(value) = edge_value else { continue };
+        // MaxMin: the smallest of the per-edge maxima; MinMax: the largest of
+        // the per-edge minima.
+        let tighter = bound.is_none_or(|b| match objective {
+            AreaBottleneck::MaxMin => area_order(pts, value, b) == Ordering::Less,
+            AreaBottleneck::MinMax => area_order(pts, value, b) == Ordering::Greater,
+        });
+        if tighter {
+            bound = Some(value);
+        }
+    }
+    bound
+}
+
+/// How long each step of the approximation took on one input, and what it
+/// worked on (for the benchmark harness; both objectives' face programs and
+/// bounds).
+#[cfg(feature = "internals")]
+pub struct AreaGeneralSteps {
+    /// `Delaunay`, `RNG ∪ hull faces`, `face programs MaxMin`, `face
+    /// programs MinMax`, `Algorithm 76`, `bound MaxMin`, `bound MinMax`.
+    pub phases: Vec<crate::timing::Phase>,
+    /// Bounded faces of `RNG ∪ hull`.
+    pub faces: usize,
+    /// Corners of the largest face.
+    pub largest_face: usize,
+    /// The sum of the cubes of the faces' corner counts (the programs' work).
+    pub cubed_corners: usize,
+    /// Flips made by Algorithm 76.
+    pub flips: usize,
+    /// Points on the convex hull (the bound's edges).
+    pub hull_points: usize,
+}
+
+/// Runs and times every step of the approximation on `points`.
+///
+/// # Errors
+/// As [`area_general`].
+#[cfg(feature = "internals")]
+pub(crate) fn step_times(points: &PointSet) -> Result<AreaGeneralSteps> {
+    use crate::timing::timed;
+    let pts = points.points();
+    let mut phases = Vec::new();
+    let g = timed(&mut phases, "Delaunay", || {
+        DelaunayGraph::with_topology(pts)
+    })?;
+    let faces = timed(&mut phases, "RNG ∪ hull faces", || {
+        rng_hull_faces(pts, &g)
+    });
+    for (name, objective) in [
+        ("face programs MaxMin", AreaBottleneck::MaxMin),
+        ("face programs MinMax", AreaBottleneck::MinMax),
+    ] {
+        timed(&mut phases, name, || {
+            triangulate_faces(pts, &faces, objective, false)
+        })?;
+    }
+    let (_, flips) = timed(&mut phases, "Algorithm 76", || {
+        algorithm_76(pts, &g, smallest_angle(pts, &g.triangles))
+    });
+    let hull = convex_hull_cycle(pts);
+    timed(&mut phases, "bound MaxMin", || {
+        certified_bound(pts, &hull, AreaBottleneck::MaxMin)
+    });
+    timed(&mut phases, "bound MinMax", || {
+        certified_bound(pts, &hull, AreaBottleneck::MinMax)
+    });
+    Ok(AreaGeneralSteps {
+        phases,
+        faces: faces.len(),
+        largest_face: faces.iter().map(Vec::len).max().unwrap_or(0),
+        cubed_corners: faces.iter().map(|f| f.len().pow(3)).sum(),
+        flips,
+        hull_points: hull.len(),
+    })
+}
+
+#[cfg(test)]
+mod tests;
