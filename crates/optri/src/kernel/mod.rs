@@ -1,5 +1,5 @@
 //! The exact geometry kernel: predicates, the symbolic tie-break, lunes,
-//! certified squared-length keys and reporting metrics. Layer 0: it imports
+//! certified squared-length keys and correctly rounded reporting metrics. Layer 0: it imports
 //! nothing else of the crate.
 //!
 //! Every combinatorial decision in optri (orientation, in-circle, which of two
@@ -41,12 +41,14 @@
 //! orientations are never zero, for *distinct* input points.
 
 mod certified_incircle;
+mod degrees;
 pub(crate) mod expansion;
 mod length_sums;
 mod lune;
 pub mod metrics;
 mod norm;
 mod predicates;
+mod rounding;
 mod squared_length;
 mod symbolic;
 
