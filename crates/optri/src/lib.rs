@@ -71,7 +71,7 @@ pub use registry::{
     triangulate, triangulate_polygon, triangulate_polygon_with, triangulate_with, Comparison,
     Criterion, GraphKind, PointGraph, Solution,
 };
-pub use structures::{Domain, PointSet, SimplePolygon, Stats, Triangulation};
+pub use structures::{Domain, Measure, PointSet, SimplePolygon, Stats, Triangulation};
 pub use timing::Phase;
 
 /// The README's Rust examples, compiled and run as doctests.

@@ -20,10 +20,10 @@
 //! point, merged duplicates included, so the document describes the input as
 //! given.
 
-use super::decimal::unscale;
 use super::{Arithmetic, Input, ReadInput};
-use crate::criteria::{Diagnostics, Optimality};
+use crate::criteria::{BoundMeasure, CertifiedBound, Diagnostics, Optimality};
 use crate::error::{Error, Result};
+use crate::kernel::metrics::{area_scaled, over_power_of_ten_rounded, Rounding};
 use crate::kernel::Point;
 use crate::registry::{Comparison, GraphKind, Solution};
 use crate::structures::{Domain, PointSet, SimplePolygon, Stats, Triangulation};
@@ -71,16 +71,6 @@ impl<'a> InputUnits<'a> {
     }
 }
 
-/// `stats` of the scaled points in the user's units: lengths divided by
-/// `10^k`, areas by `10^2k`, angles unchanged.
-fn stats_in_user_units(mut stats: Stats, k: i32) -> Stats {
-    stats.max_edge_length = unscale(stats.max_edge_length, k);
-    stats.total_edge_length = unscale(stats.total_edge_length, k);
-    stats.min_area = unscale(unscale(stats.min_area, k), k);
-    stats.max_area = unscale(unscale(stats.max_area, k), k);
-    stats
-}
-
 impl<'a> TriangulationReport<'a> {
     /// The document of a bare triangulation: no run fields, no timing.
     pub fn new(triangulation: &'a Triangulation) -> Self {
@@ -123,12 +113,13 @@ impl<'a> TriangulationReport<'a> {
         }
     }
 
-    /// The quality measures, in the user's units.
+    /// The quality measures, in the user's units: on scaled input, the
+    /// exact measures of the scaled points divided by `10^k` (lengths) or
+    /// `10^2k` (areas) and rounded once.
     pub fn stats(&self) -> Stats {
-        let stats = self.triangulation.stats();
         match self.input.and_then(|i| i.user) {
-            Some((_, k)) => stats_in_user_units(stats, k),
-            None => stats,
+            Some((_, k)) => self.triangulation.stats_over_power_of_ten(k),
+            None => self.triangulation.stats(),
         }
     }
 
@@ -147,18 +138,33 @@ impl<'a> TriangulationReport<'a> {
         let s = self.solution.filter(|s| !s.metric.is_euclidean())?;
         let (edge, length) = s.longest_edge_under_metric();
         Some(match self.input.and_then(|i| i.user) {
-            Some((_, k)) => (edge, unscale(length, k)),
+            Some((_, k)) => (
+                edge,
+                over_power_of_ten_rounded(length, k, Rounding::Nearest),
+            ),
             None => (edge, length),
         })
     }
 
-    /// A certified bound's value, in the user's units (an area scales by
-    /// `10^-2k`, a length by `10^-k`).
-    fn bound_in_user_units(&self, b: &crate::CertifiedBound) -> f64 {
-        match (self.input.and_then(|i| i.user), b.measure) {
-            (Some((_, k)), crate::BoundMeasure::Area) => unscale(unscale(b.value, k), k),
-            (Some((_, k)), _) => unscale(b.value, k),
-            (None, _) => b.value,
+    /// A certified bound's value, in the user's units: a triangle's area is
+    /// measured again, its exact value divided by `10^2k` and rounded once
+    /// (so it equals the `stats` area of the same triangle); a lower bound
+    /// on a total length is divided by `10^k` rounding down, so that it
+    /// stays a lower bound.
+    fn bound_in_user_units(&self, b: &CertifiedBound) -> f64 {
+        let Some((_, k)) = self.input.and_then(|i| i.user) else {
+            return b.value;
+        };
+        match (b.measure, b.triangle) {
+            (BoundMeasure::Area, Some(t)) => {
+                let [p, q, r] = t.map(|i| self.triangulation.points()[i as usize]);
+                area_scaled(p, q, r, k)
+            }
+            (BoundMeasure::Area, None) => {
+                over_power_of_ten_rounded(b.value, 2 * k, Rounding::Nearest)
+            }
+            (_, _) if !b.upper => over_power_of_ten_rounded(b.value, k, Rounding::Down),
+            (_, _) => over_power_of_ten_rounded(b.value, k, Rounding::Nearest),
         }
     }
 

@@ -16,4 +16,4 @@ pub(crate) use delaunay_graph::{DelaunayGraph, NO_TRIANGLE};
 pub(crate) use planar_graph::PlanarGraph;
 pub use point_set::PointSet;
 pub use polygon::SimplePolygon;
-pub use triangulation::{Domain, Stats, Triangulation};
+pub use triangulation::{Domain, Measure, Stats, Triangulation};
