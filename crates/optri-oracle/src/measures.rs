@@ -121,12 +121,13 @@ pub fn nearest_sqrt(q: &BigRational) -> f64 {
 
 /// A rational enclosure `[low, high]` of `√q` (`q > 0`) narrower than
 /// `width`: Newton's step `x ↦ (x + q/x)/2` stays above `√q` (the
-/// arithmetic-geometric mean inequality), and `q/x` is below it; each
-/// iterate is rounded up to a multiple of `width/4` to keep the numbers
-/// small (rounding up keeps it above `√q`).
+/// arithmetic-geometric mean inequality), and `q/x` is below it; both are
+/// rounded outwards to multiples of `width/4` to keep the numbers (and
+/// their sums) small.
 fn sqrt_enclosure(q: &BigRational, width: &BigRational) -> (BigRational, BigRational) {
     let grid = width / BigRational::from_integer(BigInt::from(4));
     let up = |x: BigRational| (&x / &grid).ceil() * &grid;
+    let down = |x: BigRational| (&x / &grid).floor() * &grid;
     let two = BigRational::from_integer(BigInt::from(2));
     // One Newton step from any positive guess is above √q.
     let guess = q.to_f64().map_or(1.0, f64::sqrt);
@@ -137,7 +138,7 @@ fn sqrt_enclosure(q: &BigRational, width: &BigRational) -> (BigRational, BigRati
     };
     let mut x = up((q / &guess + guess) / &two);
     loop {
-        let low = q / &x;
+        let low = down(q / &x);
         if &x - &low < *width {
             return (low, x);
         }
@@ -151,18 +152,42 @@ fn rational_root(q: &BigRational) -> Option<BigRational> {
     (&n * &n == *q.numer() && &d * &d == *q.denom()).then(|| BigRational::new(n, d))
 }
 
-/// `Σ √qᵢ` against a rational `m`, exactly: the sum is rational only when
-/// every `qᵢ` is a rational square (square roots of distinct square-free
-/// integers are linearly independent over ℚ, and positive terms cannot
-/// cancel); otherwise enclosures are narrowed until they exclude `m`.
-fn root_sum_side(qs: &[BigRational], m: &BigRational) -> Ordering {
-    let roots: Vec<Option<BigRational>> = qs.iter().map(rational_root).collect();
-    if roots.iter().all(Option::is_some) {
-        let sum: BigRational = roots.into_iter().flatten().sum();
-        return sum.cmp(m);
+/// The rounding `round` of a real known by rational enclosures: `enclose(j)`
+/// is an open interval around it (or a point, when the real is rational)
+/// that shrinks as `j` grows; the answer is found once both ends round
+/// alike (rounding is monotone).
+fn round_enclosed(
+    enclose: impl Fn(u32) -> (BigRational, BigRational),
+    round: impl Fn(&BigRational) -> f64,
+) -> f64 {
+    for j in 1.. {
+        let (low, high) = enclose(j);
+        let (a, b) = (round(&low), round(&high));
+        if a == b {
+            return a;
+        }
     }
-    let mut width = BigRational::new(BigInt::one(), BigInt::from(1u64 << 40));
-    loop {
+    unreachable!()
+}
+
+/// `2^-e` as a rational.
+fn two_to_minus(e: u32) -> BigRational {
+    BigRational::new(BigInt::one(), BigInt::one() << e as usize)
+}
+
+/// Enclosures of `Σ √qᵢ`: exact when every `qᵢ` is a rational square (the
+/// sum is rational only then: square roots of distinct square-free
+/// integers are linearly independent over ℚ and positive terms cannot
+/// cancel), else from [`sqrt_enclosure`] with widths `2^-64j` relative.
+fn root_sum_enclosure(qs: &[BigRational]) -> impl Fn(u32) -> (BigRational, BigRational) + '_ {
+    let roots: Vec<Option<BigRational>> = qs.iter().map(rational_root).collect();
+    let scale = qs
+        .iter()
+        .map(|q| q.to_f64().unwrap_or(0.0).sqrt())
+        .sum::<f64>();
+    let scale = to_rational(if scale > 0.0 { scale } else { 1.0 });
+    move |j| {
+        let width = &scale * two_to_minus(64 * j);
         let (mut low, mut high) = (BigRational::zero(), BigRational::zero());
         for (q, root) in qs.iter().zip(&roots) {
             match root {
@@ -177,77 +202,80 @@ fn root_sum_side(qs: &[BigRational], m: &BigRational) -> Ordering {
                 }
             }
         }
-        if &low > m {
-            return Ordering::Greater;
-        }
-        if &high < m {
-            return Ordering::Less;
-        }
-        width = &width * &width;
+        (low, high)
     }
 }
 
-/// The double nearest to `Σ √qᵢ` (rationals `qᵢ ≥ 0`, not all zero).
+/// The double nearest to `Σ √qᵢ` (rationals `qᵢ ≥ 0`).
 pub fn nearest_root_sum(qs: &[BigRational]) -> f64 {
-    let candidate: f64 = qs.iter().map(|q| q.to_f64().unwrap_or(0.0).sqrt()).sum();
-    nearest_by(candidate, |m| root_sum_side(qs, m))
+    round_enclosed(root_sum_enclosure(qs), nearest)
 }
 
 /// The largest double not above `Σ √qᵢ`.
 pub fn below_root_sum(qs: &[BigRational]) -> f64 {
-    let candidate: f64 = qs.iter().map(|q| q.to_f64().unwrap_or(0.0).sqrt()).sum();
-    below_by(candidate, |m| root_sum_side(qs, m))
+    round_enclosed(root_sum_enclosure(qs), below)
 }
 
-/// Partial sums of `atan(y) = Σ (−1)ⁿ y^(2n+1)/(2n+1)` for `0 ≤ y ≤ ½`
-/// after an even and an odd number of terms, so that they bracket the
-/// limit, with the last term below `width`.
-fn atan_enclosure(y: &BigRational, width: &BigRational) -> (BigRational, BigRational) {
-    let y2 = y * y;
-    let mut power = y.clone();
-    let mut sum = BigRational::zero();
-    let mut n: i64 = 0;
-    loop {
-        let term = &power / BigRational::from_integer(BigInt::from(2 * n + 1));
-        let next = if n % 2 == 0 {
-            &sum + &term
+/// `[lo, hi]·2^-p` around `atan(y)` for `y ∈ [y_lo, y_hi]·2^-p ⊆ [0, ½]`:
+/// the alternating Taylor series `Σ (−1)ⁿ y^(2n+1)/(2n+1)` with every term
+/// bounded below and above in fixed point (floors and ceilings). Its partial
+/// sums after an odd (even) count of terms are above (below) the limit, and
+/// the bounds keep that. Every value is non-negative, so `/` and `>>` are
+/// floors.
+fn atan_fixed(y_lo: &BigInt, y_hi: &BigInt, p: u32) -> (BigInt, BigInt) {
+    let shift = |v: BigInt| v >> p as usize;
+    let ceil_div = |v: &BigInt, d: &BigInt| (v + d - 1) / d;
+    let one = BigInt::one() << p as usize;
+    let (sq_lo, sq_hi) = (shift(y_lo * y_lo), ceil_div(&(y_hi * y_hi), &one));
+    let (mut pow_lo, mut pow_hi) = (y_lo.clone(), y_hi.clone());
+    let (mut upper_sum, mut lower_sum) = (BigInt::zero(), BigInt::zero());
+    let mut upper = BigInt::zero();
+    for n in 0u32.. {
+        let d = BigInt::from(2 * n + 1);
+        let (t_lo, t_hi) = (&pow_lo / &d, ceil_div(&pow_hi, &d));
+        if n % 2 == 0 {
+            upper_sum += &t_hi;
+            lower_sum += &t_lo;
+            upper = upper_sum.clone();
         } else {
-            &sum - &term
-        };
-        if &term < width && n % 2 == 1 {
-            // `sum` (after an odd count of terms) is above, `next` below.
-            return (next, sum);
+            upper_sum -= &t_lo;
+            lower_sum -= &t_hi;
+            if t_hi.is_zero() || t_hi == BigInt::one() {
+                return (lower_sum, upper);
+            }
         }
-        sum = next;
-        power = &power * &y2;
-        n += 1;
+        pow_lo = shift(&pow_lo * &sq_lo);
+        pow_hi = ceil_div(&(&pow_hi * &sq_hi), &one);
     }
+    unreachable!()
 }
 
-/// An enclosure of `atan(x)` for rational `0 ≤ x ≤ 1`, with `π/4` in the
-/// same precision: `atan(x) = π/4 − atan((1 − x)/(1 + x))` above ½.
-fn atan_unit(x: &BigRational, width: &BigRational) -> (BigRational, BigRational) {
-    let half = BigRational::new(BigInt::one(), BigInt::from(2));
-    if *x <= half {
-        return atan_enclosure(x, width);
-    }
-    let (ql, qh) = quarter_pi(width);
+/// `atan(x)·2^p` enclosed for a rational `0 ≤ x ≤ 1`, and `π/4 =
+/// atan(½) + atan(⅓)` in the same precision; above ½, `atan(x) = π/4 −
+/// atan((1 − x)/(1 + x))`.
+fn atan_and_quarter_pi(x: &BigRational, p: u32) -> [(BigInt, BigInt); 2] {
+    let fixed = |r: &BigRational| {
+        let scaled = r * BigRational::from_integer(BigInt::one() << p as usize);
+        (scaled.floor().to_integer(), scaled.ceil().to_integer())
+    };
+    let atan = |r: &BigRational| {
+        let (lo, hi) = fixed(r);
+        atan_fixed(&lo, &hi, p)
+    };
+    let (hl, hh) = atan(&BigRational::new(BigInt::one(), BigInt::from(2)));
+    let (tl, th) = atan(&BigRational::new(BigInt::one(), BigInt::from(3)));
+    let quarter = (hl + tl, hh + th);
     let one = BigRational::one();
-    let (rl, rh) = atan_enclosure(&((&one - x) / (&one + x)), width);
-    (ql - rh, qh - rl)
-}
-
-/// `π/4 = atan(½) + atan(⅓)`, enclosed.
-fn quarter_pi(width: &BigRational) -> (BigRational, BigRational) {
-    let (al, ah) = atan_enclosure(&BigRational::new(BigInt::one(), BigInt::from(2)), width);
-    let (bl, bh) = atan_enclosure(&BigRational::new(BigInt::one(), BigInt::from(3)), width);
-    (al + bl, ah + bh)
+    if *x <= BigRational::new(BigInt::one(), BigInt::from(2)) {
+        return [atan(x), quarter];
+    }
+    let (rl, rh) = atan(&((&one - x) / (&one + x)));
+    [(&quarter.0 - rh, &quarter.1 - rl), quarter]
 }
 
 /// The double nearest to `atan2(c, d)` in degrees for rationals `c ≥ 0`,
 /// `d` (0 when both are 0).
 pub fn nearest_atan2_degrees(c: &BigRational, d: &BigRational) -> f64 {
-    let ninety = BigRational::from_integer(BigInt::from(90));
     if c.is_zero() {
         return if d.is_negative() { 180.0 } else { 0.0 };
     }
@@ -257,44 +285,32 @@ pub fn nearest_atan2_degrees(c: &BigRational, d: &BigRational) -> f64 {
     if c == &d.abs() {
         return if d.is_positive() { 45.0 } else { 135.0 };
     }
-    let as_f64 = |v: &BigRational| v.to_f64().unwrap_or(f64::MAX);
-    let candidate = as_f64(c).atan2(as_f64(d)).to_degrees();
-    // θ in degrees = base·90 ± 180·atan(x)/π with x < 1.
+    // θ in degrees = 90·base ± 180·atan(x)/π with x < 1; irrational, so
+    // the enclosures eventually round alike.
     let (x, base, sign) = if c < &d.abs() {
+        let forward = d.is_positive();
         (
             c / d.abs(),
-            if d.is_positive() { 0 } else { 2 },
-            if d.is_positive() { 1 } else { -1 },
+            if forward { 0 } else { 2 },
+            if forward { 1 } else { -1 },
         )
     } else {
         (d.abs() / c, 1, if d.is_positive() { -1 } else { 1 })
     };
-    let side = |m: &BigRational| -> Ordering {
-        // Enclose the angle until the enclosure excludes m (it is
-        // irrational: never equal to a midpoint).
-        let mut width = BigRational::new(BigInt::one(), BigInt::from(1u64 << 40));
-        loop {
-            let (al, ah) = atan_unit(&x, &width);
-            let (ql, qh) = quarter_pi(&width);
-            // 180·atan/π = 45·atan/(π/4).
-            let f = BigRational::from_integer(BigInt::from(45));
-            let (vl, vh) = (&f * &al / &qh, &f * &ah / &ql);
-            let b = &ninety * BigRational::from_integer(BigInt::from(base));
-            let (low, high) = if sign > 0 {
-                (&b + vl, &b + vh)
-            } else {
-                (&b - vh, &b - vl)
-            };
-            if &low > m {
-                return Ordering::Greater;
-            }
-            if &high < m {
-                return Ordering::Less;
-            }
-            width = &width * &width;
+    let enclose = |j: u32| {
+        let p = 32 << j;
+        let [(al, ah), (ql, qh)] = atan_and_quarter_pi(&x, p);
+        let ratio = |a: BigInt, q: BigInt| BigRational::new(BigInt::from(45) * a, q);
+        // 180·atan/π = 45·atan/(π/4).
+        let (vl, vh) = (ratio(al.max(BigInt::zero()), qh), ratio(ah, ql));
+        let b = BigRational::from_integer(BigInt::from(90 * base));
+        if sign > 0 {
+            (&b + vl, b + vh)
+        } else {
+            (&b - vh, b - vl)
         }
     };
-    nearest_by(candidate, side)
+    round_enclosed(enclose, nearest)
 }
 
 /// `|ab| / 10^k`, correctly rounded.
