@@ -145,7 +145,9 @@ fn values_on_and_next_to_rounding_boundaries() {
     // Doubled area 2(2^53 + 1) + 2^-40: the area has a half-ulp tail plus a
     // little, so it rounds up to 2^53 + 2, where rounding the products first
     // gives 2^53.
-    let y = (((1u64 << 54) + 2) / 3) as f64; // an integer below 2^53
+    let y_int: u64 = 6_004_799_503_160_662; // (2^54 + 2)/3, below 2^53
+    assert_eq!(3 * y_int, (1 << 54) + 2);
+    let y = y_int as f64;
     let tail = 2f64.powi(-20);
     let (a, b, c) = ([0.0, 0.0], [3.0, tail], [-tail, y]);
     let naive = 0.5 * ((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])).abs();

@@ -17,14 +17,14 @@
 //! * **Length** `√X`, `X` the exact squared length: the certified
 //!   double-double `X ≈ hi + lo` of [`SquaredLength`] and one Newton
 //!   correction of `fl(√hi)` give `√X` within `17u²·√X` (proof at
-//!   [`length_enclosure`]); the exact path compares against exact integer
+//!   `length_enclosure`); the exact path encloses `√X` by exact integer
 //!   square roots.
 //! * **Area** `|D|/2`, `D` the doubled signed area: `D` as a double-double
 //!   with an error bound proportional to its permanent (fine unless the
 //!   triangle is a needle whose `D` cancels), else `D` exactly in integers.
 //! * **Angle** (module `degrees`): always at high precision; only the two
 //!   extreme corners of a triangulation are converted.
-//! * **Total length** ([`LengthSum`]): the enclosures of the lengths summed
+//! * **Total length** (`LengthSum`): the enclosures of the lengths summed
 //!   in double-double with a running bound on the rounding errors, so that
 //!   ~3·10⁶ square roots cost little more than their rounded sum; the exact
 //!   path sums exact integer square roots at a doubling precision.

@@ -46,11 +46,16 @@ pub enum Rounding {
     Down,
 }
 
-/// Magnitudes between these keep every operation of the fast path far from
-/// underflow (error terms near `2⁻¹⁰⁶` times the value must be exact) and
-/// from overflow; outside, the exact path decides.
-const SAFE_MIN: f64 = 1e-280; // about 2^-930
-const SAFE_MAX: f64 = 1e280; // about 2^930
+/// Values between these (2⁻⁷⁰⁰ and 2⁷⁰⁰) keep every operation of the fast
+/// path far from underflow (error terms near `2⁻¹⁰⁶` times the value must
+/// be normal) and from overflow; outside, the exact path decides.
+const SAFE_MIN: f64 = f64::from_bits((1023 - 700) << 52);
+const SAFE_MAX: f64 = f64::from_bits((1023 + 700) << 52);
+
+/// A nonzero low part below this (2⁻⁹⁰⁰) may have lost bits to underflow in
+/// [`Enclosure::over_power_of_ten`]; that step then defers to the exact
+/// path.
+const TINY: f64 = f64::from_bits((1023 - 900) << 52);
 
 /// A positive real known to lie within `err` of `hi + lo`.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -76,7 +81,7 @@ impl Enclosure {
     /// too). Strict comparisons leave an exact tie to the exact path.
     pub fn rounded(self, mode: Rounding) -> Option<f64> {
         let (v, w) = two_sum(self.hi, self.lo);
-        if !(SAFE_MIN..=SAFE_MAX).contains(&v) || !(self.err >= 0.0) {
+        if !(SAFE_MIN..=SAFE_MAX).contains(&v) || self.err.is_nan() || self.err < 0.0 {
             return None;
         }
         let (up, down) = (v.next_up() - v, v - v.next_down());
@@ -103,7 +108,9 @@ impl Enclosure {
     /// p₁ + e + lP`, and `p₂ = fl(e + fl(lP))` is within `u|lP|(1 + u) +
     /// u|p₂|` of `e + lP`: the bound `errP(1 + 4u) + 2u(|fl(lP)| + |p₂|)`
     /// covers it the same way. `(q₁, q₂)` is renormalized by `two_sum`
-    /// (exact) after each step.
+    /// (exact) after each step. These relative bounds hold while no result
+    /// is subnormal: `h` stays within the safe range, and a nonzero low
+    /// part below 2⁻⁹⁰⁰ (which could have underflowed) gives up.
     pub fn over_power_of_ten(self, k: i32) -> Option<Enclosure> {
         let mut e = self;
         let mut left = k.unsigned_abs();
@@ -111,10 +118,17 @@ impl Enclosure {
             let j = left.min(22);
             left -= j;
             let p = 10f64.powi(j as i32); // exact: 5^j < 2^53
+            if e.lo != 0.0 && e.lo.abs() < TINY {
+                return None;
+            }
             let (hi, lo, err) = if k > 0 {
                 let q1 = e.hi / p;
                 let r = (-q1).mul_add(p, e.hi);
-                let q2 = (r + e.lo) / p;
+                let n = r + e.lo;
+                let q2 = n / p;
+                if n != 0.0 && q2.abs() < TINY {
+                    return None;
+                }
                 (q1, q2, e.err / p * (1.0 + 4.0 * U) + 3.0 * U * q2.abs())
             } else {
                 let p1 = e.hi * p;
