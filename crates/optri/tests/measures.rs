@@ -76,28 +76,33 @@ fn random_triangles_at_every_scale_match_the_oracle() {
 
 #[test]
 fn needles_have_positive_areas_and_proper_angles() {
-    // With the far corner at (−M, −M) the naive float evaluation rounds the
-    // differences and cancels the doubled area to 0; exactly it is 1/512.
-    let m = 2f64.powi(36);
-    let needle = [[-m, -m], [1.0 / 64.0, 3.0 / 64.0], [5.0 / 64.0, 7.0 / 64.0]];
+    // With the far corner at (−2^40, −2^40) the naive float evaluation
+    // rounds the products and cancels the doubled area to 0 (and the
+    // smallest angle to 0°); exactly it is 1/2048.
+    let m = 2f64.powi(40);
+    let needle = [
+        [-m, -m],
+        [1.0 / 128.0, 3.0 / 128.0],
+        [5.0 / 128.0, 7.0 / 128.0],
+    ];
     let [a, b, c] = needle;
     let naive = 0.5 * ((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])).abs();
     assert_eq!(naive, 0.0);
-    assert_eq!(area(a, b, c), 1.0 / 1024.0);
+    assert_eq!(area(a, b, c), 1.0 / 4096.0);
     check_triangle(needle, 3);
     let ps = PointSet::new(&needle).unwrap();
     let t = Triangulation::from_triangles(&ps, vec![[0, 2, 1]]).unwrap();
     let s = t.stats();
-    assert_eq!(s.min_area, 1.0 / 1024.0);
+    assert_eq!(s.min_area, 1.0 / 4096.0);
     assert!(s.min_angle_deg > 0.0, "{s:?}");
     assert!(s.max_angle_deg < 180.0, "{s:?}");
     assert_eq!(
         s.min_angle_deg,
         oracle::angle_degrees(a, c, b).min(oracle::angle_degrees(c, b, a))
     );
-    // The brief's style of needle, and one so thin (2^-340 rad at 2^200)
-    // that its widest angle is within half an ulp of 180°: it reports 180
-    // honestly, while the smallest stays positive.
+    // A needle with a unit height over 2^41, and one so thin (2^-340 rad
+    // at 2^200) that its widest angle is within half an ulp of 180°: it
+    // reports 180 honestly, while the smallest stays positive.
     let big = 2f64.powi(40);
     check_triangle([[0.0, 0.0], [big, 1.0], [2.0 * big, 1.0]], -2);
     let huge = 2f64.powi(200);

@@ -40,15 +40,11 @@ impl AreaKey {
     /// Exact: this area against `other`'s.
     #[inline]
     fn compare(&self, other: &Self) -> Ordering {
-        let diff = self.doubled - other.doubled;
-        let bound = 8.0 * U * (self.scale + other.scale);
-        if diff > bound {
-            Ordering::Greater
-        } else if -diff > bound {
-            Ordering::Less
-        } else {
-            compare_areas(self.corners, other.corners)
-        }
+        filtered(
+            self.doubled - other.doubled,
+            8.0 * U * (self.scale + other.scale),
+            || compare_areas(self.corners, other.corners),
+        )
     }
 }
 
@@ -76,15 +72,35 @@ impl CornerKey {
     fn compare(&self, other: &Self) -> Ordering {
         let [cp, dp, pcp, pdp] = self.terms;
         let [cq, dq, pcq, pdq] = other.terms;
-        let f = dq * cp - dp * cq;
-        let tolerance = 16.0 * U * (pdq * pcp + pdp * pcq);
-        if f > tolerance {
-            Ordering::Greater
-        } else if -f > tolerance {
-            Ordering::Less
-        } else {
-            compare_corner_angles(self.corner, other.corner)
-        }
+        filtered(
+            dq * cp - dp * cq,
+            16.0 * U * (pdq * pcp + pdp * pcq),
+            || compare_corner_angles(self.corner, other.corner),
+        )
+    }
+}
+
+/// `later` if it compares as `wins` against `earlier`, else `earlier` (a
+/// tie keeps the earlier).
+#[inline]
+fn keep_first<T>(earlier: T, later: T, compare: impl Fn(&T, &T) -> Ordering, wins: Ordering) -> T {
+    if compare(&later, &earlier) == wins {
+        later
+    } else {
+        earlier
+    }
+}
+
+/// The sign of a filtered difference when it exceeds its error bound
+/// `tolerance`, else the `exact` decision.
+#[inline]
+fn filtered(difference: f64, tolerance: f64, exact: impl FnOnce() -> Ordering) -> Ordering {
+    if difference > tolerance {
+        Ordering::Greater
+    } else if -difference > tolerance {
+        Ordering::Less
+    } else {
+        exact()
     }
 }
 
@@ -154,27 +170,27 @@ impl Extremes {
 
     /// The extremes of this run followed by `later` (ties keep this run's).
     pub(crate) fn merge(self, later: Self) -> Self {
+        use Ordering::{Greater, Less};
         Extremes {
-            smallest: if later.smallest.1.compare(&self.smallest.1).is_lt() {
-                later.smallest
-            } else {
-                self.smallest
-            },
-            largest: if later.largest.1.compare(&self.largest.1).is_gt() {
-                later.largest
-            } else {
-                self.largest
-            },
-            sharpest: if later.sharpest.1.compare(&self.sharpest.1).is_lt() {
-                later.sharpest
-            } else {
-                self.sharpest
-            },
-            widest: if later.widest.1.compare(&self.widest.1).is_gt() {
-                later.widest
-            } else {
-                self.widest
-            },
+            smallest: keep_first(
+                self.smallest,
+                later.smallest,
+                |a, b| a.1.compare(&b.1),
+                Less,
+            ),
+            largest: keep_first(
+                self.largest,
+                later.largest,
+                |a, b| a.1.compare(&b.1),
+                Greater,
+            ),
+            sharpest: keep_first(
+                self.sharpest,
+                later.sharpest,
+                |a, b| a.1.compare(&b.1),
+                Less,
+            ),
+            widest: keep_first(self.widest, later.widest, |a, b| a.1.compare(&b.1), Greater),
         }
     }
 

@@ -75,8 +75,8 @@ pub struct Stats {
     /// `max_area` is its area.
     pub largest_triangle: [u32; 3],
     /// Smallest interior angle, degrees (positive for every proper
-    /// triangle: angles never fall below about 10⁻²³⁶ degrees in the
-    /// kernel's coordinate range).
+    /// triangle: in the kernel's coordinate range an angle's sine is at
+    /// least 2⁻⁷⁹³, so no angle is below about 10⁻²³⁷ degrees).
     pub min_angle_deg: f64,
     /// Largest interior angle, degrees (180 only when it is within half an
     /// ulp of 180°, about 1.4·10⁻¹⁴ degrees: an extreme needle).
