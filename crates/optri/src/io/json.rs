@@ -23,7 +23,7 @@
 use super::{Arithmetic, Input, ReadInput};
 use crate::criteria::{BoundMeasure, CertifiedBound, Diagnostics, Optimality};
 use crate::error::{Error, Result};
-use crate::kernel::metrics::{area_scaled, over_power_of_ten_rounded, Rounding};
+use crate::kernel::metrics::{area_scaled, over_power_of_ten_rounded, Rounding, Rounding::Nearest};
 use crate::kernel::Point;
 use crate::registry::{Comparison, GraphKind, Solution};
 use crate::structures::{Domain, PointSet, SimplePolygon, Stats, Triangulation};
@@ -113,9 +113,8 @@ impl<'a> TriangulationReport<'a> {
         }
     }
 
-    /// The quality measures, in the user's units: on scaled input, the
-    /// exact measures of the scaled points divided by `10^k` (lengths) or
-    /// `10^2k` (areas) and rounded once.
+    /// The quality measures, in the user's units (on scaled input, divided
+    /// exactly by `10^k` or `10^2k` and rounded once).
     pub fn stats(&self) -> Stats {
         match self.input.and_then(|i| i.user) {
             Some((_, k)) => self.triangulation.stats_over_power_of_ten(k),
@@ -138,34 +137,25 @@ impl<'a> TriangulationReport<'a> {
         let s = self.solution.filter(|s| !s.metric.is_euclidean())?;
         let (edge, length) = s.longest_edge_under_metric();
         Some(match self.input.and_then(|i| i.user) {
-            Some((_, k)) => (
-                edge,
-                over_power_of_ten_rounded(length, k, Rounding::Nearest),
-            ),
+            Some((_, k)) => (edge, over_power_of_ten_rounded(length, k, Nearest)),
             None => (edge, length),
         })
     }
 
-    /// A certified bound's value, in the user's units: a triangle's area is
-    /// measured again, its exact value divided by `10^2k` and rounded once
-    /// (so it equals the `stats` area of the same triangle); a lower bound
-    /// on a total length is divided by `10^k` rounding down, so that it
-    /// stays a lower bound.
+    /// A certified bound's value in the user's units: a triangle's area is
+    /// measured again and rounded once (as `stats` is); a lower bound on a
+    /// total length is divided by `10^k` rounding down, staying one.
     fn bound_in_user_units(&self, b: &CertifiedBound) -> f64 {
         let Some((_, k)) = self.input.and_then(|i| i.user) else {
             return b.value;
         };
-        match (b.measure, b.triangle) {
-            (BoundMeasure::Area, Some(t)) => {
-                let [p, q, r] = t.map(|i| self.triangulation.points()[i as usize]);
-                area_scaled(p, q, r, k)
-            }
-            (BoundMeasure::Area, None) => {
-                over_power_of_ten_rounded(b.value, 2 * k, Rounding::Nearest)
-            }
-            (_, _) if !b.upper => over_power_of_ten_rounded(b.value, k, Rounding::Down),
-            (_, _) => over_power_of_ten_rounded(b.value, k, Rounding::Nearest),
+        let area = b.measure == BoundMeasure::Area;
+        if let (true, Some(t)) = (area, b.triangle) {
+            let [p, q, r] = t.map(|i| self.triangulation.points()[i as usize]);
+            return area_scaled(p, q, r, k);
         }
+        let mode = if b.upper { Nearest } else { Rounding::Down };
+        over_power_of_ten_rounded(b.value, if area { 2 * k } else { k }, mode)
     }
 
     /// Reports `phases` as `timing_ms` instead (e.g. with the reading and
