@@ -4,9 +4,9 @@
 
 use crate::commands::Run;
 use crate::CliResult;
-use optri::io::Arithmetic;
-use optri::io::Document;
-use optri::{Criterion, Domain, Phase, PointSet, Solution};
+use optri::io::{Arithmetic, Document};
+use optri::{Criterion, Domain, Measure, Phase, PointSet, Solution};
+use std::cmp::Ordering;
 use std::io::Write;
 use std::path::PathBuf;
 
@@ -176,12 +176,14 @@ pub(crate) fn graph_summary(run: &Run, written: &[PathBuf]) -> String {
     let (kind, graph) = run.outcome.graph().expect("a graph request");
     let coordinates = run.read().input.points();
     let edges = &graph.edges;
-    let total: f64 = edges
-        .iter()
-        .map(|&[a, b]| {
-            optri::kernel::metrics::length(coordinates[a as usize], coordinates[b as usize])
-        })
-        .sum();
+    // From the points the graph was computed on (the scaled decimals, if
+    // any), divided back exactly and rounded once.
+    let total = optri::kernel::metrics::total_length_scaled(
+        run.read().working_points(),
+        edges,
+        run.read().scale_exponent(),
+        optri::kernel::metrics::Rounding::Nearest,
+    );
     let mut text = format!(
         "graph: {}\npoints: {} input, {} distinct{}\nedges: {}, total length {}\n{}time: {}\n",
         kind.name(),
@@ -210,58 +212,85 @@ fn significant(v: f64) -> String {
     }
 }
 
-/// One column of the comparison table: its heading, the measure, and
-/// whether smaller is better.
-struct Column {
-    heading: &'static str,
-    value: fn(&Solution, &optri::Stats) -> f64,
-    smaller_is_better: bool,
+/// One column of the comparison table: a quality measure (exact ranking),
+/// or the time (`None`, ranked on the values shown).
+#[derive(Clone, Copy)]
+struct Column(Option<Measure>);
+
+impl Column {
+    /// Every quality measure, in the library's order, then the time.
+    fn all() -> impl Iterator<Item = Column> {
+        Measure::ALL.into_iter().map(Some).chain([None]).map(Column)
+    }
+
+    fn heading(self) -> &'static str {
+        self.0.map_or("time ms", Measure::label)
+    }
+
+    fn smaller_is_better(self) -> bool {
+        self.0.is_none_or(|m| m.better() == optri::Better::Smaller)
+    }
+
+    fn value(self, solution: &Solution, stats: &optri::Stats) -> f64 {
+        match self.0 {
+            Some(m) => m.value(stats),
+            None => solution.phases.iter().map(|p| p.ms).sum(),
+        }
+    }
 }
 
-/// The columns of `optri compare`: every quality measure, then the time.
-const COLUMNS: &[Column] = &[
-    Column {
-        heading: "max edge",
-        value: |_, s| s.max_edge_length,
-        smaller_is_better: true,
-    },
-    Column {
-        heading: "total length",
-        value: |_, s| s.total_edge_length,
-        smaller_is_better: true,
-    },
-    Column {
-        heading: "min area",
-        value: |_, s| s.min_area,
-        smaller_is_better: false,
-    },
-    Column {
-        heading: "max area",
-        value: |_, s| s.max_area,
-        smaller_is_better: true,
-    },
-    Column {
-        heading: "min angle°",
-        value: |_, s| s.min_angle_deg,
-        smaller_is_better: false,
-    },
-    Column {
-        heading: "max angle°",
-        value: |_, s| s.max_angle_deg,
-        smaller_is_better: true,
-    },
-    Column {
-        heading: "time ms",
-        value: |s, _| s.phases.iter().map(|p| p.ms).sum(),
-        smaller_is_better: true,
-    },
-];
+/// Which solutions are best in `measure`, decided exactly (ties: all).
+fn exact_best(solved: &[&Solution], measure: Measure, smaller_is_better: bool) -> Vec<bool> {
+    // `Greater`: the first is better.
+    let better = |a: &Solution, b: &Solution| {
+        let o = a.triangulation.compare_measure(&b.triangulation, measure);
+        if smaller_is_better {
+            o.reverse()
+        } else {
+            o
+        }
+    };
+    let Some(first) = solved.first() else {
+        return Vec::new();
+    };
+    let best = solved[1..].iter().fold(*first, |best, &s| {
+        if better(s, best) == Ordering::Greater {
+            s
+        } else {
+            best
+        }
+    });
+    solved
+        .iter()
+        .map(|s| std::ptr::eq(*s, best) || better(s, best) == Ordering::Equal)
+        .collect()
+}
+
+/// Which of the values `shown` are best (ties: all), on the text shown.
+fn best_shown(shown: &[String], smaller_is_better: bool) -> Vec<bool> {
+    let parsed: Vec<f64> = shown
+        .iter()
+        .map(|t| t.parse().unwrap_or(f64::NAN))
+        .collect();
+    let best = parsed
+        .iter()
+        .copied()
+        .filter(|v| !v.is_nan())
+        .reduce(if smaller_is_better {
+            f64::min
+        } else {
+            f64::max
+        });
+    parsed.iter().map(|v| Some(*v) == best).collect()
+}
 
 /// The table of `optri compare`: one row per criterion that triangulated the
 /// input, one column per measure with the best value of each column marked
-/// `*` (on the rounded values shown; ties are all marked), results that are
-/// not provably optimal flagged in the `guarantee` column, and the criteria
-/// that refused the input listed with the library's reason.
+/// `*` (decided by exact comparison of the measures, not of the rounded
+/// values shown, and the time on the values shown; ties are all marked),
+/// results that are not provably optimal flagged in the `guarantee` column,
+/// and the criteria that refused the input listed with the library's
+/// reason.
 pub(crate) fn comparison_table(run: &Run) -> String {
     let results = run.outcome.comparison().expect("a compare request");
     let points = run.outcome.point_set().expect("a validated input");
@@ -296,38 +325,24 @@ pub(crate) fn comparison_table(run: &Run) -> String {
             ]
         })
         .collect();
-    for column in COLUMNS {
+    for column in Column::all() {
         let shown: Vec<String> = solved
             .iter()
             .zip(&stats)
-            .map(|(s, st)| significant((column.value)(s, st)))
+            .map(|(s, st)| significant(column.value(s, st)))
             .collect();
-        let parsed: Vec<f64> = shown
-            .iter()
-            .map(|t| t.parse().unwrap_or(f64::NAN))
-            .collect();
-        let best =
-            parsed
-                .iter()
-                .copied()
-                .filter(|v| !v.is_nan())
-                .reduce(if column.smaller_is_better {
-                    f64::min
-                } else {
-                    f64::max
-                });
-        for (row, (t, v)) in cells.iter_mut().zip(shown.iter().zip(&parsed)) {
-            let mark = if Some(*v) == best && solved.len() > 1 {
-                " *"
-            } else {
-                "  "
-            };
+        let best = match column.0 {
+            Some(measure) => exact_best(&solved, measure, column.smaller_is_better()),
+            None => best_shown(&shown, column.smaller_is_better()),
+        };
+        for (row, (t, best)) in cells.iter_mut().zip(shown.iter().zip(best)) {
+            let mark = if best && solved.len() > 1 { " *" } else { "  " };
             row.push(format!("{t}{mark}"));
         }
     }
     let headings: Vec<&str> = ["criterion", "guarantee"]
         .into_iter()
-        .chain(COLUMNS.iter().map(|c| c.heading))
+        .chain(Column::all().map(Column::heading))
         .collect();
     let widths: Vec<usize> = (0..headings.len())
         .map(|k| {

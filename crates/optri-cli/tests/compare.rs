@@ -118,6 +118,57 @@ fn the_table_marks_the_best_values_and_flags_approximations() {
     assert!(!text.contains("refused:"), "{text}");
 }
 
+/// The `*` goes to the exact best, not to every value that looks best at
+/// six digits: on a kite whose diagonals differ by 10⁻⁹, the
+/// triangulations with the longer diagonal tie with the others in the max
+/// edge and total length shown, but are not marked.
+#[test]
+fn the_best_values_are_decided_exactly() {
+    let dir = scratch("exact-best");
+    let kite = dir.join("kite.txt");
+    std::fs::write(&kite, "-1.000000001 0\n1 0\n0.5 1\n0.5 -1\n").unwrap();
+    let file = kite.to_str().unwrap();
+    // Which diagonal is shorter, by the oracle's exact squared lengths of
+    // the decimals (times 10^9, integers).
+    let ac = optri_oracle::squared_length([-1_000_000_001.0, 0.0], [1e9, 0.0]);
+    let bd = optri_oracle::squared_length([5e8, 1e9], [5e8, -1e9]);
+    assert!(bd < ac);
+    let doc: Value = serde_json::from_str(&stdout(&run(&["compare", file, "--json"]))).unwrap();
+    let text = stdout(&run(&["compare", file]));
+    let (mut long, mut short) = (0, 0);
+    for r in doc["results"].as_array().unwrap() {
+        let name = r["criterion"].as_str().unwrap();
+        let uses_ac = r["edges"]
+            .as_array()
+            .unwrap()
+            .contains(&serde_json::json!([0, 1]));
+        let line = text
+            .lines()
+            .find(|l| l.split_whitespace().next() == Some(name))
+            .unwrap_or_else(|| panic!("no row {name}: {text}"));
+        // Cells after the name and guarantee: a value, then `*` if marked.
+        let tokens: Vec<&str> = line.split_whitespace().skip(2).collect();
+        let mut marked = Vec::new();
+        for (i, t) in tokens.iter().enumerate() {
+            if *t != "*" {
+                marked.push(tokens.get(i + 1) == Some(&"*"));
+            }
+        }
+        let shown = |k: usize| tokens.iter().filter(|t| **t != "*").nth(k).copied();
+        // Max edge and total length: the same six digits for every row.
+        assert_eq!(shown(0), Some("2.00000"), "{line}");
+        assert_eq!(shown(1), Some("7.84162"), "{line}");
+        assert_eq!(marked[0], !uses_ac, "max edge: {text}");
+        assert_eq!(marked[1], !uses_ac, "total length: {text}");
+        if uses_ac {
+            long += 1;
+        } else {
+            short += 1;
+        }
+    }
+    assert!(long >= 1 && short >= 1, "{long} {short}");
+}
+
 #[test]
 fn chosen_criteria_in_order_and_svg_panels() {
     let dir = scratch("svg");

@@ -14,8 +14,9 @@
 //! triangles ([`min_weight_ilp()`], tens of points), simple polygons by definition
 //! (diagonals, every triangulation, the greedy triangulation, generators:
 //! [`polygon`]), brute-force definitions of the
-//! proximity graphs ([`graphs`]), and a polynomial expansion of the
-//! symbolic perturbation ([`symbolic`]). Slow by design; inputs are small
+//! proximity graphs ([`graphs`]), a polynomial expansion of the
+//! symbolic perturbation ([`symbolic`]) and correctly rounded measures by
+//! rational arithmetic ([`measures`]). Slow by design; inputs are small
 //! (except [`greedy_edges`]). [`inputs`] holds the seeded point-set
 //! generators and named degenerate fixtures the tests, benches and examples
 //! share.
@@ -34,6 +35,7 @@ pub mod graphs;
 pub mod greedy;
 pub mod inputs;
 pub mod klincsek;
+pub mod measures;
 pub mod min_weight_ilp;
 pub mod norm;
 pub mod polygon;

@@ -20,7 +20,7 @@
 //!
 //! | layer | module (private) | what it holds |
 //! |---|---|---|
-//! | 0 | [`kernel`] | exact predicates, the symbolic tie-break, lunes, reporting metrics |
+//! | 0 | [`kernel`] | exact predicates, the symbolic tie-break, lunes, correctly rounded reporting measures |
 //! | — | `error`, `timing`, `parallel` | [`Error`], [`Phase`], the rayon shim |
 //! | 1 | `spatial` | coordinate-only helpers: bounding box, Z-order, hull cycle |
 //! | 2 | `structures` | [`PointSet`], [`SimplePolygon`], [`Triangulation`] and its [`Domain`], Delaunay adjacency, planar graph |

@@ -370,7 +370,7 @@ fn polygon_outcome(ring: &[Point], criterion: Criterion) -> Result<Outcome, Test
 fn polygon_answers(ring: &[Point]) -> Result<Vec<(Criterion, Outcome)>, TestCaseError> {
     Criterion::ALL
         .iter()
-        .filter(|c| c.supports_polygons())
+        .filter(|c| c.accepts(optri::InputKind::SimplePolygon))
         .map(|&c| Ok((c, polygon_outcome(ring, c)?)))
         .collect()
 }

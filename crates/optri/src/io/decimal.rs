@@ -310,20 +310,6 @@ fn power_of_ten(p: i64) -> Option<u64> {
     (0..=15).contains(&p).then(|| 10u64.pow(p as u32))
 }
 
-/// `v / 10^k` (lengths back in the user's units), rounded once for
-/// `|k| ≤ 22`, where `10^|k|` is an exact double.
-pub(super) fn unscale(v: f64, k: i32) -> f64 {
-    // Parsing `1e{k}` gives the double nearest to 10^|k|.
-    let p: f64 = format!("1e{}", k.unsigned_abs())
-        .parse()
-        .unwrap_or(f64::INFINITY);
-    if k >= 0 {
-        v / p
-    } else {
-        v * p
-    }
-}
-
 /// Does every number literal of the JSON `text` have at most 15 significant
 /// digits? Then each number's shortest round-trip decimal is the decimal
 /// written. Strings (and their escapes) are skipped.
@@ -421,8 +407,6 @@ mod tests {
             Arithmetic::Binary64
         );
         assert_eq!(scaled(&["1e-400", "1"]).0, Arithmetic::Binary64);
-        assert_eq!(unscale(30.0, 1), 3.0);
-        assert_eq!(unscale(3.0, -3), 3000.0);
     }
 
     #[test]

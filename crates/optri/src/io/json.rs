@@ -20,10 +20,10 @@
 //! point, merged duplicates included, so the document describes the input as
 //! given.
 
-use super::decimal::unscale;
 use super::{Arithmetic, Input, ReadInput};
-use crate::criteria::{Diagnostics, Optimality};
+use crate::criteria::{BoundMeasure, CertifiedBound, Diagnostics, Optimality};
 use crate::error::{Error, Result};
+use crate::kernel::metrics::{area_scaled, over_power_of_ten_rounded, Rounding, Rounding::Nearest};
 use crate::kernel::Point;
 use crate::registry::{Comparison, GraphKind, Solution};
 use crate::structures::{Domain, PointSet, SimplePolygon, Stats, Triangulation};
@@ -70,16 +70,6 @@ impl<'a> InputUnits<'a> {
     }
 }
 
-/// `stats` of the scaled points in the user's units: lengths divided by
-/// `10^k`, areas by `10^2k`, angles unchanged.
-fn stats_in_user_units(mut stats: Stats, k: i32) -> Stats {
-    stats.max_edge_length = unscale(stats.max_edge_length, k);
-    stats.total_edge_length = unscale(stats.total_edge_length, k);
-    stats.min_area = unscale(unscale(stats.min_area, k), k);
-    stats.max_area = unscale(unscale(stats.max_area, k), k);
-    stats
-}
-
 impl<'a> TriangulationReport<'a> {
     /// The document of a bare triangulation: no run fields, no timing.
     pub fn new(triangulation: &'a Triangulation) -> Self {
@@ -122,12 +112,12 @@ impl<'a> TriangulationReport<'a> {
         }
     }
 
-    /// The quality measures, in the user's units.
+    /// The quality measures, in the user's units (on scaled input, divided
+    /// exactly by `10^k` or `10^2k` and rounded once).
     pub fn stats(&self) -> Stats {
-        let stats = self.triangulation.stats();
         match self.input.and_then(|i| i.user) {
-            Some((_, k)) => stats_in_user_units(stats, k),
-            None => stats,
+            Some((_, k)) => self.triangulation.stats_over_power_of_ten(k),
+            None => self.triangulation.stats(),
         }
     }
 
@@ -146,19 +136,25 @@ impl<'a> TriangulationReport<'a> {
         let s = self.solution.filter(|s| !s.metric.is_euclidean())?;
         let (edge, length) = s.longest_edge_under_metric();
         Some(match self.input.and_then(|i| i.user) {
-            Some((_, k)) => (edge, unscale(length, k)),
+            Some((_, k)) => (edge, over_power_of_ten_rounded(length, k, Nearest)),
             None => (edge, length),
         })
     }
 
-    /// A certified bound's value, in the user's units (an area scales by
-    /// `10^-2k`, a length by `10^-k`).
-    fn bound_in_user_units(&self, b: &crate::CertifiedBound) -> f64 {
-        match (self.input.and_then(|i| i.user), b.measure) {
-            (Some((_, k)), crate::BoundMeasure::Area) => unscale(unscale(b.value, k), k),
-            (Some((_, k)), _) => unscale(b.value, k),
-            (None, _) => b.value,
+    /// A certified bound's value in the user's units: a triangle's area is
+    /// measured again and rounded once (as `stats` is); a lower bound on a
+    /// total length is divided by `10^k` rounding down, staying one.
+    fn bound_in_user_units(&self, b: &CertifiedBound) -> f64 {
+        let Some((_, k)) = self.input.and_then(|i| i.user) else {
+            return b.value;
+        };
+        let area = b.measure == BoundMeasure::Area;
+        if let (true, Some(t)) = (area, b.triangle) {
+            let [p, q, r] = t.map(|i| self.triangulation.points()[i as usize]);
+            return area_scaled(p, q, r, k);
         }
+        let mode = if b.upper { Nearest } else { Rounding::Down };
+        over_power_of_ten_rounded(b.value, if area { 2 * k } else { k }, mode)
     }
 
     /// Reports `phases` as `timing_ms` instead (e.g. with the reading and

@@ -8,7 +8,7 @@ use super::json::SCHEMA_VERSION;
 use super::InputFormat;
 use crate::criteria::OPTIONS;
 use crate::registry::{Criterion, GraphKind};
-use crate::structures::Stats;
+use crate::structures::Measure;
 use serde_json::{json, Value};
 
 /// The registry listing: what this build of optri computes and how to ask
@@ -50,9 +50,9 @@ pub fn registry_listing() -> Value {
             })
         })
         .collect();
-    let measures: Vec<Value> = Stats::MEASURES
+    let measures: Vec<Value> = Measure::ALL
         .iter()
-        .map(|m| json!({"name": m.name, "label": m.label, "better": m.better.name()}))
+        .map(|m| json!({"name": m.name(), "label": m.label(), "better": m.better().name()}))
         .collect();
     json!({
         "document": "criteria",
@@ -89,6 +89,6 @@ mod tests {
         assert_eq!(names("options"), ["metric", "time_limit"]);
         assert_eq!(v["criteria"][1]["options"], json!(["metric"]));
         assert_eq!(v["criteria"][0]["inputs"], json!(["points", "polygon"]));
-        assert_eq!(names("measures").len(), Stats::MEASURES.len());
+        assert_eq!(names("measures").len(), Measure::ALL.len());
     }
 }

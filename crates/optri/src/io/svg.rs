@@ -5,7 +5,7 @@
 //! panel pixels, so pictures of tiny and huge coordinates look alike. A
 //! triangulation panel highlights its longest edge (thick red, chosen exactly
 //! by [`Triangulation::longest_edge`]) and shades the triangle with the
-//! smallest angle (a display choice made on rounded angles).
+//! smallest angle (chosen exactly, as the `stats` minimum angle is).
 //!
 //! Every edge is drawn as exactly one `<line class="edge">` and every panel
 //! title as one `<text class="title" …>`, so tests can count and read them.
@@ -63,22 +63,6 @@ fn escape(text: &str) -> String {
         .replace('"', "&quot;")
 }
 
-/// The triangle with the smallest (rounded) angle, for shading.
-fn worst_triangle(t: &Triangulation) -> Option<[u32; 3]> {
-    let pts = t.points();
-    t.triangles()
-        .iter()
-        .map(|&tri| {
-            let [a, b, c] = tri.map(|i| pts[i as usize]);
-            let min = metrics::angles_deg(a, b, c)
-                .into_iter()
-                .fold(f64::INFINITY, f64::min);
-            (min, tri)
-        })
-        .min_by(|x, y| x.0.total_cmp(&y.0))
-        .map(|(_, tri)| tri)
-}
-
 fn triangulation_stats_lines(t: &Triangulation) -> Vec<String> {
     stats_lines(t, &t.stats())
 }
@@ -115,7 +99,7 @@ fn triangulation_panel<'a>(
         all_points: t.points(),
         edges,
         longest: Some(t.longest_edge()),
-        worst: worst_triangle(t),
+        worst: Some(t.sharpest_triangle()),
         boundary: match t.domain() {
             Domain::Polygon { boundary } => Some(boundary),
             _ => None,
@@ -321,10 +305,7 @@ pub(super) fn report_to_svg(report: &super::TriangulationReport, title: &str) ->
 /// # Panics
 /// If an edge refers to an index outside `points`.
 pub fn graph_to_svg(points: &[Point], edges: &[[u32; 2]], title: &str) -> String {
-    let total: f64 = edges
-        .iter()
-        .map(|&[a, b]| metrics::length(points[a as usize], points[b as usize]))
-        .sum();
+    let total = metrics::total_length(points, edges);
     let panel = Panel {
         title,
         stats: vec![format!(

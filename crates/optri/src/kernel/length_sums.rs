@@ -244,7 +244,7 @@ pub(crate) fn compare_signed_root_sum(terms: &mut [(BigUint, i32)]) -> Ordering 
 }
 
 /// `v = m·2^e` with an integer `m` (sign included).
-fn decompose(v: f64) -> (i64, i32) {
+pub(super) fn decompose(v: f64) -> (i64, i32) {
     let bits = v.to_bits();
     let sign = if bits >> 63 == 0 { 1i64 } else { -1 };
     let exponent = ((bits >> 52) & 0x7ff) as i32;
@@ -257,7 +257,7 @@ fn decompose(v: f64) -> (i64, i32) {
 }
 
 /// `v · 2^-emin` as an exact integer (`emin` at most the exponent of `v`).
-fn scaled(v: f64, emin: i32) -> BigInt {
+pub(super) fn scaled(v: f64, emin: i32) -> BigInt {
     if v == 0.0 {
         return BigInt::zero();
     }

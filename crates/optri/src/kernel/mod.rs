@@ -1,6 +1,6 @@
 //! The exact geometry kernel: predicates, the symbolic tie-break, lunes,
-//! certified squared-length keys, the length orders and reporting metrics.
-//! Layer 0: it imports nothing else of the crate.
+//! certified squared-length keys, the length orders and correctly rounded
+//! reporting metrics. Layer 0: it imports nothing else of the crate.
 //!
 //! Every combinatorial decision in optri (orientation, in-circle, which of two
 //! lengths, areas or angles is larger, lune membership, segment crossings) is
@@ -41,13 +41,16 @@
 //! orientations are never zero, for *distinct* input points.
 
 mod certified_incircle;
+mod degrees;
 pub(crate) mod expansion;
 mod length_order;
+mod extremes;
 mod length_sums;
 mod lune;
 pub mod metrics;
 mod norm;
 mod predicates;
+mod rounding;
 mod squared_length;
 mod symbolic;
 mod wedge;
@@ -66,6 +69,7 @@ pub const MAX_COORDINATE: f64 = 3.2138760885179806e60; // 2^201
 pub const MIN_COORDINATE: f64 = 1.793662034335766e-43; // 2^-142
 
 pub(crate) use length_order::{EuclideanOrder, LengthOrder};
+pub(crate) use extremes::Extremes;
 pub use length_sums::{compare_length_sums, compare_length_sums_exactly, LengthInterval};
 pub use lune::{in_half_lune, in_half_lune_symbolic, in_lune, in_lune_symbolic};
 pub use norm::{side_of_direction, Metric, MetricProblem, MAX_LP_EXPONENT};

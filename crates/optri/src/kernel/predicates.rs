@@ -224,7 +224,7 @@ pub fn cross_sign(a: Point, b: Point, c: Point, d: Point) -> i32 {
 /// their permanents `|ux·vy| + |uy·vx|` and `|ux·vx| + |uy·vy|` (the error
 /// scales of the filters below).
 #[inline]
-fn rounded_cross_dot(o: Point, a: Point, b: Point) -> [f64; 4] {
+pub(super) fn rounded_cross_dot(o: Point, a: Point, b: Point) -> [f64; 4] {
     let (ux, uy, vx, vy) = (a[0] - o[0], a[1] - o[1], b[0] - o[0], b[1] - o[1]);
     let (xy, yx, xx, yy) = (ux * vy, uy * vx, ux * vx, uy * vy);
     [xy - yx, xx + yy, xy.abs() + yx.abs(), xx.abs() + yy.abs()]

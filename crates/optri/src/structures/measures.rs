@@ -23,58 +23,78 @@ impl Better {
     }
 }
 
-/// One quality measure of a triangulation: a field of [`Stats`].
-#[derive(Clone, Copy, Debug)]
+/// A quality measure of a triangulation: a field of [`Stats`], for the
+/// listing every front end shows and for exact comparisons between
+/// triangulations ([`crate::Triangulation::compare_measure`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 #[non_exhaustive]
-pub struct Measure {
-    /// The [`Stats`] field (and JSON key), e.g. `"max_edge_length"`.
-    pub name: &'static str,
-    /// A short column heading, e.g. `"max edge"`.
-    pub label: &'static str,
-    /// Which values are better.
-    pub better: Better,
-    /// Reads the value from [`Stats`].
-    pub value: fn(&Stats) -> f64,
+pub enum Measure {
+    /// [`Stats::max_edge_length`].
+    MaxEdgeLength,
+    /// [`Stats::total_edge_length`].
+    TotalEdgeLength,
+    /// [`Stats::min_area`].
+    MinArea,
+    /// [`Stats::max_area`].
+    MaxArea,
+    /// [`Stats::min_angle_deg`].
+    MinAngle,
+    /// [`Stats::max_angle_deg`].
+    MaxAngle,
 }
 
-impl Stats {
+impl Measure {
     /// Every quality measure, in display order.
-    pub const MEASURES: &'static [Measure] = &[
-        Measure {
-            name: "max_edge_length",
-            label: "max edge",
-            better: Better::Smaller,
-            value: |s| s.max_edge_length,
-        },
-        Measure {
-            name: "total_edge_length",
-            label: "total length",
-            better: Better::Smaller,
-            value: |s| s.total_edge_length,
-        },
-        Measure {
-            name: "min_area",
-            label: "min area",
-            better: Better::Larger,
-            value: |s| s.min_area,
-        },
-        Measure {
-            name: "max_area",
-            label: "max area",
-            better: Better::Smaller,
-            value: |s| s.max_area,
-        },
-        Measure {
-            name: "min_angle_deg",
-            label: "min angle°",
-            better: Better::Larger,
-            value: |s| s.min_angle_deg,
-        },
-        Measure {
-            name: "max_angle_deg",
-            label: "max angle°",
-            better: Better::Smaller,
-            value: |s| s.max_angle_deg,
-        },
+    pub const ALL: [Measure; 6] = [
+        Measure::MaxEdgeLength,
+        Measure::TotalEdgeLength,
+        Measure::MinArea,
+        Measure::MaxArea,
+        Measure::MinAngle,
+        Measure::MaxAngle,
     ];
+
+    /// The [`Stats`] field (and JSON key), e.g. `"max_edge_length"`.
+    pub fn name(self) -> &'static str {
+        match self {
+            Measure::MaxEdgeLength => "max_edge_length",
+            Measure::TotalEdgeLength => "total_edge_length",
+            Measure::MinArea => "min_area",
+            Measure::MaxArea => "max_area",
+            Measure::MinAngle => "min_angle_deg",
+            Measure::MaxAngle => "max_angle_deg",
+        }
+    }
+
+    /// A short column heading, e.g. `"max edge"`.
+    pub fn label(self) -> &'static str {
+        match self {
+            Measure::MaxEdgeLength => "max edge",
+            Measure::TotalEdgeLength => "total length",
+            Measure::MinArea => "min area",
+            Measure::MaxArea => "max area",
+            Measure::MinAngle => "min angle°",
+            Measure::MaxAngle => "max angle°",
+        }
+    }
+
+    /// Which values are better.
+    pub fn better(self) -> Better {
+        match self {
+            Measure::MinArea | Measure::MinAngle => Better::Larger,
+            _ => Better::Smaller,
+        }
+    }
+
+    /// The measure's value in `stats` (correctly rounded).
+    pub fn value(self, stats: &Stats) -> f64 {
+        match self {
+            Measure::MaxEdgeLength => stats.max_edge_length,
+            Measure::TotalEdgeLength => stats.total_edge_length,
+            Measure::MinArea => stats.min_area,
+            Measure::MaxArea => stats.max_area,
+            Measure::MinAngle => stats.min_angle_deg,
+            Measure::MaxAngle => stats.max_angle_deg,
+        }
+    }
 }

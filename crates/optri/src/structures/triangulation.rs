@@ -3,10 +3,16 @@
 //! interior), exact validation, and quality measures.
 
 use crate::error::{Error, Result};
-use crate::kernel::{self, compare_areas, compare_lengths, orient_sign, Point};
+use crate::kernel::metrics::{
+    angle_deg, area_scaled, exact_total_length, length_scaled, LengthSum, Rounding,
+};
+use crate::kernel::{
+    self, compare_areas, compare_corner_angles, compare_length_sums, compare_lengths, orient_sign,
+    Extremes, Point,
+};
 use crate::parallel::prelude::*;
 use crate::spatial::convex_hull_cycle;
-use crate::structures::{Csr, PointSet, SimplePolygon};
+use crate::structures::{Csr, Measure, PointSet, SimplePolygon};
 #[cfg(feature = "io")]
 use serde::Serialize;
 use std::sync::OnceLock;
@@ -35,13 +41,19 @@ pub struct Triangulation {
     point_set: PointSet,
     triangles: Vec<[u32; 3]>,
     domain: Domain,
-    /// [`stats`](Self::stats), computed on first use: every front end
-    /// reports them more than once (the document, its weight gap, the CLI's
-    /// summary), and at 10⁶ points each computation sorts 6·10⁶ edges.
-    stats: OnceLock<Stats>,
+    /// [`stats`](Self::stats) and what re-expresses them, computed on first
+    /// use: every front end reports them more than once (the document, its
+    /// weight gap, the CLI's summary), and at 10⁶ points each computation
+    /// sorts 6·10⁶ edges.
+    stats: OnceLock<Measured>,
 }
 
-/// Quality measures of a triangulation (rounded values for reporting).
+/// Quality measures of a triangulation, for reporting: every length, area
+/// and angle is the exact value correctly rounded to the nearest `f64`
+/// (once), and the extreme edges, triangles and corners are chosen by exact
+/// comparison. So a triangle of positive area never reports area 0, and a
+/// certified bound ([`crate::CertifiedBound`]) that is the same quantity as
+/// a measure has the same value.
 #[derive(Clone, Debug, PartialEq)]
 #[cfg_attr(feature = "io", derive(Serialize))]
 pub struct Stats {
@@ -49,7 +61,7 @@ pub struct Stats {
     pub max_edge_length: f64,
     /// The longest edge, as input indices (chosen exactly).
     pub longest_edge: [u32; 2],
-    /// Sum of all edge lengths (the *weight*).
+    /// Sum of all edge lengths (the *weight*), correctly rounded as a whole.
     pub total_edge_length: f64,
     /// Smallest triangle area.
     pub min_area: f64,
@@ -57,14 +69,17 @@ pub struct Stats {
     pub max_area: f64,
     /// The triangle of smallest area, as input indices (counter-clockwise),
     /// chosen by exact area comparison (ties: the first in
-    /// [`Triangulation::triangles`] order); `min_area` is its rounded area.
+    /// [`Triangulation::triangles`] order); `min_area` is its area.
     pub smallest_triangle: [u32; 3],
     /// The triangle of largest area, chosen as `smallest_triangle` is;
-    /// `max_area` is its rounded area.
+    /// `max_area` is its area.
     pub largest_triangle: [u32; 3],
-    /// Smallest interior angle, degrees.
+    /// Smallest interior angle, degrees (positive for every proper
+    /// triangle: in the kernel's coordinate range an angle's sine is at
+    /// least 2⁻⁷⁹³, so no angle is below about 10⁻²³⁷ degrees).
     pub min_angle_deg: f64,
-    /// Largest interior angle, degrees.
+    /// Largest interior angle, degrees (180 only when it is within half an
+    /// ulp of 180°, about 1.4·10⁻¹⁴ degrees: an extreme needle).
     pub max_angle_deg: f64,
     /// Number of triangles.
     pub triangles: usize,
@@ -74,6 +89,20 @@ pub struct Stats {
     /// points included), or every vertex of a polygon domain.
     pub hull_points: usize,
 }
+
+/// [`Stats`] with what re-expresses them exactly: the enclosure of the
+/// total length (for other units) and the extreme corners (triangle
+/// position, corner number: see [`Triangulation::corner`]).
+#[derive(Clone, Debug)]
+struct Measured {
+    stats: Stats,
+    length_sum: LengthSum,
+    sharpest: (usize, usize),
+    widest: (usize, usize),
+}
+
+/// Edges or triangles per parallel task of [`Triangulation::stats`].
+const MEASURE_BLOCK: usize = 4096;
 
 impl Triangulation {
     /// Wraps triangles given as *distinct* indices of `point_set` (internal
@@ -229,28 +258,171 @@ impl Triangulation {
 
     /// Quality measures.
     pub fn stats(&self) -> Stats {
-        self.stats.get_or_init(|| self.compute_stats()).clone()
+        self.measured().stats.clone()
     }
 
-    fn compute_stats(&self) -> Stats {
+    fn measured(&self) -> &Measured {
+        self.stats.get_or_init(|| self.measure())
+    }
+
+    /// The measures of the points divided by `10^k`: lengths divided by
+    /// `10^k` and areas by `10^2k`, each from the exact value and rounded
+    /// once; angles, counts and the chosen edges and triangles unchanged.
+    /// (Decimal input is triangulated as integers `10^k` times the user's
+    /// decimals.)
+    pub fn stats_over_power_of_ten(&self, k: i32) -> Stats {
+        let m = self.measured();
+        if k == 0 {
+            return m.stats.clone();
+        }
+        let s = &m.stats;
+        let area = |t: [u32; 3]| {
+            let [a, b, c] = self.corners(t);
+            area_scaled(a, b, c, k)
+        };
+        Stats {
+            max_edge_length: length_scaled(
+                self.point(s.longest_edge[0]),
+                self.point(s.longest_edge[1]),
+                k,
+            ),
+            total_edge_length: self.total_length(m.length_sum, k, None),
+            min_area: area(s.smallest_triangle),
+            max_area: area(s.largest_triangle),
+            ..s.clone()
+        }
+    }
+
+    /// The triangle with the smallest angle (chosen exactly, ties: the
+    /// first), as input indices.
+    #[cfg(feature = "io")]
+    pub(crate) fn sharpest_triangle(&self) -> [u32; 3] {
+        self.triangles[self.measured().sharpest.0]
+    }
+
+    /// Exact comparison of one measure of this triangulation with the same
+    /// measure of `other` (for ranking criteria: the rounded values may tie
+    /// where the exact ones do not).
+    pub fn compare_measure(&self, other: &Triangulation, measure: Measure) -> std::cmp::Ordering {
+        let (m, n) = (self.measured(), other.measured());
+        let (s, t) = (&m.stats, &n.stats);
+        match measure {
+            Measure::MaxEdgeLength => {
+                let ([a, b], [c, d]) = (s.longest_edge, t.longest_edge);
+                compare_lengths(self.point(a), self.point(b), other.point(c), other.point(d))
+            }
+            Measure::MinArea => compare_areas(
+                self.corners(s.smallest_triangle),
+                other.corners(t.smallest_triangle),
+            ),
+            Measure::MaxArea => compare_areas(
+                self.corners(s.largest_triangle),
+                other.corners(t.largest_triangle),
+            ),
+            Measure::MinAngle => compare_corner_angles(
+                self.corners(self.corner(m.sharpest)),
+                other.corners(other.corner(n.sharpest)),
+            ),
+            Measure::MaxAngle => compare_corner_angles(
+                self.corners(self.corner(m.widest)),
+                other.corners(other.corner(n.widest)),
+            ),
+            Measure::TotalEdgeLength => {
+                // Correct rounding is monotone: different rounded totals are
+                // ordered as the exact ones.
+                let (x, y) = (s.total_edge_length, t.total_edge_length);
+                if x != y {
+                    return x.total_cmp(&y);
+                }
+                let (e, f) = (self.edges(), other.edges());
+                if e == f && self.points() == other.points() {
+                    return std::cmp::Ordering::Equal;
+                }
+                let segments = |t: &Triangulation, edges: &[[u32; 2]]| -> Vec<[Point; 2]> {
+                    edges
+                        .iter()
+                        .map(|&[a, b]| [t.point(a), t.point(b)])
+                        .collect()
+                };
+                compare_length_sums(&segments(self, &e), &segments(other, &f))
+            }
+        }
+    }
+
+    fn corners(&self, t: [u32; 3]) -> [Point; 3] {
+        t.map(|i| self.point(i))
+    }
+
+    /// Corner `j` of triangle `i`: its `j`-th point (the apex), then the
+    /// next two in counter-clockwise order.
+    fn corner(&self, (i, j): (usize, usize)) -> [u32; 3] {
+        let t = self.triangles[i];
+        [t[j], t[(j + 1) % 3], t[(j + 2) % 3]]
+    }
+
+    /// The total edge length over `10^k` from its enclosure, or exactly
+    /// when the enclosure cannot decide (over `edges` when given).
+    fn total_length(&self, sum: LengthSum, k: i32, edges: Option<&[[u32; 2]]>) -> f64 {
+        sum.rounded(k, Rounding::Nearest).unwrap_or_else(|| {
+            let computed;
+            let edges = match edges {
+                Some(e) => e,
+                None => {
+                    computed = self.edges();
+                    &computed
+                }
+            };
+            exact_total_length(
+                edges.len(),
+                |i| edges[i].map(|v| self.point(v)),
+                k,
+                Rounding::Nearest,
+            )
+        })
+    }
+
+    fn measure(&self) -> Measured {
         let edges = self.edges();
         let longest_edge = self.longest_of(&edges);
-        let mut stats = Stats {
-            max_edge_length: kernel::metrics::length(
+        let length_sum = edges
+            .par_chunks(MEASURE_BLOCK)
+            .map(|block| {
+                block.iter().fold(LengthSum::ZERO, |sum, &[a, b]| {
+                    sum.plus_segment(self.point(a), self.point(b))
+                })
+            })
+            .reduce(|| LengthSum::ZERO, LengthSum::plus);
+        let extremes = self
+            .triangles
+            .par_chunks(MEASURE_BLOCK)
+            .enumerate()
+            .map(|(b, block)| {
+                Extremes::of(b * MEASURE_BLOCK, block.iter().map(|&t| self.corners(t)))
+            })
+            .reduce_with(Extremes::merge)
+            .expect("a triangulation has a triangle");
+        let angle = |corner: (usize, usize)| {
+            let [o, a, b] = self.corners(self.corner(corner));
+            angle_deg(o, a, b)
+        };
+        let area = |i: usize| {
+            let [a, b, c] = self.corners(self.triangles[i]);
+            area_scaled(a, b, c, 0)
+        };
+        let stats = Stats {
+            max_edge_length: length_scaled(
                 self.point(longest_edge[0]),
                 self.point(longest_edge[1]),
+                0,
             ),
             longest_edge,
-            total_edge_length: edges
-                .iter()
-                .map(|e| kernel::metrics::length(self.point(e[0]), self.point(e[1])))
-                .sum(),
-            min_area: f64::INFINITY,
-            max_area: 0.0,
-            smallest_triangle: self.triangles[0],
-            largest_triangle: self.triangles[0],
-            min_angle_deg: 180.0,
-            max_angle_deg: 0.0,
+            total_edge_length: self.total_length(length_sum, 0, Some(&edges)),
+            min_area: area(extremes.smallest()),
+            max_area: area(extremes.largest()),
+            smallest_triangle: self.triangles[extremes.smallest()],
+            largest_triangle: self.triangles[extremes.largest()],
+            min_angle_deg: angle(extremes.sharpest()),
+            max_angle_deg: angle(extremes.widest()),
             triangles: self.triangles.len(),
             edges: edges.len(),
             hull_points: match &self.domain {
@@ -258,24 +430,12 @@ impl Triangulation {
                 Domain::Polygon { boundary } => boundary.len(),
             },
         };
-        for t in &self.triangles {
-            let [a, b, c] = t.map(|i| self.point(i));
-            let area = kernel::metrics::area(a, b, c);
-            stats.min_area = stats.min_area.min(area);
-            stats.max_area = stats.max_area.max(area);
-            let corners = |t: [u32; 3]| t.map(|i| self.point(i));
-            if compare_areas([a, b, c], corners(stats.smallest_triangle)).is_lt() {
-                stats.smallest_triangle = *t;
-            }
-            if compare_areas([a, b, c], corners(stats.largest_triangle)).is_gt() {
-                stats.largest_triangle = *t;
-            }
-            for ang in kernel::metrics::angles_deg(a, b, c) {
-                stats.min_angle_deg = stats.min_angle_deg.min(ang);
-                stats.max_angle_deg = stats.max_angle_deg.max(ang);
-            }
+        Measured {
+            stats,
+            length_sum,
+            sharpest: extremes.sharpest(),
+            widest: extremes.widest(),
         }
-        stats
     }
 
     /// Checks exactly that this is a triangulation of its [`Domain`].

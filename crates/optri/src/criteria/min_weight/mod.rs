@@ -331,21 +331,17 @@ pub(crate) struct General {
     pub lower_bound: Option<f64>,
 }
 
-/// A certified lower bound on the weight of `triangulation` (the lower end
-/// of its length interval).
+/// A certified lower bound on the weight of `triangulation`: the largest
+/// double not above it (of an exact result, the optimum itself, rounded
+/// down where `stats` rounds to nearest).
 #[cfg(feature = "internals")]
 pub(crate) fn certified_weight_below(triangulation: &Triangulation) -> f64 {
-    let points = triangulation.point_set().input_points();
-    triangulation
-        .edges()
-        .iter()
-        .fold(LengthInterval::ZERO, |s, e| {
-            s.plus(LengthInterval::of_segment(
-                points[e[0] as usize],
-                points[e[1] as usize],
-            ))
-        })
-        .lo
+    crate::kernel::metrics::total_length_scaled(
+        triangulation.point_set().input_points(),
+        &triangulation.edges(),
+        0,
+        crate::kernel::metrics::Rounding::Down,
+    )
 }
 
 /// The edges of triangles, each once, as sorted pairs.
