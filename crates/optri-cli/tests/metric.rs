@@ -59,7 +59,7 @@ fn minmax_length_reports_the_metric_and_matches_the_library() {
         assert_eq!(v["metric"]["name"], m.name().as_str());
         let options = optri::Options::default().with_metric(m);
         let s =
-            optri::triangulate_with(&library_points(), optri::Criterion::MinmaxLength, &options)
+            optri::triangulate_with(&library_points(), optri::Criterion::MinMaxLength, &options)
                 .unwrap();
         let (edge, length) = s.longest_edge_under_metric();
         assert_eq!(

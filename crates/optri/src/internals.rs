@@ -47,7 +47,7 @@ pub struct AreaGeneralRun {
     pub flips: usize,
 }
 
-/// The approximation of `criterion` (`MaxminArea` or `MinmaxArea`) on
+/// The approximation of `criterion` (`MaxMinArea` or `MinMaxArea`) on
 /// `points`: its candidates and its result.
 ///
 /// # Errors
@@ -58,8 +58,8 @@ pub fn area_general(
 ) -> crate::Result<AreaGeneralRun> {
     use crate::criteria::area::{general, AreaBottleneck};
     let objective = match criterion {
-        crate::Criterion::MaxminArea => AreaBottleneck::MaxMin,
-        crate::Criterion::MinmaxArea => AreaBottleneck::MinMax,
+        crate::Criterion::MaxMinArea => AreaBottleneck::MaxMin,
+        crate::Criterion::MinMaxArea => AreaBottleneck::MinMax,
         _ => {
             return Err(crate::Error::Internal(format!(
                 "{} is not an area criterion",

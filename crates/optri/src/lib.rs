@@ -7,7 +7,7 @@
 //! ```
 //! use optri::{triangulate, Criterion, PointSet};
 //! let points = PointSet::new(&[[0.0, 0.0], [4.0, 0.0], [0.0, 3.0], [4.0, 3.0], [2.0, 1.0]])?;
-//! let solution = triangulate(&points, Criterion::MinmaxLength)?;
+//! let solution = triangulate(&points, Criterion::MinMaxLength)?;
 //! solution.triangulation.validate()?; // exact check that it is a triangulation
 //! assert!(solution.exact);
 //! assert_eq!(solution.triangulation.triangles().len(), 4);

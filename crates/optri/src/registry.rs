@@ -46,16 +46,16 @@ criteria! {
     /// The Delaunay triangulation (maximises the smallest angle).
     Delaunay => criteria::delaunay::ENTRY,
     /// Minimises the longest edge (Edelsbrunner & Tan), under any norm.
-    MinmaxLength => criteria::minmax_length::ENTRY,
+    MinMaxLength => criteria::minmax_length::ENTRY,
     /// The greedy triangulation (shortest compatible segment first).
     Greedy => criteria::greedy::ENTRY,
     /// Minimum total edge length (LMT-skeleton, then exact face programs).
     MinWeight => criteria::min_weight::ENTRY,
     /// Maximises the smallest triangle area (exact on convex polygons,
     /// certified approximations on general point sets).
-    MaxminArea => criteria::area::MAXMIN_ENTRY,
+    MaxMinArea => criteria::area::MAXMIN_ENTRY,
     /// Minimises the largest triangle area (as MaxMin area).
-    MinmaxArea => criteria::area::MINMAX_ENTRY,
+    MinMaxArea => criteria::area::MINMAX_ENTRY,
 }
 
 impl Criterion {
@@ -226,7 +226,7 @@ fn run(
 /// // An L-shape, listed clockwise: the chord 2-4 leaves the polygon.
 /// let l = SimplePolygon::new(&[[0.0, 0.0], [0.0, 2.0], [1.0, 2.0], [1.0, 1.0], [2.0, 1.0], [2.0, 0.0]])?;
 /// assert!(!l.is_diagonal(2, 4) && l.is_diagonal(0, 3) && l.is_diagonal(1, 3));
-/// let solution = triangulate_polygon(&l, Criterion::MinmaxArea)?;
+/// let solution = triangulate_polygon(&l, Criterion::MinMaxArea)?;
 /// solution.triangulation.validate()?;
 /// assert_eq!(solution.triangulation.triangles().len(), 4);
 /// # Ok::<(), optri::Error>(())
@@ -285,7 +285,7 @@ pub type Comparison = (Criterion, Result<Solution>);
 /// assert!(results.iter().all(|(_, r)| r.is_ok()));
 /// // Under L1 only minmax-length applies; the others refuse the metric.
 /// let l1 = Options::default().with_metric(optri::kernel::Metric::l1());
-/// let results = compare(&points, &[Criterion::MinmaxLength, Criterion::Delaunay], &l1);
+/// let results = compare(&points, &[Criterion::MinMaxLength, Criterion::Delaunay], &l1);
 /// assert!(results[0].1.is_ok() && results[1].1.is_err());
 /// # Ok::<(), optri::Error>(())
 /// ```

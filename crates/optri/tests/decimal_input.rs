@@ -98,7 +98,7 @@ fn points_collinear_as_written_stay_collinear() {
         );
         for criterion in [
             Criterion::Delaunay,
-            Criterion::MinmaxLength,
+            Criterion::MinMaxLength,
             Criterion::Greedy,
         ] {
             let solution = triangulate(&points, criterion).unwrap();
@@ -126,7 +126,7 @@ fn the_classic_tenths_are_collinear() {
     let points = PointSet::new(read.working_points()).unwrap();
     for criterion in [
         Criterion::Delaunay,
-        Criterion::MinmaxLength,
+        Criterion::MinMaxLength,
         Criterion::Greedy,
     ] {
         let t = triangulate(&points, criterion).unwrap().triangulation;

@@ -268,7 +268,7 @@ fn stats_of_triangulations_match_the_oracle() {
         for criterion in [
             Criterion::Delaunay,
             Criterion::Greedy,
-            Criterion::MaxminArea,
+            Criterion::MaxMinArea,
         ] {
             let pts: Vec<Point> = (0..14)
                 .map(|_| {
@@ -322,7 +322,7 @@ fn decimal_input_is_divided_exactly_and_rounded_once() {
             let ps = PointSet::new(read.working_points()).unwrap();
             for criterion in [
                 Criterion::Delaunay,
-                Criterion::MaxminArea,
+                Criterion::MaxMinArea,
                 Criterion::MinWeight,
             ] {
                 let s = triangulate(&ps, criterion).unwrap();
@@ -332,7 +332,7 @@ fn decimal_input_is_divided_exactly_and_rounded_once() {
                 check_stats(&s.triangulation, k, &format!("{criterion:?} k {k}"));
                 // The document's bound agrees with the stats where it is the
                 // same triangle's area.
-                if criterion == Criterion::MaxminArea && s.exact && s.bound.is_some() {
+                if criterion == Criterion::MaxMinArea && s.exact && s.bound.is_some() {
                     assert_eq!(report.bound_value(), Some(stats.min_area));
                 }
                 cases += 1;
@@ -352,7 +352,7 @@ fn certified_bounds_equal_the_measures_they_bound() {
         let Ok(ps) = PointSet::new(&pts) else {
             continue;
         };
-        for criterion in [Criterion::MaxminArea, Criterion::MinmaxArea] {
+        for criterion in [Criterion::MaxMinArea, Criterion::MinMaxArea] {
             let Ok(s) = triangulate(&ps, criterion) else {
                 continue;
             };
@@ -360,7 +360,7 @@ fn certified_bounds_equal_the_measures_they_bound() {
                 continue;
             };
             let stats = s.triangulation.stats();
-            if criterion == Criterion::MaxminArea {
+            if criterion == Criterion::MaxMinArea {
                 assert_eq!(stats.min_area, bound.value, "{pts:?}");
                 exact_maxmin += 1;
             } else {

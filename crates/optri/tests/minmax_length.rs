@@ -164,7 +164,7 @@ fn quadratic_only(ps: &PointSet) -> (Triangulation, Diagnostics) {
 /// The product ([`minmax_length`], through the registry), with the run's
 /// diagnostics.
 fn product(ps: &PointSet) -> (Triangulation, Diagnostics) {
-    let s = optri::triangulate(ps, Criterion::MinmaxLength).unwrap();
+    let s = optri::triangulate(ps, Criterion::MinMaxLength).unwrap();
     (s.triangulation, s.diagnostics)
 }
 

@@ -29,7 +29,7 @@ fn solve(pts: &[Point], metric: &Metric) -> optri::Triangulation {
 fn solution(ps: &PointSet, metric: &Metric) -> optri::Solution {
     let s = triangulate_with(
         ps,
-        Criterion::MinmaxLength,
+        Criterion::MinMaxLength,
         &Options::default().with_metric(metric.clone()),
     )
     .unwrap();
@@ -291,8 +291,8 @@ fn metrics_are_refused_where_they_mean_nothing() {
     let opts = Options::default().with_metric(Metric::l1());
     for c in [
         Criterion::Delaunay,
-        Criterion::MaxminArea,
-        Criterion::MinmaxArea,
+        Criterion::MaxMinArea,
+        Criterion::MinMaxArea,
         Criterion::MinWeight,
         Criterion::Greedy,
     ] {

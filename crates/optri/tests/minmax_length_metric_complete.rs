@@ -149,7 +149,7 @@ fn convex_sets_equal_exhaustive_enumeration_without_fallback() {
             let want = norm.exhaustive_minmax(ps.points());
             let product = triangulate_with(
                 &ps,
-                Criterion::MinmaxLength,
+                Criterion::MinMaxLength,
                 &Options::default().with_metric(metric.clone()),
             )
             .unwrap();

@@ -50,9 +50,9 @@ const TIMING_SEED: u64 = 0x5eed_71e5;
 /// The four polygon-program criteria.
 const PROGRAM: [Criterion; 4] = [
     Criterion::MinWeight,
-    Criterion::MinmaxLength,
-    Criterion::MaxminArea,
-    Criterion::MinmaxArea,
+    Criterion::MinMaxLength,
+    Criterion::MaxMinArea,
+    Criterion::MinMaxArea,
 ];
 
 /// The optimal values a triangulation is compared by.
@@ -106,9 +106,9 @@ fn run(polygon: &SimplePolygon, criterion: Criterion, what: &str) -> Vec<[u32; 3
 fn assert_value(criterion: Criterion, got: &Values, best: &Values, what: &str) {
     let ok = match criterion {
         Criterion::MinWeight => relative_eq(got.weight, best.weight),
-        Criterion::MinmaxLength => got.max_edge_squared == best.max_edge_squared,
-        Criterion::MaxminArea => got.min_twice_area == best.min_twice_area,
-        Criterion::MinmaxArea => got.max_twice_area == best.max_twice_area,
+        Criterion::MinMaxLength => got.max_edge_squared == best.max_edge_squared,
+        Criterion::MaxMinArea => got.min_twice_area == best.min_twice_area,
+        Criterion::MinMaxArea => got.max_twice_area == best.max_twice_area,
         _ => unreachable!(),
     };
     assert!(
@@ -394,12 +394,12 @@ fn the_mminmax_fixture() {
     ];
     for ring in [ring.to_vec(), ring.iter().rev().copied().collect()] {
         let polygon = SimplePolygon::new(&ring).unwrap();
-        let t = run(&polygon, Criterion::MinmaxArea, "mminmax");
+        let t = run(&polygon, Criterion::MinMaxArea, "mminmax");
         assert_eq!(
             max_twice_area(&ring, &t),
             BigRational::from_integer(18.into())
         );
-        let t = run(&polygon, Criterion::MaxminArea, "mminmax");
+        let t = run(&polygon, Criterion::MaxMinArea, "mminmax");
         assert_eq!(
             min_twice_area(&ring, &t),
             BigRational::from_integer(11.into())
@@ -502,15 +502,15 @@ fn area_criteria_on_convex_point_sets_match_the_oracle() {
             };
             with_collinear += (ring.len() > n) as usize;
             for (criterion, t) in [
-                (Criterion::MaxminArea, maxmin_area(&ps).unwrap()),
-                (Criterion::MinmaxArea, minmax_area(&ps).unwrap()),
+                (Criterion::MaxMinArea, maxmin_area(&ps).unwrap()),
+                (Criterion::MinMaxArea, minmax_area(&ps).unwrap()),
             ] {
                 t.validate().unwrap();
                 let s = triangulate(&ps, criterion).unwrap();
                 s.triangulation.validate().unwrap();
                 assert!(s.exact);
                 for tris in [t.triangles(), s.triangulation.triangles()] {
-                    if criterion == Criterion::MaxminArea {
+                    if criterion == Criterion::MaxMinArea {
                         assert_eq!(min_twice_area(&points, tris), min_area, "{points:?}");
                     } else {
                         assert_eq!(max_twice_area(&points, tris), max_area, "{points:?}");
@@ -549,7 +549,7 @@ fn area_criteria_on_general_point_sets_are_honest() {
         let distinct: Vec<Point> = ps.points().to_vec();
         let all = optri_oracle::enumerate::all_triangulations(&distinct);
         let dt = optri::delaunay(&ps).unwrap();
-        for c in [Criterion::MaxminArea, Criterion::MinmaxArea] {
+        for c in [Criterion::MaxMinArea, Criterion::MinMaxArea] {
             let s = triangulate(&ps, c).unwrap();
             s.triangulation.validate().unwrap();
             let to_distinct = |t: &optri::Triangulation| -> Vec<[u32; 3]> {
@@ -559,7 +559,7 @@ fn area_criteria_on_general_point_sets_are_honest() {
                     .collect()
             };
             let (got, dt_value) = (to_distinct(&s.triangulation), to_distinct(&dt));
-            let (value, dt_v, best) = if c == Criterion::MaxminArea {
+            let (value, dt_v, best) = if c == Criterion::MaxMinArea {
                 let v = |t: &[[u32; 3]]| optri_oracle::enumerate::min_twice_area(&distinct, t);
                 let best = all.iter().map(|t| v(t)).max().unwrap();
                 (v(&got), v(&dt_value), best)
@@ -568,7 +568,7 @@ fn area_criteria_on_general_point_sets_are_honest() {
                 let best = all.iter().map(|t| v(t)).min().unwrap();
                 (v(&got), v(&dt_value), best)
             };
-            if c == Criterion::MaxminArea {
+            if c == Criterion::MaxMinArea {
                 assert!(value >= dt_v, "{pts:?}: worse than Delaunay");
             } else {
                 assert!(value <= dt_v, "{pts:?}: worse than Delaunay");
@@ -582,7 +582,7 @@ fn area_criteria_on_general_point_sets_are_honest() {
                 ps.input_points(),
                 &[bound.triangle.expect("an area bound names its triangle")],
             );
-            if c == Criterion::MaxminArea {
+            if c == Criterion::MaxMinArea {
                 assert!(bound.upper && best <= b, "{pts:?}: the upper bound fails");
             } else {
                 assert!(!bound.upper && best >= b, "{pts:?}: the lower bound fails");
@@ -595,10 +595,10 @@ fn area_criteria_on_general_point_sets_are_honest() {
     assert!(maxmin_area(&ps).is_ok() && minmax_area(&ps).is_ok());
     assert_eq!(
         Criterion::from_name("MAXMIN-AREA").unwrap(),
-        Criterion::MaxminArea
+        Criterion::MaxMinArea
     );
-    assert_eq!(Criterion::MinmaxArea.name(), "minmax-area");
-    assert!(Criterion::MaxminArea.info().reference.contains("Vassilev"));
+    assert_eq!(Criterion::MinMaxArea.name(), "minmax-area");
+    assert!(Criterion::MaxMinArea.info().reference.contains("Vassilev"));
 }
 
 /// Points in strictly convex position (Algorithm 44) against the exhaustive
@@ -656,7 +656,7 @@ fn convex_area_optima_equal_exhaustive_enumeration() {
         }
         let distinct = ps.points().to_vec();
         let all = optri_oracle::enumerate::all_triangulations(&distinct);
-        for c in [Criterion::MaxminArea, Criterion::MinmaxArea] {
+        for c in [Criterion::MaxMinArea, Criterion::MinMaxArea] {
             let s = triangulate(&ps, c).unwrap();
             s.triangulation.validate().unwrap();
             assert!(
@@ -670,14 +670,14 @@ fn convex_area_optima_equal_exhaustive_enumeration() {
                 .iter()
                 .map(|t| t.map(|i| ps.distinct_index(i)))
                 .collect();
-            let (value, values): (_, Vec<_>) = if c == Criterion::MaxminArea {
+            let (value, values): (_, Vec<_>) = if c == Criterion::MaxMinArea {
                 let v = |t: &[[u32; 3]]| optri_oracle::enumerate::min_twice_area(&distinct, t);
                 (v(&got), all.iter().map(|t| v(t)).collect())
             } else {
                 let v = |t: &[[u32; 3]]| optri_oracle::enumerate::max_twice_area(&distinct, t);
                 (v(&got), all.iter().map(|t| v(t)).collect())
             };
-            let best = if c == Criterion::MaxminArea {
+            let best = if c == Criterion::MaxMinArea {
                 values.iter().max().unwrap()
             } else {
                 values.iter().min().unwrap()

@@ -273,7 +273,7 @@ fn grid_30_by_30_is_the_same_at_every_scale() {
     let grid = inputs::grid(30, 30, 1.0);
     let criteria = [
         Criterion::Delaunay,
-        Criterion::MinmaxLength,
+        Criterion::MinMaxLength,
         Criterion::Greedy,
     ];
     let outcomes = |pts: &[Point]| {

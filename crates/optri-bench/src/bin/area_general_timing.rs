@@ -25,11 +25,11 @@ const SEED_RATIOS: u64 = 0xA4EA_0076;
 const SEED_STEPS: u64 = 0xA4EA_1000;
 const SETS_PER_SIZE: usize = 300;
 
-const CRITERIA: [Criterion; 2] = [Criterion::MaxminArea, Criterion::MinmaxArea];
+const CRITERIA: [Criterion; 2] = [Criterion::MaxMinArea, Criterion::MinMaxArea];
 
 /// The exact doubled bottleneck area of `triangles` under `criterion`.
 fn value(pts: &[[f64; 2]], triangles: &[[u32; 3]], criterion: Criterion) -> BigRational {
-    if criterion == Criterion::MaxminArea {
+    if criterion == Criterion::MaxMinArea {
         optri_oracle::min_twice_area(pts, triangles)
     } else {
         optri_oracle::max_twice_area(pts, triangles)
@@ -38,7 +38,7 @@ fn value(pts: &[[f64; 2]], triangles: &[[u32; 3]], criterion: Criterion) -> BigR
 
 /// Is `s` at least as good as `t` under `criterion`?
 fn at_least_as_good(criterion: Criterion, s: &BigRational, t: &BigRational) -> bool {
-    if criterion == Criterion::MaxminArea {
+    if criterion == Criterion::MaxMinArea {
         s >= t
     } else {
         s <= t
@@ -95,7 +95,7 @@ fn ratios() {
                         }
                     }
                     for (k, v) in values.iter().enumerate() {
-                        let (q, d) = if criterion == Criterion::MaxminArea {
+                        let (q, d) = if criterion == Criterion::MaxMinArea {
                             (f(&(optimum.clone() / v)), f(&(v / &values[0])))
                         } else {
                             (f(&(v / &optimum)), f(&(values[0].clone() / v)))
@@ -109,7 +109,7 @@ fn ratios() {
                     cases += 1;
                 }
             }
-            let what = if criterion == Criterion::MaxminArea {
+            let what = if criterion == Criterion::MaxMinArea {
                 "MaxMin area: optimum / candidate"
             } else {
                 "MinMax area: candidate / optimum"
@@ -192,7 +192,7 @@ fn steps() {
         for criterion in CRITERIA {
             let clock = Instant::now();
             let run = area_general(&ps, criterion).expect("the approximation runs");
-            let objective = if criterion == Criterion::MaxminArea {
+            let objective = if criterion == Criterion::MaxMinArea {
                 "MaxMin"
             } else {
                 "MinMax"
@@ -208,7 +208,7 @@ fn steps() {
     for n in [500, 501] {
         let ps = PointSet::new(&inputs::sampled_circle(n, 1e6)).expect("a valid point set");
         let clock = Instant::now();
-        let run = area_general(&ps, Criterion::MaxminArea).expect("the approximation runs");
+        let run = area_general(&ps, Criterion::MaxMinArea).expect("the approximation runs");
         println!(
             "{n} points on a circle: candidates {:.2?} (largest face {} corners, {} candidates, {} flips)",
             clock.elapsed(),

@@ -73,13 +73,13 @@ fn routes(sizes: &[usize]) {
         let m = points.len();
         let polygon = optri::SimplePolygon::new(&points).expect("a convex polygon");
         assert!(polygon.is_strictly_convex());
-        let (a, wall_a, cpu_a) = timed(|| triangulate_polygon(&polygon, Criterion::MaxminArea));
+        let (a, wall_a, cpu_a) = timed(|| triangulate_polygon(&polygon, Criterion::MaxMinArea));
         let (b, wall_b, cpu_b) = timed(|| {
             optri::MaxMinAreaDecision::new(&polygon)
                 .expect("a strictly convex polygon")
                 .optimum()
         });
-        let (c, wall_c, cpu_c) = timed(|| triangulate_polygon(&polygon, Criterion::MinmaxArea));
+        let (c, wall_c, cpu_c) = timed(|| triangulate_polygon(&polygon, Criterion::MinMaxArea));
         let (a, c) = (
             a.expect("range-max").triangulation,
             c.expect("minmax").triangulation,
@@ -142,8 +142,8 @@ fn main() {
             continue;
         }
         for (criterion, maxmin) in [
-            (Criterion::MaxminArea, true),
-            (Criterion::MinmaxArea, false),
+            (Criterion::MaxMinArea, true),
+            (Criterion::MinMaxArea, false),
         ] {
             let mut product = Vec::new();
             let mut cubic = Vec::new();

@@ -68,7 +68,7 @@ fn regular(n: usize) -> Vec<[f64; 2]> {
 
 fn minmax(points: &PointSet, metric: &Metric) -> optri::Solution {
     let options = Options::default().with_metric(metric.clone());
-    triangulate_with(points, Criterion::MinmaxLength, &options).expect("minmax-length")
+    triangulate_with(points, Criterion::MinMaxLength, &options).expect("minmax-length")
 }
 
 fn main() {

@@ -77,7 +77,7 @@ fn compare_with_delaunay(name: &str, ps: &PointSet) {
     let (mut solution, mut pure) = (None, None);
     for _ in 0..runs {
         dts.push(secs(|| optri::delaunay(ps).unwrap()).1);
-        let (s, m) = secs(|| optri::triangulate(ps, Criterion::MinmaxLength).unwrap());
+        let (s, m) = secs(|| optri::triangulate(ps, Criterion::MinMaxLength).unwrap());
         ms.push(m);
         solution = Some(s);
         if std::env::var_os("SKIP_PURE").is_none() {
@@ -134,7 +134,7 @@ fn main() {
         "convex" => {
             for &n in &sizes {
                 let ps = PointSet::new(&convex(n)).unwrap();
-                let (s, m) = secs(|| optri::triangulate(&ps, Criterion::MinmaxLength).unwrap());
+                let (s, m) = secs(|| optri::triangulate(&ps, Criterion::MinMaxLength).unwrap());
                 let poly = s
                     .phases
                     .iter()

@@ -28,8 +28,8 @@ fn main() {
         for (shape, ring) in [("star", star), ("dented circle", dented)] {
             let polygon = SimplePolygon::new(&ring).expect("a simple polygon");
             for c in [
-                Criterion::MinmaxArea,
-                Criterion::MinmaxLength,
+                Criterion::MinMaxArea,
+                Criterion::MinMaxLength,
                 Criterion::MinWeight,
             ] {
                 let start = std::time::Instant::now();

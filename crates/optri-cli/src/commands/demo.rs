@@ -29,7 +29,7 @@ const DEMO_POLYGON: [Point; 12] = [
     [2.0, 2.5],
 ];
 /// The criteria drawn on [`DEMO_POLYGON`] (those that support polygons).
-const DEMO_POLYGON_CRITERIA: [Criterion; 2] = [Criterion::MinWeight, Criterion::MinmaxArea];
+const DEMO_POLYGON_CRITERIA: [Criterion; 2] = [Criterion::MinWeight, Criterion::MinMaxArea];
 
 /// One triangulation of the demo: which point set, the criterion with
 /// `(exact)` or `(uncertified)`, the panel title (both of those), the result

@@ -1022,7 +1022,7 @@ mod tests {
         // Under L1, minmax-length runs and greedy refuses (no metric).
         let results = compare(
             &ps,
-            &[Criterion::MinmaxLength, Criterion::Greedy],
+            &[Criterion::MinMaxLength, Criterion::Greedy],
             &Options::default().with_metric(crate::kernel::Metric::l1()),
         );
         let v = ComparisonReport::new(&results).to_json();

@@ -176,7 +176,7 @@ pub(crate) fn solve_minmax_polygon(
 
 /// A triangulation of `points` (in convex position) maximising the smallest
 /// triangle area, exactly. Polygons: [`crate::triangulate_polygon`] with
-/// [`crate::Criterion::MaxminArea`].
+/// [`crate::Criterion::MaxMinArea`].
 ///
 /// Points not in convex position get the best of four approximations (see
 /// the module table; `optri::triangulate` reports whether it is provably
