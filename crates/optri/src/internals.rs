@@ -14,18 +14,53 @@ pub use crate::criteria::minmax_length::{
 };
 pub use crate::structures::planar_graph::{Face, PlanarGraph};
 
-/// The area criteria on points in convex position by Klincsek's cubic
-/// program (the reference Algorithm 44 is measured against): `maxmin`
-/// selects MaxMin, else MinMax. Triangles as distinct indices.
-pub fn area_by_polygon_program(points: &crate::PointSet, maxmin: bool) -> Vec<[u32; 3]> {
-    use crate::criteria::area::{polygon::convex_polygon_program, AreaBottleneck};
-    let hull = crate::spatial::convex_hull_cycle(points.points());
-    let kind = if maxmin {
-        AreaBottleneck::MaxMin
-    } else {
-        AreaBottleneck::MinMax
+/// Kernel predicates that serve one algorithm (the diamond filter, the
+/// half-lunes, the symbolic orders), exported for their tests.
+pub mod kernel {
+    pub use crate::kernel::length_sums::{compare_length_sums_exactly, LengthInterval};
+    pub use crate::kernel::lune::{in_half_lune, in_half_lune_symbolic};
+    pub use crate::kernel::norm::side_of_direction;
+    pub use crate::kernel::predicates::{
+        angle_at_least_30_degrees, angle_below_diamond, certainly_outside_diamonds,
+        compare_doubled_area, exact_squared_length, DiamondPosition, DiamondTriangles,
     };
-    convex_polygon_program(points.points(), &hull, kind)
+    pub use crate::kernel::squared_length::SquaredLength;
+    pub use crate::kernel::symbolic::{compare_equal_lengths_symbolic, height_sign, segment_order};
+    pub use crate::kernel::wedge::strictly_inside_wedge_symbolic;
+}
+
+/// The area criteria on points in convex position by Klincsek's cubic
+/// program (the reference Algorithm 44 is measured against): `criterion`
+/// is `MaxMinArea` or `MinMaxArea`. Triangles as distinct indices.
+///
+/// # Errors
+/// [`crate::Error::Internal`] for another criterion.
+pub fn area_by_polygon_program(
+    points: &crate::PointSet,
+    criterion: crate::Criterion,
+) -> crate::Result<Vec<[u32; 3]>> {
+    use crate::criteria::area::polygon::convex_polygon_program;
+    let hull = crate::spatial::convex_hull_cycle(points.points());
+    Ok(convex_polygon_program(
+        points.points(),
+        &hull,
+        area_bottleneck(criterion)?,
+    ))
+}
+
+/// The bottleneck an area criterion optimises.
+fn area_bottleneck(
+    criterion: crate::Criterion,
+) -> crate::Result<crate::criteria::area::AreaBottleneck> {
+    use crate::criteria::area::AreaBottleneck;
+    match criterion {
+        crate::Criterion::MaxMinArea => Ok(AreaBottleneck::MaxMin),
+        crate::Criterion::MinMaxArea => Ok(AreaBottleneck::MinMax),
+        _ => Err(crate::Error::Internal(format!(
+            "{} is not an area criterion",
+            criterion.name()
+        ))),
+    }
 }
 
 /// One run of the area criteria's approximation for general point sets on
@@ -56,17 +91,8 @@ pub fn area_general(
     points: &crate::PointSet,
     criterion: crate::Criterion,
 ) -> crate::Result<AreaGeneralRun> {
-    use crate::criteria::area::{general, AreaBottleneck};
-    let objective = match criterion {
-        crate::Criterion::MaxMinArea => AreaBottleneck::MaxMin,
-        crate::Criterion::MinMaxArea => AreaBottleneck::MinMax,
-        _ => {
-            return Err(crate::Error::Internal(format!(
-                "{} is not an area criterion",
-                criterion.name()
-            )))
-        }
-    };
+    use crate::criteria::area::general;
+    let objective = area_bottleneck(criterion)?;
     let candidates = general::candidates(points, objective)?;
     let result = general::best_of(points, objective, &candidates);
     Ok(AreaGeneralRun {

@@ -5,10 +5,12 @@
 //! tiny magnitudes), and at the documented coordinate limits 2^201 and
 //! 2^-142.
 
+use optri::internals::kernel::{
+    angle_at_least_30_degrees, exact_squared_length, in_half_lune, strictly_inside_wedge_symbolic,
+};
 use optri::kernel::{
-    angle_at_least_30_degrees, compare_areas, compare_corner_angles, compare_lengths, dot_sign,
-    exact_squared_length, in_half_lune, in_lune, incircle_sign, orient_sign, same_direction,
-    strictly_inside_wedge, strictly_inside_wedge_symbolic, MAX_COORDINATE, MIN_COORDINATE,
+    compare_areas, compare_corner_angles, compare_lengths, dot_sign, in_lune, incircle_sign,
+    orient_sign, same_direction, strictly_inside_wedge, MAX_COORDINATE, MIN_COORDINATE,
 };
 use optri_oracle as oracle;
 use rand::rngs::StdRng;
@@ -887,7 +889,7 @@ fn area_comparison_at_the_coordinate_limits_is_scale_invariant() {
 /// the points well outside (it is not vacuous).
 #[test]
 fn certainly_outside_diamonds_never_rejects_an_inside_point() {
-    use optri::kernel::{angle_below_diamond, certainly_outside_diamonds};
+    use optri::internals::kernel::{angle_below_diamond, certainly_outside_diamonds};
     let mut rng = StdRng::seed_from_u64(SEED_DIAMOND_FILTER);
     let tan = 833.0 / 1024.0;
     let (mut inside, mut rejected, mut far) = (0usize, 0usize, 0usize);
@@ -962,7 +964,7 @@ fn certainly_outside_diamonds_never_rejects_an_inside_point() {
 /// exercised) and the exact path the rest.
 #[test]
 fn diamond_positions_are_the_exact_decisions() {
-    use optri::kernel::{angle_below_diamond, DiamondPosition, DiamondTriangles};
+    use optri::internals::kernel::{angle_below_diamond, DiamondPosition, DiamondTriangles};
     let mut rng = StdRng::seed_from_u64(SEED_DIAMOND_FILTER + 1);
     let tan = 833.0 / 1024.0;
     let mut seen = [0usize; 3];

@@ -2,7 +2,8 @@
 //! the perturbed predicates as polynomials in ε with exact rational
 //! coefficients (`optri_oracle::symbolic`), on thousands of degenerate cases.
 
-use optri::kernel::{compare_lengths_symbolic, orient_symbolic, segment_order};
+use optri::internals::kernel::segment_order;
+use optri::kernel::{compare_lengths_symbolic, orient_symbolic};
 use optri_oracle as oracle;
 use optri_oracle::inputs::{cocircular_seven_with_centre, distinct_lattice_points, shuffled_grid};
 use rand::rngs::StdRng;
@@ -147,7 +148,8 @@ fn segment_order_is_a_total_order_on_grid_segments() {
 /// definitions evaluated by the oracle.
 #[test]
 fn lunes_match_their_definitions() {
-    use optri::kernel::{in_half_lune, in_half_lune_symbolic, in_lune, in_lune_symbolic};
+    use optri::internals::kernel::{in_half_lune, in_half_lune_symbolic};
+    use optri::kernel::{in_lune, in_lune_symbolic};
     let mut checked = 0;
     let mut boundary = 0;
     for (label, pts) in degenerate_sets() {

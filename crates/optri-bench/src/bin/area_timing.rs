@@ -166,7 +166,7 @@ fn main() {
                 product.push(t);
                 if mode == "ratio" {
                     let (reference, t) =
-                        secs(|| optri::internals::area_by_polygon_program(&ps, maxmin));
+                        secs(|| optri::internals::area_by_polygon_program(&ps, criterion).unwrap());
                     cubic.push(t);
                     let mine: Vec<[u32; 3]> = solution
                         .triangulation

@@ -93,6 +93,7 @@ impl LengthInterval {
         }
     }
 
+    #[cfg(any(test, feature = "internals"))]
     /// The midpoint, for reporting.
     pub fn mid(self) -> f64 {
         0.5 * (self.lo + self.hi)

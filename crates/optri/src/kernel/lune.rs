@@ -6,7 +6,7 @@
 //! `h_pq` is the closed half-plane to the left of or on the line `p → q`.
 //! So `λ_pq = η_pq ∪ η_qp`, and a point of the open segment `pq` lies in both.
 
-use super::predicates::{compare_lengths, orient_sign};
+use super::predicates::compare_lengths;
 use super::symbolic::{compare_lengths_symbolic, orient_symbolic};
 use super::Point;
 use std::cmp::Ordering::Less;
@@ -17,10 +17,11 @@ pub fn in_lune(p: Point, q: Point, x: Point) -> bool {
     compare_lengths(x, p, p, q) == Less && compare_lengths(x, q, p, q) == Less
 }
 
+#[cfg(any(test, feature = "internals"))]
 /// Is `x` in the half-lune `η_pq` (lune of `pq`, left of or on `p → q`)? (exact)
 #[inline]
 pub fn in_half_lune(p: Point, q: Point, x: Point) -> bool {
-    orient_sign(p, q, x) >= 0 && in_lune(p, q, x)
+    super::predicates::orient_sign(p, q, x) >= 0 && in_lune(p, q, x)
 }
 
 /// Lune membership under the symbolic perturbation of

@@ -43,17 +43,17 @@
 mod certified_incircle;
 mod degrees;
 pub(crate) mod expansion;
-mod length_order;
 mod extremes;
-mod length_sums;
-mod lune;
+mod length_order;
+pub(crate) mod length_sums;
+pub(crate) mod lune;
 pub mod metrics;
-mod norm;
-mod predicates;
+pub(crate) mod norm;
+pub(crate) mod predicates;
 mod rounding;
-mod squared_length;
-mod symbolic;
-mod wedge;
+pub(crate) mod squared_length;
+pub(crate) mod symbolic;
+pub(crate) mod wedge;
 
 /// A point in the plane, `[x, y]`.
 pub type Point = [f64; 2];
@@ -68,25 +68,28 @@ pub const MAX_COORDINATE: f64 = 3.2138760885179806e60; // 2^201
 /// Smallest accepted non-zero absolute coordinate value, 2⁻¹⁴².
 pub const MIN_COORDINATE: f64 = 1.793662034335766e-43; // 2^-142
 
-pub(crate) use length_order::{EuclideanOrder, LengthOrder};
 pub(crate) use extremes::Extremes;
-pub use length_sums::{compare_length_sums, compare_length_sums_exactly, LengthInterval};
-pub use lune::{in_half_lune, in_half_lune_symbolic, in_lune, in_lune_symbolic};
-pub use norm::{side_of_direction, Metric, MetricProblem, MAX_LP_EXPONENT};
+pub(crate) use length_order::{EuclideanOrder, LengthOrder};
+pub use length_sums::compare_length_sums;
+pub(crate) use length_sums::LengthInterval;
+pub use lune::{in_lune, in_lune_symbolic};
+pub(crate) use norm::side_of_direction;
+pub use norm::{Metric, MetricProblem, MAX_LP_EXPONENT};
 pub(crate) use predicates::shorter_than;
+pub(crate) use predicates::{
+    angle_at_least_30_degrees, compare_doubled_area, exact_squared_length, DiamondPosition,
+    DiamondTriangles,
+};
 pub use predicates::{
-    angle_at_least_30_degrees, angle_below_diamond, certainly_outside_diamonds, compare_angles,
-    compare_areas, compare_corner_angles, compare_doubled_area, compare_lengths, cross_sign,
-    dot_sign, exact_squared_length, incircle_sign, on_open_segment, orient_sign, properly_cross,
-    segments_intersect, DiamondPosition, DiamondTriangles,
+    compare_angles, compare_areas, compare_corner_angles, compare_lengths, cross_sign, dot_sign,
+    incircle_sign, on_open_segment, orient_sign, properly_cross, segments_intersect,
 };
-pub use squared_length::SquaredLength;
+pub(crate) use squared_length::SquaredLength;
 pub(crate) use squared_length::{compare_rounded_keys, in_one_key_run, rounded_squared_length};
-pub use symbolic::{
-    compare_equal_lengths_symbolic, compare_lengths_symbolic, height_sign, orient_symbolic,
-    segment_order,
-};
-pub use wedge::{same_direction, strictly_inside_wedge, strictly_inside_wedge_symbolic};
+pub(crate) use symbolic::{compare_equal_lengths_symbolic, segment_order};
+pub use symbolic::{compare_lengths_symbolic, orient_symbolic};
+pub(crate) use wedge::strictly_inside_wedge_symbolic;
+pub use wedge::{same_direction, strictly_inside_wedge};
 
 /// Why a coordinate is not accepted (see the module docs for the range).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

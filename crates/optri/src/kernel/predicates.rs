@@ -332,6 +332,7 @@ pub fn angle_below_diamond(o: Point, a: Point, b: Point) -> bool {
     e.sign() > 0
 }
 
+#[cfg(any(test, feature = "internals"))]
 /// Filter, never wrong when it answers `true`: does `c` certainly lie
 /// outside both closed diamond triangles on `ab` (the isosceles triangles
 /// with base `ab` and base angle `α' = arctan(833/1024)` of

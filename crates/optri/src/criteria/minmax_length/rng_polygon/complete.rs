@@ -228,7 +228,8 @@ impl<L: LengthOrder> RngPolygon<'_, L> {
 mod tests {
     use super::super::{regions, rng_perturbed, rng_perturbed_flags, Counters, Mesh, RngPolygon};
     use super::*;
-    use crate::kernel::{in_half_lune_symbolic, Point};
+    use crate::kernel::lune::in_half_lune_symbolic;
+    use crate::kernel::Point;
     use crate::spatial::convex_hull_cycle;
     use crate::structures::DelaunayGraph;
     use rand::{rngs::StdRng, Rng, SeedableRng};
