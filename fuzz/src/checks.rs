@@ -20,9 +20,7 @@ use optri::io::{
     read, triangulation_from_json, Input, InputFormat, ReadInput, ReadOptions, Source,
     TriangulationReport,
 };
-use optri::{
-    graph, triangulate, triangulate_polygon, Criterion, GraphKind, PointSet, SimplePolygon,
-};
+use optri::{graph, triangulate, Criterion, GraphKind, Options, PointSet, SimplePolygon};
 use optri_oracle as oracle;
 use std::cmp::Reverse;
 
@@ -83,7 +81,7 @@ pub fn check_readers(data: &[u8]) {
                 .map(|set| triangulate(&set, Criterion::Delaunay)),
             Input::Polygon(_) => SimplePolygon::new(points)
                 .ok()
-                .map(|polygon| triangulate_polygon(&polygon, Criterion::Delaunay)),
+                .map(|polygon| triangulate(&polygon, Criterion::Delaunay)),
         };
         if let Some(solved) = solved {
             let s = solved.unwrap_or_else(|e| panic!("{format:?}: Delaunay failed: {e}"));
@@ -184,7 +182,7 @@ pub fn check_points(points: &[[f64; 2]]) -> Vec<Criterion> {
         checked.push(criterion);
     }
     for &kind in GraphKind::ALL {
-        let _ = graph(&set, kind);
+        let _ = graph(set.input_points(), kind, &Options::default());
     }
     checked
 }

@@ -27,7 +27,7 @@ fn proximity(c: &mut Criterion) {
             b.iter(|| delaunator::triangulate(d))
         });
         group.bench_with_input(BenchmarkId::new("delaunay_edges", n), &ps, |b, ps| {
-            b.iter(|| optri::delaunay_edges(ps).unwrap())
+            b.iter(|| optri::delaunay(ps).unwrap().edges())
         });
         group.bench_with_input(
             BenchmarkId::new("relative_neighborhood_graph", n),

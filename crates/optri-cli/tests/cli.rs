@@ -364,14 +364,20 @@ fn graph_kinds_match_the_library() {
         e
     };
     let expected = [
-        ("hull", sorted(optri::convex_hull_edges(&ps))),
+        (
+            "hull",
+            sorted({
+                let h = optri::convex_hull(&ps);
+                (0..h.len()).map(|i| [h[i], h[(i + 1) % h.len()]]).collect()
+            }),
+        ),
         (
             "rng",
             sorted(optri::relative_neighborhood_graph(&ps).unwrap()),
         ),
         ("gabriel", sorted(optri::gabriel_graph(&ps).unwrap())),
         ("mst", sorted(optri::minimum_spanning_tree(&ps).unwrap())),
-        ("delaunay", sorted(optri::delaunay_edges(&ps).unwrap())),
+        ("delaunay", sorted(optri::delaunay(&ps).unwrap().edges())),
     ];
     for (kind, edges) in &expected {
         let json = stdout_json(&run(&["graph", &input, "--kind", kind, "--json"]));
@@ -962,7 +968,7 @@ fn polygon_inputs_are_triangulated_inside_by_every_polygon_criterion() {
             assert!(triangles.iter().flatten().all(|&i| (i as usize) < n));
             // The triangles cover the polygon exactly, and match the library.
             optri::Triangulation::from_polygon_triangles(&polygon, triangles.clone()).unwrap();
-            let lib = optri::triangulate_polygon(&polygon, *c).unwrap();
+            let lib = optri::triangulate(&polygon, *c).unwrap();
             assert_eq!(triangles, lib.triangulation.triangles(), "{}", c.name());
             let back = optri::io::triangulation_from_json(&json).unwrap();
             assert_eq!(back.triangles(), &triangles[..]);

@@ -93,7 +93,9 @@ fn graphs_take_a_metric() {
         assert_eq!(v["metric"], "linf");
         let options = optri::Options::default().with_metric(optri::kernel::Metric::linf());
         let k = optri::GraphKind::from_name(kind).unwrap();
-        let (edges, _) = optri::graph_with(&library_points(), k, &options).unwrap();
+        let edges = optri::graph(library_points().input_points(), k, &options)
+            .unwrap()
+            .edges;
         assert_eq!(v["edges"], serde_json::json!(edges));
     }
 }

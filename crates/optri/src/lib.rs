@@ -27,7 +27,7 @@
 //! | 3 | `graphs` | [`delaunay`], [`convex_hull`], [`relative_neighborhood_graph`], [`gabriel_graph`], [`minimum_spanning_tree`] |
 //! | 4 | `polygon_program` | Klincsek's polygon dynamic program over an objective |
 //! | 5 | `criteria` | one module per criterion: [`minmax_length`], [`greedy`], [`min_weight`], [`maxmin_area`] / [`minmax_area`], Delaunay; the polygon solvers |
-//! | 6 | `registry` | [`Criterion`], [`GraphKind`], [`triangulate`], [`triangulate_polygon`], [`compare`], [`graph`] |
+//! | 6 | `registry` | [`Criterion`], [`GraphKind`], [`triangulate`], [`compare`], [`graph`] |
 //! | 7 | `io` (public, feature `io`) | readers, writers, the one JSON result schema |
 //!
 //! ## Features
@@ -65,15 +65,12 @@ pub use criteria::{
 };
 pub use error::{Error, Interruption, PolygonProblem, Result, UnsupportedReason};
 pub use graphs::{
-    convex_hull, convex_hull_edges, delaunay, delaunay_edges, gabriel_graph, minimum_spanning_tree,
-    relative_neighborhood_graph,
+    convex_hull, delaunay, gabriel_graph, minimum_spanning_tree, relative_neighborhood_graph,
 };
 pub use interrupt::Cancel;
-pub use polygon_program::MAX_POLYGON_VERTICES;
 pub use registry::{
-    compare, compare_polygon, graph, graph_of_points, graph_of_points_with, graph_with,
-    triangulate, triangulate_polygon, triangulate_polygon_with, triangulate_with, Comparison,
-    Criterion, GraphKind, PointGraph, Solution,
+    compare, graph, triangulate, triangulate_with, Comparison, Criterion, GraphKind, PointGraph,
+    Solution, Triangulable,
 };
 pub use structures::{Better, Domain, Measure, PointSet, SimplePolygon, Stats, Triangulation};
 pub use timing::Phase;

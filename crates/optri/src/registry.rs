@@ -1,7 +1,7 @@
 //! Layer 6: the registry the front ends share (CLI, demo, Python, web). It
 //! lists every criterion and every graph kind with its name, description and
 //! the options it reads, looks them up by name, and runs them:
-//! [`triangulate`] on point sets, [`triangulate_polygon`] on simple
+//! [`triangulate`] on point sets and simple
 //! polygons, [`compare`], and [`graph`].
 //!
 //! The registry reads each criterion's declaration (its `ENTRY`: info,
@@ -146,7 +146,7 @@ fn takers_of(name: &str) -> Vec<&'static str> {
     criteria.chain(graphs).collect()
 }
 
-/// The result of [`triangulate`] or [`triangulate_polygon`]: the triangulation and how it was obtained.
+/// The result of [`triangulate`]: the triangulation and how it was obtained.
 #[derive(Clone, Debug)]
 #[non_exhaustive]
 pub struct Solution {
@@ -176,28 +176,91 @@ pub struct Solution {
     pub metric: crate::kernel::Metric,
 }
 
-/// Triangulates `points` by `criterion` with default [`Options`].
-pub fn triangulate(points: &PointSet, criterion: Criterion) -> Result<Solution> {
-    triangulate_with(points, criterion, &Options::default())
+/// What a criterion triangulates: a [`PointSet`] (its convex hull) or a
+/// [`SimplePolygon`] (its interior). [`triangulate`], [`triangulate_with`]
+/// and [`compare`] take either; the triangulation's [`Domain`](crate::Domain)
+/// says which, and its indices are the caller's input indices (ring
+/// positions for a polygon).
+pub trait Triangulable: sealed::Solve {}
+
+impl Triangulable for PointSet {}
+impl Triangulable for SimplePolygon {}
+
+mod sealed {
+    use super::*;
+
+    /// How the registry runs a criterion on an input kind (sealed: the two
+    /// kinds above are the ones the criteria declare solvers for).
+    pub trait Solve {
+        /// Runs `criterion`'s solver for this kind (options checked).
+        fn solve(&self, criterion: Criterion, options: &Options) -> Result<Solution>;
+    }
+
+    impl Solve for PointSet {
+        fn solve(&self, criterion: Criterion, options: &Options) -> Result<Solution> {
+            let entry = criterion.entry();
+            check_options(criterion.name(), entry.info.options, options)?;
+            run(criterion, options, |options, phases| {
+                (entry.solve)(self, options, phases)
+            })
+        }
+    }
+
+    impl Solve for SimplePolygon {
+        fn solve(&self, criterion: Criterion, options: &Options) -> Result<Solution> {
+            let entry = criterion.entry();
+            let solve = entry.solve_polygon.ok_or_else(|| Error::Unsupported {
+                criterion: criterion.name(),
+                reason: UnsupportedReason::NoPolygonInput {
+                    accepted_by: Criterion::ALL
+                        .iter()
+                        .filter(|c| c.accepts(InputKind::SimplePolygon))
+                        .map(|c| c.name())
+                        .collect(),
+                },
+            })?;
+            // No criterion reads a metric on polygons yet.
+            check_options(criterion.name(), &[], options)?;
+            run(criterion, options, |options, phases| {
+                solve(self, options, phases)
+            })
+        }
+    }
 }
 
-/// Triangulates `points` by `criterion` with `options`.
+/// Triangulates `input` (a [`PointSet`] or a [`SimplePolygon`]) by
+/// `criterion` with default [`Options`].
+///
+/// ```
+/// use optri::{triangulate, Criterion, SimplePolygon};
+/// // An L-shape, listed clockwise: the chord 2-4 leaves the polygon.
+/// let l = SimplePolygon::new(&[[0.0, 0.0], [0.0, 2.0], [1.0, 2.0], [1.0, 1.0], [2.0, 1.0], [2.0, 0.0]])?;
+/// assert!(!l.is_diagonal(2, 4) && l.is_diagonal(0, 3) && l.is_diagonal(1, 3));
+/// let solution = triangulate(&l, Criterion::MinMaxArea)?;
+/// solution.triangulation.validate()?;
+/// assert_eq!(solution.triangulation.triangles().len(), 4);
+/// # Ok::<(), optri::Error>(())
+/// ```
+pub fn triangulate<T: Triangulable>(input: &T, criterion: Criterion) -> Result<Solution> {
+    triangulate_with(input, criterion, &Options::default())
+}
+
+/// Triangulates `input` by `criterion` with `options`.
 ///
 /// # Errors
-/// [`Error::Unsupported`] when the criterion cannot handle the input or
-/// does not read an option that is set (see [`CriterionInfo::options`]);
-/// [`Error::Interrupted`] when the run is cancelled or out of time and the
-/// criterion has no certified partial result; [`Error::Internal`] on a bug.
-pub fn triangulate_with(
-    points: &PointSet,
+/// [`Error::Unsupported`] when the criterion cannot handle the input (a
+/// polygon for a criterion without a polygon solver:
+/// [`UnsupportedReason::NoPolygonInput`], see [`Criterion::accepts`]; an
+/// input too large for it) or does not read an option that is set (see
+/// [`CriterionInfo::options`]); [`Error::Interrupted`] when the run is
+/// cancelled or out of time and the criterion has no certified partial
+/// result; [`Error::Internal`] on a bug.
+pub fn triangulate_with<T: Triangulable>(
+    input: &T,
     criterion: Criterion,
     options: &Options,
 ) -> Result<Solution> {
-    let entry = criterion.entry();
-    check_options(criterion.name(), entry.info.options, options)?;
-    run(criterion, options, |options, phases| {
-        (entry.solve)(points, options, phases)
-    })
+    input.solve(criterion, options)
 }
 
 /// Runs one solver with `options` started now: the progress hook hears the
@@ -217,61 +280,12 @@ fn run(
     Ok(Solution::from_solved(criterion, solved, phases, &options))
 }
 
-/// Triangulates the interior of `polygon` by `criterion` with default
-/// [`Options`]. The triangulation's [`Domain`](crate::Domain) is the polygon
-/// and its indices are positions in the caller's ring.
-///
-/// ```
-/// use optri::{triangulate_polygon, Criterion, SimplePolygon};
-/// // An L-shape, listed clockwise: the chord 2-4 leaves the polygon.
-/// let l = SimplePolygon::new(&[[0.0, 0.0], [0.0, 2.0], [1.0, 2.0], [1.0, 1.0], [2.0, 1.0], [2.0, 0.0]])?;
-/// assert!(!l.is_diagonal(2, 4) && l.is_diagonal(0, 3) && l.is_diagonal(1, 3));
-/// let solution = triangulate_polygon(&l, Criterion::MinMaxArea)?;
-/// solution.triangulation.validate()?;
-/// assert_eq!(solution.triangulation.triangles().len(), 4);
-/// # Ok::<(), optri::Error>(())
-/// ```
-pub fn triangulate_polygon(polygon: &SimplePolygon, criterion: Criterion) -> Result<Solution> {
-    triangulate_polygon_with(polygon, criterion, &Options::default())
-}
-
-/// Triangulates the interior of `polygon` by `criterion` with `options`.
-///
-/// # Errors
-/// [`Error::Unsupported`] when the criterion takes no polygons
-/// ([`UnsupportedReason::NoPolygonInput`], see [`Criterion::accepts`]) or
-/// the polygon is too large for it; [`Error::Interrupted`] as
-/// [`triangulate_with`];
-/// [`Error::Internal`] on a bug.
-pub fn triangulate_polygon_with(
-    polygon: &SimplePolygon,
-    criterion: Criterion,
-    options: &Options,
-) -> Result<Solution> {
-    let entry = criterion.entry();
-    let solve = entry.solve_polygon.ok_or_else(|| Error::Unsupported {
-        criterion: criterion.name(),
-        reason: UnsupportedReason::NoPolygonInput {
-            accepted_by: Criterion::ALL
-                .iter()
-                .filter(|c| c.accepts(InputKind::SimplePolygon))
-                .map(|c| c.name())
-                .collect(),
-        },
-    })?;
-    // No criterion reads a metric on polygons yet.
-    check_options(criterion.name(), &[], options)?;
-    run(criterion, options, |options, phases| {
-        solve(polygon, options, phases)
-    })
-}
-
 /// The result of one criterion in [`compare`]: its solution, or the error
 /// with which it refused the input (e.g. [`Error::Unsupported`] for a
 /// criterion that takes no metric).
 pub type Comparison = (Criterion, Result<Solution>);
 
-/// Triangulates `points` by each of `criteria`, in the order given, or by
+/// Triangulates `input` by each of `criteria`, in the order given, or by
 /// every criterion of [`Criterion::ALL`] when `criteria` is empty. A
 /// criterion that refuses the input is reported with its error and does not
 /// stop the others, so a front end can show what each criterion says about
@@ -289,24 +303,14 @@ pub type Comparison = (Criterion, Result<Solution>);
 /// assert!(results[0].1.is_ok() && results[1].1.is_err());
 /// # Ok::<(), optri::Error>(())
 /// ```
-pub fn compare(points: &PointSet, criteria: &[Criterion], options: &Options) -> Vec<Comparison> {
-    chosen(criteria)
-        .iter()
-        .map(|&c| (c, triangulate_with(points, c, options)))
-        .collect()
-}
-
-/// [`compare`] on the interior of a simple polygon: each criterion through
-/// [`triangulate_polygon_with`] (a criterion without a polygon solver is
-/// reported with [`UnsupportedReason::NoPolygonInput`]).
-pub fn compare_polygon(
-    polygon: &SimplePolygon,
+pub fn compare<T: Triangulable>(
+    input: &T,
     criteria: &[Criterion],
     options: &Options,
 ) -> Vec<Comparison> {
     chosen(criteria)
         .iter()
-        .map(|&c| (c, triangulate_polygon_with(polygon, c, options)))
+        .map(|&c| (c, triangulate_with(input, c, options)))
         .collect()
 }
 
@@ -451,7 +455,7 @@ impl GraphKind {
 }
 
 /// A proximity graph of points that need not form a [`PointSet`]
-/// ([`graph_of_points`]).
+/// ([`graph`]).
 #[derive(Clone, Debug, PartialEq)]
 #[non_exhaustive]
 pub struct PointGraph {
@@ -465,34 +469,39 @@ pub struct PointGraph {
     pub duplicates: Vec<[u32; 2]>,
 }
 
-/// The graph `kind` of any points with at least two distinct ones: as
-/// [`graph`] when they form a [`PointSet`], and for two distinct points or
-/// points all on one line the path through them in their order along the
-/// line, for every kind. That path is the minimum spanning tree, the RNG and
-/// the Gabriel graph (consecutive points have empty lunes and diametral
-/// disks; any other pair has a point between them); it is the hull (a
-/// segment, every point on it a boundary point, listed from the
-/// lexicographically smallest end); and it is the Delaunay graph, the dual
-/// of the Voronoi diagram, whose cells are parallel strips of which only
-/// consecutive ones share an edge. Edges are sorted `[min, max]` input-index
-/// pairs, the hull's in path order.
+/// The proximity graph `kind` of `points` (any points with at least two
+/// distinct ones) with `options` (e.g. a metric: the RNG and the MST take
+/// any [`crate::kernel::Metric`], with sector candidates and exact lunes;
+/// the other graphs are Euclidean notions and refuse a non-Euclidean metric
+/// with [`UnsupportedReason::MetricNotSupported`]). Edges are input-index
+/// pairs (see [`GraphKind`] for the edge convention); duplicates are merged
+/// and reported.
+///
+/// Two distinct points, or points all on one line, give the path through
+/// them in their order along the line, for every kind. That path is the
+/// minimum spanning tree, the RNG and the Gabriel graph (consecutive points
+/// have empty lunes and diametral disks; any other pair has a point between
+/// them), under every norm too (for `a, b, c` in order on a line,
+/// `‖c − a‖ = ‖b − a‖ + ‖c − b‖` puts `b` strictly inside the lune of
+/// `ac`); it is the hull (a segment, every point on it a boundary point,
+/// listed from the lexicographically smallest end); and it is the Delaunay
+/// graph, the dual of the Voronoi diagram, whose cells are parallel strips
+/// of which only consecutive ones share an edge. Edges are sorted
+/// `[min, max]` input-index pairs, the hull's in path order.
+///
+/// ```
+/// use optri::{graph, GraphKind, Options};
+/// let points = [[0.0, 0.0], [4.0, 0.0], [0.0, 3.0], [4.0, 3.0], [2.0, 1.0]];
+/// let mst = graph(&points, GraphKind::Mst, &Options::default())?;
+/// assert_eq!(mst.edges.len(), 4);
+/// # Ok::<(), optri::Error>(())
+/// ```
 ///
 /// # Errors
 /// The coordinate errors of [`PointSet::new`]; [`Error::TooFewPointsForGraph`]
-/// for fewer than two distinct points.
-pub fn graph_of_points(points: &[crate::kernel::Point], kind: GraphKind) -> Result<PointGraph> {
-    graph_of_points_with(points, kind, &Options::default())
-}
-
-/// [`graph_of_points`] under `options` (e.g. a metric, as [`graph_with`]).
-/// On two points or a line the path is the RNG and the MST under every
-/// norm too (for `a, b, c` in order on a line, `‖c − a‖ = ‖b − a‖ + ‖c − b‖`
-/// puts `b` strictly inside the lune of `ac`); the kinds a metric does not
-/// apply to are refused as by [`graph_with`].
-///
-/// # Errors
-/// As [`graph_of_points`] and [`graph_with`].
-pub fn graph_of_points_with(
+/// for fewer than two distinct points; [`Error::Unsupported`] for a metric
+/// the kind does not take; [`Error::Interrupted`] when cancelled.
+pub fn graph(
     points: &[crate::kernel::Point],
     kind: GraphKind,
     options: &Options,
@@ -500,7 +509,7 @@ pub fn graph_of_points_with(
     check_options(kind.name(), kind.options(), options)?;
     match PointSet::new(points) {
         Ok(point_set) => {
-            let (edges, phases) = graph_with(&point_set, kind, options)?;
+            let (edges, phases) = graph_of_point_set(&point_set, kind, options)?;
             Ok(PointGraph {
                 edges,
                 phases,
@@ -558,17 +567,9 @@ fn collinear_path(points: &[crate::kernel::Point]) -> (Vec<u32>, Vec<[u32; 2]>) 
     (distinct, duplicates)
 }
 
-/// The edges of the graph `kind` of `points`, as input-index pairs (see
-/// [`GraphKind`] for the edge convention), with its timed phase.
-pub fn graph(points: &PointSet, kind: GraphKind) -> Result<(Vec<[u32; 2]>, Vec<Phase>)> {
-    graph_with(points, kind, &Options::default())
-}
-
-/// [`graph`] with lengths in `options.metric`: the RNG and the MST take any
-/// [`crate::kernel::Metric`] (sector candidates, exact lunes); the other
-/// graphs are Euclidean notions and refuse a non-Euclidean metric with
-/// [`UnsupportedReason::MetricNotSupported`].
-pub fn graph_with(
+/// The graph `kind` of a point set: its edges as input-index pairs and the
+/// timed phase (see [`graph`]).
+pub(crate) fn graph_of_point_set(
     points: &PointSet,
     kind: GraphKind,
     options: &Options,
@@ -652,7 +653,7 @@ mod tests {
         // Input order scrambled along the line y = 2x, with a duplicate.
         let line = [[2.0, 4.0], [0.0, 0.0], [3.0, 6.0], [1.0, 2.0], [0.0, 0.0]];
         for &kind in GraphKind::ALL {
-            let g = graph_of_points(&line, kind).unwrap();
+            let g = graph(&line, kind, &Options::default()).unwrap();
             assert_eq!(g.distinct, 4);
             assert_eq!(g.duplicates, [[4, 1]]);
             let expected: &[[u32; 2]] = if kind == GraphKind::Hull {
@@ -662,20 +663,34 @@ mod tests {
             };
             assert_eq!(g.edges, expected, "{kind:?}");
         }
-        let two = graph_of_points(&[[5.0, 1.0], [-1.0, 1.0]], GraphKind::Mst).unwrap();
+        let two = graph(
+            &[[5.0, 1.0], [-1.0, 1.0]],
+            GraphKind::Mst,
+            &Options::default(),
+        )
+        .unwrap();
         assert_eq!(two.edges, [[0, 1]]);
         assert_eq!(
-            graph_of_points(&[[1.0, 1.0], [1.0, 1.0]], GraphKind::Rng).unwrap_err(),
+            graph(
+                &[[1.0, 1.0], [1.0, 1.0]],
+                GraphKind::Rng,
+                &Options::default()
+            )
+            .unwrap_err(),
             Error::TooFewPointsForGraph { distinct: 1 }
         );
         // Not collinear: the ordinary graphs.
         let square = [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]];
-        let g = graph_of_points(&square, GraphKind::Mst).unwrap();
+        let g = graph(&square, GraphKind::Mst, &Options::default()).unwrap();
         assert_eq!(
             g.edges,
-            graph(&PointSet::new(&square).unwrap(), GraphKind::Mst)
-                .unwrap()
-                .0
+            graph_of_point_set(
+                &PointSet::new(&square).unwrap(),
+                GraphKind::Mst,
+                &Options::default()
+            )
+            .unwrap()
+            .0
         );
     }
 
@@ -729,7 +744,7 @@ mod tests {
         let polygon =
             SimplePolygon::new(&[[0.0, 0.0], [2.0, 0.0], [1.0, 1.0], [2.0, 2.0], [0.0, 2.0]])
                 .unwrap();
-        for (c, r) in compare_polygon(&polygon, &[], &Options::default()) {
+        for (c, r) in compare(&polygon, &[], &Options::default()) {
             let s = r.unwrap_or_else(|e| panic!("{c:?}: {e}"));
             assert_eq!(s.triangulation.triangles().len(), 3);
         }

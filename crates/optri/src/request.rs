@@ -29,8 +29,7 @@ use crate::criteria::{InputKind, Options, OPTIONS};
 use crate::error::{Error, Result};
 use crate::io::{ComparisonReport, Document, GraphReport, Input, ReadInput, TriangulationReport};
 use crate::registry::{
-    compare, compare_polygon, graph_of_points_with, triangulate_polygon_with, triangulate_with,
-    Comparison, Criterion, GraphKind, PointGraph, Solution,
+    compare, graph, triangulate_with, Comparison, Criterion, GraphKind, PointGraph, Solution,
 };
 use crate::structures::{PointSet, SimplePolygon};
 use crate::timing::Phase;
@@ -218,7 +217,7 @@ impl Request {
         let polygon = matches!(read.input, Input::Polygon(_)) && !matches!(task, Task::Graph(_));
         let t0 = Instant::now();
         let (results, domain) = if let Task::Graph(kind) = task {
-            let graph = graph_of_points_with(read.working_points(), kind, &options)?;
+            let graph = graph(read.working_points(), kind, &options)?;
             (Results::Graph { kind, graph }, None)
         } else {
             let domain = if polygon {
@@ -235,13 +234,13 @@ impl Request {
                     Results::Triangulation(Box::new(triangulate_with(p, *c, &options)?))
                 }
                 (Task::Triangulate(c), Domain::Polygon(p)) => {
-                    Results::Triangulation(Box::new(triangulate_polygon_with(p, *c, &options)?))
+                    Results::Triangulation(Box::new(triangulate_with(p, *c, &options)?))
                 }
                 (Task::Compare(cs), Domain::Points(p)) => {
                     Results::Comparison(compare(p, cs, &options))
                 }
                 (Task::Compare(cs), Domain::Polygon(p)) => {
-                    Results::Comparison(compare_polygon(p, cs, &options))
+                    Results::Comparison(compare(p, cs, &options))
                 }
                 (Task::Graph(_), _) => unreachable!("graphs are handled above"),
             };

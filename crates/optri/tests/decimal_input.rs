@@ -4,7 +4,7 @@
 //! arithmetic on the decimals, independently of the reader's scaling.
 
 use optri::io::{read, Arithmetic, InputFormat, ReadInput, ReadOptions, Source};
-use optri::{graph_of_points, triangulate, Criterion, GraphKind, PointSet};
+use optri::{graph, triangulate, Criterion, GraphKind, PointSet};
 use rand::{rngs::StdRng, Rng, SeedableRng};
 
 /// `text` read in `format` as points, with its decimal values.
@@ -91,7 +91,12 @@ fn points_collinear_as_written_stay_collinear() {
         // p + d is on the hull as written (every other point is on or to
         // the left of the line), so the hull keeps it as a vertex.
         assert!(ints.iter().all(|&q| orient(ints[0], ints[2], q) >= 0));
-        let hull = graph_of_points(read.working_points(), GraphKind::Hull).unwrap();
+        let hull = graph(
+            read.working_points(),
+            GraphKind::Hull,
+            &optri::Options::default(),
+        )
+        .unwrap();
         assert!(
             hull.edges.iter().any(|e| e[0] == 1),
             "{text}: the middle point is on the hull as written"

@@ -3,7 +3,7 @@
 //! the kernel's norm comparison against independent rational arithmetic.
 
 use optri::kernel::{Metric, Point};
-use optri::{graph_with, GraphKind, Options, PointSet};
+use optri::{graph, GraphKind, Options, PointSet};
 use optri_oracle::exact::to_rational;
 use optri_oracle::inputs::{
     collinear_runs, grid, grid_subset, integer_circle_points, lattice_points, uniform_unit_square,
@@ -96,10 +96,14 @@ fn rng_and_mst_equal_their_definitions_under_every_metric() {
             let ps = PointSet::new(pts).unwrap();
             let d = ps.points().to_vec();
             let options = Options::default().with_metric(m.clone());
-            let (got, _) = graph_with(&ps, GraphKind::Rng, &options).unwrap();
+            let got = graph(ps.input_points(), GraphKind::Rng, &options)
+                .unwrap()
+                .edges;
             let want: Vec<[u32; 2]> = ps_to_input(&ps, brute_rng(&d, &m));
             assert_eq!(got, want, "RNG under {m} on {name}");
-            let (mut got, _) = graph_with(&ps, GraphKind::Mst, &options).unwrap();
+            let mut got = graph(ps.input_points(), GraphKind::Mst, &options)
+                .unwrap()
+                .edges;
             got.sort_unstable();
             let want = ps_to_input(&ps, brute_mst(&d, &m));
             assert_eq!(got, want, "MST under {m} on {name}");

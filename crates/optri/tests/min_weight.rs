@@ -294,7 +294,13 @@ fn convex_sets_beyond_the_program_limit_are_answered_with_a_certified_bound() {
             );
         }
         let bound = s.bound.expect("a certified lower bound").value;
-        let (hull, _) = optri::graph(&ps, optri::GraphKind::Hull).unwrap();
+        let hull = optri::graph(
+            ps.input_points(),
+            optri::GraphKind::Hull,
+            &optri::Options::default(),
+        )
+        .unwrap()
+        .edges;
         let perimeter: f64 = hull
             .iter()
             .map(|&[a, b]| {

@@ -1,4 +1,4 @@
-//! Simple polygons through the registry ([`triangulate_polygon`]) and the
+//! Simple polygons through the registry ([`triangulate`]) and the
 //! area criteria on point sets, against independent references in
 //! `optri-oracle`:
 //!
@@ -26,8 +26,8 @@
 
 use optri::kernel::Point;
 use optri::{
-    maxmin_area, minmax_area, triangulate, triangulate_polygon, Criterion, Domain, Error,
-    Optimality, PointSet, SimplePolygon, UnsupportedReason,
+    maxmin_area, minmax_area, triangulate, Criterion, Domain, Error, Optimality, PointSet,
+    SimplePolygon, UnsupportedReason,
 };
 use optri_oracle::polygon as op;
 use optri_oracle::{
@@ -80,7 +80,7 @@ fn relative_eq(a: f64, b: f64) -> bool {
 /// Runs `criterion` on the polygon through the registry and checks the
 /// result's domain, validity and reported optimality; its triangles.
 fn run(polygon: &SimplePolygon, criterion: Criterion, what: &str) -> Vec<[u32; 3]> {
-    let s = triangulate_polygon(polygon, criterion)
+    let s = triangulate(polygon, criterion)
         .unwrap_or_else(|e| panic!("{what}: {} failed: {e}", criterion.name()));
     s.triangulation
         .validate()
@@ -416,9 +416,11 @@ fn every_criterion_accepts_polygons_and_limits_are_reported() {
         assert_eq!(t.len(), 2);
     }
     let mut rng = StdRng::seed_from_u64(TIMING_SEED);
-    let big: Vec<Point> = (0..optri::MAX_POLYGON_VERTICES + 1)
+    // The polygon program's documented limit (docs/algorithms.md).
+    const LIMIT: usize = 4000;
+    let big: Vec<Point> = (0..LIMIT + 1)
         .map(|k| {
-            let a = k as f64 * std::f64::consts::TAU / (optri::MAX_POLYGON_VERTICES + 1) as f64;
+            let a = k as f64 * std::f64::consts::TAU / (LIMIT + 1) as f64;
             let r = 1e6 * rng.gen_range(0.9..1.0);
             [r * a.cos(), r * a.sin()]
         })
@@ -426,9 +428,9 @@ fn every_criterion_accepts_polygons_and_limits_are_reported() {
     let big = SimplePolygon::new(&big).unwrap();
     for c in PROGRAM {
         assert!(matches!(
-            triangulate_polygon(&big, c),
+            triangulate(&big, c),
             Err(Error::Unsupported {
-                reason: UnsupportedReason::TooManyPoints { .. },
+                reason: UnsupportedReason::TooManyPoints { limit: LIMIT, .. },
                 ..
             })
         ));

@@ -4,7 +4,7 @@
 //! duplicates, huge/tiny/negative coordinates, TSPLIB files).
 
 use optri::{
-    convex_hull_edges, delaunay, gabriel_graph, minimum_spanning_tree, relative_neighborhood_graph,
+    convex_hull, delaunay, gabriel_graph, minimum_spanning_tree, relative_neighborhood_graph,
     PointSet,
 };
 use optri_oracle as oracle;
@@ -60,7 +60,7 @@ fn check(input: &[Point], checks: Checks, label: &str) -> usize {
     let ps = PointSet::new(input).unwrap_or_else(|e| panic!("{label}: {e}"));
     let pts = ps.points();
 
-    let hull = to_distinct(&ps, &convex_hull_edges(&ps));
+    let hull = to_distinct(&ps, &cycle_edges(&convex_hull(&ps)));
     assert_eq!(hull, oracle::convex_hull_edges(pts), "{label}: hull");
 
     let rng = to_distinct(&ps, &relative_neighborhood_graph(&ps).unwrap());
@@ -313,7 +313,7 @@ fn rng_two_hop_counterexample() {
     assert!(!relative_neighborhood_graph(&ps).unwrap().contains(&[0, 1]));
     assert!(!oracle::rng_edges(&input).contains(&[0, 1]));
     // ... but it is a Delaunay edge, so the test case does exercise the lune search.
-    assert!(optri::delaunay_edges(&ps).unwrap().contains(&[0, 1]));
+    assert!(optri::delaunay(&ps).unwrap().edges().contains(&[0, 1]));
 }
 
 /// Parses the `NODE_COORD_SECTION` of a TSPLIB file.
@@ -532,4 +532,11 @@ fn gabriel_graph_is_planar_and_uses_the_closed_disc() {
         checked += 1;
     }
     assert_eq!(checked, 2);
+}
+
+/// The edges `[a, b]` of a cycle of indices, in its order.
+fn cycle_edges(cycle: &[u32]) -> Vec<[u32; 2]> {
+    (0..cycle.len())
+        .map(|i| [cycle[i], cycle[(i + 1) % cycle.len()]])
+        .collect()
 }

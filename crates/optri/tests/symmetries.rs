@@ -21,9 +21,7 @@
 //! the centre), rectangles, lattice histograms full of cocircular unit
 //! squares and random star polygons.
 
-use optri::{
-    graph, triangulate, triangulate_polygon, Criterion, Error, GraphKind, PointSet, SimplePolygon,
-};
+use optri::{graph, triangulate, Criterion, Error, GraphKind, Options, PointSet, SimplePolygon};
 use optri_oracle::polygon as op;
 use optri_oracle::{constrained_delaunay_check, inputs};
 use proptest::prelude::*;
@@ -85,13 +83,16 @@ fn criterion_outcome(points: &[Point], criterion: Criterion) -> Result<Outcome, 
 
 fn graph_outcome(points: &[Point], kind: GraphKind) -> Option<Vec<[u32; 2]>> {
     let set = PointSet::new(points).ok()?;
-    graph(&set, kind).ok().map(|(mut edges, _)| {
-        if kind == GraphKind::Hull {
-            // The hull is a cycle; its starting vertex is not a symmetry.
-            edges.sort_unstable();
-        }
-        edges
-    })
+    graph(set.input_points(), kind, &Options::default())
+        .ok()
+        .map(|g| {
+            let mut edges = g.edges;
+            if kind == GraphKind::Hull {
+                // The hull is a cycle; its starting vertex is not a symmetry.
+                edges.sort_unstable();
+            }
+            edges
+        })
 }
 
 /// Everything the library computes for `points`, per criterion and graph.
@@ -348,7 +349,7 @@ fn polygon_outcome(ring: &[Point], criterion: Criterion) -> Result<Outcome, Test
         Ok(polygon) => polygon,
         Err(e) => return Ok(Outcome::Failed(std::mem::discriminant(&e))),
     };
-    let solution = match triangulate_polygon(&polygon, criterion) {
+    let solution = match triangulate(&polygon, criterion) {
         Ok(solution) => solution,
         Err(e) => return Ok(Outcome::Failed(std::mem::discriminant(&e))),
     };
@@ -480,7 +481,7 @@ fn cocircular_polygons_are_fanned_from_their_lowest_vertex() {
         for start in 0..n {
             let rotated: Vec<Point> = (0..n).map(|i| ring[(i + start) % n]).collect();
             let polygon = SimplePolygon::new(&rotated).unwrap();
-            let s = triangulate_polygon(&polygon, Criterion::Delaunay).unwrap();
+            let s = triangulate(&polygon, Criterion::Delaunay).unwrap();
             s.triangulation.validate().unwrap();
             let apex = ((lowest as usize + n - start) % n) as u32;
             assert_eq!(s.triangulation.triangles().len(), n - 2);

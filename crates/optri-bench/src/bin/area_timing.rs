@@ -13,7 +13,7 @@
 //! their growth against `n² log n`.
 
 use optri::kernel::compare_areas;
-use optri::{triangulate, triangulate_polygon, Criterion, PointSet};
+use optri::{triangulate, Criterion, PointSet};
 use optri_oracle::inputs::{convex_lens, ellipse_polygon};
 use rand::{rngs::StdRng, SeedableRng};
 use std::cmp::Ordering;
@@ -73,13 +73,13 @@ fn routes(sizes: &[usize]) {
         let m = points.len();
         let polygon = optri::SimplePolygon::new(&points).expect("a convex polygon");
         assert!(polygon.is_strictly_convex());
-        let (a, wall_a, cpu_a) = timed(|| triangulate_polygon(&polygon, Criterion::MaxMinArea));
+        let (a, wall_a, cpu_a) = timed(|| triangulate(&polygon, Criterion::MaxMinArea));
         let (b, wall_b, cpu_b) = timed(|| {
             optri::MaxMinAreaDecision::new(&polygon)
                 .expect("a strictly convex polygon")
                 .optimum()
         });
-        let (c, wall_c, cpu_c) = timed(|| triangulate_polygon(&polygon, Criterion::MinMaxArea));
+        let (c, wall_c, cpu_c) = timed(|| triangulate(&polygon, Criterion::MinMaxArea));
         let (a, c) = (
             a.expect("range-max").triangulation,
             c.expect("minmax").triangulation,

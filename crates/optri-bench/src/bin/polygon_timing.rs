@@ -1,4 +1,4 @@
-//! Times the polygon program on simple polygons ([`optri::triangulate_polygon`]
+//! Times the polygon program on simple polygons ([`optri::triangulate`]
 //! with `minmax-area`, `minmax-length` and `min-weight`): a random star
 //! (few diagonals) and a circle with one dent (vertex 0 pulled in to a
 //! reflex corner: almost every chord is a diagonal, the program's worst
@@ -8,7 +8,7 @@
 //! cargo run --release -p optri-bench --bin polygon_timing
 //! ```
 
-use optri::{triangulate_polygon, Criterion, SimplePolygon};
+use optri::{triangulate, Criterion, SimplePolygon};
 use optri_oracle::polygon::star_polygon;
 use rand::{rngs::StdRng, SeedableRng};
 
@@ -33,7 +33,7 @@ fn main() {
                 Criterion::MinWeight,
             ] {
                 let start = std::time::Instant::now();
-                let s = triangulate_polygon(&polygon, c).expect("the polygon program runs");
+                let s = triangulate(&polygon, c).expect("the polygon program runs");
                 let ms = start.elapsed().as_secs_f64() * 1e3;
                 s.triangulation.validate().expect("a triangulation");
                 let phases: Vec<String> = s

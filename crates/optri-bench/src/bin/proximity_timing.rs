@@ -71,7 +71,7 @@ fn main() {
     println!("uniform random points: n = {n}");
     let (dt, t_spade) = secs(|| optri::delaunay(&ps).unwrap());
     let (dtor, t_delaunator) = secs(|| delaunator_triangles(&points));
-    let (_, t_dt_edges) = secs(|| optri::delaunay_edges(&ps).unwrap());
+    let (_, t_dt_edges) = secs(|| optri::delaunay(&ps).unwrap().edges());
     let (rng_edges, t_rng) = secs(|| optri::relative_neighborhood_graph(&ps).unwrap());
     let (gabriel, t_gabriel) = secs(|| optri::gabriel_graph(&ps).unwrap());
     let (mst, t_mst) = secs(|| optri::minimum_spanning_tree(&ps).unwrap());

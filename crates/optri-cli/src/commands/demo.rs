@@ -104,7 +104,7 @@ pub(crate) fn run(args: DemoArgs) -> CliResult<()> {
         .filter(|c| c.accepts(InputKind::SimplePolygon))
     {
         let t0 = Instant::now();
-        let solution = optri::triangulate_polygon(&polygon, criterion)
+        let solution = optri::triangulate(&polygon, criterion)
             .map_err(|e| format!("{} on the demo polygon: {e}", criterion.name()))?;
         let ms = ms_since(t0);
         let label = report::label(criterion, solution.exact);

@@ -13,7 +13,7 @@
 //! | `min-weight` | `min_weight` | Dickerson et al. 1997 (LMT-skeleton); Klincsek 1980 |
 //! | `maxmin-area`, `minmax-area` | `area` | Vassilev 2005 |
 //!
-//! Simple polygons ([`crate::triangulate_polygon`]): every criterion has a
+//! Simple polygons ([`crate::triangulate`]): every criterion has a
 //! [`PolygonSolver`] in its own module; the decomposable ones run the shared
 //! polygon program on the polygon ([`crate::polygon_program`]).
 

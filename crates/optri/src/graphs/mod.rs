@@ -11,8 +11,10 @@ mod metric_graphs;
 mod minimum_spanning_tree;
 mod relative_neighborhood_graph;
 
-pub use convex_hull::{convex_hull, convex_hull_edges};
-pub use delaunay::{delaunay, delaunay_edges};
+pub use convex_hull::convex_hull;
+pub(crate) use convex_hull::convex_hull_edges;
+pub use delaunay::delaunay;
+pub(crate) use delaunay::delaunay_edges;
 pub use gabriel_graph::gabriel_graph;
 pub(crate) use metric_graphs::{
     minimum_spanning_tree_under, relative_neighborhood_graph_under, rng_under,

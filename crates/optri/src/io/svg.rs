@@ -409,7 +409,7 @@ mod tests {
     fn a_polygon_triangulation_draws_its_boundary() {
         let ring = [[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [1.0, 1.0], [0.0, 2.0]];
         let polygon = crate::SimplePolygon::new(&ring).unwrap();
-        let t = crate::triangulate_polygon(&polygon, crate::Criterion::MinMaxArea)
+        let t = crate::triangulate(&polygon, crate::Criterion::MinMaxArea)
             .unwrap()
             .triangulation;
         let svg = triangulation_to_svg(&t, "notch");

@@ -175,7 +175,7 @@ pub(crate) fn solve_minmax_polygon(
 }
 
 /// A triangulation of `points` (in convex position) maximising the smallest
-/// triangle area, exactly. Polygons: [`crate::triangulate_polygon`] with
+/// triangle area, exactly. Polygons: [`crate::triangulate`] with
 /// [`crate::Criterion::MaxMinArea`].
 ///
 /// Points not in convex position get the best of four approximations (see

@@ -1,4 +1,4 @@
-//! The greedy triangulation of a simple polygon ([`crate::triangulate_polygon`]
+//! The greedy triangulation of a simple polygon ([`crate::triangulate`]
 //! with `greedy`): shortest diagonal first, each kept unless it crosses one
 //! kept earlier (the definition the greedy triangulation of a point set
 //! follows; C. Levcopoulos & A. Lingas, *On approximation behavior of the

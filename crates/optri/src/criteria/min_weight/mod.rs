@@ -110,7 +110,7 @@ pub fn min_weight(points: &PointSet) -> Result<Triangulation> {
     solve(points, &Options::default(), &mut phases).map(|s| s.triangulation)
 }
 
-/// `min-weight` on a simple polygon ([`crate::triangulate_polygon`]): the
+/// `min-weight` on a simple polygon ([`crate::triangulate`]): the
 /// polygon program with the total length of the diagonals (the boundary's
 /// length is the same in every triangulation), exact sums of square roots
 /// on undecided comparisons.

@@ -254,7 +254,7 @@ impl<'a> Region<'a> {
     }
 }
 
-/// `minmax-length` on a simple polygon ([`crate::triangulate_polygon`]):
+/// `minmax-length` on a simple polygon ([`crate::triangulate`]):
 /// the polygon program with the longest diagonal as a bottleneck, compared
 /// exactly. The longest edge of a polygon triangulation is the longer of
 /// the longest boundary edge, which every triangulation has, and the
