@@ -165,3 +165,76 @@ fn the_checker_sees_imports() {
     let names: Vec<&str> = refs.iter().map(String::as_str).collect();
     assert_eq!(names, ["graphs", "kernel", "structures", "timing"]);
 }
+
+/// Every library source file with its path relative to `src/` and its text.
+fn library_files() -> Vec<(String, String)> {
+    let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
+    let mut files = Vec::new();
+    rust_files(&src, &mut files);
+    files.sort();
+    files
+        .into_iter()
+        .map(|f| {
+            let rel = f.strip_prefix(&src).unwrap().display().to_string();
+            (rel, std::fs::read_to_string(&f).unwrap())
+        })
+        .collect()
+}
+
+/// Does `text` name the external crate `name` in code (`name::`, `use name`)?
+fn names_crate(text: &str, name: &str) -> bool {
+    text.lines().any(|line| {
+        let code = line.trim_start();
+        if code.starts_with("//") {
+            return false;
+        }
+        let code = code.split("//").next().unwrap_or("");
+        code.match_indices(&format!("{name}::")).any(|(at, _)| {
+            !code[..at]
+                .chars()
+                .last()
+                .is_some_and(|c| c.is_ascii_alphanumeric() || c == '_' || c == ':')
+        })
+    })
+}
+
+/// Exact arithmetic has one home: `robust` is named in `kernel/` only, and
+/// `spade` (the Delaunay and constrained Delaunay builders) in
+/// `structures/` only.
+#[test]
+fn robust_only_in_the_kernel_and_spade_only_in_structures() {
+    let mut violations = Vec::new();
+    for (path, text) in library_files() {
+        if names_crate(&text, "robust") && !path.starts_with("kernel/") {
+            violations.push(format!("{path} names robust"));
+        }
+        if names_crate(&text, "spade") && !path.starts_with("structures/") {
+            violations.push(format!("{path} names spade"));
+        }
+    }
+    assert!(violations.is_empty(), "{}", violations.join("\n"));
+}
+
+/// No library file over 1000 lines (a `tests.rs` may be longer): a longer
+/// file holds more than one thing and splits along its module docs' seams.
+#[test]
+fn no_library_file_over_1000_lines() {
+    let long: Vec<String> = library_files()
+        .into_iter()
+        .filter(|(path, _)| !path.ends_with("tests.rs"))
+        .filter_map(|(path, text)| {
+            let lines = text.lines().count();
+            (lines > 1000).then(|| format!("{path}: {lines} lines"))
+        })
+        .collect();
+    assert!(long.is_empty(), "{}", long.join("\n"));
+}
+
+#[test]
+fn the_crate_checker_sees_paths_not_suffixes() {
+    assert!(names_crate("use spade::Triangulation;", "spade"));
+    assert!(names_crate("let o = robust::orient2d(a, b, c);", "robust"));
+    assert!(!names_crate("// spade::x", "spade"));
+    assert!(!names_crate("let x = my_spade::y;", "spade"));
+    assert!(!names_crate("use crate::structures::spade::x;", "spade"));
+}
