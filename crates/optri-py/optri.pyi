@@ -26,6 +26,8 @@ class _Stats(TypedDict):
     total_edge_length: float
     min_area: float
     max_area: float
+    smallest_triangle: List[int]
+    largest_triangle: List[int]
     min_angle_deg: float
     max_angle_deg: float
     triangles: int
@@ -128,7 +130,7 @@ class Triangulation:
     def to_json(self, pretty: bool = False) -> str:
         """The JSON document ``optri triangulate --json`` prints."""
     def write(self, path: _StrPath) -> List[Path]:
-        """Writes .json, .svg, .geojson or .ele (+ .node); returns the paths."""
+        """Writes .json, .svg, .geojson, .ele or .edge (+ .node); returns the paths."""
 
 def triangulate(points: _ArrayLike, criterion: str = "delaunay", **options: Any) -> Triangulation:
     """Triangulates the convex hull of an (n, 2) point array by ``criterion``.

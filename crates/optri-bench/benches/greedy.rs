@@ -1,7 +1,7 @@
 //! Criterion benchmarks of the greedy triangulation: uniform and clustered
 //! points (general algorithm, beside the Delaunay triangulation of the same
 //! set), a convex lens (convex algorithm) and a parabola (semicircular
-//! algorithm); issue 15's cliff families: a fan, a circle sampled with
+//! algorithm); the inputs that once made it quadratic: a fan, a circle sampled with
 //! cos/sin and points at random angles on a circle.
 //!
 //! `cargo bench -p optri --bench greedy`; the 10⁶-point figures come from
@@ -67,7 +67,7 @@ fn greedy(c: &mut Criterion) {
         &ps,
         |b, ps| b.iter(|| greedy_triangulation(ps).unwrap()),
     );
-    // Issue 15's cliffs (minutes each before the fix).
+    // Inputs that once took minutes each (long equal-length runs, cocircular points).
     let ps = point_set(fan(100_000));
     group.bench_with_input(BenchmarkId::new("fan", 100_000), &ps, |b, ps| {
         b.iter(|| greedy_triangulation(ps).unwrap())

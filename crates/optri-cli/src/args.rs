@@ -174,7 +174,7 @@ impl RunArgs {
 /// `optri criteria`.
 #[derive(Args)]
 pub(crate) struct CriteriaArgs {
-    /// Print the registry listing document (the same JSON as Python's `optri.criteria()` and
+    /// Print the registry listing document (the same JSON as Python's `optri.registry()` and
     /// the web API's `GET /api/criteria`; see docs/json-schema.md) instead of the table.
     #[arg(long)]
     pub json: bool,

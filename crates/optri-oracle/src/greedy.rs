@@ -39,7 +39,7 @@
 //!   in the cells along the candidate. They only change the running time.
 //!
 //! Nothing here is shared with optri; within the oracle it shares only the
-//! integer decomposition and polynomial helpers of [`crate::exact`].
+//! integer decomposition and polynomial functions of [`crate::exact`].
 
 use crate::exact::{cross, dist2, dot, scale, Point, Ring, Scaled};
 use std::cmp::Ordering;

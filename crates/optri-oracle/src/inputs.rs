@@ -254,7 +254,8 @@ pub fn perturbed_circle(rng: &mut StdRng, n: usize, jitter: f64) -> Vec<Point> {
 /// The regular `n`-gon of radius `r` as a user would sample it: `(r cos
 /// 2πi/n, r sin 2πi/n)` in `f64`. Nearly cocircular (exactly so only where
 /// rounding allows), equal side lengths up to rounding; convex position or
-/// not, strictly or not, as rounding decides. Issue 15's circle cliff.
+/// not, strictly or not, as rounding decides. Long runs of equal lengths
+/// once made the greedy triangulation quadratic here.
 pub fn sampled_circle(n: usize, r: f64) -> Vec<Point> {
     (0..n)
         .map(|i| {
@@ -265,8 +266,8 @@ pub fn sampled_circle(n: usize, r: f64) -> Vec<Point> {
 }
 
 /// A fan: `(i, 0)` for `0 ≤ i < n`, then the apex `(⌊n/2⌋, 1)`. All points
-/// but one are collinear, so it has exactly one triangulation. Issue 15's
-/// fan cliff.
+/// but one are collinear, so it has exactly one triangulation; its many
+/// equal lengths once made the greedy triangulation quadratic.
 pub fn fan(n: usize) -> Vec<Point> {
     let mut pts: Vec<Point> = (0..n).map(|i| [i as f64, 0.0]).collect();
     pts.push([(n / 2) as f64, 1.0]);

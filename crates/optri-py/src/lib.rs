@@ -169,9 +169,10 @@ fn triangulation_of(py: Python<'_>, outcome: Outcome) -> PyResult<Triangulation>
 ///
 /// Raises ValueError with the library's message for NaN or infinite
 /// coordinates, a wrong shape, fewer than 3 distinct points, all points
-/// collinear, an unknown criterion or option, an input the criterion does
-/// not support, or a run stopped by its time limit; TypeError for an option
-/// value that is neither a string nor a number.
+/// collinear, an unknown criterion or option, or an input the criterion
+/// does not support; TypeError for an option value that is neither a string
+/// nor a number; TimeoutError for a run stopped by its time limit;
+/// KeyboardInterrupt on Ctrl-C (the run is cancelled).
 #[pyfunction]
 #[pyo3(signature = (points, criterion = "delaunay", **options))]
 fn triangulate(

@@ -22,7 +22,7 @@
 //! |---|---|---|
 //! | 0 | [`kernel`] | exact predicates, the symbolic tie-break, lunes, correctly rounded reporting measures |
 //! | — | `error`, `timing`, `parallel` | [`Error`], [`Phase`], the rayon shim |
-//! | 1 | `spatial` | coordinate-only helpers: bounding box, Z-order, hull cycle |
+//! | 1 | `spatial` | coordinate-only functions: bounding box, Z-order, hull cycle |
 //! | 2 | `structures` | [`PointSet`], [`SimplePolygon`], [`Triangulation`] and its [`Domain`], Delaunay adjacency, planar graph |
 //! | 3 | `graphs` | [`delaunay`], [`convex_hull`], [`relative_neighborhood_graph`], [`gabriel_graph`], [`minimum_spanning_tree`] |
 //! | 4 | `polygon_program` | Klincsek's polygon dynamic program over an objective |

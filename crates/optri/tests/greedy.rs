@@ -563,7 +563,7 @@ fn criterion_registry_reports_the_algorithm_and_total_length() {
     );
 }
 
-/// The issue's scale for the convex-position algorithms: at n = 10⁴ the
+/// The convex-position algorithms at scale: at n = 10⁴ the
 /// convex and semicircular algorithms equal the general one edge for edge
 /// (no oracle here: it would dominate the run).
 #[test]
@@ -625,7 +625,8 @@ fn a_cluster_below_the_grid_resolution() {
 /// A map of the plane (for moving a test input around).
 type PointMap = fn(Point) -> Point;
 
-/// Issue 15's cliff families, small, edge for edge against the oracle:
+/// The inputs that once made the greedy triangulation quadratic, small,
+/// edge for edge against the oracle:
 /// fans (every orientation, apex anywhere, duplicates), collinear runs with
 /// several apexes, circles sampled with cos/sin (regular polygons, with and
 /// without the centre, at several radii and offsets), perturbed circles and
@@ -737,7 +738,7 @@ fn square_boundary(k: usize) -> Vec<Point> {
         .collect()
 }
 
-/// Issue 15's degenerate families for the general algorithm, small, edge for
+/// Degenerate families for the general algorithm, small, edge for
 /// edge against the oracle: boundaries of squares and rectangles (sides
 /// along the axes and the diagonals, huge and negative coordinates, with
 /// interior points), collinear runs cut into several chains on one line and
@@ -745,7 +746,7 @@ fn square_boundary(k: usize) -> Vec<Point> {
 /// per line), two concentric sampled circles, a grid's rows with apexes,
 /// heavy duplicates and a cluster far below the bounding box's resolution.
 #[test]
-fn degenerate_families_of_issue_15_match_the_oracle() {
+fn degenerate_families_match_the_oracle() {
     let mut rng = StdRng::seed_from_u64(SEED_DEGENERATE_FAMILIES);
     let mut tally = Tally::default();
     let maps: [(&str, PointMap); 4] = [
@@ -867,7 +868,7 @@ fn subdivided_polygon(corners: &[Point], per_side: &[usize], m: usize) -> Vec<Po
     pts
 }
 
-/// Issue 15's weakly convex inputs (all points on the hull boundary, some on
+/// Weakly convex inputs (all points on the hull boundary, some on
 /// hull edges), edge for edge against the oracle, asserting that the
 /// dispatcher ran the convex algorithm: triangles, squares, rectangles and
 /// random lattice polygons with 1–50 points per side, regular integer
@@ -1056,7 +1057,7 @@ fn strict_hull_corners(points: &[Point]) -> Vec<Point> {
     hull
 }
 
-/// Issue 15's clusters far below the bounding box's resolution, small, edge
+/// Clusters far below the bounding box's resolution, small, edge
 /// for edge against the oracle: a tiny cluster plus two far points at
 /// several scales (below the grids' former 2⁻³⁰ cells, near and below their
 /// 2⁻⁶² cells, next to the origin), nested clusters at three scales,

@@ -517,7 +517,7 @@ fn cross_dot_int(o: IntPoint, a: IntPoint, b: IntPoint) -> (i128, i128) {
     (ux * vy - uy * vx, ux * vx + uy * vy)
 }
 
-/// The definition: `u·v ≤ 0` or `4(u·v)² ≤ 3|u|²|v|²` (the brief's form, not
+/// The definition: `u·v ≤ 0` or `4(u·v)² ≤ 3|u|²|v|²` (the textbook form, not
 /// the kernel's `3(u×v)² ≥ (u·v)²`).
 fn at_least_30_int(o: IntPoint, a: IntPoint, b: IntPoint) -> bool {
     let (_, d) = cross_dot_int(o, a, b);

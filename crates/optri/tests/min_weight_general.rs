@@ -343,7 +343,7 @@ fn odd_wheels_beyond_the_skeleton_equal_an_independent_reference() {
     );
 }
 
-/// Issue 12: the odd wheels 2k + 1 = 27…61 (rim radius 1000) with the
+/// The odd wheels 2k + 1 = 27…61 (rim radius 1000) with the
 /// centre and off-centre stay one face with an inner point after the
 /// LMT-skeleton; the plain search and the root certificate run out on the
 /// larger ones, and the branch and bound over the face program decides them

@@ -34,7 +34,7 @@ const SEED_DEFAULT: u64 = 1204;
 const SEED_SWEEP: u64 = 1205;
 const SEED_COCIRCULAR: u64 = 1206;
 
-/// The families of the issue; each draws a set of about 40–60 points.
+/// The input families; each draws a set of about 40–60 points.
 #[derive(Clone, Copy, Debug)]
 enum Family {
     Uniform,
@@ -316,7 +316,7 @@ const SMALLEST_COCIRCULAR_WITH_CENTRE: [[i32; 2]; 24] = [
     [-16, 63], [-33, -56], [56, -33], [-52, 39], [-56, -33], [56, 33], [-65, 0], [0, 0],
 ];
 
-/// Issue 12: with the centre added, a cocircular set of 24 or more points
+/// With the centre added, a cocircular set of 24 or more points
 /// stays one face with an inner point after the LMT-skeleton; the plain
 /// front search runs out of its budget on it. The triangle program's
 /// certificate (reduced-cost pricing of the search) decides the smallest
@@ -339,7 +339,7 @@ fn smallest_cocircular_set_with_its_centre_equals_the_integer_program() {
     assert!(tally.unproven.is_empty());
 }
 
-/// Issue 12: drawn sets of 40–60 points of x² + y² = 325² with the origin
+/// Drawn sets of 40–60 points of x² + y² = 325² with the origin
 /// (one face with an inner point after the LMT-skeleton). Before the branch
 /// and bound over the face program, the sets of 54 and 57 points stayed
 /// `exact: false` (root gap W − L about 6). The oracle's relaxation is

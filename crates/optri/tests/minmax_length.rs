@@ -538,8 +538,9 @@ fn oracle_exhaustive_enumeration_agrees() {
 }
 
 /// The oracle's Klincsek program on the faces of its own hull ∪ RNG(S)
-/// (the unperturbed, strict-lune RNG; literature.md §a reports this forced
-/// subgraph keeps the optimum): an independent cubic reference.
+/// (the unperturbed, strict-lune RNG, which some minmax triangulation
+/// contains: Edelsbrunner & Tan 1991, §4, Subgraph Theorem): an independent
+/// cubic reference.
 fn oracle_cubic(points: &[Point]) -> optri_oracle::BigRational {
     let ps = PointSet::new(points).unwrap();
     let p = ps.points();
@@ -592,7 +593,7 @@ fn oracle_cubic_reference_agrees_on_small_tsplib_files() {
 }
 
 /// Convex position, where one complete rng-polygon holds (nearly) all points
-/// and §6 runs on per-pair bit tables (issue 15): regular polygons
+/// and §6 runs on per-pair bit tables: regular polygons
 /// (cocircular, every length repeated), near-cocircular and random convex
 /// sets, with duplicated points and collinear points on hull edges, against
 /// the oracle's exhaustive enumeration (n ≤ 9) and its cubic program.

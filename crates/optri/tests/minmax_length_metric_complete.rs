@@ -1,6 +1,6 @@
 //! Minmax-length under normed metrics on *complete* regions (Edelsbrunner &
-//! Tan 1991, §5.3/§6 run under §7's metrics; issue 11, "convex position
-//! stays O(n²)"): points in convex position, where the RNG of the hull is
+//! Tan 1991, §5.3/§6 run under §7's metrics, so convex position stays
+//! O(n²)): points in convex position, where the RNG of the hull is
 //! one or a few complete rng-polygons. The quadratic algorithm (forced on
 //! every region, and the product) against independent references:
 //! exhaustive enumeration of all triangulations with the oracle's own exact

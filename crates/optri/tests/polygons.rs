@@ -380,7 +380,7 @@ fn larger_polygons_match_klincsek() {
     );
 }
 
-/// SPOJ MMINMAX's polygon (brief §5): minmax area 9 and maxmin area 5.5,
+/// SPOJ MMINMAX's polygon (the judge's sample): minmax area 9 and maxmin area 5.5,
 /// doubled 18 and 11.
 #[test]
 fn the_mminmax_fixture() {

@@ -257,8 +257,8 @@ fn huge_tiny_and_negative_coordinates() {
     check(&mixed, ALL, "mixed magnitudes");
 }
 
-/// `shared/notes/literature.md` §a: testing only Delaunay neighbours of p
-/// and q misses the lune point r = (13, 12) of the hull edge pq.
+/// A counterexample to the 1-hop lune test: testing only Delaunay
+/// neighbours of p and q misses the lune point r = (13, 12) of the hull edge pq.
 #[test]
 fn rng_one_hop_counterexample() {
     let input: Vec<Point> = [
@@ -284,8 +284,8 @@ fn rng_one_hop_counterexample() {
     );
 }
 
-/// `shared/notes/literature.md` §a: the only lune point of pq is 3 Delaunay
-/// hops away, so a 2-hop test also fails.
+/// A counterexample to the 2-hop lune test: the only lune point of pq is 3
+/// Delaunay hops away, so a 2-hop test also fails.
 #[test]
 fn rng_two_hop_counterexample() {
     let input: Vec<Point> = [

@@ -1,4 +1,4 @@
-//! Exact symmetries change nothing (issue 14, item 3): scaling every
+//! Exact symmetries change nothing: scaling every
 //! coordinate by a power of two, translating by an amount that keeps every
 //! coordinate exact, and the number of rayon threads give the *same*
 //! triangles (as sets of input-index triples) for every criterion of

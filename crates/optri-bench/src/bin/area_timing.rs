@@ -128,7 +128,7 @@ fn main() {
         let ps = PointSet::new(&points).unwrap();
         if mode == "search" {
             // The second MaxMin route: sort the table's values, binary-search
-            // them with Algorithm 49's O(n²) decision (brief §2.5).
+            // them with Algorithm 49's O(n²) decision.
             let ring: Vec<[f64; 2]> = optri::convex_hull(&ps)
                 .iter()
                 .map(|&i| ps.input_points()[i as usize])

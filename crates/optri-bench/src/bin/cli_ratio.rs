@@ -1,7 +1,7 @@
 //! Whole runs of the `optri` command line (read, solve, write the JSON
 //! document) on the same files, a baseline criterion against others,
 //! alternated so that a slow spell of the machine hits both: the protocol
-//! of issue 15's speed targets (figures in BENCHMARKS.md).
+//! of the speed targets in BENCHMARKS.md.
 //!
 //! ```text
 //! cargo build --release -p optri-cli -p optri-bench

@@ -9,19 +9,19 @@
 //! `clustered N`: N points in N/1000 square clusters (at least 20) with
 //! random centres and sizes over two orders of magnitude.
 //! `gaussian-clusters N`: N points in N/1000 Gaussian clusters (at least
-//! 20) with centres uniform in the unit square and σ = 0.005 (issue 15's
-//! clustered input; `clustered` is the older square one).
+//! 20) with centres uniform in the unit square and σ = 0.005 (the
+//! clustered input of BENCHMARKS.md; `clustered` is the older square one).
 //! `uniform-integer N`: `uniform` rounded to six decimals and scaled by
 //! 10⁶, i.e. the integers the CLI computes on for a file of six-decimal
 //! points (equal lengths are common there; `uniform` has practically none).
-//! `fan N`: `(i, 0)` for `i < N` plus the apex `(N/2, 1)` (issue 15).
+//! `fan N`: `(i, 0)` for `i < N` plus the apex `(N/2, 1)`.
 //! `circle N`: the regular N-gon of radius 1000 sampled with cos/sin.
 //! `random-circle N`: N points at random angles on that circle (rounded to
 //! `f64`, convex position as rounding decides).
 //! `perturbed-circle N`: the regular N-gon on the unit circle with radii
-//! jittered by up to 10⁻⁹ (issue 15's perturbed convex points: convex
+//! jittered by up to 10⁻⁹ (perturbed convex points: convex
 //! position while the jitter stays below the sagitta, 5·10⁻⁸ at N = 10⁴).
-//! Issue 15's degenerate families (`cliff_family`): `run2apex N` (a run of
+//! Degenerate families (`cliff_family`): `run2apex N` (a run of
 //! N − 2 integer points with apexes on both sides), `square N` (the boundary
 //! of a square, N/4 integer points a side), `tiny-cluster N` (N points in a
 //! 10⁻⁹ box plus two far points), `duplicates N` (N points, 100 distinct),
@@ -33,7 +33,7 @@
 //! others).
 //! `cocircular N`: in one process, GT of `circle N`, `random-circle N` and
 //! `2N`, `convex N` and `2N`, `perturbed-circle N` and `2N`, with the
-//! issue-15 ratios; each set runs `REPEAT` times (default 5, alternating
+//! ratios of BENCHMARKS.md; each set runs `REPEAT` times (default 5, alternating
 //! with the others) and its fastest run counts.
 //! With `WRITE_POINTS=FILE` the points are written to `FILE` with six
 //! decimals (the input of whole CLI runs) instead of timed.
@@ -56,7 +56,7 @@ const SEED: u64 = 2024;
 const PERTURBATION: f64 = 1e-9;
 
 /// The standard deviation of `gaussian-clusters` (centres in the unit
-/// square), issue 15's example value: with 1000 clusters of 1000 points a
+/// square): with 1000 clusters of 1000 points a
 /// cluster's core is 6.4 times as dense as uniform points (peak density
 /// `1000 / (2πσ²)`), its tails reach its neighbours (mean nearest-centre
 /// distance about 3σ), and much of the square stays empty.
@@ -82,7 +82,7 @@ fn time_gt(pts: &[[f64; 2]]) -> (f64, String) {
     (s, algorithm.to_string())
 }
 
-/// Issue 15's cocircular figures, all from one process.
+/// The cocircular figures of BENCHMARKS.md, all from one process.
 fn cocircular(n: usize) {
     let mut rng = StdRng::seed_from_u64(SEED);
     let random_n = circle_at_random_angles(&mut rng, n, 1000.0);
@@ -230,7 +230,7 @@ fn main() {
     }
 }
 
-/// Issue 15's degenerate families by name (module docs), `None` for other
+/// The degenerate families by name (module docs), `None` for other
 /// names.
 fn cliff_family(mode: &str, n: usize) -> Option<Vec<[f64; 2]>> {
     let mut rng = StdRng::seed_from_u64(SEED);

@@ -1,6 +1,6 @@
 //! The registry listing document (`"document": "criteria"`): every
 //! criterion, graph, option, input format and quality measure optri offers,
-//! as `optri criteria --json`, Python's `optri.criteria()` and the web API's
+//! as `optri criteria --json`, Python's `optri.registry()` and the web API's
 //! `GET /api/criteria` all return it (one function, so the three cannot
 //! differ). `docs/json-schema.md` lists its fields.
 

@@ -191,7 +191,7 @@ mod tests {
 
     #[test]
     fn every_shared_tsplib_file_reads_with_its_dimension() {
-        // (file, DIMENSION) from shared/data/tsplib/README.md.
+        // (file, DIMENSION) from the data folder's tsplib/README.md.
         let expected = [
             ("berlin52", 52),
             ("kroA100", 100),

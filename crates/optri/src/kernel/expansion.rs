@@ -2,7 +2,7 @@
 //!
 //! An *expansion* is a sum of `f64` components that are non-overlapping and
 //! sorted by increasing magnitude, so its sign is the sign of its last
-//! non-zero component. The `robust` crate keeps these helpers private, so the
+//! non-zero component. The `robust` crate keeps these routines private, so the
 //! few we need for exact length and area comparisons live here.
 //!
 //! Exactness requires that no intermediate result overflows or underflows;

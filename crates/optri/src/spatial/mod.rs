@@ -1,4 +1,4 @@
-//! Layer 1: coordinate-only helpers — bounding boxes, the Z-order numbering,
+//! Layer 1: coordinate-only functions — bounding boxes, the Z-order numbering,
 //! the convex hull cycle, grids of cells, segments sorted by length. No
 //! topology; they import only the kernel (and the rayon shim).
 
