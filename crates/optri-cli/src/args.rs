@@ -143,7 +143,7 @@ pub(crate) struct CompareArgs {
 /// `triangulate`, `graph` and `compare`.
 #[derive(Args)]
 pub(crate) struct RunArgs {
-    /// Norm for lengths: euclidean | l1 | linf | lp:P (integer P ≥ 1) |
+    /// Norm for lengths: euclidean | l1 | linf | lp:P (integer 1 ≤ P ≤ 64) |
     /// polygon:x1,y1,x2,y2,... (a centrally symmetric convex unit polygon). Taken by
     /// minmax-length, and by the rng and mst graphs (`optri criteria` lists what takes it).
     #[arg(long, default_value = "euclidean", value_name = "METRIC")]

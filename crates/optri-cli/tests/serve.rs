@@ -893,6 +893,7 @@ fn limits_that_overflow_or_make_no_sense_are_refused_at_start() {
         ("--time-limit", "1e300", "invalid --time-limit 1e300"),
         ("--read-timeout", "0", "invalid --read-timeout 0"),
         ("--max-running", "0", "invalid --max-running 0"),
+        ("--time-limit", "0", "invalid --time-limit 0"),
     ] {
         let out = Command::new(BIN)
             .args(["serve", "--port", "0", &format!("{option}={value}")])

@@ -202,7 +202,7 @@ impl Request {
     ///
     /// # Errors
     /// The input errors of [`PointSet::new`] and [`SimplePolygon::new`]
-    /// (for a graph: of [`graph_of_points_with`]), and for a single
+    /// (for a graph: of [`graph`]), and for a single
     /// criterion or a graph its refusal ([`Error::Unsupported`],
     /// [`Error::Interrupted`]). A comparison reports each criterion's
     /// refusal in its result instead.

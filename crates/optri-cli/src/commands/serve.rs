@@ -88,10 +88,14 @@ fn limits(args: &ServeArgs) -> CliResult<Limits> {
     if read_timeout.is_zero() {
         return Err("invalid --read-timeout 0: a client needs some time to send".to_string());
     }
+    let time_limit = seconds("--time-limit", args.time_limit)?;
+    if time_limit.is_zero() {
+        return Err("invalid --time-limit 0: every request would be over it".to_string());
+    }
     Ok(Limits {
         max_body_bytes,
         max_points: args.max_points,
-        time_limit: seconds("--time-limit", args.time_limit)?,
+        time_limit,
         max_running: args.max_running,
         read_timeout,
     })

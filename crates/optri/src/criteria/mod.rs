@@ -135,7 +135,7 @@ pub const OPTIONS: &[OptionInfo] = &[
     OptionInfo {
         name: "metric",
         description: "the norm lengths are measured in",
-        values: "euclidean | l1 | linf | lp:P (integer P >= 1) | polygon:x1,y1,x2,y2,... \
+        values: "euclidean | l1 | linf | lp:P (integer 1 <= P <= 64) | polygon:x1,y1,x2,y2,... \
                  (a centrally symmetric convex unit polygon, counter-clockwise)",
         default: "euclidean",
         every_run: false,

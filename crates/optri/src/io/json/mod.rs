@@ -345,7 +345,7 @@ impl<'a> GraphReport<'a> {
     /// The document of the graph `kind` of `points` (input order) with
     /// `distinct` distinct points and the merged `duplicates` (`[dropped,
     /// kept]`), for inputs that are no [`PointSet`] (two points, or all
-    /// collinear: see [`crate::graph_of_points`]).
+    /// collinear: see [`crate::graph`]).
     pub fn of_points(
         points: &'a [Point],
         kind: GraphKind,
