@@ -184,8 +184,16 @@ pub(crate) fn graph_summary(run: &Run, written: &[PathBuf]) -> String {
         run.read().scale_exponent(),
         optri::kernel::metrics::Rounding::Nearest,
     );
+    // Under a norm the edges were chosen by metric lengths; the total
+    // reported stays Euclidean, and says so.
+    let metric = &run.outcome.options().metric;
+    let length = if metric.is_euclidean() {
+        "total length".to_string()
+    } else {
+        format!("total Euclidean length (edges chosen under {})", metric.name())
+    };
     let mut text = format!(
-        "graph: {}\npoints: {} input, {} distinct{}\nedges: {}, total length {}\n{}time: {}\n",
+        "graph: {}\npoints: {} input, {} distinct{}\nedges: {}, {length} {}\n{}time: {}\n",
         kind.name(),
         coordinates.len(),
         graph.distinct,
