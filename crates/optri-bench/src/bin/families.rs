@@ -18,6 +18,7 @@
 
 use optri::{Criterion, Error, InputKind, Options, PointSet, SimplePolygon};
 use optri_bench::families::{family, generate, Shape, FAMILIES};
+use optri_bench::peak_rss_kb;
 use std::io::Read;
 use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
@@ -229,7 +230,7 @@ fn child(args: &[String]) {
     };
     let secs = start.elapsed().as_secs_f64();
     match result {
-        Ok(()) => println!("done {secs} {} {distinct}", peak_kb()),
+        Ok(()) => println!("done {secs} {} {distinct}", peak_rss_kb().unwrap_or(0)),
         Err(Error::Interrupted(_)) => println!("limit"),
         Err(Error::Unsupported { reason, .. }) => {
             // The reason's name: `TooManyPoints { .. }` prints `TooManyPoints`.
@@ -244,16 +245,4 @@ fn child(args: &[String]) {
         }
         Err(e) => println!("refused error: {e}"),
     }
-}
-
-/// The process's peak resident set size in kB (`VmHWM`), 0 if unknown.
-fn peak_kb() -> u64 {
-    std::fs::read_to_string("/proc/self/status")
-        .ok()
-        .and_then(|s| {
-            s.lines()
-                .find(|l| l.starts_with("VmHWM:"))
-                .and_then(|l| l.split_whitespace().nth(1)?.parse().ok())
-        })
-        .unwrap_or(0)
 }

@@ -4,6 +4,7 @@
 //! degenerate sets.
 
 use super::*;
+use optri_oracle::inputs::{grid, integer_circle_points};
 use rand::{rngs::StdRng, Rng, SeedableRng};
 
 /// The graph built from spade's bulk load, the construction the randomized
@@ -50,30 +51,6 @@ fn shuffled(mut points: Vec<Point>, seed: u64) -> Vec<Point> {
     points
 }
 
-fn grid(side: i32) -> Vec<Point> {
-    (0..side * side)
-        .map(|i| [f64::from(i % side), f64::from(i / side)])
-        .collect()
-}
-
-/// The 180 integer points on the circle `x² + y² = 5525²`.
-fn lattice_circle() -> Vec<Point> {
-    let r: i64 = 5525;
-    let mut points = Vec::new();
-    for x in -r..=r {
-        let y2 = r * r - x * x;
-        let y = (y2 as f64).sqrt().round() as i64;
-        if y * y == y2 {
-            points.push([x as f64, y as f64]);
-            if y != 0 {
-                points.push([x as f64, -y as f64]);
-            }
-        }
-    }
-    assert_eq!(points.len(), 180);
-    points
-}
-
 fn parabola(half: i32) -> Vec<Point> {
     (-half..=half)
         .map(|x| [f64::from(x), f64::from(x * x)])
@@ -83,14 +60,19 @@ fn parabola(half: i32) -> Vec<Point> {
 #[test]
 fn grids_agree() {
     for side in [2, 3, 7, 25] {
-        assert_same_both_ways("grid", &grid(side));
-        assert_same_both_ways("shuffled grid", &shuffled(grid(side), side as u64));
+        assert_same_both_ways("grid", &grid(side, side, 1.0));
+        assert_same_both_ways(
+            "shuffled grid",
+            &shuffled(grid(side, side, 1.0), side as u64),
+        );
     }
 }
 
 #[test]
 fn cocircular_sets_agree() {
-    let circle = lattice_circle();
+    // The 180 integer points on the circle x² + y² = 5525².
+    let circle = integer_circle_points(5525);
+    assert_eq!(circle.len(), 180);
     assert_same_both_ways("circle", &circle);
     assert_same_both_ways("shuffled circle", &shuffled(circle.clone(), 1));
     // The centre and the points of a smaller concentric lattice circle
