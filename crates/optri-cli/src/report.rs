@@ -190,7 +190,10 @@ pub(crate) fn graph_summary(run: &Run, written: &[PathBuf]) -> String {
     let length = if metric.is_euclidean() {
         "total length".to_string()
     } else {
-        format!("total Euclidean length (edges chosen under {})", metric.name())
+        format!(
+            "total Euclidean length (edges chosen under {})",
+            metric.name()
+        )
     };
     let mut text = format!(
         "graph: {}\npoints: {} input, {} distinct{}\nedges: {}, {length} {}\n{}time: {}\n",

@@ -14,6 +14,7 @@
 
 use optri::kernel::compare_areas;
 use optri::{triangulate, Criterion, PointSet};
+use optri_bench::peak_rss_kb;
 use optri_oracle::inputs::{convex_lens, ellipse_polygon};
 use rand::{rngs::StdRng, SeedableRng};
 use std::cmp::Ordering;
@@ -26,17 +27,6 @@ fn secs<T>(f: impl FnOnce() -> T) -> (T, f64) {
     let start = Instant::now();
     let out = f();
     (out, start.elapsed().as_secs_f64())
-}
-
-fn peak_rss_kb() -> String {
-    std::fs::read_to_string("/proc/self/status")
-        .ok()
-        .and_then(|s| {
-            s.lines()
-                .find(|l| l.starts_with("VmHWM"))
-                .map(|l| l.split_whitespace().nth(1).unwrap_or("?").to_string())
-        })
-        .unwrap_or_else(|| "?".into())
 }
 
 fn median(mut v: Vec<f64>) -> f64 {
@@ -138,7 +128,10 @@ fn main() {
                 secs(|| optri::MaxMinAreaDecision::new(&polygon).unwrap().optimum());
             t.validate().unwrap();
             println!("n={n} maxmin-area by sort-and-search: {secs_search:.3} s");
-            println!("  peak RSS so far: {} kB", peak_rss_kb());
+            println!(
+                "  peak RSS so far: {} kB",
+                peak_rss_kb().map_or("?".to_string(), |kb| kb.to_string())
+            );
             continue;
         }
         for (criterion, maxmin) in [
@@ -194,6 +187,9 @@ fn main() {
                 println!("n={n} {}: algorithm 44 {product:.3?} s", criterion.name());
             }
         }
-        println!("  peak RSS so far: {} kB", peak_rss_kb());
+        println!(
+            "  peak RSS so far: {} kB",
+            peak_rss_kb().map_or("?".to_string(), |kb| kb.to_string())
+        );
     }
 }

@@ -62,16 +62,6 @@ const PERTURBATION: f64 = 1e-9;
 /// distance about 3σ), and much of the square stays empty.
 const GAUSSIAN_SIGMA: f64 = 0.005;
 
-fn peak_rss_mib() -> f64 {
-    let status = std::fs::read_to_string("/proc/self/status").unwrap_or_default();
-    status
-        .lines()
-        .find(|l| l.starts_with("VmHWM:"))
-        .and_then(|l| l.split_whitespace().nth(1))
-        .and_then(|kb| kb.parse::<f64>().ok())
-        .map_or(f64::NAN, |kb| kb / 1024.0)
-}
-
 /// Seconds for one GT of `pts`, and the algorithm that ran.
 fn time_gt(pts: &[[f64; 2]]) -> (f64, String) {
     let ps = PointSet::new(pts).expect("valid points");
@@ -179,11 +169,11 @@ fn main() {
         return;
     }
     let ps = PointSet::new(&pts).expect("valid points");
-    let rss_before = peak_rss_mib();
+    let rss_before = optri_bench::peak_rss_kb().map_or(f64::NAN, |kb| kb as f64 / 1024.0);
     let start = Instant::now();
     let solution = triangulate(&ps, Criterion::Greedy).expect("greedy");
     let gt_s = start.elapsed().as_secs_f64();
-    let rss_gt = peak_rss_mib();
+    let rss_gt = optri_bench::peak_rss_kb().map_or(f64::NAN, |kb| kb as f64 / 1024.0);
     let t = &solution.triangulation;
     let total = t.stats().total_edge_length;
     let algorithm = solution.algorithm.split(':').next().unwrap_or_default();

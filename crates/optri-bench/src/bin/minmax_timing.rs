@@ -40,17 +40,6 @@ fn secs<T>(f: impl FnOnce() -> T) -> (T, f64) {
     (out, t.elapsed().as_secs_f64())
 }
 
-fn peak_memory() -> String {
-    std::fs::read_to_string("/proc/self/status")
-        .ok()
-        .and_then(|s| {
-            s.lines()
-                .find(|l| l.starts_with("VmHWM"))
-                .map(str::to_string)
-        })
-        .unwrap_or_else(|| "VmHWM unavailable".into())
-}
-
 /// A run's diagnostics (see `optri::minmax_length`'s module docs) as
 /// `name=value` pairs.
 fn counters(d: &Diagnostics) -> String {
@@ -179,5 +168,10 @@ fn main() {
         }
         _ => eprintln!("modes: uniform N | tsp FILE... | convex N... | cubic N... | cutoff N c..."),
     }
-    println!("peak memory: {}", peak_memory());
+    println!(
+        "peak memory: {}",
+        optri_bench::peak_rss_kb().map_or("VmHWM unavailable".to_string(), |kb| format!(
+            "VmHWM: {kb} kB"
+        ))
+    );
 }

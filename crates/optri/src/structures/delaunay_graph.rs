@@ -1,21 +1,32 @@
 //! The Delaunay triangulation of distinct points as plain arrays: triangles,
 //! undirected edges with their two apexes, CSR vertex adjacency and (on
-//! request) triangle adjacency. Built by the `spade` crate (exact predicates,
-//! O(n log n) bulk loading; chosen over delaunator, whose in-circle test is
-//! not exact — see BENCHMARKS.md). Every consumer in optri is correct for
+//! request) triangle adjacency. Built by the `spade` crate (exact predicates;
+//! chosen over delaunator, whose in-circle test is not exact — see
+//! BENCHMARKS.md), inserting the points one by one in a biased randomized
+//! insertion order ([`brio_order`]: N. Amenta, S. Choi and G. Rote,
+//! *Incremental constructions con BRIO*, SoCG 2003), so the expected time is
+//! O(n log n) on every input. spade's bulk load is a circle sweep whose work
+//! depends on the input: quadratic on points in convex position (10⁵ points
+//! on a parabola took 96 s) and on points on two crossing lines.
+//!
+//! Every consumer in optri is correct for
 //! any Delaunay completion of cocircular points, but the answers must not
-//! depend on how spade happened to build it (its bulk load makes rounding-
-//! and scale-dependent choices), so the graph is made canonical: faces of
+//! depend on how spade happened to build it (the completion it reaches
+//! depends on the insertion order), so the graph is made canonical: faces of
 //! four or more cocircular points are fanned from their smallest index (the
 //! regular triangulation of an infinitesimal lifting perturbation, see
 //! `fan_cocircular_faces`), triangles are numbered in sorted order and edges
 //! in the order the triangles meet them. The graph is then a function of the
 //! points and their numbering alone: the same under exact scaling by powers
-//! of two, exact translations and any thread count.
+//! of two, exact translations and any thread count, and whatever the
+//! insertion order.
 
 use crate::error::{Error, Result};
 use crate::kernel::{incircle_sign, Point};
-use spade::{DelaunayTriangulation, HasPosition, Point2, Triangulation as _};
+use crate::spatial::brio_order;
+use spade::{
+    DelaunayTriangulation, HasPosition, LastUsedVertexHintGenerator, Point2, Triangulation as _,
+};
 
 /// A point handed to spade with its index, so that every triangle read back
 /// names its corners by the caller's numbering.
@@ -94,7 +105,18 @@ impl DelaunayGraph {
 }
 
 fn build(points: &[Point], with_topology: bool) -> Result<DelaunayGraph> {
-    let (mut triangles, mut neighbours) = spade_triangles(points)?;
+    let (triangles, neighbours) = spade_triangles(points)?;
+    Ok(from_triangles(points, triangles, neighbours, with_topology))
+}
+
+/// The canonical graph of any Delaunay triangulation of `points` given as
+/// triangles and, per side, the triangle across it.
+fn from_triangles(
+    points: &[Point],
+    mut triangles: Vec<[u32; 3]>,
+    mut neighbours: Vec<[u32; 3]>,
+    with_topology: bool,
+) -> DelaunayGraph {
     fan_cocircular_faces(points, &mut triangles, &mut neighbours, |_, _| false);
     canonical_order(&mut triangles, &mut neighbours);
     // Edges in the order their first triangle meets them: side `j` of `t`
@@ -153,13 +175,13 @@ fn build(points: &[Point], with_topology: bool) -> Result<DelaunayGraph> {
         topology.neighbours = neighbours;
         topology.sides = sides;
     }
-    Ok(DelaunayGraph {
+    DelaunayGraph {
         triangles,
         edges,
         offsets,
         adjacency,
         topology,
-    })
+    }
 }
 
 /// The side of triangle `u` whose neighbour is `t`.
@@ -178,20 +200,36 @@ fn side_towards(neighbours: &[[u32; 3]], u: u32, t: u32) -> usize {
 
 /// spade's Delaunay triangles (counter-clockwise, distinct indices) and,
 /// per side `j` (corner `j` to corner `j + 1`), the triangle across it.
-/// spade's own structure is dropped before returning.
+/// The points are inserted in [`brio_order`], each located by a walk from
+/// the last one inserted (close in the Z-order of its round). spade's own
+/// structure is dropped before returning.
 #[allow(clippy::type_complexity)]
 fn spade_triangles(points: &[Point]) -> Result<(Vec<[u32; 3]>, Vec<[u32; 3]>)> {
-    let dt: DelaunayTriangulation<Vertex> =
-        DelaunayTriangulation::bulk_load(Vertex::numbered(points))
-            .map_err(|e| Error::Internal(format!("spade's Delaunay bulk load failed: {e:?}")))?;
-    if dt.num_vertices() != points.len() {
+    let mut dt: DelaunayTriangulation<Vertex, (), (), (), LastUsedVertexHintGenerator> =
+        DelaunayTriangulation::with_capacity(points.len(), 3 * points.len(), 2 * points.len());
+    for v in brio_order(points) {
+        let p = points[v as usize];
+        dt.insert(Vertex {
+            position: Point2::new(p[0], p[1]),
+            id: v,
+        })
+        .map_err(|e| Error::Internal(format!("spade's Delaunay insertion failed: {e:?}")))?;
+    }
+    kept_every_point(&dt, points.len())?;
+    Ok(triangle_arrays(&dt))
+}
+
+/// An error unless spade's triangulation `dt` holds all `n` points (it
+/// merges equal ones).
+fn kept_every_point<T: spade::Triangulation>(dt: &T, n: usize) -> Result<()> {
+    if dt.num_vertices() != n {
         return Err(Error::Internal(format!(
             "spade's Delaunay triangulation kept {} of {} distinct points",
             dt.num_vertices(),
-            points.len()
+            n
         )));
     }
-    Ok(triangle_arrays(&dt))
+    Ok(())
 }
 
 /// The inner triangles of a spade triangulation (Delaunay or constrained)
@@ -380,3 +418,6 @@ pub(super) fn canonical_order(triangles: &mut Vec<[u32; 3]>, neighbours: &mut Ve
     *triangles = new_triangles;
     *neighbours = new_neighbours;
 }
+
+#[cfg(test)]
+mod tests;
