@@ -6,23 +6,30 @@
 //! edge, the atomic triangle states, the local-minimality test and the
 //! parallel loop.
 
-use super::{too_many_points, Skeleton};
+use super::{loop_bytes, too_many_points, Limits, Skeleton};
 use crate::kernel::{compare_lengths, orient_sign, Point};
 use crate::parallel::prelude::*;
 use crate::spatial::PointCells;
 use std::cmp::Ordering;
-use std::sync::atomic::{AtomicBool, AtomicU8, Ordering::SeqCst};
+use std::sync::atomic::{AtomicBool, AtomicU8, AtomicUsize, Ordering::Relaxed, Ordering::SeqCst};
+
+/// Edges between two reads of the stop in the parallel passes (a check is
+/// an atomic load and a clock read; an edge's pass costs far more).
+const STOP_CADENCE: usize = 256;
 
 /// Builds the candidate triangles of the skeleton's edges and their lists
 /// per edge, runs the LMT loop (`loop_chunk` edges per parallel task) and
 /// keeps the empty triangles whose three edges are left; `grid` is
-/// [`point_grid`](super::super::point_grid) of `pts`.
+/// [`point_grid`](super::super::point_grid) of `pts`. Returns the bytes
+/// needed, with nothing allocated, when the triangles' count puts
+/// [`loop_bytes`] over `limits.bytes` (the count stops as soon as it does).
 pub(super) fn run(
     pts: &[Point],
     grid: &PointCells,
     skeleton: &mut Skeleton,
     loop_chunk: usize,
-) -> crate::error::Result<()> {
+    limits: Limits,
+) -> crate::error::Result<Option<usize>> {
     let (n, m) = (pts.len(), skeleton.edges.len());
     // Triangles u < v < w of candidate edges, each found from its edge
     // (u, v): the common neighbours w > v of u and v, by merging their
@@ -31,17 +38,37 @@ pub(super) fn run(
     // Counted first, then written in place: collecting them in one pass
     // (rayon's list of growing vectors) held about twice the final array at
     // the phase's peak.
+    // The count stops once the running total is over the budget (points
+    // in nearly convex position: Θ(n³) triangles, whose count alone would
+    // take minutes) or the run must stop.
     let sk = &*skeleton;
+    let counted = AtomicUsize::new(0);
+    let refused = AtomicBool::new(false);
+    let over = |total: usize| loop_bytes(total, m) > limits.bytes;
     let counts: Vec<u32> = (0..m as u32)
         .into_par_iter()
         .with_min_len(256)
         .map(|e| {
+            if refused.load(Relaxed)
+                || (e as usize % STOP_CADENCE == 0 && limits.stop.reason().is_some())
+            {
+                refused.store(true, Relaxed);
+                return 0;
+            }
             let mut count = 0;
             triangles_of_edge(pts, sk, e, |_| count += 1);
+            if over(counted.fetch_add(count as usize, Relaxed) + count as usize) {
+                refused.store(true, Relaxed);
+            }
             count
         })
         .collect();
-    let total: usize = counts.iter().map(|&c| c as usize).sum();
+    limits.stop.check()?;
+    let total = counted.into_inner();
+    if refused.into_inner() {
+        // Over the budget: at least this much (the count stopped early).
+        return Ok(Some(loop_bytes(total, m)));
+    }
     // Triangle ids and the per-edge lists' offsets (three entries a
     // triangle) are `u32`.
     if total > u32::MAX as usize / 3 {
@@ -145,7 +172,8 @@ pub(super) fn run(
     skeleton.tri_list = tri_list;
     // The loop needs no crossings; certainty does, among the survivors only
     // (far fewer and shorter than the filter's candidates).
-    let state = run_lmt_loop(pts, grid, skeleton, loop_chunk);
+    let state = run_lmt_loop(pts, grid, skeleton, loop_chunk, limits.stop);
+    limits.stop.check()?;
     // The per-edge triangle lists served the loop alone: freed before the
     // kept triangles are collected (the phase's peak).
     skeleton.tri_offsets = Vec::new();
@@ -172,7 +200,7 @@ pub(super) fn run(
     drop(state);
     skeleton.triangles = kept;
     skeleton.loop_triangles = Vec::new();
-    Ok(())
+    Ok(None)
 }
 
 /// Does the closed triangle `abc` (counter-clockwise) contain a point other
@@ -322,21 +350,39 @@ fn valid_triangle(
     bits == TriangleState::EMPTY
 }
 
+/// Scratch space of [`locally_minimal`], reused from edge to edge.
+#[derive(Default)]
+struct Scratch {
+    /// The right side's apexes, found when first needed.
+    apexes: Vec<Option<Point>>,
+    /// Far-first order: the sides' triangles not yet invalid with their
+    /// apexes, by decreasing distance from the edge's line.
+    left: Vec<(f64, u32, Point)>,
+    right: Vec<(f64, u32, Point)>,
+}
+
+/// Pairs of triangles of an edge beyond which [`locally_minimal`] tries
+/// the apexes far from the edge first.
+const FAR_FIRST_PAIRS: usize = 256;
+
 /// Is `e` locally minimal for some pair of valid triangles? The pair's
 /// shape (not a strictly convex quadrilateral, or `e` not longer than the
 /// other diagonal) is tested first, emptiness only for a pair that passes.
-/// `apexes` is scratch space for the right side's apexes.
 fn locally_minimal(
     pts: &[Point],
     grid: &PointCells,
     sk: &Skeleton,
     state: &TriangleState,
     e: u32,
-    apexes: &mut Vec<Option<Point>>,
+    scratch: &mut Scratch,
 ) -> bool {
     let [u, v] = sk.edges[e as usize];
     let (left, right) = sk.sides(e);
     let apex = |t: u32| pts[apex_of(sk.loop_triangles[t as usize], u, v) as usize];
+    if left.len() * right.len() > FAR_FIRST_PAIRS {
+        return locally_minimal_far_first(pts, grid, sk, state, e, scratch);
+    }
+    let apexes = &mut scratch.apexes;
     // The right apexes are found once each, when first needed (the first
     // pairs usually decide).
     apexes.clear();
@@ -361,6 +407,55 @@ fn locally_minimal(
             }
             if !valid_triangle(pts, grid, sk, state, tl) {
                 break; // tl holds a point: no pair with it
+            }
+            if valid_triangle(pts, grid, sk, state, tr) {
+                return true;
+            }
+        }
+    }
+    false
+}
+
+/// [`locally_minimal`] for an edge with many triangles on both sides (points
+/// in nearly convex position: Θ(n) each, and a witness is a pair whose
+/// other diagonal is at least as long, rare among near pairs): the same
+/// test over the same pairs, the apexes farthest from the edge's line
+/// first, whose diagonal is longest. The order only decides how soon a
+/// witness is found (the heights are rounded; they decide nothing).
+fn locally_minimal_far_first(
+    pts: &[Point],
+    grid: &PointCells,
+    sk: &Skeleton,
+    state: &TriangleState,
+    e: u32,
+    scratch: &mut Scratch,
+) -> bool {
+    let [u, v] = sk.edges[e as usize];
+    let (left, right) = sk.sides(e);
+    let (a, b) = (pts[u as usize], pts[v as usize]);
+    let far_first = |side: &[u32], out: &mut Vec<(f64, u32, Point)>| {
+        out.clear();
+        out.extend(side.iter().filter(|&&t| !state.invalid(t)).map(|&t| {
+            let r = pts[apex_of(sk.loop_triangles[t as usize], u, v) as usize];
+            let height = ((b[0] - a[0]) * (r[1] - a[1]) - (b[1] - a[1]) * (r[0] - a[0])).abs();
+            (height, t, r)
+        }));
+        out.sort_unstable_by(|x, y| y.0.total_cmp(&x.0));
+    };
+    far_first(left, &mut scratch.left);
+    far_first(right, &mut scratch.right);
+    for &(_, tl, r) in &scratch.left {
+        for &(_, tr, s) in &scratch.right {
+            if state.invalid(tr) {
+                continue;
+            }
+            if compare_lengths(a, b, r, s) == Ordering::Greater
+                && crosses_from_both_sides(a, b, r, s)
+            {
+                continue;
+            }
+            if !valid_triangle(pts, grid, sk, state, tl) {
+                break; // tl holds a point (or died): no pair with it
             }
             if valid_triangle(pts, grid, sk, state, tr) {
                 return true;
@@ -403,11 +498,15 @@ pub(crate) const LOOP_CHUNK: usize = 1024;
 ///   was clear and the killer queues it, or the flag was still set and the
 ///   edge's pending test clears it after the death and reads the triangle
 ///   dead. So when all tasks are done, every edge left is locally minimal.
+///
+/// When `stop` says so, the tasks not yet started return at once and the
+/// states are incomplete (the caller checks `stop` and drops them).
 fn run_lmt_loop(
     pts: &[Point],
     grid: &PointCells,
     sk: &mut Skeleton,
     chunk: usize,
+    stop: &crate::interrupt::Stop,
 ) -> TriangleState {
     let chunk = chunk.max(1);
     let m = sk.edges.len();
@@ -416,11 +515,11 @@ fn run_lmt_loop(
         |value: bool| -> Vec<AtomicBool> { (0..m).map(|_| AtomicBool::new(value)).collect() };
     let (alive, queued) = (flags(true), flags(true));
     let skr = &*sk;
-    let process = |e: u32, apexes: &mut Vec<Option<Point>>, stack: &mut Vec<u32>| {
+    let process = |e: u32, scratch: &mut Scratch, stack: &mut Vec<u32>| {
         queued[e as usize].store(false, SeqCst);
         if !alive[e as usize].load(SeqCst)
             || skr.hull[e as usize]
-            || locally_minimal(pts, grid, skr, &state, e, apexes)
+            || locally_minimal(pts, grid, skr, &state, e, scratch)
         {
             return;
         }
@@ -445,12 +544,17 @@ fn run_lmt_loop(
             }
         }
     };
+    let stopped = AtomicBool::new(false);
     (0..m.div_ceil(chunk)).into_par_iter().for_each(|k| {
-        let (mut apexes, mut stack) = (Vec::new(), Vec::new());
+        if stopped.load(Relaxed) || stop.reason().is_some() {
+            stopped.store(true, Relaxed);
+            return;
+        }
+        let (mut scratch, mut stack) = (Scratch::default(), Vec::new());
         for e in k * chunk..m.min(k.saturating_add(1).saturating_mul(chunk)) {
-            process(e as u32, &mut apexes, &mut stack);
+            process(e as u32, &mut scratch, &mut stack);
             while let Some(f) = stack.pop() {
-                process(f, &mut apexes, &mut stack);
+                process(f, &mut scratch, &mut stack);
             }
         }
     });
