@@ -10,10 +10,10 @@
 //!    within a proven relative error of the true one, and sums are widened by
 //!    one ulp per addition (directed rounding by `next_down`/`next_up`), so
 //!    disjoint intervals decide the comparison.
-//! 1½. **Terms at fixed point** ([`refine_terms`]): each root bounded by
-//!    `⌊√(D·4^p)⌋` and one more at a few small precisions `p`, one integer
-//!    square root a term; near-ties (sums that differ beyond the intervals'
-//!    reach, as rounded coordinates make them) end here.
+//!    Then **terms at fixed point** ([`refine_terms`]): each root bounded
+//!    by `⌊√(D·4^p)⌋` and one more at a few small precisions `p`, one
+//!    integer square root a term; near-ties (sums that differ beyond the
+//!    intervals' reach, as rounded coordinates make them) end here.
 //! 2. **Exact zero test.** Terms are grouped into classes whose squared
 //!    lengths differ by a rational square factor (`DᵢDⱼ` a perfect square:
 //!    same square-free part). Within a class `√Dᵢ = ⌊√(DᵢR)⌋/√R` exactly for

@@ -107,7 +107,6 @@ pub(crate) fn solve(
         watch.lap("min-weight");
         return Ok(solved);
     }
-    drop(watch);
     let bounds = Bounds {
         fronts: FRONT_BUDGET,
         bytes: skeleton::default_budget(pts.len()),
@@ -484,7 +483,7 @@ pub(crate) fn general_min_weight_within(
     };
     let sk = match skeleton::z_order_skeleton(pts, &grid, candidates, skeleton::LOOP_CHUNK, limits)?
     {
-        skeleton::Built::Skeleton(sk) => sk,
+        skeleton::Built::Skeleton(sk) => *sk,
         skeleton::Built::OverBudget { bytes } => {
             drop(grid);
             watch.lap("lmt skeleton");

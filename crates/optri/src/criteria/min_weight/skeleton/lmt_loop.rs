@@ -50,7 +50,7 @@ pub(super) fn run(
         .with_min_len(256)
         .map(|e| {
             if refused.load(Relaxed)
-                || (e as usize % STOP_CADENCE == 0 && limits.stop.reason().is_some())
+                || ((e as usize).is_multiple_of(STOP_CADENCE) && limits.stop.reason().is_some())
             {
                 refused.store(true, Relaxed);
                 return 0;
@@ -350,39 +350,21 @@ fn valid_triangle(
     bits == TriangleState::EMPTY
 }
 
-/// Scratch space of [`locally_minimal`], reused from edge to edge.
-#[derive(Default)]
-struct Scratch {
-    /// The right side's apexes, found when first needed.
-    apexes: Vec<Option<Point>>,
-    /// Far-first order: the sides' triangles not yet invalid with their
-    /// apexes, by decreasing distance from the edge's line.
-    left: Vec<(f64, u32, Point)>,
-    right: Vec<(f64, u32, Point)>,
-}
-
-/// Pairs of triangles of an edge beyond which [`locally_minimal`] tries
-/// the apexes far from the edge first.
-const FAR_FIRST_PAIRS: usize = 256;
-
 /// Is `e` locally minimal for some pair of valid triangles? The pair's
 /// shape (not a strictly convex quadrilateral, or `e` not longer than the
 /// other diagonal) is tested first, emptiness only for a pair that passes.
+/// `apexes` is scratch space for the right side's apexes.
 fn locally_minimal(
     pts: &[Point],
     grid: &PointCells,
     sk: &Skeleton,
     state: &TriangleState,
     e: u32,
-    scratch: &mut Scratch,
+    apexes: &mut Vec<Option<Point>>,
 ) -> bool {
     let [u, v] = sk.edges[e as usize];
     let (left, right) = sk.sides(e);
     let apex = |t: u32| pts[apex_of(sk.loop_triangles[t as usize], u, v) as usize];
-    if left.len() * right.len() > FAR_FIRST_PAIRS {
-        return locally_minimal_far_first(pts, grid, sk, state, e, scratch);
-    }
-    let apexes = &mut scratch.apexes;
     // The right apexes are found once each, when first needed (the first
     // pairs usually decide).
     apexes.clear();
@@ -407,55 +389,6 @@ fn locally_minimal(
             }
             if !valid_triangle(pts, grid, sk, state, tl) {
                 break; // tl holds a point: no pair with it
-            }
-            if valid_triangle(pts, grid, sk, state, tr) {
-                return true;
-            }
-        }
-    }
-    false
-}
-
-/// [`locally_minimal`] for an edge with many triangles on both sides (points
-/// in nearly convex position: Θ(n) each, and a witness is a pair whose
-/// other diagonal is at least as long, rare among near pairs): the same
-/// test over the same pairs, the apexes farthest from the edge's line
-/// first, whose diagonal is longest. The order only decides how soon a
-/// witness is found (the heights are rounded; they decide nothing).
-fn locally_minimal_far_first(
-    pts: &[Point],
-    grid: &PointCells,
-    sk: &Skeleton,
-    state: &TriangleState,
-    e: u32,
-    scratch: &mut Scratch,
-) -> bool {
-    let [u, v] = sk.edges[e as usize];
-    let (left, right) = sk.sides(e);
-    let (a, b) = (pts[u as usize], pts[v as usize]);
-    let far_first = |side: &[u32], out: &mut Vec<(f64, u32, Point)>| {
-        out.clear();
-        out.extend(side.iter().filter(|&&t| !state.invalid(t)).map(|&t| {
-            let r = pts[apex_of(sk.loop_triangles[t as usize], u, v) as usize];
-            let height = ((b[0] - a[0]) * (r[1] - a[1]) - (b[1] - a[1]) * (r[0] - a[0])).abs();
-            (height, t, r)
-        }));
-        out.sort_unstable_by(|x, y| y.0.total_cmp(&x.0));
-    };
-    far_first(left, &mut scratch.left);
-    far_first(right, &mut scratch.right);
-    for &(_, tl, r) in &scratch.left {
-        for &(_, tr, s) in &scratch.right {
-            if state.invalid(tr) {
-                continue;
-            }
-            if compare_lengths(a, b, r, s) == Ordering::Greater
-                && crosses_from_both_sides(a, b, r, s)
-            {
-                continue;
-            }
-            if !valid_triangle(pts, grid, sk, state, tl) {
-                break; // tl holds a point (or died): no pair with it
             }
             if valid_triangle(pts, grid, sk, state, tr) {
                 return true;
@@ -515,11 +448,11 @@ fn run_lmt_loop(
         |value: bool| -> Vec<AtomicBool> { (0..m).map(|_| AtomicBool::new(value)).collect() };
     let (alive, queued) = (flags(true), flags(true));
     let skr = &*sk;
-    let process = |e: u32, scratch: &mut Scratch, stack: &mut Vec<u32>| {
+    let process = |e: u32, apexes: &mut Vec<Option<Point>>, stack: &mut Vec<u32>| {
         queued[e as usize].store(false, SeqCst);
         if !alive[e as usize].load(SeqCst)
             || skr.hull[e as usize]
-            || locally_minimal(pts, grid, skr, &state, e, scratch)
+            || locally_minimal(pts, grid, skr, &state, e, apexes)
         {
             return;
         }
@@ -550,11 +483,11 @@ fn run_lmt_loop(
             stopped.store(true, Relaxed);
             return;
         }
-        let (mut scratch, mut stack) = (Scratch::default(), Vec::new());
+        let (mut apexes, mut stack) = (Vec::new(), Vec::new());
         for e in k * chunk..m.min(k.saturating_add(1).saturating_mul(chunk)) {
-            process(e as u32, &mut scratch, &mut stack);
+            process(e as u32, &mut apexes, &mut stack);
             while let Some(f) = stack.pop() {
-                process(f, &mut scratch, &mut stack);
+                process(f, &mut apexes, &mut stack);
             }
         }
     });

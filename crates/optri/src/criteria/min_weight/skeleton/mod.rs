@@ -100,7 +100,7 @@ pub(crate) fn loop_bytes(triangles: usize, edges: usize) -> usize {
 /// The skeleton, or the bytes its construction would have needed beyond
 /// the budget (nothing of that size allocated).
 pub(crate) enum Built {
-    Skeleton(Skeleton),
+    Skeleton(Box<Skeleton>),
     OverBudget { bytes: usize },
 }
 
@@ -252,7 +252,7 @@ pub(crate) fn lmt_skeleton_in_chunks(
             stop: &Stop::default(),
         };
         match z_order_skeleton(&z_pts, &grid, z_edges, loop_chunk, limits)? {
-            Built::Skeleton(z) => z,
+            Built::Skeleton(z) => *z,
             Built::OverBudget { .. } => unreachable!("no budget"),
         }
     };
@@ -369,5 +369,5 @@ pub(crate) fn z_order_skeleton(
     }
     limits.stop.check()?;
     skeleton.certain = certain::certain_edges(pts, &skeleton);
-    Ok(Built::Skeleton(skeleton))
+    Ok(Built::Skeleton(Box::new(skeleton)))
 }
