@@ -10,7 +10,7 @@
 //!    within a proven relative error of the true one, and sums are widened by
 //!    one ulp per addition (directed rounding by `next_down`/`next_up`), so
 //!    disjoint intervals decide the comparison.
-//!    Then **terms at fixed point** ([`refine_terms`]): each root bounded
+//!    Then **terms at fixed point** (`refine_terms`): each root bounded
 //!    by `⌊√(D·4^p)⌋` and one more at a few small precisions `p`, one
 //!    integer square root a term; near-ties (sums that differ beyond the
 //!    intervals' reach, as rounded coordinates make them) end here.
