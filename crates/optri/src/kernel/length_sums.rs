@@ -10,6 +10,10 @@
 //!    within a proven relative error of the true one, and sums are widened by
 //!    one ulp per addition (directed rounding by `next_down`/`next_up`), so
 //!    disjoint intervals decide the comparison.
+//!    Then **terms at fixed point** (`refine_terms`): each root bounded
+//!    by `⌊√(D·4^p)⌋` and one more at a few small precisions `p`, one
+//!    integer square root a term; near-ties (sums that differ beyond the
+//!    intervals' reach, as rounded coordinates make them) end here.
 //! 2. **Exact zero test.** Terms are grouped into classes whose squared
 //!    lengths differ by a rational square factor (`DᵢDⱼ` a perfect square:
 //!    same square-free part). Within a class `√Dᵢ = ⌊√(DᵢR)⌋/√R` exactly for
@@ -144,7 +148,48 @@ pub fn compare_length_sums_exactly(a: &[[Point; 2]], b: &[[Point; 2]]) -> Orderi
     if terms.is_empty() {
         return Ordering::Equal;
     }
+    if let Some(o) = refine_terms(&terms) {
+        return o;
+    }
     compare_signed_root_sum(&mut terms)
+}
+
+/// Precisions (fractional bits of every term's fixed-point root) of the
+/// refinement before the zero test, each pass four times the last.
+const TERM_PRECISIONS: [u64; 3] = [0, 32, 128];
+
+/// Stage 1½: the sign of `Σ sᵢ√Dᵢ` from fixed-point bounds of each term,
+/// `⌊√(Dᵢ·4^p)⌋ ≤ 2^p√Dᵢ < ⌊√(Dᵢ·4^p)⌋ + 1`, at the precisions of
+/// [`TERM_PRECISIONS`]; `None` if none excludes zero. One integer square
+/// root a term and pass, where the zero test costs one per term and class
+/// (quadratic in the number of terms when every radicand has its own
+/// square-free part, as sums of the diagonals of a polygon do). The `Dᵢ`
+/// are scaled to integers by the smallest exponent of the coordinates, so
+/// already `p = 0` resolves their lengths to about a unit in the last
+/// place of the smallest coordinate: near-ties from rounded coordinates
+/// (a polygon made with `cos`/`sin`) are decided here, exact ties go on to
+/// the zero test.
+fn refine_terms(terms: &[(BigUint, i32)]) -> Option<Ordering> {
+    for p in TERM_PRECISIONS {
+        let (mut lo, mut hi) = (BigInt::zero(), BigInt::zero());
+        for (d, s) in terms {
+            let root = BigInt::from_biguint(Sign::Plus, (d << (2 * p)).sqrt());
+            if *s > 0 {
+                hi += &root + 1u32;
+                lo += root;
+            } else {
+                lo -= &root + 1u32;
+                hi -= root;
+            }
+        }
+        if lo.is_positive() {
+            return Some(Ordering::Greater);
+        }
+        if hi.is_negative() {
+            return Some(Ordering::Less);
+        }
+    }
+    None
 }
 
 /// The sorted multisets `a` and `b` without the values they share: equal
@@ -415,6 +460,54 @@ mod tests {
         assert_eq!(both(&a, &lo), Ordering::Greater);
         assert_eq!(both(&a, &hi), Ordering::Less);
         assert_ne!(got, Ordering::Equal);
+    }
+
+    #[test]
+    fn terms_at_fixed_point_agree_with_the_zero_test_and_refinement() {
+        // Radicands near N² (near-ties of growing closeness), exact ties and
+        // mixed classes: when the fixed-point pass decides, it agrees with
+        // the exact stages on their own, and it never decides an exact tie.
+        let big = |v: u128| BigUint::from(v);
+        let (n, far) = (1u128 << 40, 1u128 << 60);
+        let cases: Vec<Vec<(BigUint, i32)>> = vec![
+            vec![
+                (big(far * far + 25), 1),
+                (big(far * far), 1),
+                (big(far * far + 9), -1),
+                (big(far * far + 16), -1),
+            ],
+            vec![(big(2), 1), (big(8), 1), (big(18), -1)],
+            vec![(big(2), 1), (big(5), 1), (big(13), -1)],
+            vec![(big(3), 1), (big(7), -1), (big(5), 1), (big(6), -1)],
+            vec![(big(n), 1), (big(n + 1), -1)],
+            vec![
+                (big(45 * 45 * 2), 1),
+                (big(2), -1),
+                (big(8), -1),
+                (big(2 * 36 * 36), -1),
+            ],
+        ];
+        let mut decided = 0;
+        for terms in cases {
+            let exact = compare_signed_root_sum(&mut terms.clone());
+            let flipped: Vec<(BigUint, i32)> = terms.iter().map(|(d, s)| (d.clone(), -s)).collect();
+            assert_eq!(
+                compare_signed_root_sum(&mut flipped.clone()),
+                exact.reverse()
+            );
+            if let Some(o) = refine_terms(&terms) {
+                assert_eq!(o, exact);
+                assert_ne!(o, Ordering::Equal);
+                assert_eq!(refine_terms(&flipped), Some(o.reverse()));
+                decided += 1;
+            } else {
+                assert_eq!(refine_terms(&flipped), None);
+            }
+        }
+        // The near-tie at N = 2⁶⁰ (a difference of 36/N³, about 2⁻¹⁷⁵)
+        // needs more than the passes' precision and the exact tie goes on to
+        // the zero test; √N − √(N + 1) needs the second pass.
+        assert_eq!(decided, 4);
     }
 
     #[test]

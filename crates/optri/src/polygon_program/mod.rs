@@ -180,8 +180,28 @@ pub(crate) fn optimal_triangulation<O: Objective>(
     is_triangle: impl Fn(usize, usize, usize) -> bool,
     objective: &O,
 ) -> Option<Triangulated<O::Value>> {
+    let never = crate::interrupt::Stop::default();
+    optimal_triangulation_until(k, is_diagonal, is_triangle, objective, &never)
+        .expect("a default stop never stops")
+}
+
+/// Sub-problems between two reads of the stop (each costs up to `k` splits).
+const STOP_CADENCE: usize = 64;
+
+/// [`optimal_triangulation`] that reads `stop` every [`STOP_CADENCE`]
+/// sub-problems.
+///
+/// # Errors
+/// [`crate::Error::Interrupted`] when `stop` says so.
+pub(crate) fn optimal_triangulation_until<O: Objective>(
+    k: usize,
+    is_diagonal: impl Fn(usize, usize) -> bool,
+    is_triangle: impl Fn(usize, usize, usize) -> bool,
+    objective: &O,
+    stop: &crate::interrupt::Stop,
+) -> crate::error::Result<Option<Triangulated<O::Value>>> {
     if k < 3 {
-        return None;
+        return Ok(None);
     }
     // A cell per chord (i, j), i < j: the best value of sub-problem (i, j)
     // and its split corner. The inner loop walks row i (cells (i, m)) and
@@ -203,6 +223,9 @@ pub(crate) fn optimal_triangulation<O: Objective>(
     };
     for gap in 2..k {
         for i in 0..k - gap {
+            if i % STOP_CADENCE == 0 {
+                stop.check()?;
+            }
             let j = i + gap;
             let closes_polygon = i == 0 && j == k - 1;
             if !closes_polygon && !is_diagonal(i, j) {
@@ -265,17 +288,17 @@ pub(crate) fn optimal_triangulation<O: Objective>(
         }
         let m = cells[at(i, j)].1;
         if m == INFEASIBLE {
-            return None;
+            return Ok(None);
         }
         let m = m as usize;
         triangles.push([i, m, j]);
         stack.push((i, m));
         stack.push((m, j));
     }
-    Some(Triangulated {
+    Ok(Some(Triangulated {
         triangles,
         value: cells[at(0, k - 1)].0,
-    })
+    }))
 }
 
 #[cfg(test)]

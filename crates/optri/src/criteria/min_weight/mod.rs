@@ -37,9 +37,12 @@ use super::{
     BoundMeasure, CertifiedBound, CriterionEntry, CriterionInfo, Diagnostics, Optimality, Options,
     Solved,
 };
-use crate::error::{Error, Result};
+use crate::error::{Error, Interruption, Result};
+use crate::interrupt::Stop;
 use crate::kernel::{compare_length_sums, orient_sign, LengthInterval, Point};
-use crate::polygon_program::{corner_point, on_simple_polygon, optimal_triangulation, Objective};
+use crate::polygon_program::{
+    corner_point, on_simple_polygon, optimal_triangulation_until, Objective,
+};
 use crate::spatial::{bounding_box, convex_hull_cycle, PointCells};
 use crate::structures::{PointSet, SimplePolygon, Triangulation};
 use crate::timing::{Phase, Stopwatch};
@@ -61,34 +64,69 @@ pub(crate) const INFO: CriterionInfo = CriterionInfo {
     reference: "G. T. Klincsek 1980; Dickerson, Keil & Montague 1997; Drysdale, McElfresh & Snoeyink 2001; A. Haas 2018",
 };
 
-pub(crate) fn solve(points: &PointSet, _: &Options, phases: &mut Vec<Phase>) -> Result<Solved> {
+pub(crate) fn solve(
+    points: &PointSet,
+    options: &Options,
+    phases: &mut Vec<Phase>,
+) -> Result<Solved> {
     let pts = points.points();
     let hull = convex_hull_cycle(pts);
+    let stop = options.stop();
+    let mut watch = Stopwatch::new(phases);
     if hull.len() == pts.len() && pts.len() > MAX_POINTS {
         // Every pair of points in convex position passes the diamond filter
         // (the triangle towards the inside is empty), so the general
         // pipeline would hold n³ candidate triangles.
-        let mut watch = Stopwatch::new(phases);
-        let solved = convex_beyond_the_program(points, &hull)?;
+        let solved = lighter_of_greedy_and_delaunay(
+            points,
+            &hull,
+            &format!(
+                "{} points in convex position exceed the exact program's {MAX_POINTS} (O(n^3))",
+                pts.len()
+            ),
+        )?;
         watch.lap("min-weight");
         return Ok(solved);
     }
     if hull.len() == pts.len() {
-        let mut watch = Stopwatch::new(phases);
-        let triangulation = convex_min_weight(points, &hull)?;
+        let solved = match convex_min_weight(points, &hull, stop) {
+            Ok(triangulation) => Solved {
+                triangulation,
+                algorithm:
+                    "Klincsek dynamic program on the convex polygon, O(n^3), exact sums of square roots"
+                        .to_string(),
+                optimality: Optimality::Exact,
+                diagnostics: Diagnostics::default(),
+                bound: None,
+            },
+            Err(Error::Interrupted(Interruption::TimeLimit { seconds })) => {
+                lighter_of_greedy_and_delaunay(points, &hull, &out_of_time(seconds))?
+            }
+            Err(e) => return Err(e),
+        };
         watch.lap("min-weight");
-        return Ok(Solved {
-            triangulation,
-            algorithm:
-                "Klincsek dynamic program on the convex polygon, O(n^3), exact sums of square roots"
-                    .to_string(),
-            optimality: Optimality::Exact,
-            diagnostics: Diagnostics::default(),
-            bound: None,
-        });
+        return Ok(solved);
     }
-    let general = general_min_weight(points, phases, FRONT_BUDGET)?;
-    Ok(general.solved)
+    let bounds = Bounds {
+        fronts: FRONT_BUDGET,
+        bytes: skeleton::default_budget(pts.len()),
+        stop,
+    };
+    match general_min_weight_within(points, phases, bounds) {
+        Ok(general) => Ok(general.solved),
+        Err(Error::Interrupted(Interruption::TimeLimit { seconds })) => {
+            let mut watch = Stopwatch::new(phases);
+            let solved = lighter_of_greedy_and_delaunay(points, &hull, &out_of_time(seconds))?;
+            watch.lap("greedy and Delaunay");
+            Ok(solved)
+        }
+        Err(e) => Err(e),
+    }
+}
+
+/// Why a run out of time answers without the exact result.
+fn out_of_time(seconds: f64) -> String {
+    format!("the time limit of {seconds} s ran out before the exact result")
 }
 
 /// Largest number of distinct points in convex position the polygon program
@@ -132,15 +170,16 @@ pub(crate) fn solve_polygon(
     })
 }
 
-fn convex_min_weight(points: &PointSet, polygon: &[u32]) -> Result<Triangulation> {
+fn convex_min_weight(points: &PointSet, polygon: &[u32], stop: &Stop) -> Result<Triangulation> {
     let pts = points.points();
     let p = |i: usize| pts[polygon[i] as usize];
-    let solved = optimal_triangulation(
+    let solved = optimal_triangulation_until(
         polygon.len(),
         |_, _| true, // convex position: every chord is a diagonal
         |i, m, j| orient_sign(p(i), p(m), p(j)) != 0, // a flat triangle is not allowed
         &TotalLength { point: &p },
-    )
+        stop,
+    )?
     .ok_or_else(|| {
         Error::Internal("the convex polygon has no triangulation without flat triangles".into())
     })?;
@@ -152,22 +191,24 @@ fn convex_min_weight(points: &PointSet, polygon: &[u32]) -> Result<Triangulation
     Ok(Triangulation::from_distinct(points, triangles))
 }
 
-/// Points in convex position beyond [`MAX_POINTS`]: not solved exactly.
-/// The lighter (compared exactly) of the greedy triangulation (within a
-/// constant factor of the optimum in convex position: C. Levcopoulos & A.
-/// Lingas, *On approximation behavior of the greedy triangulation for
-/// convex polygons*, Algorithmica 2, 1987) and the Delaunay triangulation,
-/// with a certified lower bound: every triangulation of `n` points in
-/// convex position has the `n` hull edges and `n − 3` inner edges, each at
+/// The answer when the exact pipeline cannot run (`why`): points in convex
+/// position beyond [`MAX_POINTS`], a skeleton over its memory budget, or
+/// the time limit. The lighter (compared exactly) of the greedy
+/// triangulation (within a constant factor of the optimum in convex
+/// position: C. Levcopoulos & A. Lingas, *On approximation behavior of the
+/// greedy triangulation for convex polygons*, Algorithmica 2, 1987) and the
+/// Delaunay triangulation, not proven optimal, with a certified lower
+/// bound: every triangulation of `n` points with `h` on the hull (`hull`,
+/// its cycle) has the `h` hull edges and `3n − 3 − 2h` inner edges, each at
 /// least the shortest pair of points not consecutive on the hull. That pair
-/// is a Delaunay edge or joins the two neighbours of a point: if its
+/// is a Delaunay edge or joins the two neighbours of a hull point: if its
 /// closed diametral disk held a third point, both segments to it would be
 /// shorter (the angle there is at least 90°), so both would join hull
 /// neighbours; otherwise it is a Gabriel edge, in every Delaunay
 /// triangulation.
-fn convex_beyond_the_program(points: &PointSet, hull: &[u32]) -> Result<Solved> {
+fn lighter_of_greedy_and_delaunay(points: &PointSet, hull: &[u32], why: &str) -> Result<Solved> {
     let pts = points.points();
-    let n = hull.len();
+    let (n, h) = (pts.len(), hull.len());
     let delaunay = crate::graphs::delaunay(points)?;
     let delaunay_tris = distinct_triangles(points, &delaunay);
     let (name, best) = lightest(
@@ -177,29 +218,33 @@ fn convex_beyond_the_program(points: &PointSet, hull: &[u32]) -> Result<Solved> 
             ("Delaunay", delaunay),
         ],
     );
-    let mut position = vec![0usize; n];
+    let mut position = vec![None; n];
     for (k, &v) in hull.iter().enumerate() {
-        position[v as usize] = k;
+        position[v as usize] = Some(k);
     }
-    let consecutive = |a: u32, b: u32| {
-        let d = position[a as usize].abs_diff(position[b as usize]);
-        d == 1 || d == n - 1
+    let consecutive = |a: u32, b: u32| match (position[a as usize], position[b as usize]) {
+        (Some(x), Some(y)) => {
+            let d = x.abs_diff(y);
+            d == 1 || d == h - 1
+        }
+        _ => false,
     };
-    let ears = (0..n).map(|k| [hull[(k + n - 1) % n], hull[(k + 1) % n]]);
+    let ears = (0..h).map(|k| [hull[(k + h - 1) % h], hull[(k + 1) % h]]);
     let shortest_inner = edges_of(&delaunay_tris)
         .into_iter()
         .filter(|&[a, b]| !consecutive(a, b))
         .chain(ears)
         .map(|[a, b]| LengthInterval::of_segment(pts[a as usize], pts[b as usize]).lo)
         .fold(f64::INFINITY, f64::min);
-    let perimeter = (0..n).fold(LengthInterval::ZERO, |sum, k| {
+    let perimeter = (0..h).fold(LengthInterval::ZERO, |sum, k| {
         sum.plus(LengthInterval::of_segment(
             pts[hull[k] as usize],
-            pts[hull[(k + 1) % n] as usize],
+            pts[hull[(k + 1) % h] as usize],
         ))
     });
-    // n − 3 ≤ 2⁵³: the product is rounded once, widened by an ulp.
-    let inner = (shortest_inner * (n - 3) as f64).next_down().max(0.0);
+    // 3n − 3 − 2h ≤ 2⁵³: the product is rounded once, widened by an ulp.
+    let inner_edges = 3 * n - 3 - 2 * h;
+    let inner = (shortest_inner * inner_edges as f64).next_down().max(0.0);
     let lower_bound = perimeter
         .plus(LengthInterval {
             lo: inner,
@@ -211,12 +256,12 @@ fn convex_beyond_the_program(points: &PointSet, hull: &[u32]) -> Result<Solved> 
     Ok(Solved {
         triangulation: Triangulation::from_distinct(points, best),
         algorithm: format!(
-            "{name} triangulation: {n} points in convex position exceed the exact program's \
-             {MAX_POINTS} (O(n^3)); the lighter of greedy and Delaunay, certified lower bound \
-             on the optimal weight: {lower_bound} (hull edges + (n - 3) x the shortest inner edge)"
+            "{name} triangulation, the lighter of greedy and Delaunay, not proven optimal: {why}; \
+             certified lower bound on the optimal weight: {lower_bound} \
+             (hull edges + (3n - 3 - 2h) x the shortest inner edge)"
         ),
         optimality: Optimality::Approximation {
-            bound: "not proven optimal: points in convex position beyond the exact program's size; the weight is at least the reported lower bound",
+            bound: "not proven optimal: the lighter of greedy and Delaunay (the exact pipeline's size, memory or time limit); the weight is at least the reported lower bound",
         },
         diagnostics,
         bound: Some(CertifiedBound {
@@ -376,11 +421,43 @@ fn compare_weights(pts: &[Point], a: &[[u32; 3]], b: &[[u32; 3]]) -> Ordering {
 
 /// The general pipeline; the exact search on faces with holes memoises at
 /// most `budget` fronts per face ([`faces::FRONT_BUDGET`] by default).
+#[cfg_attr(not(feature = "internals"), allow(dead_code))] // the test hooks' entry
 pub(crate) fn general_min_weight(
     points: &PointSet,
     phases: &mut Vec<Phase>,
     budget: usize,
 ) -> Result<General> {
+    let bounds = Bounds {
+        fronts: budget,
+        bytes: skeleton::default_budget(points.len()),
+        stop: &Stop::default(),
+    };
+    general_min_weight_within(points, phases, bounds)
+}
+
+/// What bounds a run of the general pipeline.
+#[derive(Clone, Copy)]
+pub(crate) struct Bounds<'a> {
+    /// Fronts the exact search memoises per face.
+    pub fronts: usize,
+    /// Bytes the LMT-skeleton's candidate triangles may take
+    /// ([`skeleton::Limits::bytes`]); beyond them the result is the lighter
+    /// of greedy and Delaunay, not proven optimal.
+    pub bytes: usize,
+    /// The run's stop, read inside the long loops.
+    pub stop: &'a Stop,
+}
+
+/// [`general_min_weight`] within `bounds`.
+///
+/// # Errors
+/// [`Error::Interrupted`] when `bounds.stop` says so.
+pub(crate) fn general_min_weight_within(
+    points: &PointSet,
+    phases: &mut Vec<Phase>,
+    bounds: Bounds,
+) -> Result<General> {
+    let budget = bounds.fronts;
     // PointSet guarantees three distinct points not on one line.
     let mut watch = Stopwatch::new(phases);
     let mut diagnostics = Diagnostics::default();
@@ -399,14 +476,40 @@ pub(crate) fn general_min_weight(
     diagnostics.add("diamond candidates", candidates.len() as u64);
     watch.lap("diamond filter");
     let n = pts.len();
-    let sk = skeleton::z_order_skeleton(pts, &grid, candidates, skeleton::LOOP_CHUNK)?;
+    bounds.stop.check()?;
+    let limits = skeleton::Limits {
+        bytes: bounds.bytes,
+        stop: bounds.stop,
+    };
+    let sk = match skeleton::z_order_skeleton(pts, &grid, candidates, skeleton::LOOP_CHUNK, limits)?
+    {
+        skeleton::Built::Skeleton(sk) => *sk,
+        skeleton::Built::OverBudget { bytes } => {
+            drop(grid);
+            watch.lap("lmt skeleton");
+            let why = format!(
+                "the LMT-skeleton's candidate triangles would take at least {} MiB, over the \
+                 memory budget of {} MiB (points in nearly convex position have about n^3/6)",
+                bytes >> 20,
+                bounds.bytes >> 20
+            );
+            let hull = convex_hull_cycle(points.points());
+            let solved = lighter_of_greedy_and_delaunay(points, &hull, &why)?;
+            watch.lap("greedy and Delaunay");
+            let lower_bound = solved.bound.as_ref().map(|b| b.value);
+            return Ok(General {
+                solved,
+                lower_bound,
+            });
+        }
+    };
     drop(grid);
     let alive = sk.alive.iter().filter(|&&a| a).count();
     let certain = sk.certain.iter().filter(|&&a| a).count();
     diagnostics.add("skeleton candidates left", alive as u64);
     diagnostics.add("certain edges", certain as u64);
     watch.lap("lmt skeleton");
-    let regions = faces::solve_regions(pts, &sk, budget)?;
+    let regions = faces::solve_regions(pts, &sk, budget, bounds.stop)?;
     watch.lap("faces and programs");
     let mut triangles: Vec<[u32; 3]> = Vec::with_capacity(2 * n);
     let mut exact = true;
@@ -539,4 +642,104 @@ fn region_inner_edges(triangles: &[[u32; 3]], sk: &skeleton::Skeleton) -> Vec<[u
         .into_iter()
         .filter(|&[u, v]| !sk.edge_id(u, v).is_some_and(|e| sk.certain[e as usize]))
         .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::error::Interruption;
+
+    /// Integer points rounded from a circle (nearly convex: some fall
+    /// inside the hull), and a few inside.
+    fn rounded_circle(n: usize, radius: f64) -> PointSet {
+        let mut pts: Vec<Point> = (0..n)
+            .map(|k| {
+                let t = std::f64::consts::TAU * k as f64 / n as f64;
+                [(radius * t.cos()).round(), (radius * t.sin()).round()]
+            })
+            .collect();
+        pts.extend([[0.0, 0.0], [3.0, 1.0], [-2.0, 5.0]]);
+        PointSet::new(&pts).unwrap()
+    }
+
+    fn weight(t: &Triangulation) -> f64 {
+        t.stats().total_edge_length
+    }
+
+    /// The answer without the exact result: valid, not exact, no heavier
+    /// than greedy and Delaunay (compared exactly), with a lower bound.
+    fn check_fallback(points: &PointSet, solved: &Solved) {
+        solved.triangulation.validate().unwrap();
+        assert!(!solved.optimality.is_exact());
+        let tris = distinct_triangles(points, &solved.triangulation);
+        for other in [
+            crate::criteria::greedy::greedy(points).unwrap(),
+            crate::graphs::delaunay(points).unwrap(),
+        ] {
+            let o = distinct_triangles(points, &other);
+            assert_ne!(
+                compare_weights(points.points(), &tris, &o),
+                Ordering::Greater
+            );
+        }
+        let bound = solved.bound.as_ref().expect("a lower bound").value;
+        assert!(0.0 < bound && bound <= weight(&solved.triangulation));
+    }
+
+    #[test]
+    fn a_skeleton_over_its_memory_budget_answers_greedy_or_delaunay() {
+        let points = rounded_circle(60, 40.0);
+        let exact = general_min_weight(&points, &mut Vec::new(), FRONT_BUDGET).unwrap();
+        assert!(exact.solved.optimality.is_exact());
+        let bounds = Bounds {
+            fronts: FRONT_BUDGET,
+            bytes: 0,
+            stop: &Stop::default(),
+        };
+        let refused = general_min_weight_within(&points, &mut Vec::new(), bounds).unwrap();
+        check_fallback(&points, &refused.solved);
+        assert!(refused.solved.algorithm.contains("memory budget"));
+        assert!(refused.lower_bound.unwrap() <= weight(&exact.solved.triangulation));
+        // The default budget takes this set.
+        let bounds = Bounds {
+            bytes: skeleton::default_budget(points.len()),
+            ..bounds
+        };
+        let within = general_min_weight_within(&points, &mut Vec::new(), bounds).unwrap();
+        assert_eq!(
+            within.solved.triangulation.triangles(),
+            exact.solved.triangulation.triangles()
+        );
+    }
+
+    #[test]
+    fn a_spent_time_limit_answers_greedy_or_delaunay_and_a_cancel_stops() {
+        let general = rounded_circle(40, 30.0);
+        let convex = PointSet::new(
+            &(0..30)
+                .map(|x| [x as f64, (x * x) as f64])
+                .collect::<Vec<Point>>(),
+        )
+        .unwrap();
+        for points in [&general, &convex] {
+            let out_of_time = Options::default()
+                .with_time_limit(std::time::Duration::ZERO)
+                .started();
+            let solved = solve(points, &out_of_time, &mut Vec::new()).unwrap();
+            check_fallback(points, &solved);
+            assert!(solved.algorithm.contains("time limit"));
+            let cancel = crate::Cancel::new();
+            let cancelled = Options::default().with_cancel(cancel.clone()).started();
+            cancel.cancel();
+            assert!(matches!(
+                solve(points, &cancelled, &mut Vec::new()),
+                Err(Error::Interrupted(Interruption::Cancelled))
+            ));
+            let unbounded = Options::default().started();
+            assert!(solve(points, &unbounded, &mut Vec::new())
+                .unwrap()
+                .optimality
+                .is_exact());
+        }
+    }
 }

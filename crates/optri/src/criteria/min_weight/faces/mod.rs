@@ -42,6 +42,7 @@ mod regions;
 mod search;
 
 use super::skeleton::Skeleton;
+use crate::interrupt::Stop;
 use crate::kernel::{LengthInterval, Point};
 use crate::parallel::prelude::*;
 use crate::structures::PolygonCycle;
@@ -104,12 +105,17 @@ struct Region {
 
 /// The regions of the skeleton, solved (in parallel); the exact search
 /// memoises at most `budget` fronts per region.
+///
+/// # Errors
+/// [`crate::Error::Interrupted`] when `stop` says so (read before each
+/// region and inside Klincsek's program).
 pub(crate) fn solve_regions(
     pts: &[Point],
     sk: &Skeleton,
     budget: usize,
+    stop: &Stop,
 ) -> crate::error::Result<Vec<RegionResult>> {
-    solve_regions_within(pts, sk, budget, super::MAX_POINTS)
+    solve_regions_within(pts, sk, budget, super::MAX_POINTS, stop)
 }
 
 /// [`solve_regions`] with Klincsek's program on faces of at most
@@ -119,9 +125,10 @@ fn solve_regions_within(
     sk: &Skeleton,
     budget: usize,
     polygon_limit: usize,
+    stop: &Stop,
 ) -> crate::error::Result<Vec<RegionResult>> {
     if let Some(cycles) = regions::traced_faces(pts, sk) {
-        let solved: Vec<RegionResult> = cycles
+        let solved = cycles
             .into_par_iter()
             .map(|cycle| {
                 let region = Region {
@@ -129,9 +136,9 @@ fn solve_regions_within(
                     inner: Vec::new(),
                     cdt_triangles: Vec::new(),
                 };
-                solve_region(pts, sk, region, budget, polygon_limit)
+                solve_region(pts, sk, region, budget, polygon_limit, stop)
             })
-            .collect();
+            .collect::<crate::error::Result<Vec<RegionResult>>>()?;
         // A simple face falls back only when Klincsek's program cannot run
         // on it (too many corners): that needs the constrained Delaunay
         // triangles, so all faces go the general way (rare).
@@ -139,11 +146,12 @@ fn solve_regions_within(
             return Ok(solved);
         }
     }
+    stop.check()?;
     let regions = regions::regions(pts, sk)?;
-    Ok(regions
+    regions
         .into_par_iter()
-        .map(|r| solve_region(pts, sk, r, budget, polygon_limit))
-        .collect())
+        .map(|r| solve_region(pts, sk, r, budget, polygon_limit, stop))
+        .collect()
 }
 
 fn solve_region(
@@ -152,7 +160,9 @@ fn solve_region(
     region: Region,
     budget: usize,
     polygon_limit: usize,
-) -> RegionResult {
+    stop: &Stop,
+) -> crate::error::Result<RegionResult> {
+    stop.check()?;
     let corners: usize = region.cycles.iter().map(Vec::len).sum();
     let mut result = RegionResult {
         triangles: Vec::new(),
@@ -169,16 +179,16 @@ fn solve_region(
         let c = &region.cycles[0];
         result.triangles = vec![[c[0], c[1], c[2]]];
         result.method = Method::Triangle;
-        return result;
+        return Ok(result);
     }
     let mut incumbent = None;
     let mut program_lower = 0.0f64;
     let mut view = None;
     if region.cycles.len() == 1 && region.inner.is_empty() {
-        if let Some(t) = polygon::solve_polygon(pts, sk, &region.cycles[0], polygon_limit) {
+        if let Some(t) = polygon::solve_polygon(pts, sk, &region.cycles[0], polygon_limit, stop)? {
             result.triangles = t;
             result.method = Method::Polygon;
-            return result;
+            return Ok(result);
         }
     } else {
         let face = face_triangles(sk, view.insert(FaceView::new(pts, &region)));
@@ -186,7 +196,7 @@ fn solve_region(
         // a fraction of the budget.
         let quick = budget.min(QUICK_FRONTS);
         if plain_search(pts, sk, &region, &face, quick, &mut result) {
-            return result;
+            return Ok(result);
         }
         let (outcome, stats) = solve_by_program(pts, sk, &region, &face, budget);
         result.program = Some(stats);
@@ -194,7 +204,7 @@ fn solve_region(
             ProgramOutcome::Solved(t) => {
                 result.triangles = t;
                 result.method = Method::Program;
-                return result;
+                return Ok(result);
             }
             ProgramOutcome::Unsolved {
                 incumbent: best,
@@ -205,7 +215,7 @@ fn solve_region(
                 if lower.is_none() && budget > quick {
                     // No certificate: the plain search with the whole budget.
                     if plain_search(pts, sk, &region, &face, budget, &mut result) {
-                        return result;
+                        return Ok(result);
                     }
                 }
             }
@@ -219,7 +229,7 @@ fn solve_region(
         .lower_bound(pts, sk)
         .max(program_lower);
     result.triangles = incumbent.unwrap_or(region.cdt_triangles);
-    result
+    Ok(result)
 }
 
 /// The plain exact search on `face` within `budget` fronts: records the
@@ -386,7 +396,7 @@ mod tests {
         let candidates = super::super::skeleton::diamond_candidates(&pts);
         let sk = super::super::skeleton::lmt_skeleton(&pts, candidates).unwrap();
         assert!(regions::traced_faces(&pts, &sk).is_some());
-        let results = solve_regions_within(&pts, &sk, FRONT_BUDGET, 5).unwrap();
+        let results = solve_regions_within(&pts, &sk, FRONT_BUDGET, 5, &Stop::default()).unwrap();
         let large = results.iter().filter(|r| r.corners > 5).count();
         assert!(large > 0);
         for r in &results {
@@ -409,7 +419,7 @@ mod tests {
         assert_eq!(triangles, 2 * pts.len() - hull - 2);
         // The same as the traced way with the usual limit, face for face
         // where both solved it.
-        let usual = solve_regions(&pts, &sk, FRONT_BUDGET).unwrap();
+        let usual = solve_regions(&pts, &sk, FRONT_BUDGET, &Stop::default()).unwrap();
         assert!(usual.iter().all(|r| r.method != Method::Fallback));
         assert_eq!(usual.len(), results.len());
     }

@@ -3,25 +3,31 @@
 
 use super::super::skeleton::Skeleton;
 use super::super::TotalLength;
+use crate::interrupt::Stop;
 use crate::kernel::{orient_sign, Point};
-use crate::polygon_program::optimal_triangulation;
+use crate::polygon_program::optimal_triangulation_until;
 use crate::structures::PolygonCycle;
 
 /// Klincsek's program on a simple region (one boundary walk, no inner
-/// point), over the candidate diagonals inside it.
+/// point), over the candidate diagonals inside it; `None` for a region
+/// beyond `limit` corners.
+///
+/// # Errors
+/// [`crate::Error::Interrupted`] when `stop` says so.
 pub(super) fn solve_polygon(
     pts: &[Point],
     sk: &Skeleton,
     cycle: &[u32],
     limit: usize,
-) -> Option<Vec<[u32; 3]>> {
+    stop: &Stop,
+) -> crate::error::Result<Option<Vec<[u32; 3]>>> {
     let k = cycle.len();
     if k > limit {
-        return None; // O(k²) tables: the region keeps its fallback
+        return Ok(None); // O(k²) tables: the region keeps its fallback
     }
     let corners = PolygonCycle::exact(pts, cycle);
     let p = |i: usize| pts[cycle[i] as usize];
-    let solved = optimal_triangulation(
+    let Some(solved) = optimal_triangulation_until(
         k,
         |i, j| {
             let (u, w) = (cycle[i], cycle[j]);
@@ -32,8 +38,12 @@ pub(super) fn solve_polygon(
         },
         |i, m, j| orient_sign(p(i), p(m), p(j)) != 0,
         &TotalLength { point: &p },
-    )?;
-    Some(
+        stop,
+    )?
+    else {
+        return Ok(None);
+    };
+    Ok(Some(
         solved
             .triangles
             .into_iter()
@@ -46,5 +56,5 @@ pub(super) fn solve_polygon(
                 }
             })
             .collect(),
-    )
+    ))
 }

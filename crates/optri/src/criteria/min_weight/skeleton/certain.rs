@@ -56,25 +56,47 @@ pub(super) fn certain_edges(pts: &[Point], sk: &Skeleton) -> Vec<bool> {
             .collect();
         around.sort_unstable_by(|x, y| compare_angles(a, pts[x.0 as usize], pts[y.0 as usize]));
         let d = around.len();
-        let mut inside = vec![false; d];
+        // Angular positions by neighbour, and the triangles' open angular
+        // ranges as a difference array: O(log d + 1) a triangle, where a
+        // scan of `around` and a walk over the range cost O(d) (points in
+        // nearly convex position: Θ(n) neighbours and Θ(n²) triangles a
+        // vertex).
+        let mut by_neighbour: Vec<(u32, u32)> = around
+            .iter()
+            .enumerate()
+            .map(|(i, &(w, _))| (w, i as u32))
+            .collect();
+        by_neighbour.sort_unstable();
         let position = |w: u32| {
-            around
-                .iter()
-                .position(|&(x, _)| x == w)
-                .expect("a kept triangle's sides are edges left")
+            let i = by_neighbour
+                .binary_search_by(|x| x.0.cmp(&w))
+                .expect("a kept triangle's sides are edges left");
+            by_neighbour[i].1 as usize
         };
+        let mut starts = vec![0i32; d + 1];
         for &t in at.row(p as u32) {
             let c = sk.triangles[t as usize].0;
             let k = c.iter().position(|&x| x as usize == p).unwrap_or(0);
             // Counter-clockwise corners p, b, c: the angle at p runs
-            // counter-clockwise from p → b to p → c (below π).
+            // counter-clockwise from p → b to p → c (below π); the
+            // directions strictly inside are positions first + 1 .. last,
+            // cyclically.
             let (first, last) = (position(c[(k + 1) % 3]), position(c[(k + 2) % 3]));
-            let mut i = (first + 1) % d;
-            while i != last {
-                inside[i] = true;
-                i = (i + 1) % d;
+            let from = (first + 1) % d;
+            starts[from] += 1;
+            starts[last] -= 1;
+            if from > last {
+                starts[0] += 1; // wraps around
             }
         }
+        let mut depth = 0;
+        let inside: Vec<bool> = starts[..d]
+            .iter()
+            .map(|&s| {
+                depth += s;
+                depth > 0
+            })
+            .collect();
         for (&(w, e), &crossed) in around.iter().zip(&inside) {
             if crossed {
                 let flag = if (p as u32) < w {

@@ -6,23 +6,30 @@
 //! edge, the atomic triangle states, the local-minimality test and the
 //! parallel loop.
 
-use super::{too_many_points, Skeleton};
+use super::{loop_bytes, too_many_points, Limits, Skeleton};
 use crate::kernel::{compare_lengths, orient_sign, Point};
 use crate::parallel::prelude::*;
 use crate::spatial::PointCells;
 use std::cmp::Ordering;
-use std::sync::atomic::{AtomicBool, AtomicU8, Ordering::SeqCst};
+use std::sync::atomic::{AtomicBool, AtomicU8, AtomicUsize, Ordering::Relaxed, Ordering::SeqCst};
+
+/// Edges between two reads of the stop in the parallel passes (a check is
+/// an atomic load and a clock read; an edge's pass costs far more).
+const STOP_CADENCE: usize = 256;
 
 /// Builds the candidate triangles of the skeleton's edges and their lists
 /// per edge, runs the LMT loop (`loop_chunk` edges per parallel task) and
 /// keeps the empty triangles whose three edges are left; `grid` is
-/// [`point_grid`](super::super::point_grid) of `pts`.
+/// [`point_grid`](super::super::point_grid) of `pts`. Returns the bytes
+/// needed, with nothing allocated, when the triangles' count puts
+/// [`loop_bytes`] over `limits.bytes` (the count stops as soon as it does).
 pub(super) fn run(
     pts: &[Point],
     grid: &PointCells,
     skeleton: &mut Skeleton,
     loop_chunk: usize,
-) -> crate::error::Result<()> {
+    limits: Limits,
+) -> crate::error::Result<Option<usize>> {
     let (n, m) = (pts.len(), skeleton.edges.len());
     // Triangles u < v < w of candidate edges, each found from its edge
     // (u, v): the common neighbours w > v of u and v, by merging their
@@ -31,17 +38,37 @@ pub(super) fn run(
     // Counted first, then written in place: collecting them in one pass
     // (rayon's list of growing vectors) held about twice the final array at
     // the phase's peak.
+    // The count stops once the running total is over the budget (points
+    // in nearly convex position: Θ(n³) triangles, whose count alone would
+    // take minutes) or the run must stop.
     let sk = &*skeleton;
+    let counted = AtomicUsize::new(0);
+    let refused = AtomicBool::new(false);
+    let over = |total: usize| loop_bytes(total, m) > limits.bytes;
     let counts: Vec<u32> = (0..m as u32)
         .into_par_iter()
         .with_min_len(256)
         .map(|e| {
+            if refused.load(Relaxed)
+                || ((e as usize).is_multiple_of(STOP_CADENCE) && limits.stop.reason().is_some())
+            {
+                refused.store(true, Relaxed);
+                return 0;
+            }
             let mut count = 0;
             triangles_of_edge(pts, sk, e, |_| count += 1);
+            if over(counted.fetch_add(count as usize, Relaxed) + count as usize) {
+                refused.store(true, Relaxed);
+            }
             count
         })
         .collect();
-    let total: usize = counts.iter().map(|&c| c as usize).sum();
+    limits.stop.check()?;
+    let total = counted.into_inner();
+    if refused.into_inner() {
+        // Over the budget: at least this much (the count stopped early).
+        return Ok(Some(loop_bytes(total, m)));
+    }
     // Triangle ids and the per-edge lists' offsets (three entries a
     // triangle) are `u32`.
     if total > u32::MAX as usize / 3 {
@@ -145,7 +172,8 @@ pub(super) fn run(
     skeleton.tri_list = tri_list;
     // The loop needs no crossings; certainty does, among the survivors only
     // (far fewer and shorter than the filter's candidates).
-    let state = run_lmt_loop(pts, grid, skeleton, loop_chunk);
+    let state = run_lmt_loop(pts, grid, skeleton, loop_chunk, limits.stop);
+    limits.stop.check()?;
     // The per-edge triangle lists served the loop alone: freed before the
     // kept triangles are collected (the phase's peak).
     skeleton.tri_offsets = Vec::new();
@@ -172,7 +200,7 @@ pub(super) fn run(
     drop(state);
     skeleton.triangles = kept;
     skeleton.loop_triangles = Vec::new();
-    Ok(())
+    Ok(None)
 }
 
 /// Does the closed triangle `abc` (counter-clockwise) contain a point other
@@ -403,11 +431,15 @@ pub(crate) const LOOP_CHUNK: usize = 1024;
 ///   was clear and the killer queues it, or the flag was still set and the
 ///   edge's pending test clears it after the death and reads the triangle
 ///   dead. So when all tasks are done, every edge left is locally minimal.
+///
+/// When `stop` says so, the tasks not yet started return at once and the
+/// states are incomplete (the caller checks `stop` and drops them).
 fn run_lmt_loop(
     pts: &[Point],
     grid: &PointCells,
     sk: &mut Skeleton,
     chunk: usize,
+    stop: &crate::interrupt::Stop,
 ) -> TriangleState {
     let chunk = chunk.max(1);
     let m = sk.edges.len();
@@ -445,7 +477,12 @@ fn run_lmt_loop(
             }
         }
     };
+    let stopped = AtomicBool::new(false);
     (0..m.div_ceil(chunk)).into_par_iter().for_each(|k| {
+        if stopped.load(Relaxed) || stop.reason().is_some() {
+            stopped.store(true, Relaxed);
+            return;
+        }
         let (mut apexes, mut stack) = (Vec::new(), Vec::new());
         for e in k * chunk..m.min(k.saturating_add(1).saturating_mul(chunk)) {
             process(e as u32, &mut apexes, &mut stack);

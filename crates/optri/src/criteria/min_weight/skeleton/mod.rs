@@ -61,9 +61,48 @@ pub(crate) use diamond::diamond_filter;
 pub(crate) use lmt_loop::LOOP_CHUNK;
 
 use crate::error::{Error, UnsupportedReason};
+use crate::interrupt::Stop;
 use crate::kernel::Point;
 use crate::spatial::{convex_hull_cycle, PointCells};
 use crate::structures::Csr;
+
+/// What bounds the skeleton's construction: the bytes its candidate
+/// triangles and their lists may take, and the run's stop.
+#[derive(Clone, Copy)]
+pub(crate) struct Limits<'a> {
+    /// Bytes the loop's arrays may take ([`loop_bytes`]), decided from
+    /// the count of candidate triangles before any of them is allocated.
+    pub bytes: usize,
+    /// Checked between the construction's passes and inside them.
+    pub stop: &'a Stop,
+}
+
+/// The default of [`Limits::bytes`] on `n` points: 768 MiB, or 2 KiB a
+/// point when that is more. Sets in general position need far less (at
+/// 10⁶ uniform points about 0.2 KiB a point); points in nearly convex
+/// position have Θ(n²) candidate edges and Θ(n³) candidate triangles
+/// (1 000 points on a circle, rounded to integers: about 4 GB), which the
+/// budget refuses before allocating them.
+pub(crate) fn default_budget(n: usize) -> usize {
+    (768usize << 20).max(n.saturating_mul(2048))
+}
+
+/// Bytes of the LMT loop's arrays for `triangles` candidate triangles on
+/// `edges` candidate edges: per triangle its corners (12), its three
+/// entries in the per-edge lists (12) and its state (1); per edge the
+/// edge, its flags, its two adjacency entries and its list offsets.
+pub(crate) fn loop_bytes(triangles: usize, edges: usize) -> usize {
+    triangles
+        .saturating_mul(25)
+        .saturating_add(edges.saturating_mul(48))
+}
+
+/// The skeleton, or the bytes its construction would have needed beyond
+/// the budget (nothing of that size allocated).
+pub(crate) enum Built {
+    Skeleton(Box<Skeleton>),
+    OverBudget { bytes: usize },
+}
 
 /// Candidate edges with their empty triangles and the LMT state.
 pub(crate) struct Skeleton {
@@ -208,7 +247,14 @@ pub(crate) fn lmt_skeleton_in_chunks(
     z_edges.par_sort_unstable();
     let z = {
         let grid = super::point_grid(&z_pts);
-        z_order_skeleton(&z_pts, &grid, z_edges, loop_chunk)?
+        let limits = Limits {
+            bytes: usize::MAX,
+            stop: &Stop::default(),
+        };
+        match z_order_skeleton(&z_pts, &grid, z_edges, loop_chunk, limits)? {
+            Built::Skeleton(z) => *z,
+            Built::OverBudget { .. } => unreachable!("no budget"),
+        }
     };
     drop(z_pts);
     let mut mapped: Vec<([u32; 2], u32)> = z
@@ -284,13 +330,17 @@ fn too_many_points(n: usize, count: usize, limit: usize, because: &'static str) 
 /// LMT loop; `grid` is [`point_grid`](super::point_grid) of `pts`. Correct in
 /// any numbering, meant for points in Z-order (the loop's accesses to
 /// triangles, edges and points then stay mostly within cache: in input
-/// order each is a miss).
+/// order each is a miss). Over `limits.bytes` nothing large is allocated.
+///
+/// # Errors
+/// [`Error::Interrupted`] when `limits.stop` says so.
 pub(crate) fn z_order_skeleton(
     pts: &[Point],
     grid: &PointCells,
     edges: Vec<[u32; 2]>,
     loop_chunk: usize,
-) -> crate::error::Result<Skeleton> {
+    limits: Limits,
+) -> crate::error::Result<Built> {
     debug_assert!(
         sorted_pairs(&edges),
         "candidates: sorted distinct pairs u < v"
@@ -314,7 +364,10 @@ pub(crate) fn z_order_skeleton(
             skeleton.hull[e as usize] = true;
         }
     }
-    lmt_loop::run(pts, grid, &mut skeleton, loop_chunk)?;
+    if let Some(bytes) = lmt_loop::run(pts, grid, &mut skeleton, loop_chunk, limits)? {
+        return Ok(Built::OverBudget { bytes });
+    }
+    limits.stop.check()?;
     skeleton.certain = certain::certain_edges(pts, &skeleton);
-    Ok(skeleton)
+    Ok(Built::Skeleton(Box::new(skeleton)))
 }
