@@ -67,8 +67,9 @@ pub fn area_general(
             )))
         }
     };
-    let candidates = general::candidates(points, objective)?;
-    let result = general::best_of(points, objective, &candidates);
+    let never = crate::interrupt::Stop::default();
+    let candidates = general::candidates(points, objective, &never)?;
+    let result = general::best_of(points, objective, &candidates, &never)?;
     Ok(AreaGeneralRun {
         candidates: candidates
             .list

@@ -316,7 +316,11 @@ fn decimal_input_is_divided_exactly_and_rounded_once() {
                     format!("{} {}\n", v(&mut rng), v(&mut rng))
                 })
                 .collect();
-            let read = read(Source::Text(&text), &ReadOptions::default().with_format(InputFormat::Text)).unwrap();
+            let read = read(
+                Source::Text(&text),
+                &ReadOptions::default().with_format(InputFormat::Text),
+            )
+            .unwrap();
             let k = read.scale_exponent();
             assert!(k > 0 && k <= places as i32, "{text}");
             let ps = PointSet::new(read.working_points()).unwrap();
@@ -449,7 +453,11 @@ fn a_weight_lower_bound_in_decimal_units_stays_a_lower_bound() {
             })
             .chain(std::iter::once("0.5 -0.25\n".to_string()))
             .collect();
-        let read = read(Source::Text(&text), &ReadOptions::default().with_format(InputFormat::Text)).unwrap();
+        let read = read(
+            Source::Text(&text),
+            &ReadOptions::default().with_format(InputFormat::Text),
+        )
+        .unwrap();
         let k = read.scale_exponent();
         assert!(k > 0);
         let ps = PointSet::new(read.working_points()).unwrap();

@@ -43,8 +43,8 @@
 mod certified_incircle;
 mod degrees;
 pub(crate) mod expansion;
-mod length_order;
 mod extremes;
+mod length_order;
 mod length_sums;
 mod lune;
 pub mod metrics;
@@ -68,8 +68,8 @@ pub const MAX_COORDINATE: f64 = 3.2138760885179806e60; // 2^201
 /// Smallest accepted non-zero absolute coordinate value, 2⁻¹⁴².
 pub const MIN_COORDINATE: f64 = 1.793662034335766e-43; // 2^-142
 
-pub(crate) use length_order::{EuclideanOrder, LengthOrder};
 pub(crate) use extremes::Extremes;
+pub(crate) use length_order::{EuclideanOrder, LengthOrder};
 pub use length_sums::{compare_length_sums, compare_length_sums_exactly, LengthInterval};
 pub use lune::{in_half_lune, in_half_lune_symbolic, in_lune, in_lune_symbolic};
 pub use norm::{side_of_direction, Metric, MetricProblem, MAX_LP_EXPONENT};
