@@ -339,3 +339,67 @@ fn solve_general(
         bound,
     })
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::error::Interruption;
+    use rand::{rngs::StdRng, Rng, SeedableRng};
+
+    /// Options whose stop has fired: a raised cancel flag, then a time limit
+    /// of 0 s.
+    fn stopped() -> [(Options, Interruption); 2] {
+        let cancel = crate::Cancel::new();
+        cancel.cancel();
+        [
+            (
+                Options::default().with_cancel(cancel),
+                Interruption::Cancelled,
+            ),
+            (
+                Options::default().with_time_limit(std::time::Duration::ZERO),
+                Interruption::TimeLimit { seconds: 0.0 },
+            ),
+        ]
+    }
+
+    /// Every area solver stops inside its loops (the registry checks before
+    /// a run starts; these call the solvers directly): the general
+    /// approximation, Algorithm 44 on points in convex position and on a
+    /// convex polygon.
+    #[test]
+    fn a_stopped_run_stops_each_area_solver() {
+        let mut rng = StdRng::seed_from_u64(0xA4EA_5709);
+        let scattered: Vec<Point> = (0..200)
+            .map(|_| [rng.gen_range(0..1000) as f64, rng.gen_range(0..1000) as f64])
+            .collect();
+        let scattered = PointSet::new(&scattered).unwrap();
+        let convex_points = optri_oracle::inputs::strict_hull(
+            optri_oracle::inputs::ellipse_polygon(&mut rng, 60, 1e6, 1.5),
+        );
+        let convex = PointSet::new(&convex_points).unwrap();
+        let polygon = SimplePolygon::new(&convex_points).unwrap();
+        assert!(polygon.is_strictly_convex());
+        type PointSolver = fn(&PointSet, &Options, &mut Vec<Phase>) -> Result<Solved>;
+        type PolygonSolver = fn(&SimplePolygon, &Options, &mut Vec<Phase>) -> Result<Solved>;
+        let point_solvers: [PointSolver; 2] = [solve_maxmin, solve_minmax];
+        let polygon_solvers: [PolygonSolver; 2] = [solve_maxmin_polygon, solve_minmax_polygon];
+        for (options, why) in stopped() {
+            let options = options.started();
+            for solve in point_solvers {
+                for points in [&scattered, &convex] {
+                    let result = solve(points, &options, &mut Vec::new()).map(|_| ());
+                    assert_eq!(result, Err(Error::Interrupted(why.clone())));
+                }
+            }
+            for solve in polygon_solvers {
+                let result = solve(&polygon, &options, &mut Vec::new()).map(|_| ());
+                assert_eq!(result, Err(Error::Interrupted(why.clone())));
+            }
+        }
+        let never = Options::default();
+        for solve in point_solvers {
+            assert!(solve(&scattered, &never, &mut Vec::new()).is_ok());
+        }
+    }
+}
