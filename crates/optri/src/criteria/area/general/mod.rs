@@ -563,17 +563,26 @@ pub(crate) fn certified_bound(
         let Some(value) = edge_bound(pts, a, b, objective, &mut inner) else {
             continue;
         };
-        // MaxMin: the smallest of the per-edge maxima; MinMax: the largest of
-        // the per-edge minima.
-        let tighter = bound.is_none_or(|b| match objective {
-            AreaBottleneck::MaxMin => area_order(pts, value, b) == Ordering::Less,
-            AreaBottleneck::MinMax => area_order(pts, value, b) == Ordering::Greater,
-        });
-        if tighter {
+        if tightens(pts, objective, value, bound) {
             bound = Some(value);
         }
     }
     Ok(bound)
+}
+
+/// Is the edge bound `value` strictly tighter than `bound`? MaxMin keeps the
+/// smallest of the per-edge maxima, MinMax the largest of the per-edge
+/// minima.
+fn tightens(
+    pts: &[Point],
+    objective: AreaBottleneck,
+    value: [u32; 3],
+    bound: Option<[u32; 3]>,
+) -> bool {
+    bound.is_none_or(|b| match objective {
+        AreaBottleneck::MaxMin => area_order(pts, value, b) == Ordering::Less,
+        AreaBottleneck::MinMax => area_order(pts, value, b) == Ordering::Greater,
+    })
 }
 
 /// The bound of one hull edge `ab` (module docs): the largest empty triangle

@@ -348,11 +348,7 @@ fn bound_searching_every_edge(
         let Some(value) = edge_bound(pts, hull[e], hull[(e + 1) % h], objective, &mut inner) else {
             continue;
         };
-        let tighter = bound.is_none_or(|b| match objective {
-            AreaBottleneck::MaxMin => area_order(pts, value, b) == Ordering::Less,
-            AreaBottleneck::MinMax => area_order(pts, value, b) == Ordering::Greater,
-        });
-        if tighter {
+        if tightens(pts, objective, value, bound) {
             bound = Some(value);
         }
     }
