@@ -113,7 +113,7 @@ pub(super) fn greedy_convex(
     let mut state = Splitting::new(points, polygon, straight_angles);
     let mut popped = 0usize;
     while edges.len() < 2 * k - 3 {
-        if popped % 1024 == 0 {
+        if popped.is_multiple_of(1024) {
             stop.check()?;
         }
         popped += 1;

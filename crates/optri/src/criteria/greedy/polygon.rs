@@ -87,7 +87,7 @@ pub(crate) fn greedy_polygon(polygon: &SimplePolygon, stop: &Stop) -> Result<Tri
         if kept.len() == n - 3 {
             break;
         }
-        if k % 1024 == 0 {
+        if k.is_multiple_of(1024) {
             stop.check()?;
         }
         let crossing = kept

@@ -397,7 +397,7 @@ fn run(
                 // Once per task and before each large region; a stopped
                 // run skips the rest and fails after the phase.
                 let large = regions.triangles(r).len() >= SMALL_REGION;
-                if (r % REGIONS_PER_TASK == 0 || large) && stop.reason().is_some() {
+                if (r.is_multiple_of(REGIONS_PER_TASK) || large) && stop.reason().is_some() {
                     return Vec::new();
                 }
                 if let [t] = regions.triangles(r) {

@@ -377,7 +377,7 @@ fn triangulate_faces(
     for (k, face) in faces.iter().enumerate() {
         // Small faces are most of them: check every few, and before each
         // large one (a face of k corners costs O(k³)).
-        if k % STOP_CHECK_EVERY == 0 || face.len() > 64 {
+        if k.is_multiple_of(STOP_CHECK_EVERY) || face.len() > 64 {
             stop.check()?;
         }
         let region = PolygonCycle::exact(pts, face);
@@ -443,7 +443,7 @@ fn algorithm_76(
     let mut popped = 0usize;
     while let Some((t, j, [x, y])) = queue.pop_front() {
         popped += 1;
-        if popped % STOP_CHECK_EVERY == 0 {
+        if popped.is_multiple_of(STOP_CHECK_EVERY) {
             stop.check()?;
         }
         let t = t as usize;
