@@ -93,8 +93,9 @@ pub fn area_general(
 ) -> crate::Result<AreaGeneralRun> {
     use crate::criteria::area::general;
     let objective = area_bottleneck(criterion)?;
-    let candidates = general::candidates(points, objective)?;
-    let result = general::best_of(points, objective, &candidates);
+    let never = crate::interrupt::Stop::default();
+    let candidates = general::candidates(points, objective, &never)?;
+    let result = general::best_of(points, objective, &candidates, &never)?;
     Ok(AreaGeneralRun {
         candidates: candidates
             .list

@@ -6,6 +6,7 @@
 //! ```text
 //! cargo run --release -p optri-bench --bin area_general_timing -- ratios
 //! cargo run --release -p optri-bench --bin area_general_timing -- steps
+//! cargo run --release -p optri-bench --bin area_general_timing -- grid 300
 //! ```
 //! `ratios`: the approximation ratios optimum/result (MaxMin) and
 //! result/optimum (MinMax), mean and worst, per candidate and for the
@@ -14,6 +15,8 @@
 //! `steps`: the running time of each step at n = 1000 and 10⁴ uniform
 //! points, and of the candidates on 500 and 501 points on a circle (one
 //! face, just under and over the face programs' cap).
+//! `grid`: each step and both criteria on a `side × side` integer grid, as
+//! multiples of Delaunay.
 
 use optri::internals::{area_general, area_general_steps};
 use optri::{Criterion, PointSet};
@@ -219,9 +222,38 @@ fn steps() {
     }
 }
 
+/// Every step on a `side × side` integer grid (massively degenerate: equal
+/// areas, collinear triples, cocircular quadruples), against Delaunay.
+fn grid(side: usize) {
+    let ps = PointSet::new(&inputs::grid(side, side, 1.0)).expect("a valid point set");
+    let clock = Instant::now();
+    optri::triangulate(&ps, Criterion::Delaunay).expect("Delaunay runs");
+    let delaunay = clock.elapsed();
+    let steps = area_general_steps(&ps).expect("the steps run");
+    println!("{side}x{side} grid: Delaunay {delaunay:.2?}");
+    for p in &steps.phases {
+        println!("  {:<24} {:>10.1} ms", p.name, p.ms);
+    }
+    for criterion in CRITERIA {
+        let clock = Instant::now();
+        optri::triangulate(&ps, criterion).expect("the criterion runs");
+        let t = clock.elapsed();
+        println!(
+            "  {:<24} {t:>10.2?} ({:.1}x Delaunay)",
+            criterion.name(),
+            t.as_secs_f64() / delaunay.as_secs_f64()
+        );
+    }
+}
+
 fn main() {
     match std::env::args().nth(1).as_deref() {
         Some("ratios") => ratios(),
+        Some("grid") => grid(
+            std::env::args()
+                .nth(2)
+                .map_or(300, |s| s.parse().expect("a side")),
+        ),
         Some("steps") | None => steps(),
         Some(other) => panic!("unknown mode {other:?}: ratios or steps"),
     }

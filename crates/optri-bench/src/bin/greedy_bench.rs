@@ -31,6 +31,7 @@
 //! (N points on the lattice of step 1/8, the doubles' spacing, near 10¹⁵, plus
 //! three points 10¹¹ away), `duplicates3 N` (N copies of 3 points plus 5
 //! others).
+//! `star-polygon N`: the greedy polygon solver on a star of N vertices.
 //! `cocircular N`: in one process, GT of `circle N`, `random-circle N` and
 //! `2N`, `convex N` and `2N`, `perturbed-circle N` and `2N`, with the
 //! ratios of BENCHMARKS.md; each set runs `REPEAT` times (default 5, alternating
@@ -126,12 +127,35 @@ fn cocircular(n: usize) {
     );
 }
 
+/// GT of a star polygon of `n` vertices (radii alternating 10⁶ and
+/// 4·10⁵, integer coordinates): the polygon solver, or its refusal.
+fn star_polygon(n: usize) {
+    let ring: Vec<[f64; 2]> = (0..n)
+        .map(|i| {
+            let r = if i % 2 == 0 { 1e6 } else { 4e5 };
+            let a = std::f64::consts::TAU * i as f64 / n as f64;
+            [(r * a.cos()).round(), (r * a.sin()).round()]
+        })
+        .collect();
+    let polygon = optri::SimplePolygon::new(&ring).expect("a simple star polygon");
+    let clock = Instant::now();
+    let result = optri::triangulate(&polygon, optri::Criterion::Greedy);
+    let outcome = match &result {
+        Ok(s) => format!("{} triangles", s.triangulation.triangles().len()),
+        Err(e) => format!("refused: {e}"),
+    };
+    println!("star-polygon {n}: {:.2?}, {outcome}", clock.elapsed());
+}
+
 fn main() {
     let args: Vec<String> = std::env::args().collect();
     let mode = args.get(1).map_or("uniform", String::as_str);
     let n: usize = args.get(2).and_then(|s| s.parse().ok()).unwrap_or(100_000);
     if mode == "cocircular" {
         return cocircular(n);
+    }
+    if mode == "star-polygon" {
+        return star_polygon(n);
     }
     let mut rng = StdRng::seed_from_u64(SEED);
     let pts = match mode {

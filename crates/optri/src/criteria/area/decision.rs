@@ -4,6 +4,7 @@
 use super::convex::MaxMinTable;
 use super::MAX_CONVEX_VERTICES;
 use crate::error::{Error, Result, UnsupportedReason};
+use crate::interrupt::Stop;
 use crate::spatial::convex_hull_cycle;
 use crate::structures::{PointSet, SimplePolygon, Triangulation};
 
@@ -52,7 +53,11 @@ impl<'a> MaxMinAreaDecision<'a> {
                 },
             });
         }
-        let table = MaxMinTable::new(polygon.vertices(), polygon.counter_clockwise());
+        let table = MaxMinTable::new(
+            polygon.vertices(),
+            polygon.counter_clockwise(),
+            &Stop::default(),
+        )?;
         Ok(Self { polygon, table })
     }
 

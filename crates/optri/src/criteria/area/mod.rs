@@ -40,6 +40,7 @@ use super::{
     Solved,
 };
 use crate::error::{Error, Result, UnsupportedReason};
+use crate::interrupt::Stop;
 use crate::kernel::metrics::area;
 use crate::kernel::{compare_areas, Point};
 use crate::polygon_program::{check_size, corner_point, on_simple_polygon, MAX_POLYGON_VERTICES};
@@ -125,10 +126,10 @@ impl AreaBottleneck {
         }
     }
 
-    fn convex(self, points: &[Point], polygon: &[u32]) -> Vec<[u32; 3]> {
+    fn convex(self, points: &[Point], polygon: &[u32], stop: &Stop) -> Result<Vec<[u32; 3]>> {
         match self {
-            AreaBottleneck::MaxMin => convex::maxmin_area_convex(points, polygon),
-            AreaBottleneck::MinMax => convex::minmax_area_convex(points, polygon),
+            AreaBottleneck::MaxMin => convex::maxmin_area_convex(points, polygon, stop),
+            AreaBottleneck::MinMax => convex::minmax_area_convex(points, polygon, stop),
         }
     }
 }
@@ -144,34 +145,34 @@ pub(crate) const MAX_CONVEX_VERTICES: usize = 12_000;
 
 pub(crate) fn solve_maxmin(
     points: &PointSet,
-    _: &Options,
+    options: &Options,
     phases: &mut Vec<Phase>,
 ) -> Result<Solved> {
-    solve_points(points, AreaBottleneck::MaxMin, phases)
+    solve_points(points, AreaBottleneck::MaxMin, options.stop(), phases)
 }
 
 pub(crate) fn solve_minmax(
     points: &PointSet,
-    _: &Options,
+    options: &Options,
     phases: &mut Vec<Phase>,
 ) -> Result<Solved> {
-    solve_points(points, AreaBottleneck::MinMax, phases)
+    solve_points(points, AreaBottleneck::MinMax, options.stop(), phases)
 }
 
 pub(crate) fn solve_maxmin_polygon(
     polygon: &SimplePolygon,
-    _: &Options,
+    options: &Options,
     phases: &mut Vec<Phase>,
 ) -> Result<Solved> {
-    solve_polygon(polygon, AreaBottleneck::MaxMin, phases)
+    solve_polygon(polygon, AreaBottleneck::MaxMin, options.stop(), phases)
 }
 
 pub(crate) fn solve_minmax_polygon(
     polygon: &SimplePolygon,
-    _: &Options,
+    options: &Options,
     phases: &mut Vec<Phase>,
 ) -> Result<Solved> {
-    solve_polygon(polygon, AreaBottleneck::MinMax, phases)
+    solve_polygon(polygon, AreaBottleneck::MinMax, options.stop(), phases)
 }
 
 /// A triangulation of `points` (in convex position) maximising the smallest
@@ -186,7 +187,13 @@ pub(crate) fn solve_minmax_polygon(
 /// [`UnsupportedReason::TooManyPoints`] above 12 000 points in strictly
 /// convex position, or 4000 in convex position with collinear hull points.
 pub fn maxmin_area(points: &PointSet) -> Result<Triangulation> {
-    solve_points(points, AreaBottleneck::MaxMin, &mut Vec::new()).map(|s| s.triangulation)
+    solve_points(
+        points,
+        AreaBottleneck::MaxMin,
+        &Stop::default(),
+        &mut Vec::new(),
+    )
+    .map(|s| s.triangulation)
 }
 
 /// A triangulation of `points` (in convex position) minimising the largest
@@ -195,7 +202,13 @@ pub fn maxmin_area(points: &PointSet) -> Result<Triangulation> {
 /// # Errors
 /// As [`maxmin_area`].
 pub fn minmax_area(points: &PointSet) -> Result<Triangulation> {
-    solve_points(points, AreaBottleneck::MinMax, &mut Vec::new()).map(|s| s.triangulation)
+    solve_points(
+        points,
+        AreaBottleneck::MinMax,
+        &Stop::default(),
+        &mut Vec::new(),
+    )
+    .map(|s| s.triangulation)
 }
 
 fn solved(triangulation: Triangulation, algorithm: &str) -> Solved {
@@ -211,13 +224,14 @@ fn solved(triangulation: Triangulation, algorithm: &str) -> Solved {
 fn solve_points(
     points: &PointSet,
     kind: AreaBottleneck,
+    stop: &Stop,
     phases: &mut Vec<Phase>,
 ) -> Result<Solved> {
     let criterion = kind.criterion();
     let pts = points.points();
     let hull = convex_hull_cycle(pts);
     if hull.len() != pts.len() {
-        return solve_general(points, kind, phases);
+        return solve_general(points, kind, stop, phases);
     }
     let strictly_convex = is_strictly_convex_cycle(pts, &hull);
     let (limit, because) = if strictly_convex {
@@ -239,16 +253,16 @@ fn solve_points(
         });
     }
     let (triangles, algorithm) = timed(phases, criterion, || {
-        if strictly_convex {
-            (kind.convex(pts, &hull), CONVEX_ALGORITHM)
+        Ok::<_, Error>(if strictly_convex {
+            (kind.convex(pts, &hull, stop)?, CONVEX_ALGORITHM)
         } else {
             (
                 convex_polygon_program(pts, &hull, kind),
                 "polygon program on the convex hull (collinear boundary points; flat \
                  triangles forbidden), O(n^3)",
             )
-        }
-    });
+        })
+    })?;
     Ok(solved(
         Triangulation::from_distinct(points, triangles),
         algorithm,
@@ -258,6 +272,7 @@ fn solve_points(
 fn solve_polygon(
     polygon: &SimplePolygon,
     kind: AreaBottleneck,
+    stop: &Stop,
     phases: &mut Vec<Phase>,
 ) -> Result<Solved> {
     let criterion = kind.criterion();
@@ -273,8 +288,8 @@ fn solve_polygon(
             });
         }
         let triangles = timed(phases, criterion, || {
-            kind.convex(polygon.vertices(), polygon.counter_clockwise())
-        });
+            kind.convex(polygon.vertices(), polygon.counter_clockwise(), stop)
+        })?;
         return Ok(solved(
             Triangulation::from_polygon_positions(polygon, triangles),
             CONVEX_ALGORITHM,
@@ -296,10 +311,11 @@ fn solve_polygon(
 fn solve_general(
     points: &PointSet,
     kind: AreaBottleneck,
+    stop: &Stop,
     phases: &mut Vec<Phase>,
 ) -> Result<Solved> {
     let result = timed(phases, kind.criterion(), || {
-        general::area_general(points, kind)
+        general::area_general(points, kind, stop)
     })?;
     let triangulation = Triangulation::from_distinct(points, result.triangles);
     let pts = points.points();
@@ -322,4 +338,68 @@ fn solve_general(
         diagnostics: Diagnostics::default(),
         bound,
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::error::Interruption;
+    use rand::{rngs::StdRng, Rng, SeedableRng};
+
+    /// Options whose stop has fired: a raised cancel flag, then a time limit
+    /// of 0 s.
+    fn stopped() -> [(Options, Interruption); 2] {
+        let cancel = crate::Cancel::new();
+        cancel.cancel();
+        [
+            (
+                Options::default().with_cancel(cancel),
+                Interruption::Cancelled,
+            ),
+            (
+                Options::default().with_time_limit(std::time::Duration::ZERO),
+                Interruption::TimeLimit { seconds: 0.0 },
+            ),
+        ]
+    }
+
+    /// Every area solver stops inside its loops (the registry checks before
+    /// a run starts; these call the solvers directly): the general
+    /// approximation, Algorithm 44 on points in convex position and on a
+    /// convex polygon.
+    #[test]
+    fn a_stopped_run_stops_each_area_solver() {
+        let mut rng = StdRng::seed_from_u64(0xA4EA_5709);
+        let scattered: Vec<Point> = (0..200)
+            .map(|_| [rng.gen_range(0..1000) as f64, rng.gen_range(0..1000) as f64])
+            .collect();
+        let scattered = PointSet::new(&scattered).unwrap();
+        let convex_points = optri_oracle::inputs::strict_hull(
+            optri_oracle::inputs::ellipse_polygon(&mut rng, 60, 1e6, 1.5),
+        );
+        let convex = PointSet::new(&convex_points).unwrap();
+        let polygon = SimplePolygon::new(&convex_points).unwrap();
+        assert!(polygon.is_strictly_convex());
+        type PointSolver = fn(&PointSet, &Options, &mut Vec<Phase>) -> Result<Solved>;
+        type PolygonSolver = fn(&SimplePolygon, &Options, &mut Vec<Phase>) -> Result<Solved>;
+        let point_solvers: [PointSolver; 2] = [solve_maxmin, solve_minmax];
+        let polygon_solvers: [PolygonSolver; 2] = [solve_maxmin_polygon, solve_minmax_polygon];
+        for (options, why) in stopped() {
+            let options = options.started();
+            for solve in point_solvers {
+                for points in [&scattered, &convex] {
+                    let result = solve(points, &options, &mut Vec::new()).map(|_| ());
+                    assert_eq!(result, Err(Error::Interrupted(why.clone())));
+                }
+            }
+            for solve in polygon_solvers {
+                let result = solve(&polygon, &options, &mut Vec::new()).map(|_| ());
+                assert_eq!(result, Err(Error::Interrupted(why.clone())));
+            }
+        }
+        let never = Options::default();
+        for solve in point_solvers {
+            assert!(solve(&scattered, &never, &mut Vec::new()).is_ok());
+        }
+    }
 }

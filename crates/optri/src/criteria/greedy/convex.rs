@@ -85,6 +85,8 @@
 //! vertices sum to O(n²). Space is O(n) plus the heap.
 
 use super::convex_delaunay::ConvexDelaunay;
+use crate::error::Result;
+use crate::interrupt::Stop;
 use crate::kernel::{compare_lengths_symbolic, orient_sign, Point, SquaredLength};
 use std::cmp::Ordering;
 
@@ -95,18 +97,26 @@ const NO_APEX: u32 = u32::MAX;
 /// indices into `points`, not all collinear). With `straight_angles`, some
 /// vertices may lie on the segment between their neighbours (weakly convex
 /// position); without, the polygon must be strictly convex.
+/// [`crate::Error::Interrupted`] when `stop` says so (checked every 1024
+/// heap entries).
 pub(super) fn greedy_convex(
     points: &[Point],
     polygon: &[u32],
     straight_angles: bool,
-) -> Vec<[u32; 2]> {
+    stop: &Stop,
+) -> Result<Vec<[u32; 2]>> {
     let k = polygon.len();
     let mut edges: Vec<[u32; 2]> = (0..k).map(|i| [polygon[i], polygon[(i + 1) % k]]).collect();
     if k <= 3 {
-        return edges;
+        return Ok(edges);
     }
     let mut state = Splitting::new(points, polygon, straight_angles);
+    let mut popped = 0usize;
     while edges.len() < 2 * k - 3 {
+        if popped.is_multiple_of(1024) {
+            stop.check()?;
+        }
+        popped += 1;
         let Some(c) = state.pop() else {
             break;
         };
@@ -115,7 +125,7 @@ pub(super) fn greedy_convex(
         }
     }
     debug_assert_eq!(edges.len(), 2 * k - 3, "a convex GT has 2k - 3 edges");
-    edges
+    Ok(edges)
 }
 
 /// A neighbour in an adjacency list: its polygon position and whether the

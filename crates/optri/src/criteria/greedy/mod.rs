@@ -35,6 +35,7 @@ mod semicircular;
 
 use super::{CriterionEntry, CriterionInfo, Diagnostics, Optimality, Options, Solved};
 use crate::error::Result;
+use crate::interrupt::Stop;
 use crate::kernel::{orient_sign, Point};
 use crate::spatial::convex_hull_cycle;
 use crate::structures::{PlanarGraph, PointSet, Triangulation};
@@ -58,8 +59,12 @@ pub(crate) const INFO: CriterionInfo = CriterionInfo {
                 algorithms, 1997",
 };
 
-pub(crate) fn solve(points: &PointSet, _: &Options, phases: &mut Vec<Phase>) -> Result<Solved> {
-    let (triangulation, algorithm) = greedy_triangulation_timed(points, phases)?;
+pub(crate) fn solve(
+    points: &PointSet,
+    options: &Options,
+    phases: &mut Vec<Phase>,
+) -> Result<Solved> {
+    let (triangulation, algorithm) = greedy_triangulation_timed(points, options.stop(), phases)?;
     Ok(Solved {
         triangulation,
         algorithm: format!("{} ({})", algorithm.name(), algorithm.description()),
@@ -115,12 +120,14 @@ impl GreedyAlgorithm {
 /// The greedy triangulation of `points`, with the algorithm chosen by the
 /// shape of the input.
 pub fn greedy_triangulation(points: &PointSet) -> Result<(Triangulation, GreedyAlgorithm)> {
-    greedy_triangulation_timed(points, &mut Vec::new())
+    greedy_triangulation_timed(points, &Stop::default(), &mut Vec::new())
 }
 
-/// [`greedy_triangulation`], recording its phases.
+/// [`greedy_triangulation`], recording its phases; stopped by `stop`
+/// ([`crate::Error::Interrupted`]) in the convex and general algorithms.
 pub(crate) fn greedy_triangulation_timed(
     points: &PointSet,
+    stop: &Stop,
     phases: &mut Vec<Phase>,
 ) -> Result<(Triangulation, GreedyAlgorithm)> {
     let mut stopwatch = Stopwatch::new(phases);
@@ -144,7 +151,10 @@ pub(crate) fn greedy_triangulation_timed(
                     GreedyAlgorithm::Semicircular,
                 ),
                 (None, None) => (
-                    triangles_of(pts, &convex::greedy_convex(pts, &hull, straight_angles)),
+                    triangles_of(
+                        pts,
+                        &convex::greedy_convex(pts, &hull, straight_angles, stop)?,
+                    ),
                     GreedyAlgorithm::Convex,
                 ),
             }
@@ -152,7 +162,7 @@ pub(crate) fn greedy_triangulation_timed(
         None => {
             stopwatch.lap("shape test");
             let triangles =
-                stopwatch.nested(|phases| general::greedy_general(pts, &hull, phases))?;
+                stopwatch.nested(|phases| general::greedy_general(pts, &hull, stop, phases))?;
             (triangles, GreedyAlgorithm::General)
         }
     };
@@ -186,12 +196,18 @@ pub fn greedy_edges_by(points: &PointSet, algorithm: GreedyAlgorithm) -> Option<
     };
     let edges = match algorithm {
         GreedyAlgorithm::General => distinct_edges(
-            general::greedy_general(pts, &convex_hull_cycle(pts), &mut Vec::new()).ok()?,
+            general::greedy_general(
+                pts,
+                &convex_hull_cycle(pts),
+                &Stop::default(),
+                &mut Vec::new(),
+            )
+            .ok()?,
         ),
         GreedyAlgorithm::Convex => {
             let polygon = convex_hull_cycle(pts);
             let straight_angles = weakly_convex_polygon(pts, &polygon)?;
-            convex::greedy_convex(pts, &polygon, straight_angles)
+            convex::greedy_convex(pts, &polygon, straight_angles, &Stop::default()).ok()?
         }
         GreedyAlgorithm::Semicircular => {
             let rotated = semicircular::base_rotation(pts, &convex_polygon(pts)?)?;
@@ -319,4 +335,88 @@ pub fn is_convex_position(points: &PointSet) -> bool {
 pub fn is_semicircular(points: &PointSet) -> bool {
     let pts = points.points();
     convex_polygon(pts).is_some_and(|poly| semicircular::base_rotation(pts, &poly).is_some())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::error::{Error, Interruption};
+    use crate::structures::SimplePolygon;
+    use rand::{rngs::StdRng, Rng, SeedableRng};
+
+    /// A star polygon: `2k` vertices alternating between radius `scale`
+    /// and `0.4 scale`, rounded to integers.
+    fn star(k: usize, scale: f64) -> Vec<Point> {
+        (0..2 * k)
+            .map(|i| {
+                let r = if i % 2 == 0 { scale } else { 0.4 * scale };
+                let a = std::f64::consts::PI * i as f64 / k as f64;
+                [(r * a.cos()).round(), (r * a.sin()).round()]
+            })
+            .collect()
+    }
+
+    /// The general rounds, the convex splitting and the polygon scan stop
+    /// when the cancel flag is raised or the time limit is 0 s (the registry
+    /// checks before a run starts; these call the solvers directly).
+    #[test]
+    fn a_stopped_run_stops_each_greedy_solver() {
+        let mut rng = StdRng::seed_from_u64(0x6EED_5709);
+        let scattered: Vec<Point> = (0..300)
+            .map(|_| [rng.gen_range(0..1000) as f64, rng.gen_range(0..1000) as f64])
+            .collect();
+        let scattered = PointSet::new(&scattered).unwrap();
+        // A full circle is in convex position but not semicircular.
+        let circle = PointSet::new(&optri_oracle::inputs::sampled_circle(64, 1e6)).unwrap();
+        assert!(is_weakly_convex_position(&circle) && !is_semicircular(&circle));
+        let star = SimplePolygon::new(&star(30, 1000.0)).unwrap();
+        let cancel = crate::Cancel::new();
+        cancel.cancel();
+        let stops = [
+            (
+                Options::default().with_cancel(cancel),
+                Interruption::Cancelled,
+            ),
+            (
+                Options::default().with_time_limit(std::time::Duration::ZERO),
+                Interruption::TimeLimit { seconds: 0.0 },
+            ),
+        ];
+        for (options, why) in stops {
+            let options = options.started();
+            let stopped = Err(Error::Interrupted(why));
+            for points in [&scattered, &circle] {
+                assert_eq!(
+                    solve(points, &options, &mut Vec::new()).map(|_| ()),
+                    stopped
+                );
+            }
+            assert_eq!(
+                polygon::solve(&star, &options, &mut Vec::new()).map(|_| ()),
+                stopped
+            );
+        }
+        let never = Options::default();
+        assert!(solve(&scattered, &never, &mut Vec::new()).is_ok());
+        assert!(polygon::solve(&star, &never, &mut Vec::new()).is_ok());
+    }
+
+    /// Polygons above the chord list's limit are refused before anything is
+    /// allocated.
+    #[test]
+    fn polygons_above_the_chord_limit_are_refused() {
+        let n = polygon::MAX_GREEDY_POLYGON_VERTICES / 2 + 1;
+        let star = SimplePolygon::new(&star(n, 1e6)).unwrap();
+        let result = polygon::solve(&star, &Options::default(), &mut Vec::new()).map(|_| ());
+        assert!(
+            matches!(
+                result,
+                Err(Error::Unsupported {
+                    reason: crate::error::UnsupportedReason::TooManyPoints { .. },
+                    ..
+                })
+            ),
+            "{result:?}"
+        );
+    }
 }

@@ -4,25 +4,36 @@
 //! follows; C. Levcopoulos & A. Lingas, *On approximation behavior of the
 //! greedy triangulation for convex polygons*, Algorithmica 2, 1987).
 //!
+//! # Size
+//! Every chord is listed and sorted before the scan: n(n − 3)/2 chords of 8
+//! bytes (100 MB at 5000 vertices, about a minute with the crossing tests),
+//! so polygons above [`MAX_GREEDY_POLYGON_VERTICES`] are refused before
+//! anything is allocated, and the scan checks the run's stop token.
+//!
 //! # Degenerate input
 //! The order is [`crate::kernel::segment_order`] on the ring positions, a
 //! total order (exact squared length, ties by the kernel's perturbation), so
 //! the greedy triangulation is unique.
 
 use crate::criteria::{Diagnostics, Optimality, Options, Solved};
-use crate::error::{Error, Result};
+use crate::error::{Error, Result, UnsupportedReason};
+use crate::interrupt::Stop;
 use crate::kernel::{properly_cross, segment_order};
 use crate::parallel::prelude::*;
 use crate::structures::{PlanarGraph, SimplePolygon, Triangulation};
 use crate::timing::{timed, Phase};
 
+/// Largest polygon [`greedy_polygon`] takes: its chord list is
+/// n(n − 3)/2 × 8 bytes, 200 MB at this size.
+pub(crate) const MAX_GREEDY_POLYGON_VERTICES: usize = 7000;
+
 /// `greedy` on a polygon: [`greedy_polygon`].
 pub(crate) fn solve(
     polygon: &SimplePolygon,
-    _: &Options,
+    options: &Options,
     phases: &mut Vec<Phase>,
 ) -> Result<Solved> {
-    let triangulation = timed(phases, "greedy", || greedy_polygon(polygon))?;
+    let triangulation = timed(phases, "greedy", || greedy_polygon(polygon, options.stop()))?;
     Ok(Solved {
         triangulation,
         algorithm: "greedy on the polygon's diagonals: shortest first by the exact symbolic \
@@ -42,9 +53,24 @@ pub(crate) fn solve(
 /// open segments contain no vertex, so they cannot overlap or touch
 /// elsewhere. Chords are tested for crossings first and for being diagonals
 /// only then; O(n³) worst case.
-pub(crate) fn greedy_polygon(polygon: &SimplePolygon) -> Result<Triangulation> {
+///
+/// # Errors
+/// [`UnsupportedReason::TooManyPoints`] above
+/// [`MAX_GREEDY_POLYGON_VERTICES`] vertices; [`Error::Interrupted`] when
+/// `stop` says so (checked every 1024 chords).
+pub(crate) fn greedy_polygon(polygon: &SimplePolygon, stop: &Stop) -> Result<Triangulation> {
     let pts = polygon.vertices();
     let n = pts.len();
+    if n > MAX_GREEDY_POLYGON_VERTICES {
+        return Err(Error::Unsupported {
+            criterion: super::INFO.name,
+            reason: UnsupportedReason::TooManyPoints {
+                limit: MAX_GREEDY_POLYGON_VERTICES,
+                distinct: n,
+                because: "the list of all O(n²) chords, sorted by length",
+            },
+        });
+    }
     let mut chords: Vec<[u32; 2]> = Vec::with_capacity(n * (n - 1) / 2);
     for a in 0..n as u32 {
         for b in a + 2..n as u32 {
@@ -57,9 +83,12 @@ pub(crate) fn greedy_polygon(polygon: &SimplePolygon) -> Result<Triangulation> {
     chords.par_sort_unstable_by(|s, t| order(s, t));
     let p = |i: u32| pts[i as usize];
     let mut kept: Vec<[u32; 2]> = Vec::with_capacity(n.saturating_sub(3));
-    for [a, b] in chords {
+    for (k, [a, b]) in chords.into_iter().enumerate() {
         if kept.len() == n - 3 {
             break;
+        }
+        if k.is_multiple_of(1024) {
+            stop.check()?;
         }
         let crossing = kept
             .iter()

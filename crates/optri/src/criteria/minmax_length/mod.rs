@@ -156,6 +156,7 @@ mod under_metric;
 use super::{CriterionEntry, CriterionInfo, Diagnostics, Optimality, Options, Solved};
 use crate::error::Result;
 use crate::graphs::perturbed_rng_from_delaunay;
+use crate::interrupt::Stop;
 use crate::kernel::{compare_lengths, EuclideanOrder, Point};
 use crate::parallel::prelude::*;
 use crate::spatial::morton_order;
@@ -214,7 +215,7 @@ pub(crate) fn solve(
             bound: None,
         });
     }
-    let (triangulation, diagnostics) = run(points, PRODUCT, phases)?;
+    let (triangulation, diagnostics) = run(points, PRODUCT, options.stop(), phases)?;
     let algorithm = if phases.iter().any(|p| p.name == "regions") {
         ALGORITHM.to_string()
     } else {
@@ -330,9 +331,12 @@ pub const SMALL_REGION: usize = 32;
 /// microseconds, so single-region tasks would cost more than they do.
 const REGIONS_PER_TASK: usize = 64;
 
+/// The pipeline of the module docs with `method` on the regions; stopped by
+/// `stop` ([`crate::Error::Interrupted`]) in the region loop.
 fn run(
     points: &PointSet,
     method: PolygonMethod,
+    stop: &Stop,
     phases: &mut Vec<Phase>,
 ) -> Result<(Triangulation, Diagnostics)> {
     let counters = Counters::default();
@@ -390,6 +394,12 @@ fn run(
             .into_par_iter()
             .with_min_len(REGIONS_PER_TASK)
             .flat_map_iter(|r| {
+                // Once per task and before each large region; a stopped
+                // run skips the rest and fails after the phase.
+                let large = regions.triangles(r).len() >= SMALL_REGION;
+                if (r.is_multiple_of(REGIONS_PER_TASK) || large) && stop.reason().is_some() {
+                    return Vec::new();
+                }
                 if let [t] = regions.triangles(r) {
                     return vec![g.triangles[*t as usize]];
                 }
@@ -439,6 +449,7 @@ fn run(
             })
             .collect()
     });
+    stop.check()?;
     let triangles = timed(phases, "repair", || {
         let mut t = repair_flat_triangles(pts, triangles, &counters);
         for c in t.iter_mut().flatten() {
@@ -459,7 +470,7 @@ fn run(
 /// # Errors
 /// Propagates failures of the Delaunay construction.
 pub fn minmax_length(points: &PointSet) -> Result<Triangulation> {
-    run(points, PRODUCT, &mut Vec::new()).map(|(t, _)| t)
+    run(points, PRODUCT, &Stop::default(), &mut Vec::new()).map(|(t, _)| t)
 }
 
 /// The quadratic algorithm on every region with at least `cubic_below`
@@ -477,6 +488,7 @@ pub fn minmax_length_with(
             cubic_below,
             certify: false,
         },
+        &Stop::default(),
         &mut Vec::new(),
     )
 }
@@ -485,7 +497,13 @@ pub fn minmax_length_with(
 /// dynamic program on every region of `ch(S) ∪ rng(S′)`, exact comparisons.
 #[cfg(any(test, feature = "internals"))]
 pub fn minmax_length_cubic(points: &PointSet) -> Result<Triangulation> {
-    run(points, PolygonMethod::Cubic, &mut Vec::new()).map(|(t, _)| t)
+    run(
+        points,
+        PolygonMethod::Cubic,
+        &Stop::default(),
+        &mut Vec::new(),
+    )
+    .map(|(t, _)| t)
 }
 
 #[cfg(test)]
@@ -560,5 +578,36 @@ mod tests {
             cracks > 0,
             "the inputs should include cracks or pinch points"
         );
+    }
+
+    /// A raised cancel flag or a time limit of 0 s stops the region loop
+    /// (run without the Delaunay certificate, so the regions are solved).
+    #[test]
+    fn a_stopped_run_stops_in_the_region_loop() {
+        let mut rng = StdRng::seed_from_u64(REGIONS_SEED);
+        let input: Vec<Point> = (0..300)
+            .map(|_| [rng.gen_range(0..1000) as f64, rng.gen_range(0..1000) as f64])
+            .collect();
+        let points = PointSet::new(&input).unwrap();
+        let method = PolygonMethod::Quadratic {
+            cubic_below: SMALL_REGION,
+            certify: false,
+        };
+        let cancel = crate::Cancel::new();
+        cancel.cancel();
+        let stops = [
+            Options::default().with_cancel(cancel),
+            Options::default().with_time_limit(std::time::Duration::ZERO),
+        ];
+        for options in stops {
+            let options = options.started();
+            let result = run(&points, method, options.stop(), &mut Vec::new());
+            assert!(
+                matches!(result, Err(crate::Error::Interrupted(_))),
+                "{:?}",
+                result.map(|_| ())
+            );
+        }
+        assert!(run(&points, method, &Stop::default(), &mut Vec::new()).is_ok());
     }
 }

@@ -7,6 +7,8 @@
 use super::super::AreaBottleneck;
 use super::maxmin::{witness_apex, AdmissibilityRuns, RangeMaxSearch};
 use super::sleeve::{first_true, SleeveTable, Witness, UNSOLVED};
+use crate::error::Result;
+use crate::interrupt::Stop;
 use crate::kernel::compare_doubled_area;
 use crate::kernel::Point;
 use std::cmp::Ordering;
@@ -28,10 +30,14 @@ impl<'a> MaxMinTable<'a> {
     /// # Panics
     /// If `polygon` is not a strictly convex counter-clockwise cycle of at
     /// least 3 indices into `points`.
-    pub(crate) fn new(points: &'a [Point], polygon: &'a [u32]) -> Self {
-        let table = SleeveTable::new(points, polygon, AreaBottleneck::MaxMin);
+    ///
+    /// # Errors
+    /// [`Error::Interrupted`](crate::Error::Interrupted) when `stop` says so.
+    pub(crate) fn new(points: &'a [Point], polygon: &'a [u32], stop: &Stop) -> Result<Self> {
+        let table = SleeveTable::new(points, polygon, AreaBottleneck::MaxMin, stop)?;
         let runs = AdmissibilityRuns::new(&table);
-        MaxMinTable { table, runs }
+        stop.check()?;
+        Ok(MaxMinTable { table, runs })
     }
 
     /// Is there a triangulation whose smallest triangle has doubled area at

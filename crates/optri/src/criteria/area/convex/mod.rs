@@ -83,6 +83,8 @@ mod tests;
 pub(crate) use decision::MaxMinTable;
 
 use super::AreaBottleneck;
+use crate::error::Result;
+use crate::interrupt::Stop;
 use crate::kernel::Point;
 use sleeve::{SleeveTable, Witness};
 
@@ -100,13 +102,21 @@ use sleeve::{SleeveTable, Witness};
 /// If `polygon` is not strictly convex and counter-clockwise, has fewer
 /// than 3 or more than 65535 vertices, or uses a coordinate outside the
 /// kernel's exact range ([`crate::kernel::MAX_COORDINATE`]).
-pub(crate) fn maxmin_area_convex(points: &[Point], polygon: &[u32]) -> Vec<[u32; 3]> {
-    let table = MaxMinTable::new(points, polygon);
-    if polygon.len() <= RANGE_MAX_UP_TO {
+///
+/// # Errors
+/// [`Error::Interrupted`](crate::Error::Interrupted) when `stop` says so
+/// (checked while the table is built).
+pub(crate) fn maxmin_area_convex(
+    points: &[Point],
+    polygon: &[u32],
+    stop: &Stop,
+) -> Result<Vec<[u32; 3]>> {
+    let table = MaxMinTable::new(points, polygon, stop)?;
+    Ok(if polygon.len() <= RANGE_MAX_UP_TO {
         table.optimum_by_range_max()
     } else {
         table.optimum_by_search()
-    }
+    })
 }
 
 /// Where the MaxMin routes cross (measured, `area_timing`, quiet machine):
@@ -121,7 +131,9 @@ const RANGE_MAX_UP_TO: usize = 5000;
 /// Same contract and bounds as [`maxmin_area_convex`].
 #[cfg(test)]
 pub(crate) fn maxmin_area_convex_by_search(points: &[Point], polygon: &[u32]) -> Vec<[u32; 3]> {
-    MaxMinTable::new(points, polygon).optimum_by_search()
+    MaxMinTable::new(points, polygon, &Stop::default())
+        .expect("never stopped")
+        .optimum_by_search()
 }
 
 /// A MinMax-area triangulation of a strictly convex polygon: the largest
@@ -132,13 +144,20 @@ pub(crate) fn maxmin_area_convex_by_search(points: &[Point], polygon: &[u32]) ->
 ///
 /// # Panics
 /// As [`maxmin_area_convex`].
-pub(crate) fn minmax_area_convex(points: &[Point], polygon: &[u32]) -> Vec<[u32; 3]> {
-    let table = SleeveTable::new(points, polygon, AreaBottleneck::MinMax);
+///
+/// # Errors
+/// As [`maxmin_area_convex`].
+pub(crate) fn minmax_area_convex(
+    points: &[Point],
+    polygon: &[u32],
+    stop: &Stop,
+) -> Result<Vec<[u32; 3]>> {
+    let table = SleeveTable::new(points, polygon, AreaBottleneck::MinMax, stop)?;
     if table.n() == 3 {
-        return table.triangulation(Witness::Whole { i: 0 });
+        return Ok(table.triangulation(Witness::Whole { i: 0 }));
     }
     let witness = minmax::minmax_witness(&table);
-    table.triangulation(witness)
+    Ok(table.triangulation(witness))
 }
 
 /// The MaxMin decision (Algorithm 49): is there a triangulation of the
@@ -150,5 +169,7 @@ pub(crate) fn minmax_area_convex(points: &[Point], polygon: &[u32]) -> Vec<[u32;
 /// As [`maxmin_area_convex`], or if `doubled_area` is NaN.
 #[cfg(test)]
 pub(crate) fn maxmin_area_at_least(points: &[Point], polygon: &[u32], doubled_area: f64) -> bool {
-    MaxMinTable::new(points, polygon).admits_doubled_area(doubled_area)
+    MaxMinTable::new(points, polygon, &Stop::default())
+        .expect("never stopped")
+        .admits_doubled_area(doubled_area)
 }

@@ -10,6 +10,8 @@
 //! of `P_ij` from `i`.
 
 use super::super::AreaBottleneck;
+use crate::error::Result;
+use crate::interrupt::Stop;
 use crate::kernel::cross_sign;
 use crate::kernel::{compare_areas, dot_sign, orient_sign, Point, MAX_COORDINATE, MIN_COORDINATE};
 use std::cmp::Ordering;
@@ -316,7 +318,16 @@ pub(super) struct SleeveTable<'a> {
 impl<'a> SleeveTable<'a> {
     /// Steps i–iii: O(n²) time and space, plus one exact sort of the
     /// distinct bottleneck triangles (O(n² log n) comparisons).
-    pub(super) fn new(points: &'a [Point], polygon: &'a [u32], objective: AreaBottleneck) -> Self {
+    ///
+    /// # Errors
+    /// [`Error::Interrupted`](crate::Error::Interrupted) when `stop` says
+    /// so (checked once per piece length).
+    pub(super) fn new(
+        points: &'a [Point],
+        polygon: &'a [u32],
+        objective: AreaBottleneck,
+        stop: &Stop,
+    ) -> Result<Self> {
         let poly = ConvexPolygon::new(points, polygon);
         let n = poly.n;
         let mcw = poly.max_clockwise();
@@ -353,6 +364,7 @@ impl<'a> SleeveTable<'a> {
         // from one of the two triangles at the base. Both sub-pieces are
         // ≤2-zone again (zonality grows with the chain), hence already solved.
         for len in 2..n {
+            stop.check()?;
             for i in 0..n {
                 if len > mcw[i] {
                     continue;
@@ -377,6 +389,7 @@ impl<'a> SleeveTable<'a> {
 
         // One exact sort of the distinct bottleneck triangles; equal areas
         // get equal ranks.
+        stop.check()?;
         let mut ears: Vec<u32> = value.iter().copied().filter(|&v| v != UNSOLVED).collect();
         ears.sort_unstable();
         ears.dedup();
@@ -392,7 +405,8 @@ impl<'a> SleeveTable<'a> {
         for v in value.iter_mut().filter(|v| **v != UNSOLVED) {
             *v = rank_of_ear[*v as usize];
         }
-        SleeveTable {
+        stop.check()?;
+        Ok(SleeveTable {
             poly,
             mcw,
             mccw,
@@ -405,7 +419,7 @@ impl<'a> SleeveTable<'a> {
             rank: value,
             uses_first_ear,
             representative,
-        }
+        })
     }
 
     /// Number of vertices.

@@ -8,8 +8,8 @@ use super::decision::MaxMinTable;
 use super::maxmin::RangeMaxSearch;
 use super::minmax::{search_pairs, BlockSink};
 use super::sleeve::{Bottleneck, SleeveTable, TopFromEnd, TopFromStart, UNSOLVED};
-use super::{maxmin_area_at_least, maxmin_area_convex, maxmin_area_convex_by_search};
-use super::{minmax_area_convex, Point};
+use super::{maxmin_area_at_least, maxmin_area_convex_by_search, Point};
+use crate::interrupt::Stop;
 use crate::kernel::{compare_doubled_area, cross_sign};
 use crate::kernel::{dot_sign, orient_sign};
 use optri_oracle::inputs::{ellipse_polygon, strict_hull};
@@ -26,6 +26,16 @@ use std::collections::HashMap;
 // ---------------------------------------------------------------------------
 // Generators (integer coordinates, strictly convex, counter-clockwise)
 // ---------------------------------------------------------------------------
+
+/// Algorithm 44 for MaxMin, never stopped.
+fn maxmin_area_convex(points: &[Point], polygon: &[u32]) -> Vec<[u32; 3]> {
+    super::maxmin_area_convex(points, polygon, &Stop::default()).unwrap()
+}
+
+/// Algorithm 44 for MinMax, never stopped.
+fn minmax_area_convex(points: &[Point], polygon: &[u32]) -> Vec<[u32; 3]> {
+    super::minmax_area_convex(points, polygon, &Stop::default()).unwrap()
+}
 
 const SEED_VALTR: u64 = 0x5641_4c54_5200_0001;
 const SEED_CIRCLE: u64 = 0x4349_5243_4c45_0002;
@@ -261,7 +271,7 @@ fn our_values(points: &[Point], polygon: &[u32]) -> (BigRational, BigRational) {
 /// Decision consistency: the optimum is admitted (with a
 /// witness attaining it), the next larger table value is not.
 fn check_decision(points: &[Point], polygon: &[u32], max_min: &BigRational) {
-    let table = MaxMinTable::new(points, polygon);
+    let table = MaxMinTable::new(points, polygon, &Stop::default()).unwrap();
     let sleeve = table.sleeve_table();
     let reps: Vec<[Point; 3]> = (1..=sleeve.max_rank())
         .map(|r| sleeve.poly.triangle(sleeve.representative(r)))
@@ -661,7 +671,8 @@ fn zonality_test_equals_the_angle_formula_and_mcw_mccw_agree() {
     let mut pieces = 0;
     for points in property_sample(&mut rng, 120) {
         let polygon = identity(points.len());
-        let table = SleeveTable::new(&points, &polygon, AreaBottleneck::MaxMin);
+        let table =
+            SleeveTable::new(&points, &polygon, AreaBottleneck::MaxMin, &Stop::default()).unwrap();
         let (n, poly) = (table.n(), &table.poly);
         for i in 0..n {
             for len in 2..n {
@@ -697,7 +708,8 @@ fn top_and_strip_equal_brute_force() {
     let mut pieces = 0;
     for points in property_sample(&mut rng, 80) {
         let polygon = identity(points.len());
-        let table = SleeveTable::new(&points, &polygon, AreaBottleneck::MinMax);
+        let table =
+            SleeveTable::new(&points, &polygon, AreaBottleneck::MinMax, &Stop::default()).unwrap();
         let (n, poly) = (table.n(), &table.poly);
         for i in 0..n {
             for len in 2..n {
@@ -748,7 +760,8 @@ fn rotating_top_trackers_equal_the_binary_search() {
     let mut queries = 0;
     for points in property_sample(&mut rng, 80) {
         let polygon = identity(points.len());
-        let table = SleeveTable::new(&points, &polygon, AreaBottleneck::MinMax);
+        let table =
+            SleeveTable::new(&points, &polygon, AreaBottleneck::MinMax, &Stop::default()).unwrap();
         let (n, poly) = (table.n(), &table.poly);
         for v in 0..n {
             let (mut row, mut column) = (TopFromStart::new(poly, v), TopFromEnd::new(poly, v));
@@ -781,7 +794,7 @@ fn sleeve_table_equals_klincsek_on_every_solved_piece() {
     {
         let polygon = identity(points.len());
         for objective in [AreaBottleneck::MaxMin, AreaBottleneck::MinMax] {
-            let table = SleeveTable::new(&points, &polygon, objective);
+            let table = SleeveTable::new(&points, &polygon, objective, &Stop::default()).unwrap();
             let n = table.n();
             for i in 0..n {
                 for len in 2..n {
@@ -826,7 +839,7 @@ fn rows_and_columns_are_quasi_concave_on_their_intervals() {
     let (mut lines, mut with_plateau) = (0, 0);
     for points in property_sample(&mut rng, 120) {
         let polygon = identity(points.len());
-        let table = MaxMinTable::new(&points, &polygon);
+        let table = MaxMinTable::new(&points, &polygon, &Stop::default()).unwrap();
         let (sleeve, runs) = (table.sleeve_table(), table.runs());
         let n = sleeve.n();
         for line in 0..2 * n {
@@ -890,7 +903,7 @@ fn coverage_and_maxmin_pair_search_equal_brute_force() {
     let mut queries = 0;
     for points in property_sample(&mut rng, 120) {
         let polygon = identity(points.len());
-        let table = MaxMinTable::new(&points, &polygon);
+        let table = MaxMinTable::new(&points, &polygon, &Stop::default()).unwrap();
         let (sleeve, runs) = (table.sleeve_table(), table.runs());
         let search = RangeMaxSearch::new(sleeve, runs);
         let n = sleeve.n();
@@ -965,7 +978,8 @@ fn minmax_blocks_equal_brute_force_and_the_switch_predicates_are_monotone() {
     let (mut pairs, mut segments, mut column_plateaus) = (0, 0, 0);
     for points in property_sample(&mut rng, 160) {
         let polygon = identity(points.len());
-        let table = SleeveTable::new(&points, &polygon, AreaBottleneck::MinMax);
+        let table =
+            SleeveTable::new(&points, &polygon, AreaBottleneck::MinMax, &Stop::default()).unwrap();
         let poly = &table.poly;
         let mut sink = PerPairMinimum::default();
         search_pairs(&table, &mut sink);
@@ -1076,7 +1090,8 @@ fn lemma_23_and_the_strengthened_lemma_37_hold_on_random_triangulations() {
     let (mut triangulations, mut internal, mut only_triangle) = (0, 0, 0);
     for points in property_sample(&mut rng, 120) {
         let polygon = identity(points.len());
-        let table = SleeveTable::new(&points, &polygon, AreaBottleneck::MaxMin);
+        let table =
+            SleeveTable::new(&points, &polygon, AreaBottleneck::MaxMin, &Stop::default()).unwrap();
         let (n, poly) = (table.n(), &table.poly);
         // Zonality of the piece from position a forwards to b (≤ 2 for edges).
         let small = |a: usize, b: usize| {
@@ -1159,7 +1174,7 @@ fn boundary_edges_as_solved_pieces_would_be_wrong() {
             continue;
         }
         let polygon = identity(points.len());
-        let table = MaxMinTable::new(&points, &polygon);
+        let table = MaxMinTable::new(&points, &polygon, &Stop::default()).unwrap();
         let sleeve = table.sleeve_table();
         let n = sleeve.n();
         let ok = |i: usize, len: usize, tau: u32| {
@@ -1200,14 +1215,14 @@ fn boundary_edges_as_solved_pieces_would_be_wrong() {
 #[test]
 fn decision_on_a_triangle_and_thresholds_between_values() {
     let points = [[0.0, 0.0], [4.0, 0.0], [0.0, 3.0]];
-    let table = MaxMinTable::new(&points, &[0, 1, 2]);
+    let table = MaxMinTable::new(&points, &[0, 1, 2], &Stop::default()).unwrap();
     assert!(table.admits_doubled_area(12.0));
     assert!(!table.admits_doubled_area(12.000000000000002));
     assert!(table.admits_doubled_area(11.5));
     assert_eq!(table.optimum_by_search().len(), 1);
     // The square: optimum 4; any threshold in (4, 8] fails.
     let square = [[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [0.0, 2.0]];
-    let table = MaxMinTable::new(&square, &[0, 1, 2, 3]);
+    let table = MaxMinTable::new(&square, &[0, 1, 2, 3], &Stop::default()).unwrap();
     assert!(table.admits_doubled_area(4.0));
     assert!(table.admits_doubled_area(3.999));
     assert!(!table.admits_doubled_area(4.001));

@@ -53,7 +53,9 @@
 //! the worst case, e.g. points in convex position, where the RNG is nearly
 //! the hull cycle and there is one face; faces above [`MAX_FACE_CORNERS`]
 //! skip candidates 2 and 3), `O(n²)` flips worst case for Algorithm 76
-//! (`O(n)` observed), and `O(h · n log n)` for the bound. Measured (release,
+//! (`O(n)` observed), and `O(h · n log n)` for the bound (worst case; edges
+//! settled by `DT`'s empty triangles are not searched, see
+//! [`certified_bound`]). Measured (release,
 //! uniform points in the unit square, both objectives): about 10 ms at
 //! n = 1000 and 0.1 s at n = 10⁴ (largest face 184 corners).
 //!
@@ -109,6 +111,7 @@ use super::polygon::BottleneckArea;
 use super::AreaBottleneck;
 use crate::error::{Error, Result};
 use crate::graphs::rng_from_delaunay;
+use crate::interrupt::Stop;
 use crate::kernel::{
     angle_at_least_30_degrees, compare_areas, compare_corner_angles, incircle_sign, orient_sign,
     Point,
@@ -117,7 +120,7 @@ use crate::polygon_program::optimal_triangulation;
 use crate::spatial::convex_hull_cycle;
 use crate::structures::{DelaunayGraph, PlanarGraph, PointSet, PolygonCycle, NO_TRIANGLE};
 use std::cmp::Ordering;
-use std::collections::VecDeque;
+use std::collections::{HashMap, HashSet, VecDeque};
 
 /// The best triangulation found, which candidate it is, and the bound.
 #[derive(Clone, Debug)]
@@ -135,6 +138,10 @@ pub(crate) struct GeneralAreaResult {
     /// accepted point set has a hull edge); kept for inputs without one.
     pub bound: Option<[u32; 3]>,
 }
+
+/// Loop steps between two checks of the stop token: a check reads the
+/// clock, about as costly as a few orientation tests.
+const STOP_CHECK_EVERY: usize = 1024;
 
 /// Candidate 1.
 pub(crate) const DELAUNAY: &str = "Delaunay";
@@ -189,21 +196,32 @@ pub(crate) struct Candidates {
 ///
 /// # Errors
 /// [`Error::Internal`] if spade fails or a face program finds no
-/// triangulation (a bug).
+/// triangulation (a bug); [`Error::Interrupted`] when `stop` says so
+/// (checked between faces, flips and searched hull edges).
 pub(crate) fn area_general(
     points: &PointSet,
     objective: AreaBottleneck,
+    stop: &Stop,
 ) -> Result<GeneralAreaResult> {
-    Ok(best_of(points, objective, &candidates(points, objective)?))
+    best_of(
+        points,
+        objective,
+        &candidates(points, objective, stop)?,
+        stop,
+    )
 }
 
 /// The best of `candidates` under `objective` (the first of the best), with
 /// the certified bound (module docs).
+///
+/// # Errors
+/// [`Error::Interrupted`] when `stop` says so.
 pub(crate) fn best_of(
     points: &PointSet,
     objective: AreaBottleneck,
     candidates: &Candidates,
-) -> GeneralAreaResult {
+    stop: &Stop,
+) -> Result<GeneralAreaResult> {
     let pts = points.points();
     let mut best = 0;
     for (i, c) in candidates.list.iter().enumerate() {
@@ -216,19 +234,29 @@ pub(crate) fn best_of(
         }
     }
     let winner = &candidates.list[best];
-    let bound = certified_bound(pts, &convex_hull_cycle(pts), objective);
+    let bound = certified_bound(
+        pts,
+        &convex_hull_cycle(pts),
+        &candidates.list[0].triangles,
+        objective,
+        stop,
+    )?;
     let exact = bound.is_some_and(|b| area_order(pts, winner.bottleneck, b) == Ordering::Equal);
-    GeneralAreaResult {
+    Ok(GeneralAreaResult {
         triangles: winner.triangles.clone(),
         algorithm: winner.name.to_string(),
         exact,
         bound,
-    }
+    })
 }
 
 /// The four candidates of the module docs for `objective`.
-pub(crate) fn candidates(points: &PointSet, objective: AreaBottleneck) -> Result<Candidates> {
-    candidates_with_cap(points, objective, MAX_FACE_CORNERS)
+pub(crate) fn candidates(
+    points: &PointSet,
+    objective: AreaBottleneck,
+    stop: &Stop,
+) -> Result<Candidates> {
+    candidates_with_cap(points, objective, MAX_FACE_CORNERS, stop)
 }
 
 /// [`candidates`] with the face-size cap `max_face` instead of
@@ -237,6 +265,7 @@ fn candidates_with_cap(
     points: &PointSet,
     objective: AreaBottleneck,
     max_face: usize,
+    stop: &Stop,
 ) -> Result<Candidates> {
     let pts = points.points();
     let g = DelaunayGraph::with_topology(pts)?;
@@ -256,13 +285,13 @@ fn candidates_with_cap(
     }
     if largest_face <= max_face {
         if thirty_degrees {
-            let fat = triangulate_faces(pts, &faces, objective, true)?;
+            let fat = triangulate_faces(pts, &faces, objective, true, stop)?;
             list.push(with_bottleneck(ALGORITHM_75, fat));
         }
-        let rng_hull = triangulate_faces(pts, &faces, objective, false)?;
+        let rng_hull = triangulate_faces(pts, &faces, objective, false, stop)?;
         list.push(with_bottleneck(RNG_HULL_OPTIMUM, rng_hull));
     }
-    let (algorithm_76, flips) = algorithm_76(pts, &g, smallest_angle);
+    let (algorithm_76, flips) = algorithm_76(pts, &g, smallest_angle, stop)?;
     list.push(with_bottleneck(ALGORITHM_76, algorithm_76));
     Ok(Candidates {
         list,
@@ -341,10 +370,16 @@ fn triangulate_faces(
     faces: &[Vec<u32>],
     objective: AreaBottleneck,
     thirty_degrees: bool,
+    stop: &Stop,
 ) -> Result<Vec<[u32; 3]>> {
     let p = |v: u32| pts[v as usize];
     let mut out = Vec::with_capacity(2 * pts.len());
-    for face in faces {
+    for (k, face) in faces.iter().enumerate() {
+        // Small faces are most of them: check every few, and before each
+        // large one (a face of k corners costs O(k³)).
+        if k.is_multiple_of(STOP_CHECK_EVERY) || face.len() > 64 {
+            stop.check()?;
+        }
         let region = PolygonCycle::exact(pts, face);
         let convex = region.is_strictly_convex();
         let v = face.as_slice();
@@ -379,8 +414,14 @@ fn triangulate_faces(
 
 /// Algorithm 76 from `DT` with the angle floor `alpha` (a corner
 /// `[apex, a, b]`; `DT`'s smallest angle): the triangles and the number of
-/// flips (module docs for the rule, the order and termination).
-fn algorithm_76(pts: &[Point], g: &DelaunayGraph, alpha: [u32; 3]) -> (Vec<[u32; 3]>, usize) {
+/// flips (module docs for the rule, the order and termination), or
+/// [`Error::Interrupted`] when `stop` says so.
+fn algorithm_76(
+    pts: &[Point],
+    g: &DelaunayGraph,
+    alpha: [u32; 3],
+    stop: &Stop,
+) -> Result<(Vec<[u32; 3]>, usize)> {
     let p = |v: u32| pts[v as usize];
     let alpha = alpha.map(p);
     let mut tri = g.triangles.clone();
@@ -399,7 +440,12 @@ fn algorithm_76(pts: &[Point], g: &DelaunayGraph, alpha: [u32; 3]) -> (Vec<[u32;
             .all(|corner| compare_corner_angles(corner, alpha) != Ordering::Less)
     };
     let mut flips = 0;
+    let mut popped = 0usize;
     while let Some((t, j, [x, y])) = queue.pop_front() {
+        popped += 1;
+        if popped.is_multiple_of(STOP_CHECK_EVERY) {
+            stop.check()?;
+        }
         let t = t as usize;
         if tri[t][j] != x || tri[t][(j + 1) % 3] != y || nb[t][j] == NO_TRIANGLE {
             continue; // stale: the side changed since it was queued
@@ -458,74 +504,134 @@ fn algorithm_76(pts: &[Point], g: &DelaunayGraph, alpha: [u32; 3]) -> (Vec<[u32;
             }
         }
     }
-    (tri, flips)
+    Ok((tri, flips))
 }
 
 /// The certified bound of the module docs, as a triangle `[a, b, r]` on a
-/// hull edge `ab` (`hull`: the counter-clockwise hull cycle). `None` only
-/// without a hull edge that has a point on its inner side (all points
-/// collinear, which [`PointSet`] rejects).
+/// hull edge `ab` (`hull`: the counter-clockwise hull cycle; `triangles`:
+/// any triangulation of `pts`, whose triangles on the hull edges are empty
+/// and so settle most edges without a search). `None` only without a hull
+/// edge that has a point on its inner side (all points collinear, which
+/// [`PointSet`] rejects).
+///
+/// The result is that of the definition, edge by edge in hull order (the
+/// first tightest edge; on it the largest empty apex first by the angle at
+/// `a`, or the smallest apex of least index), but an edge is searched only
+/// if it can be strictly tighter than the bound so far: its triangle in
+/// `triangles` is empty, so for MaxMin `M(ab)` is at least its area, and for
+/// MinMax `m(ab)` is at most its area. On a lattice, where every empty
+/// triangle has the same area (Pick), that settles every edge but the first,
+/// and the cost falls from `O(h · n log n)` to `O(n)`.
 pub(crate) fn certified_bound(
     pts: &[Point],
     hull: &[u32],
+    triangles: &[[u32; 3]],
     objective: AreaBottleneck,
-) -> Option<[u32; 3]> {
-    let p = |v: u32| pts[v as usize];
+    stop: &Stop,
+) -> Result<Option<[u32; 3]>> {
     let h = hull.len();
+    let mut apex_of_hull_edge: HashMap<[u32; 2], u32> = HashMap::with_capacity(h);
+    let hull_edges: HashSet<[u32; 2]> = (0..h).map(|e| [hull[e], hull[(e + 1) % h]]).collect();
+    for t in triangles {
+        for k in 0..3 {
+            let side = [t[k], t[(k + 1) % 3]];
+            // Counter-clockwise triangles hold a hull edge in the hull's
+            // direction; a clockwise one would hold it reversed.
+            for side in [side, [side[1], side[0]]] {
+                if hull_edges.contains(&side) {
+                    apex_of_hull_edge.insert(side, t[(k + 2) % 3]);
+                }
+            }
+        }
+    }
     let mut bound: Option<[u32; 3]> = None;
     let mut inner: Vec<u32> = Vec::with_capacity(pts.len());
     for e in 0..h {
         let (a, b) = (hull[e], hull[(e + 1) % h]);
-        let (pa, pb) = (p(a), p(b));
-        inner.clear();
-        inner.extend((0..pts.len() as u32).filter(|&r| orient_sign(pa, pb, p(r)) > 0));
-        if inner.is_empty() {
-            continue;
-        }
-        let edge_value = match objective {
-            AreaBottleneck::MaxMin => {
-                // By the angle at a (counter-clockwise from ab), ties by the
-                // angle at b (clockwise from ba): both are orientations.
-                inner.sort_unstable_by(|&q, &r| match orient_sign(pa, p(q), p(r)) {
-                    1 => Ordering::Less,
-                    -1 => Ordering::Greater,
-                    _ => orient_sign(pb, p(q), p(r)).cmp(&0),
-                });
-                let mut lowest_at_b: Option<u32> = None;
-                let mut largest: Option<[u32; 3]> = None;
-                for &r in &inner {
-                    // r is an empty apex iff its angle at b is strictly below
-                    // that of every point before it.
-                    if lowest_at_b.is_none_or(|m| orient_sign(pb, p(m), p(r)) > 0) {
-                        lowest_at_b = Some(r);
-                        let t = [a, b, r];
-                        if largest.is_none_or(|l| area_order(pts, t, l) == Ordering::Greater) {
-                            largest = Some(t);
-                        }
-                    }
-                }
-                largest
+        if let (Some(b0), Some(&r)) = (bound, apex_of_hull_edge.get(&[a, b])) {
+            let settled = match objective {
+                // M(ab) >= A(abr) >= the bound: not strictly smaller.
+                AreaBottleneck::MaxMin => area_order(pts, [a, b, r], b0) != Ordering::Less,
+                // m(ab) <= A(abr) <= the bound: not strictly larger.
+                AreaBottleneck::MinMax => area_order(pts, [a, b, r], b0) != Ordering::Greater,
+            };
+            if settled {
+                continue;
             }
-            AreaBottleneck::MinMax => inner.iter().map(|&r| [a, b, r]).reduce(|s, t| {
-                if area_order(pts, t, s) == Ordering::Less {
-                    t
-                } else {
-                    s
-                }
-            }),
+        }
+        stop.check()?;
+        let Some(value) = edge_bound(pts, a, b, objective, &mut inner) else {
+            continue;
         };
-        let Some(value) = edge_value else { continue };
-        // MaxMin: the smallest of the per-edge maxima; MinMax: the largest of
-        // the per-edge minima.
-        let tighter = bound.is_none_or(|b| match objective {
-            AreaBottleneck::MaxMin => area_order(pts, value, b) == Ordering::Less,
-            AreaBottleneck::MinMax => area_order(pts, value, b) == Ordering::Greater,
-        });
-        if tighter {
+        if tightens(pts, objective, value, bound) {
             bound = Some(value);
         }
     }
-    bound
+    Ok(bound)
+}
+
+/// Is the edge bound `value` strictly tighter than `bound`? MaxMin keeps the
+/// smallest of the per-edge maxima, MinMax the largest of the per-edge
+/// minima.
+fn tightens(
+    pts: &[Point],
+    objective: AreaBottleneck,
+    value: [u32; 3],
+    bound: Option<[u32; 3]>,
+) -> bool {
+    bound.is_none_or(|b| match objective {
+        AreaBottleneck::MaxMin => area_order(pts, value, b) == Ordering::Less,
+        AreaBottleneck::MinMax => area_order(pts, value, b) == Ordering::Greater,
+    })
+}
+
+/// The bound of one hull edge `ab` (module docs): the largest empty triangle
+/// `abr` (MaxMin), first by the angle at `a`, or the smallest triangle
+/// `abr` of least index `r` (MinMax); `None` without a point on the inner
+/// side. `inner` is scratch space.
+fn edge_bound(
+    pts: &[Point],
+    a: u32,
+    b: u32,
+    objective: AreaBottleneck,
+    inner: &mut Vec<u32>,
+) -> Option<[u32; 3]> {
+    let p = |v: u32| pts[v as usize];
+    let (pa, pb) = (p(a), p(b));
+    inner.clear();
+    inner.extend((0..pts.len() as u32).filter(|&r| orient_sign(pa, pb, p(r)) > 0));
+    match objective {
+        AreaBottleneck::MaxMin => {
+            // By the angle at a (counter-clockwise from ab), ties by the
+            // angle at b (clockwise from ba): both are orientations.
+            inner.sort_unstable_by(|&q, &r| match orient_sign(pa, p(q), p(r)) {
+                1 => Ordering::Less,
+                -1 => Ordering::Greater,
+                _ => orient_sign(pb, p(q), p(r)).cmp(&0),
+            });
+            let mut lowest_at_b: Option<u32> = None;
+            let mut largest: Option<[u32; 3]> = None;
+            for &r in inner.iter() {
+                // r is an empty apex iff its angle at b is strictly below
+                // that of every point before it.
+                if lowest_at_b.is_none_or(|m| orient_sign(pb, p(m), p(r)) > 0) {
+                    lowest_at_b = Some(r);
+                    let t = [a, b, r];
+                    if largest.is_none_or(|l| area_order(pts, t, l) == Ordering::Greater) {
+                        largest = Some(t);
+                    }
+                }
+            }
+            largest
+        }
+        AreaBottleneck::MinMax => inner.iter().map(|&r| [a, b, r]).reduce(|s, t| {
+            if area_order(pts, t, s) == Ordering::Less {
+                t
+            } else {
+                s
+            }
+        }),
+    }
 }
 
 /// How long each step of the approximation took on one input, and what it
@@ -568,19 +674,31 @@ pub(crate) fn step_times(points: &PointSet) -> Result<AreaGeneralSteps> {
         ("face programs MinMax", AreaBottleneck::MinMax),
     ] {
         timed(&mut phases, name, || {
-            triangulate_faces(pts, &faces, objective, false)
+            triangulate_faces(pts, &faces, objective, false, &Stop::default())
         })?;
     }
     let (_, flips) = timed(&mut phases, "Algorithm 76", || {
-        algorithm_76(pts, &g, smallest_angle(pts, &g.triangles))
-    });
+        algorithm_76(pts, &g, smallest_angle(pts, &g.triangles), &Stop::default())
+    })?;
     let hull = convex_hull_cycle(pts);
     timed(&mut phases, "bound MaxMin", || {
-        certified_bound(pts, &hull, AreaBottleneck::MaxMin)
-    });
+        certified_bound(
+            pts,
+            &hull,
+            &g.triangles,
+            AreaBottleneck::MaxMin,
+            &Stop::default(),
+        )
+    })?;
     timed(&mut phases, "bound MinMax", || {
-        certified_bound(pts, &hull, AreaBottleneck::MinMax)
-    });
+        certified_bound(
+            pts,
+            &hull,
+            &g.triangles,
+            AreaBottleneck::MinMax,
+            &Stop::default(),
+        )
+    })?;
     Ok(AreaGeneralSteps {
         phases,
         faces: faces.len(),

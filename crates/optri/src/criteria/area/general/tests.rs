@@ -11,6 +11,25 @@ use oracle::{to_rational, BigRational};
 use rand::rngs::StdRng;
 use rand::{Rng, SeedableRng};
 
+/// [`super::area_general`], never stopped.
+fn area_general(points: &PointSet, objective: AreaBottleneck) -> Result<GeneralAreaResult> {
+    super::area_general(points, objective, &Stop::default())
+}
+
+/// [`super::candidates`], never stopped.
+fn candidates(points: &PointSet, objective: AreaBottleneck) -> Result<Candidates> {
+    super::candidates(points, objective, &Stop::default())
+}
+
+/// [`super::candidates_with_cap`], never stopped.
+fn candidates_with_cap(
+    points: &PointSet,
+    objective: AreaBottleneck,
+    max_face: usize,
+) -> Result<Candidates> {
+    super::candidates_with_cap(points, objective, max_face, &Stop::default())
+}
+
 const OBJECTIVES: [AreaBottleneck; 2] = [AreaBottleneck::MaxMin, AreaBottleneck::MinMax];
 
 /// The candidates in their tie-breaking order.
@@ -313,6 +332,86 @@ fn bound_is_a_true_bound_and_exact_results_are_optimal() {
     assert!(cases >= 600, "{cases} cases");
     assert!(exact >= 50, "only {exact} of {cases} certified");
     eprintln!("{cases} cases, {exact} certified exact");
+}
+
+/// [`certified_bound`] without settling edges by a triangulation: every hull
+/// edge searched, in hull order.
+fn bound_searching_every_edge(
+    pts: &[Point],
+    hull: &[u32],
+    objective: AreaBottleneck,
+) -> Option<[u32; 3]> {
+    let h = hull.len();
+    let mut bound: Option<[u32; 3]> = None;
+    let mut inner = Vec::new();
+    for e in 0..h {
+        let Some(value) = edge_bound(pts, hull[e], hull[(e + 1) % h], objective, &mut inner) else {
+            continue;
+        };
+        if tightens(pts, objective, value, bound) {
+            bound = Some(value);
+        }
+    }
+    bound
+}
+
+/// Settling hull edges by the empty triangles of a triangulation changes
+/// nothing: the same bound triangle as searching every edge, with every
+/// candidate triangulation, on the test families, lattices (every empty
+/// triangle ties) and points near a circle (long hulls).
+#[test]
+fn settled_edges_leave_the_bound_unchanged() {
+    const SEED: u64 = 0xA4EA_0003;
+    let mut rng = StdRng::seed_from_u64(SEED);
+    let mut inputs: Vec<Vec<Point>> = Vec::new();
+    for i in 0..150 {
+        let n = rng.gen_range(10..=120);
+        inputs.push(sample(&mut rng, FAMILIES[i % FAMILIES.len()], n));
+    }
+    for side in [3, 4, 7, 12] {
+        inputs.push(oracle::inputs::shuffled_grid(&mut rng, side, side + 2, 1.0));
+    }
+    for n in [20, 60, 150] {
+        let mut near_circle = oracle::inputs::rounded_circle(&mut rng, n, 1000.0);
+        near_circle.extend(oracle::inputs::uniform_in_box(
+            &mut rng,
+            n / 10,
+            [-300.0, -300.0],
+            [300.0, 300.0],
+        ));
+        inputs.push(near_circle);
+    }
+    let mut compared = 0;
+    for input in &inputs {
+        let Ok(ps) = PointSet::new(input) else {
+            continue;
+        };
+        let pts = ps.points();
+        let hull = convex_hull_cycle(pts);
+        if hull.len() == pts.len() {
+            continue;
+        }
+        for objective in OBJECTIVES {
+            let expected = bound_searching_every_edge(pts, &hull, objective);
+            for candidate in candidates(&ps, objective).unwrap().list {
+                assert_eq!(
+                    certified_bound(
+                        pts,
+                        &hull,
+                        &candidate.triangles,
+                        objective,
+                        &Stop::default()
+                    )
+                    .unwrap(),
+                    expected,
+                    "{objective:?}, {} on {pts:?}",
+                    candidate.name
+                );
+                compared += 1;
+            }
+        }
+    }
+    assert!(compared >= 900, "{compared}");
 }
 
 /// The bound of the module docs by its definition (oracle predicates):

@@ -95,6 +95,7 @@ mod scan;
 mod segment_index;
 
 use crate::error::{Error, Result};
+use crate::interrupt::Stop;
 use crate::kernel::{orient_sign, shorter_than, Point};
 use crate::parallel::prelude::*;
 use crate::spatial::{bounding_box, fmax, fmin, inverse_permutation, morton_order};
@@ -150,9 +151,11 @@ const CANDIDATES_PER_TASK: usize = 4096;
 /// close in memory; ties are broken on the original indices, because the
 /// symbolic perturbation depends on them: the renumbered copy is only used
 /// where an index never decides a tie.
+/// [`Error::Interrupted`] when `stop` says so (checked once per round).
 pub(super) fn greedy_general(
     original: &[Point],
     hull: &[u32],
+    stop: &Stop,
     phases: &mut Vec<Phase>,
 ) -> Result<Vec<[u32; 3]>> {
     if let Some(fan) = single_fan(original) {
@@ -169,7 +172,7 @@ pub(super) fn greedy_general(
     let renumbering = Renumbering {
         to_original: &to_original,
     };
-    let mut triangles: Vec<[u32; 3]> = greedy_rounds(&local, &hull, &renumbering, phases)?
+    let mut triangles: Vec<[u32; 3]> = greedy_rounds(&local, &hull, &renumbering, stop, phases)?
         .into_par_iter()
         .map(|t| smallest_corner_first(t.map(|v| to_original[v as usize])))
         .collect();
@@ -246,6 +249,7 @@ fn greedy_rounds(
     points: &[Point],
     hull: &[u32],
     renumbering: &Renumbering,
+    stop: &Stop,
     phases: &mut Vec<Phase>,
 ) -> Result<Vec<[u32; 3]>> {
     let mut stopwatch = Stopwatch::new(phases);
@@ -269,6 +273,7 @@ fn greedy_rounds(
     let mut growth = THRESHOLD_GROWTH;
     while g.edge_count() < target && !open.is_empty() {
         debug_assert!(open.windows(2).all(|w| w[0] < w[1]), "open is ascending");
+        stop.check()?;
         let proposed = if round == 0 {
             FIRST_THRESHOLD_SPACINGS * spacing
         } else {
