@@ -464,7 +464,7 @@ impl Metric {
     /// strictly inside the lune of `pq` and to the left of `p → q` in the
     /// kernel's perturbation `S′` (where no point is on the line, so the
     /// closed and open half-planes agree)? The metric form of
-    /// [`crate::kernel::in_half_lune_symbolic`], for §6 step 1's stack scan.
+    /// [`crate::kernel::lune::in_half_lune_symbolic`], for §6 step 1's stack scan.
     pub fn in_half_lune_symbolic(&self, points: &[Point], p: u32, q: u32, x: u32) -> bool {
         x != p
             && x != q
