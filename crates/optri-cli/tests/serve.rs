@@ -553,7 +553,10 @@ fn size_and_time_limits_refuse_with_413_and_503() {
         ),
         503,
     );
-    assert!(e.contains("longer than this server's limit of 0.001 s"), "{e}");
+    assert!(
+        e.contains("longer than this server's limit of 0.001 s"),
+        "{e}"
+    );
 }
 
 // ---- the server under load, on the loopback interface ----
