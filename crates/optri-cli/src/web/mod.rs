@@ -438,6 +438,12 @@ impl Api {
         let slot = timeout_at(deadline, self.small.wait())
             .await
             .map_err(|_| self.out_of_time())?;
+        // A request whose deadline passed while it queued starts stopped:
+        // every criterion stops at its first check instead of racing the
+        // watcher below.
+        if Instant::now() >= deadline {
+            cancel.cancel();
+        }
         let limits = self.limits.clone();
         let flag = cancel.clone();
         let first = slot.run(move || -> Result<Step, Refusal> {
