@@ -42,6 +42,9 @@ pub enum Error {
         /// Number of input points.
         count: usize,
     },
+    /// Elevations given with the points cannot be used
+    /// ([`crate::PointSet::with_elevations`]).
+    InvalidElevations(ElevationProblem),
     /// A polygon given as input is not a simple polygon.
     InvalidPolygon(PolygonProblem),
     /// A metric description or polygon norm that is not valid (not convex,
@@ -123,6 +126,9 @@ pub enum UnsupportedReason {
         /// The registry names of the criteria that do.
         accepted_by: Vec<&'static str>,
     },
+    /// The criterion reads an elevation per point and the input has none
+    /// ([`crate::PointSet::with_elevations`]).
+    NeedsElevations,
     /// The criterion or graph has no meaning under a non-Euclidean metric
     /// (angles, areas) or does not implement it yet; names the metric.
     MetricNotSupported {
@@ -144,6 +150,41 @@ pub enum Interruption {
     },
     /// The run's [`Cancel`](crate::Cancel) flag was raised.
     Cancelled,
+}
+
+/// What is wrong with the elevations of a point set
+/// ([`Error::InvalidElevations`]); points are named by their input index.
+#[derive(Clone, Debug, PartialEq)]
+#[non_exhaustive]
+pub enum ElevationProblem {
+    /// There is not exactly one elevation per input point.
+    CountMismatch {
+        /// Input points, duplicates included.
+        points: usize,
+        /// Elevations given.
+        elevations: usize,
+    },
+    /// An elevation is NaN or infinite.
+    NonFinite {
+        /// The point's input index.
+        index: usize,
+        /// The offending value.
+        value: f64,
+    },
+    /// An elevation is outside the exact range of coordinates.
+    OutOfRange {
+        /// The point's input index.
+        index: usize,
+        /// The offending value.
+        value: f64,
+    },
+    /// A duplicate of an earlier point carries another elevation.
+    ConflictingDuplicate {
+        /// The duplicate's input index.
+        index: usize,
+        /// The input index of the point it duplicates.
+        kept: usize,
+    },
 }
 
 /// What makes a vertex cycle not a simple polygon ([`Error::InvalidPolygon`]).
@@ -208,6 +249,7 @@ impl fmt::Display for Error {
                 "{count} points exceed the u32 index range (at most {} points)",
                 u32::MAX
             ),
+            Error::InvalidElevations(problem) => write!(f, "invalid elevations: {problem}"),
             Error::InvalidPolygon(problem) => write!(f, "not a simple polygon: {problem}"),
             Error::InvalidMetric(problem) => write!(f, "invalid metric: {problem}"),
             Error::Parse { line, message } if *line > 0 => write!(f, "line {line}: {message}"),
@@ -242,6 +284,10 @@ impl fmt::Display for Error {
                     "{criterion} does not take a metric other than euclidean (got {metric}); \
                      what takes one: {}",
                     taken_by.join(", ")
+                ),
+                UnsupportedReason::NeedsElevations => write!(
+                    f,
+                    "{criterion} needs an elevation (z) for every point, and the input has none"
                 ),
                 UnsupportedReason::NoPolygonInput { accepted_by } => write!(
                     f,
@@ -300,6 +346,30 @@ impl fmt::Display for PolygonProblem {
                 f,
                 "edge {}-{} meets edge {}-{} (the boundary must not touch itself)",
                 first[0], first[1], second[0], second[1]
+            ),
+        }
+    }
+}
+
+impl fmt::Display for ElevationProblem {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        use crate::kernel::{MAX_COORDINATE, MIN_COORDINATE};
+        match self {
+            ElevationProblem::CountMismatch { points, elevations } => write!(
+                f,
+                "{elevations} elevations for {points} points (one per input point is needed)"
+            ),
+            ElevationProblem::NonFinite { index, value } => {
+                write!(f, "point {index} has a non-finite elevation ({value})")
+            }
+            ElevationProblem::OutOfRange { index, value } => write!(
+                f,
+                "point {index} has elevation {value:e}, outside the exact range: |z| must be 0 or \
+                 between 2^-142 ({MIN_COORDINATE:e}) and 2^201 ({MAX_COORDINATE:e})"
+            ),
+            ElevationProblem::ConflictingDuplicate { index, kept } => write!(
+                f,
+                "point {index} repeats point {kept} with another elevation"
             ),
         }
     }

@@ -63,7 +63,7 @@ pub use criteria::{
     BoundMeasure, CertifiedBound, CriterionInfo, Diagnostics, InputKind, Optimality, OptionInfo,
     Options, Progress, OPTIONS,
 };
-pub use error::{Error, Interruption, PolygonProblem, Result, UnsupportedReason};
+pub use error::{ElevationProblem, Error, Interruption, PolygonProblem, Result, UnsupportedReason};
 pub use graphs::{
     convex_hull, delaunay, gabriel_graph, minimum_spanning_tree, relative_neighborhood_graph,
 };

@@ -200,6 +200,7 @@ mod sealed {
         fn solve(&self, criterion: Criterion, options: &Options) -> Result<Solution> {
             let entry = criterion.entry();
             check_options(criterion.name(), entry.info.options, options)?;
+            check_elevations(criterion, self)?;
             run(criterion, options, |options, phases| {
                 (entry.solve)(self, options, phases)
             })
@@ -221,11 +222,23 @@ mod sealed {
             })?;
             // No criterion reads a metric on polygons yet.
             check_options(criterion.name(), &[], options)?;
+            check_elevations(criterion, self.point_set())?;
             run(criterion, options, |options, phases| {
                 solve(self, options, phases)
             })
         }
     }
+}
+
+/// Refuses an input without elevations for a criterion that reads them.
+fn check_elevations(criterion: Criterion, points: &PointSet) -> Result<()> {
+    if criterion.info().needs_elevations && points.elevations().is_none() {
+        return Err(Error::Unsupported {
+            criterion: criterion.name(),
+            reason: UnsupportedReason::NeedsElevations,
+        });
+    }
+    Ok(())
 }
 
 /// Triangulates `input` (a [`PointSet`] or a [`SimplePolygon`]) by

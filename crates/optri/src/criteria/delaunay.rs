@@ -33,6 +33,7 @@ pub(crate) const INFO: CriterionInfo = CriterionInfo {
     optimality: Optimality::Exact,
     options: &[],
     reference: "B. Delaunay, Sur la sphère vide, 1934; bulk load by spade (exact predicates)",
+    needs_elevations: false,
 };
 
 pub(crate) fn solve(points: &PointSet, _: &Options, phases: &mut Vec<Phase>) -> Result<Solved> {

@@ -99,6 +99,10 @@ pub struct CriterionInfo {
     pub options: &'static [&'static str],
     /// The paper the algorithm follows: authors, year, title.
     pub reference: &'static str,
+    /// Does it read an elevation per point
+    /// ([`crate::PointSet::with_elevations`])? An input without them is
+    /// refused with [`crate::UnsupportedReason::NeedsElevations`].
+    pub needs_elevations: bool,
 }
 
 /// What a criterion module provides to the registry: its description and

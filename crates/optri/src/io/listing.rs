@@ -25,6 +25,7 @@ pub fn registry_listing() -> Value {
                 "inputs": c.inputs().iter().map(|k| k.name()).collect::<Vec<_>>(),
                 "options": info.options,
                 "reference": info.reference,
+                "needs_elevations": info.needs_elevations,
             })
         })
         .collect();

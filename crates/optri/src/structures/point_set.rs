@@ -1,6 +1,6 @@
 //! Validated input points: finite, in the exact range, duplicates merged.
 
-use crate::error::{Error, Result};
+use crate::error::{ElevationProblem, Error, Result};
 use crate::kernel::{check_coordinate, orient_sign, CoordinateProblem, Point};
 use crate::parallel::prelude::*;
 use std::sync::Arc;
@@ -37,6 +37,8 @@ struct Data {
     maps: Option<(Vec<u32>, Vec<u32>)>,
     /// `[dropped, kept]` input indices.
     duplicates: Vec<[u32; 2]>,
+    /// An elevation per distinct point ([`PointSet::with_elevations`]).
+    elevations: Option<Vec<f64>>,
 }
 
 impl PointSet {
@@ -88,8 +90,76 @@ impl PointSet {
                 distinct,
                 maps,
                 duplicates,
+                elevations: None,
             }),
         })
+    }
+
+    /// These points with an elevation `z` per *input* point (in input
+    /// order, duplicates included), for the criteria that read one (e.g.
+    /// `minmax-slope`); the others ignore it.
+    ///
+    /// # Errors
+    /// [`Error::InvalidElevations`]: the count differs from the number of
+    /// input points, an elevation is not finite or outside the exact range
+    /// of coordinates, or two duplicates of one point carry different
+    /// elevations (merging them would have to guess).
+    pub fn with_elevations(self, z: &[f64]) -> Result<Self> {
+        let count = self.input_points().len();
+        if z.len() != count {
+            return Err(Error::InvalidElevations(ElevationProblem::CountMismatch {
+                points: count,
+                elevations: z.len(),
+            }));
+        }
+        for (index, &value) in z.iter().enumerate() {
+            match check_coordinate(value) {
+                Ok(_) => {}
+                Err(CoordinateProblem::NonFinite) => {
+                    return Err(Error::InvalidElevations(ElevationProblem::NonFinite {
+                        index,
+                        value,
+                    }))
+                }
+                Err(CoordinateProblem::OutOfRange) => {
+                    return Err(Error::InvalidElevations(ElevationProblem::OutOfRange {
+                        index,
+                        value,
+                    }))
+                }
+            }
+        }
+        for &[dropped, kept] in self.duplicates() {
+            let (a, b) = (z[dropped as usize], z[kept as usize]);
+            if a + 0.0 != b + 0.0 {
+                return Err(Error::InvalidElevations(
+                    ElevationProblem::ConflictingDuplicate {
+                        index: dropped as usize,
+                        kept: kept as usize,
+                    },
+                ));
+            }
+        }
+        let elevations = (0..self.len() as u32)
+            .map(|d| z[self.input_index(d) as usize] + 0.0)
+            .collect();
+        let mut data = Arc::try_unwrap(self.data).unwrap_or_else(|shared| Data {
+            distinct: shared.distinct.clone(),
+            input: shared.input.clone(),
+            maps: shared.maps.clone(),
+            duplicates: shared.duplicates.clone(),
+            elevations: None,
+        });
+        data.elevations = Some(elevations);
+        Ok(Self {
+            data: Arc::new(data),
+        })
+    }
+
+    /// The elevation of each distinct point (indexed like
+    /// [`points`](Self::points)), if the input carried them.
+    pub fn elevations(&self) -> Option<&[f64]> {
+        self.data.elevations.as_deref()
     }
 
     /// Maps distinct-index edges to sorted `[min, max]` input-index pairs.
@@ -262,6 +332,41 @@ mod tests {
             PointSet::new(&[[0.0, 0.0], [1.0, 1.0], [3.0, 3.0], [-2.0, -2.0]]).unwrap_err(),
             Error::AllCollinear { distinct: 4 }
         );
+    }
+
+    #[test]
+    fn elevations_follow_the_distinct_points_and_bad_ones_are_named() {
+        let pts = [[0.0, 0.0], [1.0, 0.0], [0.0, 0.0], [0.0, 1.0]];
+        let ps = PointSet::new(&pts).unwrap();
+        assert_eq!(ps.elevations(), None);
+        let z = ps.clone().with_elevations(&[5.0, 6.0, 5.0, -7.0]).unwrap();
+        assert_eq!(z.elevations(), Some(&[5.0, 6.0, -7.0][..]));
+        assert_eq!(z.points(), ps.points());
+        assert_eq!(
+            ps.clone()
+                .with_elevations(&[5.0, 6.0, 4.0, 7.0])
+                .unwrap_err(),
+            Error::InvalidElevations(ElevationProblem::ConflictingDuplicate { index: 2, kept: 0 })
+        );
+        assert_eq!(
+            ps.clone().with_elevations(&[1.0, 2.0, 1.0]).unwrap_err(),
+            Error::InvalidElevations(ElevationProblem::CountMismatch {
+                points: 4,
+                elevations: 3
+            })
+        );
+        let e = ps
+            .clone()
+            .with_elevations(&[1.0, f64::NAN, 1.0, 0.0])
+            .unwrap_err();
+        assert!(e.to_string().contains("point 1"), "{e}");
+        assert!(matches!(
+            ps.with_elevations(&[1.0, 1e300, 1.0, 0.0]),
+            Err(Error::InvalidElevations(ElevationProblem::OutOfRange {
+                index: 1,
+                ..
+            }))
+        ));
     }
 
     #[test]

@@ -143,6 +143,16 @@ impl SimplePolygon {
         })
     }
 
+    /// This polygon with an elevation per vertex, in the caller's ring
+    /// order (see [`PointSet::with_elevations`]).
+    ///
+    /// # Errors
+    /// [`crate::Error::InvalidElevations`].
+    pub fn with_elevations(mut self, z: &[f64]) -> Result<Self> {
+        self.point_set = self.point_set.with_elevations(z)?;
+        Ok(self)
+    }
+
     /// The vertices as a point set (no duplicates: indices are ring positions).
     pub fn point_set(&self) -> &PointSet {
         &self.point_set

@@ -81,6 +81,7 @@ pub(crate) const MAXMIN_INFO: CriterionInfo = CriterionInfo {
     optimality: GENERAL_OPTIMALITY,
     options: &[],
     reference: REFERENCE,
+    needs_elevations: false,
 };
 
 pub(crate) const MINMAX_INFO: CriterionInfo = CriterionInfo {
@@ -90,6 +91,7 @@ pub(crate) const MINMAX_INFO: CriterionInfo = CriterionInfo {
     optimality: GENERAL_OPTIMALITY,
     options: &[],
     reference: REFERENCE,
+    needs_elevations: false,
 };
 
 /// Which area bottleneck is optimised: the one enum of the area criteria

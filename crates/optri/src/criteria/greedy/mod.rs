@@ -57,6 +57,7 @@ pub(crate) const INFO: CriterionInfo = CriterionInfo {
                 triangulation for convex polygons, Algorithmica 1987; M. T. Dickerson, \
                 R. L. S. Drysdale, S. A. McElfresh & E. Welzl, Fast greedy triangulation \
                 algorithms, 1997",
+    needs_elevations: false,
 };
 
 pub(crate) fn solve(

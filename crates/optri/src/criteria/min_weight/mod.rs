@@ -62,6 +62,7 @@ pub(crate) const INFO: CriterionInfo = CriterionInfo {
     optimality: Optimality::Exact,
     options: &[],
     reference: "G. T. Klincsek 1980; Dickerson, Keil & Montague 1997; Drysdale, McElfresh & Snoeyink 2001; A. Haas 2018",
+    needs_elevations: false,
 };
 
 pub(crate) fn solve(

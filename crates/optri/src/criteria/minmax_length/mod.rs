@@ -185,6 +185,7 @@ pub(crate) const INFO: CriterionInfo = CriterionInfo {
     options: &["metric"],
     reference: "H. Edelsbrunner & T. S. Tan, A quadratic time algorithm for the minmax \
                 length triangulation, FOCS 1991 / SIAM J. Comput. 1993",
+    needs_elevations: false,
 };
 
 pub(crate) fn solve(
