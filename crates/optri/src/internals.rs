@@ -22,11 +22,14 @@ pub mod kernel {
     pub use crate::kernel::norm::side_of_direction;
     pub use crate::kernel::predicates::{
         angle_at_least_30_degrees, angle_below_diamond, certainly_outside_diamonds,
-        compare_doubled_area, exact_squared_length, DiamondPosition, DiamondTriangles,
+        compare_corner_angles, compare_doubled_area, cross_sign, dot_sign, exact_squared_length,
+        on_open_segment, DiamondPosition, DiamondTriangles,
     };
     pub use crate::kernel::squared_length::SquaredLength;
     pub use crate::kernel::symbolic::{compare_equal_lengths_symbolic, height_sign, segment_order};
-    pub use crate::kernel::wedge::strictly_inside_wedge_symbolic;
+    pub use crate::kernel::wedge::{
+        same_direction, strictly_inside_wedge, strictly_inside_wedge_symbolic,
+    };
 }
 
 /// The area criteria on points in convex position by Klincsek's cubic
@@ -123,9 +126,7 @@ pub fn area_general_steps(points: &crate::PointSet) -> crate::Result<AreaGeneral
 /// on any point set, convex ones included: the triangulation, whether it is
 /// proven optimal, the diagnostics and the certified lower bound of the
 /// optimal weight.
-pub fn min_weight_pipeline(
-    points: &crate::PointSet,
-) -> crate::Result<(crate::Triangulation, bool, crate::Diagnostics, f64)> {
+pub fn min_weight_pipeline(points: &crate::PointSet) -> crate::Result<MinWeightRun> {
     min_weight_pipeline_with_budget(points, crate::criteria::min_weight::FRONT_BUDGET)
 }
 
@@ -147,18 +148,32 @@ pub fn min_weight_skeleton_edges(
 pub fn min_weight_pipeline_with_budget(
     points: &crate::PointSet,
     budget: usize,
-) -> crate::Result<(crate::Triangulation, bool, crate::Diagnostics, f64)> {
+) -> crate::Result<MinWeightRun> {
     let mut phases = Vec::new();
     let g = crate::criteria::min_weight::general_min_weight(points, &mut phases, budget)?;
     let lower_bound = g.lower_bound.unwrap_or_else(|| {
         crate::criteria::min_weight::certified_weight_below(&g.solved.triangulation)
     });
-    Ok((
-        g.solved.triangulation,
-        g.solved.optimality.is_exact(),
-        g.solved.diagnostics,
+    Ok(MinWeightRun {
+        exact: g.solved.optimality.is_exact(),
+        triangulation: g.solved.triangulation,
+        diagnostics: g.solved.diagnostics,
         lower_bound,
-    ))
+    })
+}
+
+/// What the general min-weight pipeline returned ([`min_weight_pipeline`]).
+#[derive(Clone, Debug)]
+pub struct MinWeightRun {
+    /// The triangulation found.
+    pub triangulation: crate::Triangulation,
+    /// Is it proven optimal?
+    pub exact: bool,
+    /// What the pipeline did (skeleton edges, faces, searches).
+    pub diagnostics: crate::Diagnostics,
+    /// A certified lower bound on the minimum weight (the weight itself,
+    /// rounded down, when `exact`).
+    pub lower_bound: f64,
 }
 
 /// The registry's [`Solution`](crate::Solution) of the general min-weight

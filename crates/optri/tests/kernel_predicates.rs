@@ -6,11 +6,12 @@
 //! 2^-142.
 
 use optri::internals::kernel::{
-    angle_at_least_30_degrees, exact_squared_length, in_half_lune, strictly_inside_wedge_symbolic,
+    angle_at_least_30_degrees, compare_corner_angles, dot_sign, exact_squared_length, in_half_lune,
+    same_direction, strictly_inside_wedge, strictly_inside_wedge_symbolic,
 };
 use optri::kernel::{
-    compare_areas, compare_corner_angles, compare_lengths, dot_sign, in_lune, incircle_sign,
-    orient_sign, same_direction, strictly_inside_wedge, MAX_COORDINATE, MIN_COORDINATE,
+    compare_areas, compare_lengths, in_lune, incircle_sign, orient_sign, MAX_COORDINATE,
+    MIN_COORDINATE,
 };
 use optri_oracle as oracle;
 use rand::rngs::StdRng;

@@ -383,7 +383,12 @@ fn certified_bounds_equal_the_measures_they_bound() {
     for _ in 0..20 {
         let pts = optri_oracle::inputs::uniform_in_square(&mut rng, 12, 100.0);
         let ps = PointSet::new(&pts).unwrap();
-        let (t, exact, _, lower) = optri::internals::min_weight_pipeline(&ps).unwrap();
+        let optri::internals::MinWeightRun {
+            triangulation: t,
+            exact,
+            lower_bound: lower,
+            ..
+        } = optri::internals::min_weight_pipeline(&ps).unwrap();
         if !exact {
             continue;
         }

@@ -41,7 +41,13 @@ fn check(pts: &[Point], expected: Option<f64>, what: &str) -> optri::Diagnostics
     let Ok(ps) = PointSet::new(pts) else {
         return optri::Diagnostics::default();
     };
-    let (t, exact, diagnostics, lower) = min_weight_pipeline(&ps).unwrap();
+    let optri::internals::MinWeightRun {
+        triangulation: t,
+        exact,
+        diagnostics,
+        lower_bound: lower,
+        ..
+    } = min_weight_pipeline(&ps).unwrap();
     t.validate().unwrap();
     assert_eq!(t.triangles().len(), t.triangles().len());
     let w = weight(&ps, &t);
@@ -408,7 +414,13 @@ fn unsolved_faces_report_a_certified_lower_bound() {
             pts.push(centre);
             let ps = PointSet::new(&pts).unwrap();
             let optimum = wheel_reference(&pts);
-            let (t, exact, d, lower) = min_weight_pipeline_with_budget(&ps, 1).unwrap();
+            let optri::internals::MinWeightRun {
+                triangulation: t,
+                exact,
+                diagnostics: d,
+                lower_bound: lower,
+                ..
+            } = min_weight_pipeline_with_budget(&ps, 1).unwrap();
             if d.get("faces by exact search").unwrap_or(0) + d.get("faces unsolved").unwrap_or(0)
                 == 0
             {
@@ -438,7 +450,11 @@ fn unsolved_faces_report_a_certified_lower_bound() {
                 "wheel {k}: bound {lower} below the hull {hull}"
             );
             // The default budget solves it exactly, to the reference.
-            let (full, exact_full, _, _) = min_weight_pipeline(&ps).unwrap();
+            let optri::internals::MinWeightRun {
+                triangulation: full,
+                exact: exact_full,
+                ..
+            } = min_weight_pipeline(&ps).unwrap();
             assert!(exact_full && close(weight(&ps, &full), optimum));
             // The document: not exact, a lower bound on the weight, the gap.
             let s = min_weight_solution_with_budget(&ps, 1).unwrap();

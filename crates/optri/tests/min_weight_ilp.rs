@@ -167,7 +167,13 @@ fn check(pts: &[Point], what: &str, tally: &mut Tally) {
     s.triangulation.validate().unwrap();
     let tris = distinct(&s.triangulation);
     let w = total_length(ps.points(), &tris);
-    let (t, exact, diagnostics, lower) = min_weight_pipeline(&ps).unwrap();
+    let optri::internals::MinWeightRun {
+        triangulation: t,
+        exact,
+        diagnostics,
+        lower_bound: lower,
+        ..
+    } = min_weight_pipeline(&ps).unwrap();
     t.validate().unwrap();
     let wp = total_length(ps.points(), &distinct(&t));
     tally.optri_time += clock.elapsed();

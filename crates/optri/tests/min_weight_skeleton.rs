@@ -17,8 +17,9 @@
 //! centre), collinear runs, and huge, tiny and negative coordinates.
 
 use optri::internals::kernel::angle_below_diamond;
+use optri::internals::kernel::dot_sign;
 use optri::internals::min_weight_skeleton_edges;
-use optri::kernel::{compare_lengths, dot_sign, orient_sign, properly_cross, Point};
+use optri::kernel::{compare_lengths, orient_sign, properly_cross, Point};
 use optri::PointSet;
 use optri_oracle::inputs::{
     clustered, collinear_runs, grid, grid_subset, integer_circle_points, lattice_points,

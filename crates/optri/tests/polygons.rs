@@ -692,3 +692,68 @@ fn convex_area_optima_equal_exhaustive_enumeration() {
     eprintln!("convex sets checked (criterion runs): {checked}, with tied optima: {ties}");
     assert!(checked >= 900 && ties >= 50, "{checked} {ties}");
 }
+
+/// A convex polygon is solved as the point set of its vertices (its
+/// triangulations are exactly theirs): greedy and minmax length take the
+/// convex-position algorithms, and their answers still equal the polygon
+/// references — greedy edge for edge, minmax length by Klincsek's optimum —
+/// on strictly convex rings, straight runs, a lattice rectangle's boundary
+/// (many equal lengths) and regular polygons, in both orientations.
+#[test]
+fn convex_polygons_take_the_point_set_algorithms() {
+    let mut rng = StdRng::seed_from_u64(36);
+    let mut rings: Vec<(String, Vec<Point>)> = Vec::new();
+    for n in 4..=24 {
+        for collinear in [false, true] {
+            rings.push((
+                format!("parabola n={n} runs={collinear}"),
+                convex_ring(&mut rng, n, collinear),
+            ));
+        }
+        let regular: Vec<Point> = (0..n)
+            .map(|k| {
+                let a = std::f64::consts::TAU * k as f64 / n as f64;
+                [(1000.0 * a.cos()).round(), (1000.0 * a.sin()).round()]
+            })
+            .collect();
+        rings.push((format!("regular n={n}"), regular));
+    }
+    for (w, h) in [(3, 2), (4, 4), (6, 3)] {
+        let mut ring: Vec<Point> = (0..w).map(|x| [x as f64, 0.0]).collect();
+        ring.extend((0..h).map(|y| [w as f64, y as f64]));
+        ring.extend((0..w).map(|x| [(w - x) as f64, h as f64]));
+        ring.extend((0..h).map(|y| [0.0, (h - y) as f64]));
+        rings.push((format!("lattice rectangle {w}x{h}"), ring));
+    }
+    let mut coverage = Coverage::default();
+    let mut cases = 0;
+    for (name, ring) in rings {
+        for reversed in [false, true] {
+            let mut ring = ring.clone();
+            if reversed {
+                ring.reverse();
+            }
+            if !op::is_simple(&ring) {
+                continue;
+            }
+            let what = format!("{name} reversed={reversed}");
+            coverage.add(&ring);
+            check_polygon(&ring, &best_by_klincsek(&ring), &what);
+            let polygon = SimplePolygon::new(&ring).unwrap();
+            for criterion in [Criterion::Greedy, Criterion::MinMaxLength] {
+                let algorithm = triangulate(&polygon, criterion).unwrap().algorithm;
+                assert!(
+                    algorithm.starts_with("convex polygon as its vertex set"),
+                    "{what}: {} ran {algorithm}",
+                    criterion.name()
+                );
+            }
+            cases += 1;
+        }
+    }
+    assert_eq!(cases, 2 * (21 * 3 + 3));
+    assert!(
+        coverage.straight >= 40 && coverage.clockwise >= 60,
+        "{coverage:?}"
+    );
+}

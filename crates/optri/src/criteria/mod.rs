@@ -395,6 +395,34 @@ pub(crate) struct Solved {
 /// The one signature of every criterion's entry point.
 pub(crate) type Solver = fn(&PointSet, &Options, &mut Vec<Phase>) -> Result<Solved>;
 
+/// A convex polygon (straight runs allowed) by the criterion's point-set
+/// `solver` on its vertices: its triangulations are exactly those of the
+/// vertex set, and the point-set algorithms for convex position (greedy's
+/// Theorem 4.2, Edelsbrunner–Tan for minmax length) are far faster than the
+/// cubic polygon program. `None` for a polygon that is not convex.
+pub(crate) fn solve_convex_polygon(
+    polygon: &SimplePolygon,
+    options: &Options,
+    phases: &mut Vec<Phase>,
+    solver: Solver,
+) -> Option<Result<Solved>> {
+    if !polygon.is_convex() {
+        return None;
+    }
+    // The polygon's point set has no duplicates: its indices are ring
+    // positions, as a polygon triangulation's are.
+    Some(
+        solver(polygon.point_set(), options, phases).map(|solved| Solved {
+            triangulation: Triangulation::from_polygon_positions(
+                polygon,
+                solved.triangulation.triangles().to_vec(),
+            ),
+            algorithm: format!("convex polygon as its vertex set: {}", solved.algorithm),
+            ..solved
+        }),
+    )
+}
+
 /// The one signature of every criterion's entry point for a simple polygon
 /// (its triangulation's domain is the polygon, its indices ring positions).
 pub(crate) type PolygonSolver = fn(&SimplePolygon, &Options, &mut Vec<Phase>) -> Result<Solved>;

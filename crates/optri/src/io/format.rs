@@ -236,8 +236,8 @@ pub enum OutputFormat {
     /// `.edge` plus a sibling `.node` (Triangle's format): the edges of a
     /// graph or a triangulation.
     TriangleEdges,
-    /// `.geojson`: [`triangulation_to_geojson`](super::triangulation_to_geojson) /
-    /// [`graph_to_geojson`](super::graph_to_geojson).
+    /// `.geojson`: a triangulation's triangles or a graph's edges as
+    /// features, then the points.
     GeoJson,
 }
 

@@ -9,7 +9,6 @@ use super::json::document_coordinates;
 use super::{check_coordinate, parse, shown, Input, HOLES_UNSUPPORTED};
 use crate::error::Result;
 use crate::kernel::Point;
-use crate::structures::Triangulation;
 use serde::ser::{Serialize, Serializer};
 use serde_json::Value;
 
@@ -260,7 +259,11 @@ fn position(v: &Value, at: &str) -> Result<Point> {
 /// A GeoJSON `FeatureCollection` with one `Polygon` per triangle (properties:
 /// `triangle` number and its input-index `vertices`) and, if
 /// `include_points`, one `Point` per input point (property `index`).
-pub fn triangulation_to_geojson(t: &Triangulation, include_points: bool) -> Value {
+#[cfg(test)]
+pub(crate) fn triangulation_to_geojson(
+    t: &crate::structures::Triangulation,
+    include_points: bool,
+) -> Value {
     to_value(&TriangulationFeatures {
         points: t.points(),
         triangles: t.triangles(),
@@ -273,10 +276,12 @@ pub fn triangulation_to_geojson(t: &Triangulation, include_points: bool) -> Valu
 ///
 /// # Panics
 /// If an edge refers to an index outside `points`.
-pub fn graph_to_geojson(points: &[Point], edges: &[[u32; 2]]) -> Value {
+#[cfg(test)]
+pub(crate) fn graph_to_geojson(points: &[Point], edges: &[[u32; 2]]) -> Value {
     to_value(&GraphFeatures { points, edges })
 }
 
+#[cfg(test)]
 fn to_value(v: &impl Serialize) -> Value {
     // Strings, numbers and arrays only.
     serde_json::to_value(v).expect("a GeoJSON document always converts to a JSON value")

@@ -59,14 +59,12 @@ mod write;
 pub use decimal::{Arithmetic, Scaled};
 pub use format::{InputFormat, OutputFormat};
 
-pub use geojson::{graph_to_geojson, triangulation_to_geojson};
 pub use json::{
     triangulation_from_json, ComparisonReport, GraphReport, TriangulationReport, SCHEMA_VERSION,
 };
 pub use listing::registry_listing;
-pub use node::triangulation_to_triangle_files;
 pub use read::{read, ReadOptions, Source};
-pub use svg::{graph_to_svg, panels_to_svg, triangulation_to_svg};
+pub use svg::panels_to_svg;
 pub use write::{write, Document, JsonStyle, WriteOptions};
 
 use crate::error::{Error, Result};

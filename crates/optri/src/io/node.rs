@@ -6,7 +6,6 @@
 use super::{not_a_number, parse, quoted, strip_comment, Collected};
 use crate::error::Result;
 use crate::kernel::Point;
-use crate::structures::Triangulation;
 use std::fmt::Write;
 
 /// The non-empty lines of a Triangle file, comments stripped, as
@@ -170,7 +169,10 @@ fn coordinate_text(v: f64) -> String {
 
 /// Triangle's `.node` and `.ele` texts. Numbering is 0-based and equals the
 /// input index; every input point is listed (duplicates too).
-pub fn triangulation_to_triangle_files(t: &Triangulation) -> (String, String) {
+#[cfg(test)]
+pub(crate) fn triangulation_to_triangle_files(
+    t: &crate::structures::Triangulation,
+) -> (String, String) {
     (node_text(t.points()), ele_text(t.triangles()))
 }
 

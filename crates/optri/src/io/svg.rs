@@ -274,7 +274,8 @@ fn panel_height(plot_h: f64) -> f64 {
 
 /// A picture of `t`: edges, points, the longest edge and the smallest-angle
 /// triangle highlighted, `title` and a stats line on top.
-pub fn triangulation_to_svg(t: &Triangulation, title: &str) -> String {
+#[cfg(test)]
+pub(crate) fn triangulation_to_svg(t: &Triangulation, title: &str) -> String {
     panels_to_svg(&[(title, t)])
 }
 
@@ -304,7 +305,7 @@ pub(super) fn report_to_svg(report: &super::TriangulationReport, title: &str) ->
 ///
 /// # Panics
 /// If an edge refers to an index outside `points`.
-pub fn graph_to_svg(points: &[Point], edges: &[[u32; 2]], title: &str) -> String {
+pub(crate) fn graph_to_svg(points: &[Point], edges: &[[u32; 2]], title: &str) -> String {
     let total = metrics::total_length(points, edges);
     let panel = Panel {
         title,

@@ -81,15 +81,16 @@ pub(crate) use predicates::{
     DiamondTriangles,
 };
 pub use predicates::{
-    compare_angles, compare_areas, compare_corner_angles, compare_lengths, cross_sign, dot_sign,
-    incircle_sign, on_open_segment, orient_sign, properly_cross, segments_intersect,
+    compare_angles, compare_areas, compare_lengths, incircle_sign, orient_sign, properly_cross,
+    segments_intersect,
 };
+pub(crate) use predicates::{compare_corner_angles, cross_sign, dot_sign, on_open_segment};
 pub(crate) use squared_length::SquaredLength;
 pub(crate) use squared_length::{compare_rounded_keys, in_one_key_run, rounded_squared_length};
 pub(crate) use symbolic::{compare_equal_lengths_symbolic, segment_order};
 pub use symbolic::{compare_lengths_symbolic, orient_symbolic};
 pub(crate) use wedge::strictly_inside_wedge_symbolic;
-pub use wedge::{same_direction, strictly_inside_wedge};
+pub(crate) use wedge::{same_direction, strictly_inside_wedge};
 
 /// Why a coordinate is not accepted (see the module docs for the range).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

@@ -214,6 +214,16 @@ impl SimplePolygon {
                 .is_diagonal(self.corner_of(a), self.corner_of(b))
     }
 
+    /// Is no vertex a right turn (a convex polygon, straight runs allowed)?
+    /// Then the boundary is the convex hull of the vertices with every one of
+    /// them on it, so the triangulations of the interior are exactly the
+    /// triangulations of the vertex set.
+    pub(crate) fn is_convex(&self) -> bool {
+        let ccw = &self.counter_clockwise;
+        let p = |k: usize| self.vertices()[ccw[k % ccw.len()] as usize];
+        (0..ccw.len()).all(|k| orient_sign(p(k), p(k + 1), p(k + 2)) >= 0)
+    }
+
     /// Is every vertex a strict left turn (a strictly convex polygon)? Then
     /// every chord that is not a boundary edge is a diagonal.
     pub fn is_strictly_convex(&self) -> bool {
@@ -224,6 +234,17 @@ impl SimplePolygon {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn convex_polygons_allow_straight_runs_and_no_reflex_corner() {
+        let square_with_run = [[0.0, 0.0], [1.0, 0.0], [2.0, 0.0], [2.0, 2.0], [0.0, 2.0]];
+        let p = SimplePolygon::new(&square_with_run).unwrap();
+        assert!(p.is_convex() && !p.is_strictly_convex());
+        let clockwise: Vec<Point> = square_with_run.iter().rev().copied().collect();
+        assert!(SimplePolygon::new(&clockwise).unwrap().is_convex());
+        let notch = [[0.0, 0.0], [2.0, 0.0], [1.0, 1.0], [2.0, 2.0], [0.0, 2.0]];
+        assert!(!SimplePolygon::new(&notch).unwrap().is_convex());
+    }
 
     #[test]
     fn orientation_is_normalised_and_input_order_kept() {

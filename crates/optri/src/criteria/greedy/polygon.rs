@@ -15,7 +15,7 @@
 //! total order (exact squared length, ties by the kernel's perturbation), so
 //! the greedy triangulation is unique.
 
-use crate::criteria::{Diagnostics, Optimality, Options, Solved};
+use crate::criteria::{solve_convex_polygon, Diagnostics, Optimality, Options, Solved};
 use crate::error::{Error, Result, UnsupportedReason};
 use crate::interrupt::Stop;
 use crate::kernel::{properly_cross, segment_order};
@@ -33,6 +33,9 @@ pub(crate) fn solve(
     options: &Options,
     phases: &mut Vec<Phase>,
 ) -> Result<Solved> {
+    if let Some(solved) = solve_convex_polygon(polygon, options, phases, super::solve) {
+        return solved;
+    }
     let triangulation = timed(phases, "greedy", || greedy_polygon(polygon, options.stop()))?;
     Ok(Solved {
         triangulation,

@@ -9,7 +9,7 @@
 //! (Klincsek) used as the test reference and as the fallback, and the same
 //! program on a simple polygon given as input ([`solve_polygon`]).
 
-use crate::criteria::{Diagnostics, Optimality, Options, Solved};
+use crate::criteria::{solve_convex_polygon, Diagnostics, Optimality, Options, Solved};
 use crate::error::Result;
 use crate::kernel::{compare_lengths, compare_lengths_symbolic, Point};
 use crate::polygon_program::{
@@ -262,9 +262,12 @@ impl<'a> Region<'a> {
 /// longest edge.
 pub(crate) fn solve_polygon(
     polygon: &SimplePolygon,
-    _: &Options,
+    options: &Options,
     phases: &mut Vec<Phase>,
 ) -> Result<Solved> {
+    if let Some(solved) = solve_convex_polygon(polygon, options, phases, super::solve) {
+        return solved;
+    }
     let p = corner_point(polygon);
     let objective = LargestDiagonal::new(polygon.len(), |s: [usize; 2], t: [usize; 2]| {
         compare_lengths(p(s[0]), p(s[1]), p(t[0]), p(t[1]))
