@@ -267,7 +267,7 @@ fn every_unsupported_combination_says_what_would_work() {
                 "l1",
             ],
             "square.txt: delaunay does not take a metric other than euclidean (got l1); what \
-             takes one: minmax-length, rng, mst",
+             takes one: minmax-length, hull, rng, mst",
         ),
         (
             &[
@@ -283,7 +283,7 @@ fn every_unsupported_combination_says_what_would_work() {
         (
             &["graph", "square.txt", "--kind", "gabriel", "--metric", "l1"],
             "square.txt: gabriel does not take a metric other than euclidean (got l1); what takes \
-             one: minmax-length, rng, mst",
+             one: minmax-length, hull, rng, mst",
         ),
         (
             &["triangulate", "square.txt", "--criterion", "prettiest"],

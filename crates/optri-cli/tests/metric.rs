@@ -86,7 +86,7 @@ fn minmax_length_reports_the_metric_and_matches_the_library() {
 
 #[test]
 fn graphs_take_a_metric() {
-    for kind in ["rng", "mst"] {
+    for kind in ["hull", "rng", "mst"] {
         let v = json(&run_stdin(&[
             "graph", "-", "--kind", kind, "--metric", "linf", "--json",
         ]));

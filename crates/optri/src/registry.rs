@@ -442,11 +442,12 @@ impl GraphKind {
 
     /// The names of the options the graph reads (of
     /// [`crate::OPTIONS`]): `metric` for the RNG and the MST, which are
-    /// defined by length comparisons alone.
+    /// defined by length comparisons alone, and for the hull, which is the
+    /// same under every norm (convexity does not depend on one).
     pub fn options(self) -> &'static [&'static str] {
         match self {
-            GraphKind::Rng | GraphKind::Mst => &["metric"],
-            GraphKind::Hull | GraphKind::Delaunay | GraphKind::Gabriel => &[],
+            GraphKind::Hull | GraphKind::Rng | GraphKind::Mst => &["metric"],
+            GraphKind::Delaunay | GraphKind::Gabriel => &[],
         }
     }
 
@@ -590,7 +591,7 @@ pub(crate) fn graph_of_point_set(
     check_options(kind.name(), kind.options(), options)?;
     options.started().stop().check()?;
     let metric = &options.metric;
-    if !metric.is_euclidean() {
+    if !metric.is_euclidean() && kind != GraphKind::Hull {
         let mut phases = Vec::new();
         let edges = timed(&mut phases, kind.name(), || match kind {
             GraphKind::Rng => graphs::relative_neighborhood_graph_under(points, metric),

@@ -302,10 +302,23 @@ fn metrics_are_refused_where_they_mean_nothing() {
                 ..
             }) => {
                 assert_eq!(metric, "l1");
-                assert_eq!(taken_by, ["minmax-length", "rng", "mst"]);
+                assert_eq!(taken_by, ["minmax-length", "hull", "rng", "mst"]);
             }
             other => panic!("{c:?}: {other:?}"),
         }
+    }
+    // The hull is the same under every norm.
+    for metric in [Metric::l1(), Metric::linf()] {
+        let opts = Options::default().with_metric(metric);
+        let under = optri::graph(ps.input_points(), optri::GraphKind::Hull, &opts).unwrap();
+        let euclidean = optri::graph(
+            ps.input_points(),
+            optri::GraphKind::Hull,
+            &Options::default(),
+        )
+        .unwrap();
+        assert_eq!(under.edges, euclidean.edges);
+        assert_eq!(under.edges.len(), 8);
     }
     let e = Metric::parse("polygon:1,0,0,1,-1,0,0,-2").unwrap_err();
     assert!(e.to_string().contains("centrally symmetric"), "{e}");
