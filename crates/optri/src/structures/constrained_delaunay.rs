@@ -49,12 +49,7 @@ impl ConstrainedDelaunay {
     /// [`Error::Internal`] if spade fails or drops a point, or if
     /// constraints cross or pass through a point.
     pub fn new(points: &[Point], constraints: &[[u32; 2]]) -> Result<Self> {
-        let mut sorted: Vec<[u32; 2]> = constraints
-            .iter()
-            .map(|&[u, v]| [u.min(v), u.max(v)])
-            .collect();
-        sorted.sort_unstable();
-        sorted.dedup();
+        let sorted = sorted_pairs(constraints);
         let mut cdt: ConstrainedDelaunayTriangulation<Vertex> =
             ConstrainedDelaunayTriangulation::with_capacity(
                 points.len(),
@@ -112,6 +107,17 @@ impl ConstrainedDelaunay {
     }
 }
 
+/// The pairs `[min, max]` of `constraints`, sorted, without repeats.
+fn sorted_pairs(constraints: &[[u32; 2]]) -> Vec<[u32; 2]> {
+    let mut sorted: Vec<[u32; 2]> = constraints
+        .iter()
+        .map(|&[u, v]| [u.min(v), u.max(v)])
+        .collect();
+    sorted.sort_unstable();
+    sorted.dedup();
+    sorted
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -124,12 +130,7 @@ mod tests {
     /// The construction the randomized insertion replaced: spade's
     /// constrained bulk load (a circle sweep), made canonical the same way.
     fn bulk_loaded(points: &[Point], constraints: &[[u32; 2]]) -> ConstrainedDelaunay {
-        let mut sorted: Vec<[u32; 2]> = constraints
-            .iter()
-            .map(|&[u, v]| [u.min(v), u.max(v)])
-            .collect();
-        sorted.sort_unstable();
-        sorted.dedup();
+        let sorted = sorted_pairs(constraints);
         let edges = sorted
             .iter()
             .map(|&[u, v]| [u as usize, v as usize])
