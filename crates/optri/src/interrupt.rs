@@ -97,6 +97,13 @@ impl Stop {
         None
     }
 
+    /// A stop with this one's cancellation flag and a new time limit of
+    /// `grace` from now: for the few steps a run whose time ran out takes
+    /// to assemble the answer it has, bounded so that it still returns soon.
+    pub(crate) fn grace(&self, grace: Duration) -> Self {
+        Self::starting_now(self.cancel.clone(), Some(grace))
+    }
+
     /// `Err(Error::Interrupted)` when the run must stop.
     pub(crate) fn check(&self) -> Result<()> {
         match self.reason() {
@@ -127,6 +134,15 @@ mod tests {
         );
         let stop = Stop::starting_now(None, Some(Duration::from_secs(3600)));
         assert!(stop.check().is_ok());
+        // A grace keeps the flag and replaces the limit.
+        let cancel = Cancel::new();
+        let spent = Stop::starting_now(Some(cancel.clone()), Some(Duration::ZERO));
+        assert!(spent.grace(Duration::from_secs(3600)).check().is_ok());
+        cancel.cancel();
+        assert_eq!(
+            spent.grace(Duration::from_secs(3600)).check(),
+            Err(Error::Interrupted(Interruption::Cancelled))
+        );
         assert!(Stop::default().check().is_ok());
         assert_ne!(Cancel::new(), Cancel::new());
     }

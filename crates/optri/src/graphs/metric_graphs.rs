@@ -48,7 +48,8 @@
 //! Ties use the distinct-point numbering.
 
 use super::minimum_spanning_tree::kruskal;
-use crate::error::Result;
+use crate::error::{Error, Result};
+use crate::interrupt::Stop;
 use crate::kernel::{
     compare_rounded_keys, side_of_direction, LengthOrder, Metric, MetricProblem, Point,
 };
@@ -238,7 +239,8 @@ fn candidates(
     metric: &Metric,
     wedges: &[[Point; 2]],
     octants: bool,
-) -> Vec<[u32; 2]> {
+    stop: &Stop,
+) -> Result<Vec<[u32; 2]>> {
     let reach = metric.sup_radius();
     let ws = wedges.len();
     let n = points.len();
@@ -246,6 +248,10 @@ fn candidates(
     let per_chunk: Vec<Vec<[u32; 2]>> = (0..n.div_ceil(SEARCH_CHUNK))
         .into_par_iter()
         .map(|chunk| {
+            // A stopped run skips the remaining chunks and fails below.
+            if stop.reason().is_some() {
+                return Vec::new();
+            }
             let mut out = Vec::with_capacity(SEARCH_CHUNK * 6);
             let mut st = Search {
                 first: vec![NONE; ws],
@@ -264,10 +270,11 @@ fn candidates(
             out
         })
         .collect();
+    stop.check()?;
     let mut all: Vec<[u32; 2]> = per_chunk.into_iter().flatten().collect();
     all.par_sort_unstable();
     all.dedup();
-    all
+    Ok(all)
 }
 
 /// The nearest points of every wedge at the point of grid slot `slot`, into
@@ -414,20 +421,33 @@ fn lune_is_empty(points: &[Point], metric: &Metric, grid: &PointCells, [p, q]: [
     })
 }
 
+/// Candidate edges per lune-test task, between two reads of the stop.
+const LUNE_CHUNK: usize = 4096;
+
 /// The RNG under `metric` on distinct points (distinct indices, sorted pairs).
-pub(crate) fn rng_under(
-    points: &[Point],
-    metric: &Metric,
-) -> std::result::Result<Vec<[u32; 2]>, MetricProblem> {
+///
+/// # Errors
+/// [`Error::InvalidMetric`] for a metric without usable wedges,
+/// [`Error::Interrupted`] when `stop` says so (read every few thousand
+/// points or candidates).
+pub(crate) fn rng_under(points: &[Point], metric: &Metric, stop: &Stop) -> Result<Vec<[u32; 2]>> {
     let octants =
         metric.unit_polygon().is_none() || metric.name() == "l1" || metric.name() == "linf";
-    let wedges = wedges(metric)?;
-    let grid = point_cells(points);
-    let cands = candidates(points, &grid, metric, &wedges, octants);
-    Ok(cands
-        .into_par_iter()
-        .filter(|&e| lune_is_empty(points, metric, &grid, e))
-        .collect())
+    let wedges = wedges(metric).map_err(Error::InvalidMetric)?;
+    let grid = &point_cells(points);
+    let cands = candidates(points, grid, metric, &wedges, octants, stop)?;
+    let rng = cands
+        .par_chunks(LUNE_CHUNK)
+        .flat_map_iter(|chunk| {
+            let stopped = stop.reason().is_some();
+            chunk
+                .iter()
+                .copied()
+                .filter(move |&e| !stopped && lune_is_empty(points, metric, grid, e))
+        })
+        .collect();
+    stop.check()?;
+    Ok(rng)
 }
 
 /// The relative neighbourhood graph of `points` under `metric`: `pq` is an
@@ -441,7 +461,7 @@ pub(crate) fn relative_neighborhood_graph_under(
     if metric.is_euclidean() {
         return super::relative_neighborhood_graph(points);
     }
-    let edges = rng_under(points.points(), metric).map_err(crate::Error::InvalidMetric)?;
+    let edges = rng_under(points.points(), metric, &Stop::default())?;
     Ok(points.to_input_edges(edges.into_iter()))
 }
 
@@ -456,7 +476,7 @@ pub(crate) fn minimum_spanning_tree_under(
         return super::minimum_spanning_tree(points);
     }
     let pts = points.points();
-    let rng = rng_under(pts, metric).map_err(crate::Error::InvalidMetric)?;
+    let rng = rng_under(pts, metric, &Stop::default())?;
     let tree = kruskal(pts, metric, rng);
     Ok(points.to_input_edges(tree.into_iter()))
 }

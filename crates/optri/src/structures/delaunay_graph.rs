@@ -24,6 +24,7 @@
 use crate::error::{Error, Result};
 use crate::kernel::{incircle_sign, Point};
 use crate::spatial::brio_order;
+use spade::handles::FixedVertexHandle;
 use spade::{
     DelaunayTriangulation, HasPosition, LastUsedVertexHintGenerator, Point2, Triangulation as _,
 };
@@ -36,7 +37,9 @@ pub(super) struct Vertex {
 }
 
 impl Vertex {
-    /// The points `points` with their indices as ids.
+    /// The points `points` with their indices as ids (for spade's bulk
+    /// loads, the reference constructions of the tests).
+    #[cfg(test)]
     pub(super) fn numbered(points: &[Point]) -> Vec<Vertex> {
         points
             .iter()
@@ -200,23 +203,41 @@ fn side_towards(neighbours: &[[u32; 3]], u: u32, t: u32) -> usize {
 
 /// spade's Delaunay triangles (counter-clockwise, distinct indices) and,
 /// per side `j` (corner `j` to corner `j + 1`), the triangle across it.
-/// The points are inserted in [`brio_order`], each located by a walk from
-/// the last one inserted (close in the Z-order of its round). spade's own
-/// structure is dropped before returning.
+/// spade's own structure is dropped before returning.
 #[allow(clippy::type_complexity)]
 fn spade_triangles(points: &[Point]) -> Result<(Vec<[u32; 3]>, Vec<[u32; 3]>)> {
     let mut dt: DelaunayTriangulation<Vertex, (), (), (), LastUsedVertexHintGenerator> =
         DelaunayTriangulation::with_capacity(points.len(), 3 * points.len(), 2 * points.len());
+    insert_in_brio_order(&mut dt, points)?;
+    Ok(triangle_arrays(&dt))
+}
+
+/// Inserts `points` into the empty spade triangulation `dt` (Delaunay or
+/// constrained) in [`brio_order`], each located by a walk from the last one
+/// inserted (close in the Z-order of its round), and returns each point's
+/// vertex handle by index.
+///
+/// # Errors
+/// [`Error::Internal`] if spade fails or merges points.
+pub(super) fn insert_in_brio_order<T>(
+    dt: &mut T,
+    points: &[Point],
+) -> Result<Vec<FixedVertexHandle>>
+where
+    T: spade::Triangulation<Vertex = Vertex>,
+{
+    let mut handles = vec![FixedVertexHandle::from_index(0); points.len()];
     for v in brio_order(points) {
         let p = points[v as usize];
-        dt.insert(Vertex {
-            position: Point2::new(p[0], p[1]),
-            id: v,
-        })
-        .map_err(|e| Error::Internal(format!("spade's Delaunay insertion failed: {e:?}")))?;
+        handles[v as usize] = dt
+            .insert(Vertex {
+                position: Point2::new(p[0], p[1]),
+                id: v,
+            })
+            .map_err(|e| Error::Internal(format!("spade's Delaunay insertion failed: {e:?}")))?;
     }
-    kept_every_point(&dt, points.len())?;
-    Ok(triangle_arrays(&dt))
+    kept_every_point(dt, points.len())?;
+    Ok(handles)
 }
 
 /// An error unless spade's triangulation `dt` holds all `n` points (it

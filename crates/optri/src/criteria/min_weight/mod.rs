@@ -85,6 +85,7 @@ pub(crate) fn solve(
                 "{} points in convex position exceed the exact program's {MAX_POINTS} (O(n^3))",
                 pts.len()
             ),
+            stop,
         )?;
         watch.lap("min-weight");
         return Ok(solved);
@@ -101,7 +102,12 @@ pub(crate) fn solve(
                 bound: None,
             },
             Err(Error::Interrupted(Interruption::TimeLimit { seconds })) => {
-                lighter_of_greedy_and_delaunay(points, &hull, &out_of_time(seconds))?
+                lighter_of_greedy_and_delaunay(
+                    points,
+                    &hull,
+                    &out_of_time(seconds),
+                    &stop.grace(greedy_grace(seconds)),
+                )?
             }
             Err(e) => return Err(e),
         };
@@ -117,12 +123,24 @@ pub(crate) fn solve(
         Ok(general) => Ok(general.solved),
         Err(Error::Interrupted(Interruption::TimeLimit { seconds })) => {
             let mut watch = Stopwatch::new(phases);
-            let solved = lighter_of_greedy_and_delaunay(points, &hull, &out_of_time(seconds))?;
+            let solved = lighter_of_greedy_and_delaunay(
+                points,
+                &hull,
+                &out_of_time(seconds),
+                &stop.grace(greedy_grace(seconds)),
+            )?;
             watch.lap("greedy and Delaunay");
             Ok(solved)
         }
         Err(e) => Err(e),
     }
+}
+
+/// How long the greedy triangulation may run once the time limit of
+/// `seconds` is spent: a tenth of the limit, at least 10 ms (enough for a
+/// few thousand points), so that a run returns soon after its limit.
+fn greedy_grace(seconds: f64) -> std::time::Duration {
+    std::time::Duration::from_secs_f64(seconds / 10.0).max(std::time::Duration::from_millis(10))
 }
 
 /// Why a run out of time answers without the exact result.
@@ -207,18 +225,26 @@ fn convex_min_weight(points: &PointSet, polygon: &[u32], stop: &Stop) -> Result<
 /// shorter (the angle there is at least 90°), so both would join hull
 /// neighbours; otherwise it is a Gabriel edge, in every Delaunay
 /// triangulation.
-fn lighter_of_greedy_and_delaunay(points: &PointSet, hull: &[u32], why: &str) -> Result<Solved> {
+///
+/// The greedy triangulation runs under `stop`; if its time limit stops it,
+/// the answer is the Delaunay triangulation with the same bound (a
+/// cancellation is an error, as everywhere).
+fn lighter_of_greedy_and_delaunay(
+    points: &PointSet,
+    hull: &[u32],
+    why: &str,
+    stop: &Stop,
+) -> Result<Solved> {
     let pts = points.points();
     let (n, h) = (pts.len(), hull.len());
     let delaunay = crate::graphs::delaunay(points)?;
     let delaunay_tris = distinct_triangles(points, &delaunay);
-    let (name, best) = lightest(
-        points,
-        [
-            ("greedy", crate::criteria::greedy::greedy(points)?),
-            ("Delaunay", delaunay),
-        ],
-    );
+    let greedy = greedy_within(points, stop)?;
+    let greedy_finished = greedy.is_some();
+    let (name, best) = match greedy {
+        Some(greedy) => lightest(points, [("greedy", greedy), ("Delaunay", delaunay)]),
+        None => ("Delaunay", delaunay_tris.clone()),
+    };
     let mut position = vec![None; n];
     for (k, &v) in hull.iter().enumerate() {
         position[v as usize] = Some(k);
@@ -254,16 +280,25 @@ fn lighter_of_greedy_and_delaunay(points: &PointSet, hull: &[u32], why: &str) ->
         .lo;
     let mut diagnostics = Diagnostics::default();
     diagnostics.add("exact", 0);
+    let (chosen, bound) = if greedy_finished {
+        (
+            "the lighter of greedy and Delaunay",
+            "not proven optimal: the lighter of greedy and Delaunay (the exact pipeline's size, memory or time limit); the weight is at least the reported lower bound",
+        )
+    } else {
+        (
+            "the time limit stopped the greedy triangulation",
+            "not proven optimal: the Delaunay triangulation (the exact pipeline's size, memory or time limit, and the time limit stopped the greedy one); the weight is at least the reported lower bound",
+        )
+    };
     Ok(Solved {
         triangulation: Triangulation::from_distinct(points, best),
         algorithm: format!(
-            "{name} triangulation, the lighter of greedy and Delaunay, not proven optimal: {why}; \
+            "{name} triangulation, {chosen}, not proven optimal: {why}; \
              certified lower bound on the optimal weight: {lower_bound} \
              (hull edges + (3n - 3 - 2h) x the shortest inner edge)"
         ),
-        optimality: Optimality::Approximation {
-            bound: "not proven optimal: the lighter of greedy and Delaunay (the exact pipeline's size, memory or time limit); the weight is at least the reported lower bound",
-        },
+        optimality: Optimality::Approximation { bound },
         diagnostics,
         bound: Some(CertifiedBound {
             measure: BoundMeasure::TotalLength,
@@ -272,6 +307,16 @@ fn lighter_of_greedy_and_delaunay(points: &PointSet, hull: &[u32], why: &str) ->
             upper: false,
         }),
     })
+}
+
+/// The greedy triangulation under `stop`, `None` if its time limit stopped
+/// it.
+fn greedy_within(points: &PointSet, stop: &Stop) -> Result<Option<Triangulation>> {
+    match crate::criteria::greedy::greedy_triangulation_timed(points, stop, &mut Vec::new()) {
+        Ok((greedy, _)) => Ok(Some(greedy)),
+        Err(Error::Interrupted(Interruption::TimeLimit { .. })) => Ok(None),
+        Err(e) => Err(e),
+    }
 }
 
 /// A triangulation's triangles in distinct indices.
@@ -473,7 +518,7 @@ pub(crate) fn general_min_weight_within(
     let pts = &pts[..];
     let grid = point_grid(pts);
     watch.lap("z-order");
-    let candidates = skeleton::diamond_filter(pts, &grid);
+    let candidates = skeleton::diamond_filter(pts, &grid, bounds.stop)?;
     diagnostics.add("diamond candidates", candidates.len() as u64);
     watch.lap("diamond filter");
     let n = pts.len();
@@ -495,7 +540,7 @@ pub(crate) fn general_min_weight_within(
                 bounds.bytes >> 20
             );
             let hull = convex_hull_cycle(points.points());
-            let solved = lighter_of_greedy_and_delaunay(points, &hull, &why)?;
+            let solved = lighter_of_greedy_and_delaunay(points, &hull, &why, bounds.stop)?;
             watch.lap("greedy and Delaunay");
             let lower_bound = solved.bound.as_ref().map(|b| b.value);
             return Ok(General {
@@ -569,15 +614,20 @@ pub(crate) fn general_min_weight_within(
     if exact {
         lower_bound = 0.0; // unused: the bound of an exact result is its weight
     } else {
-        // Keep the lightest of the result, Delaunay and greedy (exactly).
-        let (name, best) = lightest(
-            points,
-            [
-                ("result", triangulation),
-                ("Delaunay", crate::graphs::delaunay(points)?),
-                ("greedy", crate::criteria::greedy::greedy(points)?),
-            ],
-        );
+        // Keep the lightest of the result, Delaunay and greedy (exactly);
+        // without greedy if the time limit stops it.
+        let delaunay = crate::graphs::delaunay(points)?;
+        let (name, best) = match greedy_within(points, bounds.stop)? {
+            Some(greedy) => lightest(
+                points,
+                [
+                    ("result", triangulation),
+                    ("Delaunay", delaunay),
+                    ("greedy", greedy),
+                ],
+            ),
+            None => lightest(points, [("result", triangulation), ("Delaunay", delaunay)]),
+        };
         if name != "result" {
             algorithm =
                 format!("{algorithm}; not proven optimal, the {name} triangulation is lighter");
@@ -741,6 +791,58 @@ mod tests {
                 .unwrap()
                 .optimality
                 .is_exact());
+        }
+    }
+
+    /// A spent stop stops the greedy triangulation of the fallback, which
+    /// then answers the Delaunay triangulation with the same bound.
+    #[test]
+    fn a_spent_stop_leaves_the_fallback_with_delaunay() {
+        let points = rounded_circle(200, 100.0);
+        let hull = convex_hull_cycle(points.points());
+        let spent = Stop::starting_now(None, Some(std::time::Duration::ZERO));
+        let solved = lighter_of_greedy_and_delaunay(&points, &hull, "why", &spent).unwrap();
+        solved.triangulation.validate().unwrap();
+        assert!(!solved.optimality.is_exact());
+        assert!(solved
+            .algorithm
+            .starts_with("Delaunay triangulation, the time limit stopped"));
+        assert_eq!(
+            distinct_triangles(&points, &solved.triangulation),
+            distinct_triangles(&points, &crate::graphs::delaunay(&points).unwrap())
+        );
+        let running =
+            lighter_of_greedy_and_delaunay(&points, &hull, "why", &Stop::default()).unwrap();
+        check_fallback(&points, &running);
+        assert_eq!(solved.bound, running.bound);
+        // A cancellation is an error.
+        let cancel = crate::Cancel::new();
+        cancel.cancel();
+        let cancelled = Stop::starting_now(Some(cancel), None);
+        assert!(matches!(
+            lighter_of_greedy_and_delaunay(&points, &hull, "why", &cancelled),
+            Err(Error::Interrupted(Interruption::Cancelled))
+        ));
+    }
+
+    /// A time limit of 1 ms on 20 000 points in convex position, not
+    /// semicircular (beyond the program: the fallback at once, whose greedy
+    /// triangulation takes seconds) and on 20 000 points near a circle with a few inside (the
+    /// general pipeline) returns a result that is not exact.
+    #[test]
+    fn a_tiny_time_limit_returns_on_large_sets() {
+        let convex = optri_oracle::inputs::convex_lens_evenly_spaced(20_000);
+        for points in [PointSet::new(&convex).unwrap(), rounded_circle(20_000, 1e6)] {
+            let limited = Options::default()
+                .with_time_limit(std::time::Duration::from_millis(1))
+                .started();
+            match solve(&points, &limited, &mut Vec::new()) {
+                Ok(solved) => {
+                    assert!(!solved.optimality.is_exact());
+                    solved.triangulation.validate().unwrap();
+                }
+                Err(e) => assert!(matches!(e, Error::Interrupted(_)), "{e}"),
+            }
         }
     }
 }

@@ -199,7 +199,7 @@ pub(crate) fn solve(
             certify: true,
         };
         let (triangulation, diagnostics) =
-            under_metric::run_under(points, &options.metric, method, phases)?;
+            under_metric::run_under(points, &options.metric, method, options.stop(), phases)?;
         let algorithm = if phases.iter().any(|p| p.name == "regions") {
             format!("{ALGORITHM_UNDER_METRIC} (metric {})", options.metric)
         } else {
@@ -255,7 +255,7 @@ pub fn minmax_length_under_with(
             certify: false,
         },
     };
-    under_metric::run_under(points, metric, method, &mut Vec::new())
+    under_metric::run_under(points, metric, method, &Stop::default(), &mut Vec::new())
 }
 
 /// `rng(S′)` for the kernel's symbolic perturbation `S′`, as a flag per

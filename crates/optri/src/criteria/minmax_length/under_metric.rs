@@ -74,8 +74,9 @@ use super::polygon::Region;
 use super::repair::repair_flat_triangles;
 use super::rng_polygon::{Mesh, RngPolygon};
 use crate::criteria::Diagnostics;
-use crate::error::{Error, Result};
+use crate::error::Result;
 use crate::graphs::rng_under;
+use crate::interrupt::Stop;
 use crate::kernel::Metric;
 use crate::parallel::prelude::*;
 use crate::spatial::convex_hull_cycle;
@@ -109,10 +110,21 @@ fn distinct_corners(face: &[u32]) -> bool {
     face.iter().all(|&w| seen.insert(w))
 }
 
+/// Regions per check of the stop in the polygon phase (and before every
+/// region of at least [`LARGE_REGION`] corners).
+const REGIONS_PER_CHECK: usize = 1024;
+
+/// Regions from this many corners read the stop before they start.
+const LARGE_REGION: usize = 64;
+
+/// The pipeline of the module docs with `method` on the regions; stopped by
+/// `stop` ([`crate::Error::Interrupted`]) between the phases, in the RNG's
+/// searches and in the region loop.
 pub(crate) fn run_under(
     points: &PointSet,
     metric: &Metric,
     method: MetricMethod,
+    stop: &Stop,
     phases: &mut Vec<Phase>,
 ) -> Result<(Triangulation, Diagnostics)> {
     let pts = points.points();
@@ -123,7 +135,8 @@ pub(crate) fn run_under(
             return Ok((t, diagnostics));
         }
     }
-    let rng = timed(phases, "rng", || rng_under(pts, metric)).map_err(Error::InvalidMetric)?;
+    stop.check()?;
+    let rng = timed(phases, "rng", || rng_under(pts, metric, stop))?;
     let hull = timed(phases, "hull", || convex_hull_cycle(pts));
     let (faces, rng_set) = timed(phases, "regions", || {
         let rng_set: HashSet<[u32; 2]> = rng.iter().map(|e| key(e[0], e[1])).collect();
@@ -140,6 +153,7 @@ pub(crate) fn run_under(
             .collect();
         (faces, rng_set)
     });
+    stop.check()?;
     let quadratic_from = match method {
         MetricMethod::Product { quadratic_from, .. } => Some(quadratic_from.max(4)),
         MetricMethod::Cubic => None,
@@ -181,13 +195,20 @@ pub(crate) fn run_under(
     let triangles: Vec<[u32; 3]> = timed(phases, "polygons", || {
         faces
             .par_iter()
-            .flat_map_iter(|face| {
+            .enumerate()
+            .flat_map_iter(|(f, face)| {
+                let k = face.len();
+                // A stopped run skips the rest and fails after the phase.
+                if (f.is_multiple_of(REGIONS_PER_CHECK) || k >= LARGE_REGION)
+                    && stop.reason().is_some()
+                {
+                    return Vec::new();
+                }
                 let region = Region {
                     points: pts,
                     vertices: face,
                     symbolic: true,
                 };
-                let k = face.len();
                 if quadratic_from.is_some_and(|from| k >= from) {
                     match missing(face)[..] {
                         [i] => {
@@ -230,6 +251,7 @@ pub(crate) fn run_under(
             })
             .collect()
     });
+    stop.check()?;
     let triangles = timed(phases, "repair", || {
         repair_flat_triangles(pts, triangles, &counters)
     });
@@ -334,4 +356,39 @@ fn incomplete(
         stack.push((m, j));
     }
     Some(out)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::error::{Error, Interruption};
+    use crate::interrupt::Cancel;
+    use std::time::Duration;
+
+    /// 20 000 points near a circle under L1 (the hull certificate fails:
+    /// every chord is longer than the hull edges; the regions take minutes
+    /// in a debug build): a time limit of 1 ms and a raised flag stop the
+    /// run with [`Error::Interrupted`].
+    #[test]
+    fn a_tiny_time_limit_or_a_cancel_stops_the_run() {
+        let points = PointSet::new(&optri_oracle::inputs::sampled_circle(20_000, 1e6)).unwrap();
+        let method = MetricMethod::Product {
+            quadratic_from: QUADRATIC_FROM,
+            certify: true,
+        };
+        let limited = Stop::starting_now(None, Some(Duration::from_millis(1)));
+        let result = run_under(&points, &Metric::l1(), method, &limited, &mut Vec::new());
+        assert!(matches!(
+            result,
+            Err(Error::Interrupted(Interruption::TimeLimit { .. }))
+        ));
+        let cancel = Cancel::new();
+        cancel.cancel();
+        let cancelled = Stop::starting_now(Some(cancel), None);
+        let result = run_under(&points, &Metric::l1(), method, &cancelled, &mut Vec::new());
+        assert!(matches!(
+            result,
+            Err(Error::Interrupted(Interruption::Cancelled))
+        ));
+    }
 }

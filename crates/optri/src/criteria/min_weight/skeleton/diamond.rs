@@ -4,6 +4,8 @@
 //! triangulations*, Discrete Appl. Math. 109, 2001: each point's search in
 //! rings, the directions its killers leave alive, and the exact test.
 
+use crate::error::Result;
+use crate::interrupt::Stop;
 use crate::kernel::{DiamondPosition, DiamondTriangles, Point};
 use crate::parallel::prelude::*;
 use crate::spatial::{bounding_box, convex_hull_cycle, CellBlock, PointCells};
@@ -37,13 +39,23 @@ const RING_GROWTH: f64 = 1.25;
 /// [`diamond_filter`] with its own grid of the points (for the tests).
 #[cfg(any(test, feature = "internals"))]
 pub(crate) fn diamond_candidates(pts: &[Point]) -> Vec<[u32; 2]> {
-    diamond_filter(pts, &super::super::point_grid(pts))
+    diamond_filter(pts, &super::super::point_grid(pts), &Stop::default())
+        .expect("no stop without a limit")
 }
 
 /// The candidate edges (pairs `u < v`, sorted) surviving the diamond filter,
 /// with every convex-hull edge among them; `grid` is
 /// [`point_grid`](super::super::point_grid) of `pts`.
-pub(crate) fn diamond_filter(pts: &[Point], grid: &PointCells) -> Vec<[u32; 2]> {
+///
+/// # Errors
+/// [`crate::Error::Interrupted`] when `stop` says so (read every 64
+/// points: on points in nearly convex position a point has Θ(n)
+/// candidates).
+pub(crate) fn diamond_filter(
+    pts: &[Point],
+    grid: &PointCells,
+    stop: &Stop,
+) -> Result<Vec<[u32; 2]>> {
     let bbox = bounding_box(pts);
     let (w, h) = (bbox[2] - bbox[0], bbox[3] - bbox[1]);
     let rings = Rings::new(grid.cell_size(), w.hypot(h));
@@ -56,6 +68,10 @@ pub(crate) fn diamond_filter(pts: &[Point], grid: &PointCells) -> Vec<[u32; 2]> 
             SCRATCH.with(|scratch| {
                 let scratch = &mut scratch.borrow_mut();
                 let mut out = Vec::new();
+                // A stopped run skips the remaining chunks and fails below.
+                if stop.reason().is_some() {
+                    return out;
+                }
                 for &p in chunk {
                     search_from(pts, grid, bbox, &rings, p, scratch, &mut out);
                 }
@@ -63,6 +79,7 @@ pub(crate) fn diamond_filter(pts: &[Point], grid: &PointCells) -> Vec<[u32; 2]> 
             })
         })
         .collect();
+    stop.check()?;
     let hull = convex_hull_cycle(pts);
     // Exact reservation: pushing onto the full collected vector would
     // double its capacity, and the candidates live through every phase.
@@ -74,7 +91,7 @@ pub(crate) fn diamond_filter(pts: &[Point], grid: &PointCells) -> Vec<[u32; 2]> 
     edges.par_sort_unstable();
     edges.dedup();
     edges.shrink_to_fit();
-    edges
+    Ok(edges)
 }
 
 /// The radii of the search's rings: `2·cell·1.25^k`, up to the first beyond
