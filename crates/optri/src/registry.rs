@@ -56,6 +56,16 @@ criteria! {
     MaxMinArea => criteria::area::MAXMIN_ENTRY,
     /// Minimises the largest triangle area (as MaxMin area).
     MinMaxArea => criteria::area::MINMAX_ENTRY,
+    /// Minimises the largest angle (edge insertion).
+    MinMaxAngle => criteria::edge_insertion::MINMAX_ANGLE_ENTRY,
+    /// Maximises the smallest triangle altitude (edge insertion).
+    MaxMinHeight => criteria::edge_insertion::MAXMIN_HEIGHT_ENTRY,
+    /// Minimises the largest circumcentre-to-triangle distance (edge
+    /// insertion).
+    MinMaxEccentricity => criteria::edge_insertion::MINMAX_ECCENTRICITY_ENTRY,
+    /// Minimises the steepest slope over per-point elevations (edge
+    /// insertion).
+    MinMaxSlope => criteria::edge_insertion::MINMAX_SLOPE_ENTRY,
 }
 
 impl Criterion {
