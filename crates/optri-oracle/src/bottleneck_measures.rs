@@ -168,9 +168,9 @@ pub fn bottleneck(
         .expect("no triangles")
 }
 
-/// The smallest worst badness over `triangulations`, each triangle's
-/// badness computed once.
-fn smallest_bottleneck(
+/// The smallest worst badness over `triangulations` (e.g. every
+/// triangulation of `points`), each triangle's badness computed once.
+pub fn optimum_over(
     b: Bottleneck,
     points: &[Point],
     z: &[f64],
@@ -199,11 +199,11 @@ fn smallest_bottleneck(
 /// The optimum (smallest worst badness) over every triangulation of the
 /// distinct `points` (at most about ten).
 pub fn optimum(b: Bottleneck, points: &[Point], z: &[f64]) -> BigRational {
-    smallest_bottleneck(b, points, z, &all_triangulations(points))
+    optimum_over(b, points, z, &all_triangulations(points))
 }
 
 /// The optimum over every triangulation of the simple polygon `ring`, `z`
 /// per ring position.
 pub fn polygon_optimum(b: Bottleneck, ring: &[Point], z: &[f64]) -> BigRational {
-    smallest_bottleneck(b, ring, z, &polygon_triangulations(ring))
+    optimum_over(b, ring, z, &polygon_triangulations(ring))
 }

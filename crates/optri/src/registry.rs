@@ -316,7 +316,8 @@ pub type Comparison = (Criterion, Result<Solution>);
 ///
 /// ```
 /// use optri::{compare, Criterion, Options, PointSet};
-/// let points = PointSet::new(&[[0.0, 0.0], [4.0, 0.0], [0.0, 3.0], [4.0, 3.0], [2.0, 1.0]])?;
+/// let points = PointSet::new(&[[0.0, 0.0], [4.0, 0.0], [0.0, 3.0], [4.0, 3.0], [2.0, 1.0]])?
+///     .with_elevations(&[0.0, 1.0, 2.0, 1.0, 3.0])?; // for minmax-slope
 /// let results = compare(&points, &[], &Options::default());
 /// assert_eq!(results.len(), Criterion::ALL.len());
 /// assert!(results.iter().all(|(_, r)| r.is_ok()));

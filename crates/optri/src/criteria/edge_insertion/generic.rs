@@ -29,6 +29,7 @@
 use super::insertion::{Badness, Mesh};
 use crate::error::Result;
 use crate::interrupt::Stop;
+use crate::kernel::properly_cross;
 use std::cmp::Ordering;
 
 /// Counters of one run.
@@ -38,6 +39,12 @@ pub(crate) struct Steps {
     pub insertions: u64,
     /// Insertions tried (valid segments whose sides were retriangulated).
     pub attempts: u64,
+}
+
+/// Does `a–v` properly cross the side `bc` of `[a, b, c]`?
+fn crosses_opposite_side(badness: &Badness, [a, b, c]: [u32; 3], v: u32) -> bool {
+    let p = |i: u32| badness.points[i as usize];
+    properly_cross(p(a), p(v), p(b), p(c))
 }
 
 /// Runs the loop on `mesh` until no anchor insertion improves it.
@@ -75,7 +82,13 @@ pub(crate) fn improve(
             let anchored = badness.anchored(t);
             let a = anchored[0];
             for v in 0..n as u32 {
-                if anchored.contains(&v) || mesh.has_edge(a, v) {
+                // Only pairs whose segment leaves through t's opposite side
+                // belong to t (a pair failed from another triangle at the
+                // same anchor is no skip here).
+                if anchored.contains(&v)
+                    || mesh.has_edge(a, v)
+                    || !crosses_opposite_side(badness, anchored, v)
+                {
                     continue;
                 }
                 let pair = a as usize * n + v as usize;

@@ -58,9 +58,9 @@ pub(crate) use generic::Steps;
 const REFERENCE: &str = "M. Bern, H. Edelsbrunner, D. Eppstein, S. Mitchell, T. S. Tan, Edge \
                          insertion for optimal triangulations, Discrete Comput. Geom. 10, 1993";
 
-const ALGORITHM: &str = "Delaunay, then edge insertion from the anchors of the worst triangles \
-                         (sides retriangulated by the lexicographic-bottleneck polygon program) \
-                         until no insertion improves";
+const ALGORITHM: &str = "edge insertion from Delaunay: insertions from the anchors of the worst \
+                         triangles (sides retriangulated by the lexicographic-bottleneck polygon \
+                         program) until none improves";
 
 const POLYGON_ALGORITHM: &str = "Klincsek's polygon program with the bottleneck triangle objective";
 
