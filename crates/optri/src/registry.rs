@@ -767,6 +767,8 @@ mod tests {
         );
         let polygon =
             SimplePolygon::new(&[[0.0, 0.0], [2.0, 0.0], [1.0, 1.0], [2.0, 2.0], [0.0, 2.0]])
+                .unwrap()
+                .with_elevations(&[0.0, 1.0, 2.0, 1.0, 0.0]) // for minmax-slope
                 .unwrap();
         for (c, r) in compare(&polygon, &[], &Options::default()) {
             let s = r.unwrap_or_else(|e| panic!("{c:?}: {e}"));
