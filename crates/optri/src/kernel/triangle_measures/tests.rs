@@ -1,119 +1,28 @@
-//! The measures against independent exact evaluations: angles by the
-//! largest squared-cosine key over all three corners, heights as the
-//! smallest of the three altitudes, eccentricity from the explicit
-//! circumcentre and its distance to the closed triangle, slope from the
-//! gradient solved by Cramer's rule.
+//! The measures against the oracle's independent exact evaluations
+//! (`optri_oracle::bottleneck_measures`): angles by the law of cosines over
+//! all three corners, heights as the smallest of the three altitudes,
+//! eccentricity from the explicit circumcentre and its distance to the
+//! closed triangle, slope from the gradient solved by Cramer's rule.
 
 use super::*;
 use crate::kernel::orient_sign;
-use num_traits::One;
 use rand::{rngs::StdRng, Rng, SeedableRng};
 
-fn rat(v: f64) -> BigRational {
-    BigRational::from_float(v).unwrap()
-}
-
-fn sub(p: Point, q: Point) -> [BigRational; 2] {
-    [rat(p[0]) - rat(q[0]), rat(p[1]) - rat(q[1])]
-}
-
-fn dot(u: &[BigRational; 2], v: &[BigRational; 2]) -> BigRational {
-    &u[0] * &v[0] + &u[1] * &v[1]
-}
-
-fn cross(u: &[BigRational; 2], v: &[BigRational; 2]) -> BigRational {
-    &u[0] * &v[1] - &u[1] * &v[0]
-}
-
-/// Squared distance from `p` to the closed segment `ab`.
-fn segment_distance2(
-    p: &[BigRational; 2],
-    a: &[BigRational; 2],
-    b: &[BigRational; 2],
-) -> BigRational {
-    let ab = [&b[0] - &a[0], &b[1] - &a[1]];
-    let ap = [&p[0] - &a[0], &p[1] - &a[1]];
-    let t = dot(&ap, &ab) / dot(&ab, &ab);
-    let t = t.max(BigRational::zero()).min(BigRational::one());
-    let q = [&a[0] + &t * &ab[0], &a[1] + &t * &ab[1]];
-    let d = [&p[0] - &q[0], &p[1] - &q[1]];
-    dot(&d, &d)
-}
-
-/// The independent value (squared; the angle as −cos θ·|cos θ| of the
-/// largest corner).
+/// The independent value: the oracle's badness (`−h²` for heights, so
+/// negated back), on the triangle's corners as a point list.
 fn reference(measure: TriangleMeasure, t: &Corners) -> BigRational {
-    let ([a, b, c], z) = *t;
-    match measure {
-        TriangleMeasure::LargestAngle => (0..3)
-            .map(|i| {
-                let [o, p, q] = rotate([a, b, c], i);
-                let (u, v) = (sub(p, o), sub(q, o));
-                let d = dot(&u, &v);
-                let key = &d * &d / (dot(&u, &u) * dot(&v, &v));
-                if d.is_negative() {
-                    key
-                } else {
-                    -key
-                }
-            })
-            .max()
-            .unwrap(),
-        TriangleMeasure::SmallestHeight => {
-            let cr = cross(&sub(b, a), &sub(c, a));
-            [(a, b), (b, c), (c, a)]
-                .iter()
-                .map(|&(p, q)| {
-                    let e = sub(p, q);
-                    &cr * &cr / dot(&e, &e)
-                })
-                .min()
-                .unwrap()
-        }
-        TriangleMeasure::Eccentricity => {
-            // Circumcentre m relative to a: solves 2 m·u = |u|², 2 m·v = |v|².
-            let (u, v) = (sub(b, a), sub(c, a));
-            let (uu, vv) = (dot(&u, &u), dot(&v, &v));
-            let det = cross(&u, &v) * BigRational::from_integer(2.into());
-            let m = [
-                (&uu * &v[1] - &vv * &u[1]) / &det,
-                (&vv * &u[0] - &uu * &v[0]) / &det,
-            ];
-            let zero = [BigRational::zero(), BigRational::zero()];
-            // Inside the closed triangle: all three orientations agree.
-            let side = |p: &[BigRational; 2], q: &[BigRational; 2]| {
-                let s = cross(
-                    &[&q[0] - &p[0], &q[1] - &p[1]],
-                    &[&m[0] - &p[0], &m[1] - &p[1]],
-                );
-                s.signum()
-            };
-            let orientation = cross(&u, &v).signum();
-            let inside = [side(&zero, &u), side(&u, &v), side(&v, &zero)]
-                .iter()
-                .all(|s| s.is_zero() || *s == orientation);
-            if inside {
-                BigRational::zero()
-            } else {
-                [
-                    segment_distance2(&m, &zero, &u),
-                    segment_distance2(&m, &u, &v),
-                    segment_distance2(&m, &v, &zero),
-                ]
-                .into_iter()
-                .min()
-                .unwrap()
-            }
-        }
-        TriangleMeasure::Slope => {
-            let (u, v) = (sub(b, a), sub(c, a));
-            let (du, dv) = (rat(z[1]) - rat(z[0]), rat(z[2]) - rat(z[0]));
-            let det = cross(&u, &v);
-            // g·u = du, g·v = dv.
-            let gx = (&du * &v[1] - &dv * &u[1]) / &det;
-            let gy = (&u[0] * &dv - &v[0] * &du) / &det;
-            &gx * &gx + &gy * &gy
-        }
+    use optri_oracle::bottleneck_measures::{badness, Bottleneck};
+    let b = match measure {
+        TriangleMeasure::LargestAngle => Bottleneck::MinMaxAngle,
+        TriangleMeasure::SmallestHeight => Bottleneck::MaxMinHeight,
+        TriangleMeasure::Eccentricity => Bottleneck::MinMaxEccentricity,
+        TriangleMeasure::Slope => Bottleneck::MinMaxSlope,
+    };
+    let value = badness(b, &t.0, &t.1, [0, 1, 2]);
+    if measure == TriangleMeasure::SmallestHeight {
+        -value
+    } else {
+        value
     }
 }
 
