@@ -154,6 +154,10 @@ pub fn check_points(points: &[[f64; 2]]) -> Vec<Criterion> {
     let Ok(set) = PointSet::new(points) else {
         return checked;
     };
+    let set = set
+        .clone()
+        .with_elevations(&elevations(points))
+        .unwrap_or(set);
     let distinct = set.points().to_vec();
     let small = distinct.len() <= ORACLE_AT_MOST;
     let all = if small {
@@ -185,6 +189,35 @@ pub fn check_points(points: &[[f64; 2]]) -> Vec<Criterion> {
         let _ = graph(set.input_points(), kind, &Options::default());
     }
     checked
+}
+
+/// An elevation per point for the criteria that read one (`minmax-slope`):
+/// a small integer from the coordinates' bits, so equal points agree and
+/// the checks below recompute it from the distinct points.
+pub fn elevations(points: &[[f64; 2]]) -> Vec<f64> {
+    points
+        .iter()
+        .map(|p| {
+            let bits = (p[0] + 0.0).to_bits() ^ (p[1] + 0.0).to_bits().rotate_left(17);
+            (bits.wrapping_mul(0x9e37_79b9_7f4a_7c15) >> 62) as f64
+        })
+        .collect()
+}
+
+/// The bottleneck check of an edge-insertion criterion (elevations by
+/// [`elevations`]).
+fn bottleneck_check(
+    b: oracle::bottleneck_measures::Bottleneck,
+    points: &[[f64; 2]],
+    tris: &[[u32; 3]],
+    all: &[Vec<[u32; 3]>],
+) -> Result<(), String> {
+    use oracle::bottleneck_measures::bottleneck;
+    let z = elevations(points);
+    let best = all.iter().map(|t| bottleneck(b, points, &z, t)).min();
+    (Some(bottleneck(b, points, &z, tris)) == best)
+        .then_some(())
+        .ok_or_else(|| format!("{b:?} bottleneck not optimal"))
 }
 
 /// An optimality check: `Err(why)` when `tris` (distinct indices) is not
@@ -247,6 +280,38 @@ pub const OPTIMALITY_CHECKS: &[(&str, OptimalityCheck)] = &[
         (!exact || Some(oracle::max_twice_area(points, tris)) == best)
             .then_some(())
             .ok_or_else(|| "largest area not minimal".to_string())
+    }),
+    ("minmax-angle", |_, points, tris, all| {
+        bottleneck_check(
+            oracle::bottleneck_measures::Bottleneck::MinMaxAngle,
+            points,
+            tris,
+            all,
+        )
+    }),
+    ("maxmin-height", |_, points, tris, all| {
+        bottleneck_check(
+            oracle::bottleneck_measures::Bottleneck::MaxMinHeight,
+            points,
+            tris,
+            all,
+        )
+    }),
+    ("minmax-eccentricity", |_, points, tris, all| {
+        bottleneck_check(
+            oracle::bottleneck_measures::Bottleneck::MinMaxEccentricity,
+            points,
+            tris,
+            all,
+        )
+    }),
+    ("minmax-slope", |_, points, tris, all| {
+        bottleneck_check(
+            oracle::bottleneck_measures::Bottleneck::MinMaxSlope,
+            points,
+            tris,
+            all,
+        )
     }),
 ];
 

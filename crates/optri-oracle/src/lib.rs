@@ -28,6 +28,7 @@
 //! points; triangles are counter-clockwise with the smallest index first,
 //! lists of triangles and of `[min, max]` edges are sorted.
 
+pub mod bottleneck_measures;
 pub mod data;
 pub mod enumerate;
 pub mod exact;

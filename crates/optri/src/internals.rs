@@ -192,3 +192,58 @@ pub fn min_weight_solution_with_budget(
         &crate::Options::default(),
     ))
 }
+
+/// The edge-insertion criteria's reference (the generic loop from
+/// Delaunay, every anchor–candidate pair retried at every step):
+/// distinct-index triangles of `points` under `criterion` (`MinMaxAngle`,
+/// `MaxMinHeight`, `MinMaxEccentricity` or `MinMaxSlope`, the last reading
+/// the point set's elevations), and the number of accepted insertions.
+///
+/// # Errors
+/// [`crate::Error::Internal`] for another criterion; as the criterion.
+pub fn edge_insertion_reference(
+    points: &crate::PointSet,
+    criterion: crate::Criterion,
+) -> crate::Result<(Vec<[u32; 3]>, u64)> {
+    use crate::criteria::edge_insertion::edge_insertion_triangles;
+    let never = crate::interrupt::Stop::default();
+    let (triangles, steps) =
+        edge_insertion_triangles(points, edge_insertion_measure(criterion)?, false, &never)?;
+    Ok((triangles, steps.insertions))
+}
+
+/// The worst triangle's value among `triangles` (distinct indices) under an
+/// edge-insertion criterion, correctly rounded: degrees for
+/// `MinMaxAngle`, lengths for the others (slope: rise over run).
+///
+/// # Errors
+/// [`crate::Error::Internal`] for another criterion.
+pub fn edge_insertion_worst_value(
+    points: &crate::PointSet,
+    criterion: crate::Criterion,
+    triangles: &[[u32; 3]],
+) -> crate::Result<f64> {
+    crate::criteria::edge_insertion::worst_value(
+        points,
+        edge_insertion_measure(criterion)?,
+        triangles,
+    )
+}
+
+fn edge_insertion_measure(
+    criterion: crate::Criterion,
+) -> crate::Result<crate::kernel::TriangleMeasure> {
+    use crate::kernel::TriangleMeasure;
+    Ok(match criterion {
+        crate::Criterion::MinMaxAngle => TriangleMeasure::LargestAngle,
+        crate::Criterion::MaxMinHeight => TriangleMeasure::SmallestHeight,
+        crate::Criterion::MinMaxEccentricity => TriangleMeasure::Eccentricity,
+        crate::Criterion::MinMaxSlope => TriangleMeasure::Slope,
+        _ => {
+            return Err(crate::Error::Internal(format!(
+                "{} is not an edge-insertion criterion",
+                criterion.name()
+            )))
+        }
+    })
+}

@@ -56,6 +56,16 @@ criteria! {
     MaxMinArea => criteria::area::MAXMIN_ENTRY,
     /// Minimises the largest triangle area (as MaxMin area).
     MinMaxArea => criteria::area::MINMAX_ENTRY,
+    /// Minimises the largest angle (edge insertion).
+    MinMaxAngle => criteria::edge_insertion::MINMAX_ANGLE_ENTRY,
+    /// Maximises the smallest triangle altitude (edge insertion).
+    MaxMinHeight => criteria::edge_insertion::MAXMIN_HEIGHT_ENTRY,
+    /// Minimises the largest circumcentre-to-triangle distance (edge
+    /// insertion).
+    MinMaxEccentricity => criteria::edge_insertion::MINMAX_ECCENTRICITY_ENTRY,
+    /// Minimises the steepest slope over per-point elevations (edge
+    /// insertion).
+    MinMaxSlope => criteria::edge_insertion::MINMAX_SLOPE_ENTRY,
 }
 
 impl Criterion {
@@ -306,7 +316,8 @@ pub type Comparison = (Criterion, Result<Solution>);
 ///
 /// ```
 /// use optri::{compare, Criterion, Options, PointSet};
-/// let points = PointSet::new(&[[0.0, 0.0], [4.0, 0.0], [0.0, 3.0], [4.0, 3.0], [2.0, 1.0]])?;
+/// let points = PointSet::new(&[[0.0, 0.0], [4.0, 0.0], [0.0, 3.0], [4.0, 3.0], [2.0, 1.0]])?
+///     .with_elevations(&[0.0, 1.0, 2.0, 1.0, 3.0])?; // for minmax-slope
 /// let results = compare(&points, &[], &Options::default());
 /// assert_eq!(results.len(), Criterion::ALL.len());
 /// assert!(results.iter().all(|(_, r)| r.is_ok()));
@@ -757,6 +768,8 @@ mod tests {
         );
         let polygon =
             SimplePolygon::new(&[[0.0, 0.0], [2.0, 0.0], [1.0, 1.0], [2.0, 2.0], [0.0, 2.0]])
+                .unwrap()
+                .with_elevations(&[0.0, 1.0, 2.0, 1.0, 0.0]) // for minmax-slope
                 .unwrap();
         for (c, r) in compare(&polygon, &[], &Options::default()) {
             let s = r.unwrap_or_else(|e| panic!("{c:?}: {e}"));

@@ -409,7 +409,11 @@ fn the_mminmax_fixture() {
 
 #[test]
 fn every_criterion_accepts_polygons_and_limits_are_reported() {
-    let square = SimplePolygon::new(&[[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]]).unwrap();
+    // Elevations for the criteria that read them; the others ignore them.
+    let square = SimplePolygon::new(&[[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]])
+        .unwrap()
+        .with_elevations(&[0.0, 1.0, 2.0, 3.0])
+        .unwrap();
     for &c in Criterion::ALL {
         assert!(c.accepts(optri::InputKind::SimplePolygon), "{}", c.name());
         let t = run(&square, c, "square");

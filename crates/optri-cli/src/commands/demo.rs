@@ -48,7 +48,12 @@ fn builtin_points(text: &str, name: &str) -> CliResult<(Vec<Point>, PointSet)> {
     let options = ReadOptions::default().with_format(InputFormat::Text);
     let read = io::read(Source::Text(text), &options).map_err(|e| input_error(name, e))?;
     let points = read.input.points().to_vec();
-    let point_set = PointSet::new(&points).map_err(|e| input_error(name, e))?;
+    // A saddle z = x·y for the criteria that read elevations; the others
+    // ignore it.
+    let saddle: Vec<f64> = points.iter().map(|p| p[0] * p[1]).collect();
+    let point_set = PointSet::new(&points)
+        .and_then(|set| set.with_elevations(&saddle))
+        .map_err(|e| input_error(name, e))?;
     Ok((points, point_set))
 }
 

@@ -12,6 +12,7 @@
 //! | `greedy` | `greedy` | Levcopoulos & Lingas 1987; Dickerson et al. 1997 |
 //! | `min-weight` | `min_weight` | Dickerson et al. 1997 (LMT-skeleton); Klincsek 1980 |
 //! | `maxmin-area`, `minmax-area` | `area` | Vassilev 2005 |
+//! | `minmax-angle`, `maxmin-height`, `minmax-eccentricity`, `minmax-slope` | `edge_insertion` | Bern, Edelsbrunner, Eppstein, Mitchell & Tan 1993 |
 //!
 //! Simple polygons ([`crate::triangulate`]): every criterion has a
 //! [`PolygonSolver`] in its own module; the decomposable ones run the shared
@@ -19,6 +20,7 @@
 
 pub(crate) mod area;
 pub(crate) mod delaunay;
+pub(crate) mod edge_insertion;
 pub(crate) mod greedy;
 pub(crate) mod min_weight;
 pub(crate) mod minmax_length;

@@ -53,6 +53,7 @@ pub(crate) mod predicates;
 mod rounding;
 pub(crate) mod squared_length;
 pub(crate) mod symbolic;
+mod triangle_measures;
 pub(crate) mod wedge;
 
 /// A point in the plane, `[x, y]`.
@@ -89,6 +90,7 @@ pub(crate) use squared_length::SquaredLength;
 pub(crate) use squared_length::{compare_rounded_keys, in_one_key_run, rounded_squared_length};
 pub(crate) use symbolic::{compare_equal_lengths_symbolic, segment_order};
 pub use symbolic::{compare_lengths_symbolic, orient_symbolic};
+pub(crate) use triangle_measures::{Corners, TriangleMeasure};
 pub(crate) use wedge::strictly_inside_wedge_symbolic;
 pub(crate) use wedge::{same_direction, strictly_inside_wedge};
 
