@@ -5,7 +5,7 @@
 //! | module | reads | writes |
 //! |---|---|---|
 //! | `format` | [`InputFormat`] by extension, name or content; [`OutputFormat`] by extension | |
-//! | `text` | `x y` per line, or CSV whose header names the coordinate columns | |
+//! | `text` | `x y` or `x y z` per line, or CSV whose header names the coordinate columns | |
 //! | `node` | Triangle `.node` | `.node` + `.ele` or `.edge` |
 //! | `poly` | Triangle `.poly`: one closed boundary, no holes | |
 //! | `tsplib` | TSPLIB `.tsp` | |
@@ -17,7 +17,9 @@
 //!
 //! [`read`] returns a [`ReadInput`]: the points or a polygon's ring
 //! ([`Input`]), the coordinates' decimal values where they are exact
-//! (`decimal` module docs) and warnings about what was skipped. Front ends
+//! (`decimal` module docs), the elevations when the input has a third
+//! coordinate ([`ReadInput::elevations`]) and warnings about what was
+//! skipped. Front ends
 //! that receive numbers rather than files build one with
 //! [`ReadInput::from_doubles`] or [`ReadInput::from_json_numbers`].
 //!
@@ -110,9 +112,9 @@ pub struct ReadInput {
     /// Those integers when `k ≠ 0` (with `k == 0` they are the user's
     /// doubles), in the order of [`Input::points`].
     pub scaled: Option<Scaled>,
-    /// What the reader skipped, for the user (e.g. the third column of a
-    /// headerless `x y z` file, or the columns a CSV header names besides
-    /// the coordinates).
+    /// What the reader skipped, for the user (e.g. the columns 3 and on of
+    /// a headerless file of four or more columns, or the columns a CSV
+    /// header names besides the coordinates).
     pub warnings: Vec<String>,
     /// The format the input was read in; `None` for numbers a front end
     /// received ([`from_doubles`](Self::from_doubles)).
