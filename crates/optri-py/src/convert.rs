@@ -56,6 +56,9 @@ pub(crate) fn points_arg(
     Ok(values.chunks_exact(2).map(|r| [r[0], r[1]]).collect())
 }
 
+/// Points and, when given, one elevation per point.
+pub(crate) type PointsWithElevations = (Vec<[f64; 2]>, Option<Vec<f64>>);
+
 /// `what` as points with their elevations: an `(n, 2)` array-like as
 /// [`points_arg`] takes, with `elevations` (one per point) or without, or an
 /// `(n, 3)` one whose third column is the elevation (then `elevations` must
@@ -66,7 +69,7 @@ pub(crate) fn points_with_elevations_arg(
     points: &Bound<'_, PyAny>,
     elevations: Option<&Bound<'_, PyAny>>,
     what: &str,
-) -> PyResult<(Vec<[f64; 2]>, Option<Vec<f64>>)> {
+) -> PyResult<PointsWithElevations> {
     let (values, width) = float_rows(py, points, what, &[2, 3])?;
     let xy = values.chunks_exact(width).map(|r| [r[0], r[1]]).collect();
     let z = match (width, elevations) {

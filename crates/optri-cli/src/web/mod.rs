@@ -596,12 +596,13 @@ fn prepare(kind: Kind, body: &[u8], limits: &Limits, cancel: Cancel) -> Result<P
     })
 }
 
+/// A request's points, and their elevations when every point has one.
+type PointsWithElevations = (Vec<[f64; 2]>, Option<Vec<f64>>);
+
 /// A request's `points`: every one `[x, y]`, or every one `[x, y, z]` (then
 /// `z` is its elevation); 400 naming the first point that is neither or
 /// differs from point 0.
-fn points_and_elevations(
-    points: &[Vec<f64>],
-) -> Result<(Vec<[f64; 2]>, Option<Vec<f64>>), Refusal> {
+fn points_and_elevations(points: &[Vec<f64>]) -> Result<PointsWithElevations, Refusal> {
     let width = points.first().map_or(2, Vec::len);
     let bad = points
         .iter()
