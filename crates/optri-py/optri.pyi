@@ -86,6 +86,9 @@ class Triangulation:
     def points(self) -> _PointArray:
         """(n, 2) float64: every input point, merged duplicates included."""
     @property
+    def elevations(self) -> Optional[npt.NDArray[np.float64]]:
+        """(n,) float64: every input point's elevation, or None without them."""
+    @property
     def simplices(self) -> _IndexArray:
         """(m, 3) int64: the triangles, counter-clockwise."""
     @property
@@ -132,20 +135,39 @@ class Triangulation:
     def write(self, path: _StrPath) -> List[Path]:
         """Writes .json, .svg, .geojson, .ele or .edge (+ .node); returns the paths."""
 
-def triangulate(points: _ArrayLike, criterion: str = "delaunay", **options: Any) -> Triangulation:
+def triangulate(
+    points: _ArrayLike,
+    criterion: str = "delaunay",
+    *,
+    elevations: Optional[_ArrayLike] = None,
+    **options: Any,
+) -> Triangulation:
     """Triangulates the convex hull of an (n, 2) point array by ``criterion``.
+
+    An (n, 3) array, or ``elevations=`` with one float per point, gives each
+    point an elevation (kept as ``elevations``; read by the criteria that
+    need one, ignored by the others).
 
     Floats are taken at the decimals their reprs show when every coordinate's
     repr has at most 15 significant digits (``coordinate_arithmetic`` is then
     "decimal-exact"), else at their binary values ("binary64")."""
 
 def triangulate_polygon(
-    vertices: _ArrayLike, criterion: str = "delaunay", **options: Any
+    vertices: _ArrayLike,
+    criterion: str = "delaunay",
+    *,
+    elevations: Optional[_ArrayLike] = None,
+    **options: Any,
 ) -> Triangulation:
-    """Triangulates the interior of a simple polygon given as an (n, 2) ring."""
+    """Triangulates the interior of a simple polygon given as an (n, 2) ring
+    (or (n, 3) with elevations, or ``elevations=``)."""
 
 def compare(
-    points: _ArrayLike, criteria: Optional[Sequence[str]] = None, **options: Any
+    points: _ArrayLike,
+    criteria: Optional[Sequence[str]] = None,
+    *,
+    elevations: Optional[_ArrayLike] = None,
+    **options: Any,
 ) -> Dict[str, Union[Triangulation, ValueError]]:
     """Every criterion (or those named) on one input, by criterion name; a
     criterion that refuses the input maps to its (unraised) ValueError."""

@@ -50,6 +50,16 @@ fn assert_error(dir: &Path, args: &[&str], stdin: Option<&str>, message: &str) {
 /// Reader errors: (file, contents, message). Each is tried with
 /// `triangulate`, and with `graph` unless the file is a polygon.
 const READER_ERRORS: &[(&str, &str, &str)] = &[
+    (
+        "mixed.txt",
+        "0 0 1\n1 0 2\n0 1\n",
+        "mixed.txt:3: 2 columns, but line 1 has 3; every row must have the same number of columns",
+    ),
+    (
+        "z.txt",
+        "0 0 1\n1 0 nan\n0 1 2\n",
+        "z.txt:2: elevation 'nan' is not a finite number",
+    ),
     ("nan.txt", "0 0\n1 0\nNaN 1\n", "nan.txt:3: coordinate 'NaN' is not a finite number"),
     ("word.txt", "0 0\n1 0\n0 oops\n", "word.txt:3: 'oops' is not a number"),
     (
@@ -402,15 +412,20 @@ fn every_io_failure_is_reported_before_any_work() {
 #[test]
 fn warnings_name_what_is_ignored_and_quiet_silences_them() {
     let dir = scratch("warnings");
-    std::fs::write(dir.join("xyz.txt"), "0 0 7\n4 0 7\n0 4 7\n1 1 7\n").unwrap();
-    let out = run_in(&dir, &["triangulate", "xyz.txt"], None);
+    std::fs::write(dir.join("xyzw.txt"), "0 0 7 1\n4 0 7 1\n0 4 7 1\n1 1 7 1\n").unwrap();
+    let out = run_in(&dir, &["triangulate", "xyzw.txt"], None);
     assert!(out.status.success());
     assert_eq!(
         String::from_utf8_lossy(&out.stderr),
-        "optri: warning: xyz.txt: line 1: rows have 3 columns and no header names them; reading \
-         columns 1 and 2 as x y and ignoring column 3 (a header line such as `x y z` names them)\n"
+        "optri: warning: xyzw.txt: line 1: rows have 4 columns and no header names them; reading \
+         columns 1 and 2 as x y and ignoring columns 3 to 4 (a header line such as `x y z` names \
+         them; a column named z is read as the elevation)\n"
     );
-    let out = run_in(&dir, &["triangulate", "xyz.txt", "--quiet", "--json"], None);
+    let out = run_in(
+        &dir,
+        &["triangulate", "xyzw.txt", "--quiet", "--json"],
+        None,
+    );
     assert!(out.status.success() && out.stderr.is_empty());
     let out = run_in(
         &dir,
@@ -428,6 +443,60 @@ fn warnings_name_what_is_ignored_and_quiet_silences_them() {
             && String::from_utf8_lossy(&out.stderr).contains("ignoring columns 3 to 4"),
         "{}",
         String::from_utf8_lossy(&out.stderr)
+    );
+}
+
+#[test]
+fn an_xyz_file_triangulates_with_its_elevations_and_writes_them_back() {
+    let dir = scratch("xyz");
+    std::fs::write(
+        dir.join("xyz.txt"),
+        "0 0 7\n4 0 7.5\n0 4 -1\n1 1 0\n4 0 7.5\n",
+    )
+    .unwrap();
+    let out = run_in(
+        &dir,
+        &[
+            "triangulate",
+            "xyz.txt",
+            "--json",
+            "-o",
+            "t.geojson",
+            "-o",
+            "t.ele",
+        ],
+        None,
+    );
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(out.status.success() && err.is_empty(), "{err}");
+    let document: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(
+        document["elevations"],
+        serde_json::json!([7.0, 7.5, -1.0, 0.0, 7.5])
+    );
+    assert_eq!(document["coordinates"][1], serde_json::json!([4.0, 0.0]));
+    let geojson = std::fs::read_to_string(dir.join("t.geojson")).unwrap();
+    assert!(geojson.contains("[4.0,0.0,7.5]"), "{geojson}");
+    let node = std::fs::read_to_string(dir.join("t.node")).unwrap();
+    assert!(
+        node.contains("\n5 2 1 0\n") && node.contains("\n2 0 4 -1\n"),
+        "{node}"
+    );
+    // Written files read back as input with the same elevations.
+    for written in ["t.geojson", "t.node"] {
+        let out = run_in(&dir, &["triangulate", written, "--json", "-q"], None);
+        assert!(out.status.success(), "{written}");
+        let again: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+        assert_eq!(again["elevations"], document["elevations"], "{written}");
+    }
+    // Duplicates with different elevations are refused, naming them.
+    std::fs::write(dir.join("conflict.txt"), "0 0 7\n4 0 7.5\n0 4 -1\n4 0 8\n").unwrap();
+    let out = run_in(&dir, &["triangulate", "conflict.txt"], None);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(1), "{err}");
+    assert!(
+        err.contains("point 3 repeats point 1 with another elevation"),
+        "{err}"
     );
 }
 

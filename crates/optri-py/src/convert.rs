@@ -52,11 +52,67 @@ pub(crate) fn points_arg(
     points: &Bound<'_, PyAny>,
     what: &str,
 ) -> PyResult<Vec<[f64; 2]>> {
+    let (values, _) = float_rows(py, points, what, &[2])?;
+    Ok(values.chunks_exact(2).map(|r| [r[0], r[1]]).collect())
+}
+
+/// Points and, when given, one elevation per point.
+pub(crate) type PointsWithElevations = (Vec<[f64; 2]>, Option<Vec<f64>>);
+
+/// `what` as points with their elevations: an `(n, 2)` array-like as
+/// [`points_arg`] takes, with `elevations` (one per point) or without, or an
+/// `(n, 3)` one whose third column is the elevation (then `elevations` must
+/// be `None`). Elevations are checked as coordinates are (exact doubles
+/// here; finite, in range and equal on duplicates when the request runs).
+pub(crate) fn points_with_elevations_arg(
+    py: Python<'_>,
+    points: &Bound<'_, PyAny>,
+    elevations: Option<&Bound<'_, PyAny>>,
+    what: &str,
+) -> PyResult<PointsWithElevations> {
+    let (values, width) = float_rows(py, points, what, &[2, 3])?;
+    let xy = values.chunks_exact(width).map(|r| [r[0], r[1]]).collect();
+    let z = match (width, elevations) {
+        (3, Some(_)) => {
+            return Err(PyValueError::new_err(format!(
+                "{what} has a third column (the elevations) and elevations= is given too; \
+                 pass one of them"
+            )))
+        }
+        (3, None) => Some(values.chunks_exact(3).map(|r| r[2]).collect()),
+        (_, Some(z)) => {
+            let column = py
+                .import("numpy")?
+                .call_method1("reshape", (z, (-1, 1)))
+                .map_err(|e| {
+                    PyValueError::new_err(format!(
+                        "elevations must be a sequence of numbers: {}",
+                        e.value(py)
+                    ))
+                })?;
+            Some(float_rows(py, &column, "elevations", &[1])?.0)
+        }
+        (_, None) => None,
+    };
+    Ok((xy, z))
+}
+
+/// `given` as rows of one of the `widths` (the first given names the
+/// expected shape), through `numpy.asarray`, checked as [`points_arg`]
+/// describes: the values row by row, and the width found.
+fn float_rows(
+    py: Python<'_>,
+    given: &Bound<'_, PyAny>,
+    what: &str,
+    widths: &[usize],
+) -> PyResult<(Vec<f64>, usize)> {
+    let shapes: Vec<String> = widths.iter().map(|w| format!("(n, {w})")).collect();
+    let shapes = shapes.join(" or ");
     let numpy = py.import("numpy")?;
     let ma = numpy.getattr("ma")?;
-    if ma.call_method1("isMaskedArray", (points,))?.is_truthy()?
+    if ma.call_method1("isMaskedArray", (given,))?.is_truthy()?
         && ma
-            .call_method1("getmaskarray", (points,))?
+            .call_method1("getmaskarray", (given,))?
             .call_method0("any")?
             .is_truthy()?
     {
@@ -70,12 +126,12 @@ pub(crate) fn points_arg(
             return e;
         }
         PyValueError::new_err(format!(
-            "{what} must be an (n, 2) array-like of numbers: {}",
+            "{what} must be an {shapes} array-like of numbers: {}",
             e.value(py)
         ))
     };
     let given = numpy
-        .call_method1("asarray", (points,))
+        .call_method1("asarray", (given,))
         .map_err(not_numbers)?;
     let dtype = given.getattr("dtype")?;
     let kind: String = dtype.getattr("kind")?.extract()?;
@@ -94,10 +150,10 @@ pub(crate) fn points_arg(
         PyValueError::new_err(format!("{what}: numpy.asarray did not give a float array"))
     })?;
     let shape = array.shape().to_vec();
-    if shape.len() != 2 || shape[1] != 2 {
+    if shape.len() != 2 || !widths.contains(&shape[1]) {
         let shape: Vec<String> = shape.iter().map(ToString::to_string).collect();
         return Err(PyValueError::new_err(format!(
-            "{what} must have shape (n, 2), got ({}{})",
+            "{what} must have shape {shapes}, got ({}{})",
             shape.join(", "),
             if shape.len() == 1 { "," } else { "" }
         )));
@@ -107,16 +163,18 @@ pub(crate) fn points_arg(
     }
     let readonly = array.readonly();
     let view = readonly.as_array();
-    let n = shape[0];
-    let mut rows = Vec::new();
-    rows.try_reserve_exact(n).map_err(|_| {
-        PyMemoryError::new_err(format!(
-            "cannot hold {n} points ({} bytes)",
-            n.saturating_mul(16)
-        ))
-    })?;
-    rows.extend(view.rows().into_iter().map(|row| [row[0], row[1]]));
-    Ok(rows)
+    let (n, width) = (shape[0], shape[1]);
+    let mut values = Vec::new();
+    values
+        .try_reserve_exact(n.saturating_mul(width))
+        .map_err(|_| {
+            PyMemoryError::new_err(format!(
+                "cannot hold {n} points ({} bytes)",
+                n.saturating_mul(8 * width)
+            ))
+        })?;
+    values.extend(view.iter().copied());
+    Ok((values, width))
 }
 
 /// Refuses the first value of `given` that its double in `doubles` does not
@@ -172,6 +230,13 @@ pub(crate) fn index_array<const K: usize>(
 ) -> PyResult<Py<PyArray2<i64>>> {
     let flat: Vec<i64> = rows.iter().flatten().map(|&i| i64::from(i)).collect();
     let array = PyArray1::from_vec(py, flat).reshape([rows.len(), K])?;
+    array.getattr("flags")?.setattr("writeable", false)?;
+    Ok(array.unbind())
+}
+
+/// A read-only `(n,)` float64 array (e.g. elevations).
+pub(crate) fn value_array(py: Python<'_>, values: &[f64]) -> PyResult<Py<PyArray1<f64>>> {
+    let array = PyArray1::from_slice(py, values);
     array.getattr("flags")?.setattr("writeable", false)?;
     Ok(array.unbind())
 }

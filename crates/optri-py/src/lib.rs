@@ -18,7 +18,10 @@
 mod convert;
 mod triangulation;
 
-use convert::{file_err, index_array, json_text_to_py, point_array, points_arg, to_py_err};
+use convert::{
+    file_err, index_array, json_text_to_py, point_array, points_arg, points_with_elevations_arg,
+    to_py_err,
+};
 use numpy::PyArray2;
 use optri::io::{self, Input, InputFormat, ReadInput, ReadOptions, Source};
 use optri::request::{Outcome, Request, Results, Task};
@@ -61,6 +64,7 @@ fn request(task: Task, input: Input, kwargs: Option<&Bound<'_, PyDict>>) -> PyRe
     Ok(Pending {
         task,
         input,
+        elevations: None,
         options,
     })
 }
@@ -69,7 +73,16 @@ fn request(task: Task, input: Input, kwargs: Option<&Bound<'_, PyDict>>) -> PyRe
 struct Pending {
     task: Task,
     input: Input,
+    /// One per point of `input`, checked when the request runs.
+    elevations: Option<Vec<f64>>,
     options: Options,
+}
+
+impl Pending {
+    /// This request with `elevations`, if any.
+    fn with_elevations(self, elevations: Option<Vec<f64>>) -> Self {
+        Self { elevations, ..self }
+    }
 }
 
 /// How often a waiting call looks for Ctrl-C (and other signals).
@@ -101,6 +114,7 @@ fn run(py: Python<'_>, pending: Pending) -> PyResult<Outcome> {
     let Pending {
         task,
         input,
+        elevations,
         options,
     } = pending;
     let options = options.with_cancel(cancel.clone());
@@ -108,7 +122,11 @@ fn run(py: Python<'_>, pending: Pending) -> PyResult<Outcome> {
     std::thread::Builder::new()
         .name("optri".to_string())
         .spawn(move || {
-            let request = Request::new(ReadInput::from_doubles(input), task).with_options(options);
+            let mut read = ReadInput::from_doubles(input);
+            if let Some(z) = elevations {
+                read = read.with_elevations(z);
+            }
+            let request = Request::new(read, task).with_options(options);
             let outcome = request.run().map(|mut outcome| {
                 outcome.finish();
                 outcome
@@ -157,7 +175,11 @@ fn triangulation_of(py: Python<'_>, outcome: Outcome) -> PyResult<Triangulation>
 /// Triangulates the convex hull of ``points`` by ``criterion``.
 ///
 /// ``points``: an (n, 2) array-like of floats (duplicates are merged and
-/// reported in ``duplicates``). Each float is taken at the decimal its repr
+/// reported in ``duplicates``), or (n, 3) whose third column is each
+/// point's elevation; ``elevations=`` (one float per point) gives them
+/// with an (n, 2) array instead. Elevations are kept in the result
+/// (``elevations``) for the criteria that read them; the others ignore
+/// them. Each float is taken at the decimal its repr
 /// shows when every coordinate's repr has at most 15 significant digits
 /// (``coordinate_arithmetic`` is then "decimal-exact": 0.1, 0.2, 0.3 are
 /// collinear as written); otherwise at its binary value ("binary64").
@@ -168,44 +190,48 @@ fn triangulation_of(py: Python<'_>, outcome: Outcome) -> PyResult<Triangulation>
 /// (``time_limit=`` seconds). Returns a ``Triangulation``.
 ///
 /// Raises ValueError with the library's message for NaN or infinite
-/// coordinates, a wrong shape, fewer than 3 distinct points, all points
+/// coordinates or elevations, elevations that are not one per point or
+/// differ between duplicates, a wrong shape, fewer than 3 distinct points, all points
 /// collinear, an unknown criterion or option, or an input the criterion
 /// does not support; TypeError for an option value that is neither a string
 /// nor a number; TimeoutError for a run stopped by its time limit;
 /// KeyboardInterrupt on Ctrl-C (the run is cancelled).
 #[pyfunction]
-#[pyo3(signature = (points, criterion = "delaunay", **options))]
+#[pyo3(signature = (points, criterion = "delaunay", *, elevations = None, **options))]
 fn triangulate(
     py: Python<'_>,
     points: &Bound<'_, PyAny>,
     criterion: &str,
+    elevations: Option<&Bound<'_, PyAny>>,
     options: Option<&Bound<'_, PyDict>>,
 ) -> PyResult<Triangulation> {
     let task = Task::triangulate(criterion).map_err(to_py_err)?;
-    let points = points_arg(py, points, "points")?;
-    let request = request(task, Input::Points(points), options)?;
+    let (points, z) = points_with_elevations_arg(py, points, elevations, "points")?;
+    let request = request(task, Input::Points(points), options)?.with_elevations(z);
     triangulation_of(py, run(py, request)?)
 }
 
 /// Triangulates the interior of the simple polygon ``vertices`` (an (n, 2)
 /// array-like ring in boundary order, either orientation, the closing
-/// vertex not repeated) by ``criterion``. Indices in the result are ring
+/// vertex not repeated; or (n, 3) with elevations, or ``elevations=`` as
+/// for ``triangulate``) by ``criterion``. Indices in the result are ring
 /// positions and ``domain`` is "polygon".
 ///
 /// Raises ValueError for a ring that is not a simple polygon (naming the
 /// edges that meet or the repeated vertex), a criterion that takes no
 /// polygons, or the other input errors of ``triangulate``.
 #[pyfunction]
-#[pyo3(signature = (vertices, criterion = "delaunay", **options))]
+#[pyo3(signature = (vertices, criterion = "delaunay", *, elevations = None, **options))]
 fn triangulate_polygon(
     py: Python<'_>,
     vertices: &Bound<'_, PyAny>,
     criterion: &str,
+    elevations: Option<&Bound<'_, PyAny>>,
     options: Option<&Bound<'_, PyDict>>,
 ) -> PyResult<Triangulation> {
     let task = Task::triangulate(criterion).map_err(to_py_err)?;
-    let ring = points_arg(py, vertices, "vertices")?;
-    let request = request(task, Input::Polygon(ring), options)?;
+    let (ring, z) = points_with_elevations_arg(py, vertices, elevations, "vertices")?;
+    let request = request(task, Input::Polygon(ring), options)?.with_elevations(z);
     triangulation_of(py, run(py, request)?)
 }
 
@@ -214,18 +240,20 @@ fn triangulate_polygon(
 /// the registry, in registry order). A criterion that refuses the input is
 /// reported, not dropped: its value is the ``ValueError`` it would raise
 /// (not raised), e.g. min-weight's refusal of a metric. Keyword arguments
-/// are options, as for ``triangulate`` (those any of the criteria reads).
+/// are options, as for ``triangulate`` (those any of the criteria reads);
+/// ``points`` and ``elevations=`` are as for ``triangulate``.
 #[pyfunction]
-#[pyo3(signature = (points, criteria = None, **options))]
+#[pyo3(signature = (points, criteria = None, *, elevations = None, **options))]
 fn compare(
     py: Python<'_>,
     points: &Bound<'_, PyAny>,
     criteria: Option<Vec<String>>,
+    elevations: Option<&Bound<'_, PyAny>>,
     options: Option<&Bound<'_, PyDict>>,
 ) -> PyResult<Py<PyDict>> {
     let task = Task::compare(&criteria.unwrap_or_default()).map_err(to_py_err)?;
-    let points = points_arg(py, points, "points")?;
-    let request = request(task, Input::Points(points), options)?;
+    let (points, z) = points_with_elevations_arg(py, points, elevations, "points")?;
+    let request = request(task, Input::Points(points), options)?.with_elevations(z);
     let (read, phases, results) = run(py, request)?.into_parts();
     let Results::Comparison(results) = results else {
         return Err(PyRuntimeError::new_err("internal error: not a comparison"));

@@ -5,8 +5,8 @@
 //! JSON names and cannot drift from them; the arrays come from the same
 //! triangulation the document describes.
 
-use crate::convert::{index_array, json_text_to_py, point_array, to_py_err};
-use numpy::PyArray2;
+use crate::convert::{index_array, json_text_to_py, point_array, to_py_err, value_array};
+use numpy::{PyArray1, PyArray2};
 use optri::io::{self, ReadInput, TriangulationReport, WriteOptions};
 use optri::{Phase, Solution};
 use pyo3::exceptions::PyRuntimeError;
@@ -19,7 +19,13 @@ use std::sync::{Arc, OnceLock};
 
 /// The fields left out of [`Fields`]: the long arrays, which are numpy
 /// attributes instead.
-const ARRAY_FIELDS: &[&str] = &["triangles", "edges", "coordinates", "duplicates"];
+const ARRAY_FIELDS: &[&str] = &[
+    "triangles",
+    "edges",
+    "coordinates",
+    "duplicates",
+    "elevations",
+];
 
 /// The fields of a triangulation document as their JSON texts, in document
 /// order, without [`ARRAY_FIELDS`] (skipped while parsing, never built).
@@ -64,7 +70,7 @@ impl Fields {
 /// An optimal (or, where `exact` is false, best known) triangulation.
 ///
 /// Attributes follow scipy.spatial.Delaunay: `points` (n, 2) float64, every
-/// input point; `simplices` (m, 3) int64, counter-clockwise triangles as
+/// input point; `elevations` (n,) float64 or None; `simplices` (m, 3) int64, counter-clockwise triangles as
 /// input indices; `edges` (k, 2) int64, sorted `[a, b]` pairs with a < b;
 /// `duplicates` (d, 2) int64, `[dropped, kept]` input indices of merged
 /// duplicate points. The arrays are read-only. The other attributes are the
@@ -86,6 +92,8 @@ pub struct Triangulation {
     /// wants the simplices does not pay for them.
     fields: OnceLock<Fields>,
     points: Py<PyArray2<f64>>,
+    /// The input's elevations, one per point, if it had them.
+    elevations: Option<Py<PyArray1<f64>>>,
     simplices: Py<PyArray2<i64>>,
     duplicates: Py<PyArray2<i64>>,
     /// Built on first use, as `fields`.
@@ -103,6 +111,10 @@ impl Triangulation {
         let t = &solution.triangulation;
         Ok(Triangulation {
             points: point_array(py, read.input.points())?,
+            elevations: match &read.elevations {
+                Some(z) => Some(value_array(py, z)?),
+                None => None,
+            },
             simplices: index_array(py, t.triangles())?,
             duplicates: index_array(py, t.point_set().duplicates())?,
             edges: OnceLock::new(),
@@ -151,6 +163,13 @@ impl Triangulation {
     #[getter]
     fn points<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray2<f64>> {
         self.points.bind(py).clone()
+    }
+
+    /// (n,) float64: the elevation of every input point, when the input
+    /// had them (an (n, 3) array or ``elevations=``), else None.
+    #[getter]
+    fn elevations<'py>(&self, py: Python<'py>) -> Option<Bound<'py, PyArray1<f64>>> {
+        self.elevations.as_ref().map(|z| z.bind(py).clone())
     }
 
     /// (m, 3) int64: the triangles as input indices, counter-clockwise.

@@ -434,10 +434,10 @@ def test_compare_named_criteria_runs_exactly_those():
         ([[0, 0], [1, 1]], "at least 3 distinct points, the input has 2"),
         ([[0, 0], [1, 1], [0, 0], [1, 1]], "at least 3 distinct points, the input has 2"),
         ([[0, 0], [1, 1], [2, 2], [3, 3]], "all 4 distinct points are collinear"),
-        ([[0, 0, 0], [1, 1, 1], [2, 0, 1]], r"shape \(n, 2\), got \(3, 3\)"),
-        ([0, 1, 2], r"shape \(n, 2\), got \(3,\)"),
-        ([], r"shape \(n, 2\), got \(0,\)"),
-        (np.zeros((2, 3, 2)), r"shape \(n, 2\), got \(2, 3, 2\)"),
+        ([[0, 0, 0, 0], [1, 1, 1, 1], [2, 0, 1, 1]], r"shape \(n, 2\) or \(n, 3\), got \(3, 4\)"),
+        ([0, 1, 2], r"shape \(n, 2\) or \(n, 3\), got \(3,\)"),
+        ([], r"shape \(n, 2\) or \(n, 3\), got \(0,\)"),
+        (np.zeros((2, 3, 2)), r"shape \(n, 2\) or \(n, 3\), got \(2, 3, 2\)"),
         ([["a", "b"], ["c", "d"], ["e", "f"]], "could not convert"),
         ([[0, 0], [1], [2, 3]], "array-like of numbers"),
     ],
@@ -445,6 +445,63 @@ def test_compare_named_criteria_runs_exactly_those():
 def test_bad_points_raise_value_error_with_the_librarys_message(points, message):
     with pytest.raises(ValueError, match=message):
         optri.triangulate(points, criterion="delaunay")
+
+
+# --- elevations ----------------------------------------------------------------
+
+TERRAIN = [(0, 0, 1.5), (4, 0, 2), (4, 3, -1), (0, 3, 0), (2, 1, 7), (4, 0, 2)]
+
+
+def test_a_third_column_or_elevations_keyword_is_kept_as_elevations(tmp_path):
+    by_column = optri.triangulate(np.array(TERRAIN, dtype=float))
+    by_keyword = optri.triangulate([p[:2] for p in TERRAIN], elevations=[p[2] for p in TERRAIN])
+    for t in (by_column, by_keyword):
+        assert t.points.shape == (6, 2)
+        assert t.elevations.tolist() == [p[2] for p in TERRAIN]
+        assert not t.elevations.flags.writeable
+        assert t.document["elevations"] == [p[2] for p in TERRAIN]
+    assert by_column.simplices.tolist() == by_keyword.simplices.tolist()
+    assert optri.triangulate([p[:2] for p in TERRAIN]).elevations is None
+    assert "elevations" not in optri.triangulate([p[:2] for p in TERRAIN]).document
+    # The same x y z file through the CLI gives the same document.
+    path = tmp_path / "terrain.txt"
+    path.write_text("".join(f"{x} {y} {z}\n" for x, y, z in TERRAIN))
+    theirs = json.loads(
+        subprocess.run(
+            [cli(), "triangulate", str(path), "--json"], check=True, capture_output=True, text=True
+        ).stdout
+    )
+    ours = by_column.document
+    for doc in (ours, theirs):
+        del doc["timing_ms"]
+    assert ours == theirs
+    # Polygons and comparisons take them too.
+    ring = optri.triangulate_polygon([(0, 0, 1), (2, 0, 2), (1, 2, 3)])
+    assert ring.elevations.tolist() == [1, 2, 3]
+    results = optri.compare(TERRAIN, ["delaunay", "greedy"])
+    assert all(r.document["elevations"] == [p[2] for p in TERRAIN] for r in results.values())
+
+
+@pytest.mark.parametrize(
+    "points,elevations,message",
+    [
+        ([(0, 0, 1), (1, 0, float("nan")), (0, 1, 2)], None, r"point 1 has a non-finite elevation"),
+        ([(0, 0), (1, 0), (0, 1)], [1, 2], r"2 elevations for 3 points"),
+        ([(0, 0), (1, 0), (0, 1)], [1, 2, float("inf")], r"point 2 has a non-finite elevation"),
+        ([(0, 0, 1), (1, 0, 2), (0, 1, 3), (1, 0, 5)], None, r"point 3 repeats point 1 with another elevation"),
+        ([(0, 0, 1), (1, 0, 2), (0, 1, 3)], [1, 2, 3], r"elevations= is given too"),
+        ([(0, 0), (1, 0), (0, 1)], ["a", "b", "c"], r"elevations must be .* numbers"),
+        ([(0, 0, 1e300), (1, 0, 2), (0, 1, 3)], None, r"outside the exact range"),
+    ],
+)
+def test_bad_elevations_raise_value_error_with_the_message(points, elevations, message):
+    with pytest.raises(ValueError, match=message):
+        optri.triangulate(points, elevations=elevations)
+
+
+def test_graphs_take_no_elevations():
+    with pytest.raises(ValueError, match=r"shape \(n, 2\), got \(3, 3\)"):
+        optri.graph([(0, 0, 1), (1, 0, 2), (0, 1, 3)], "mst")
 
 
 def test_unknown_names_list_what_is_available():

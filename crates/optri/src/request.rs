@@ -201,8 +201,9 @@ impl Request {
     /// Validates the input (timed as `validate`) and runs the task.
     ///
     /// # Errors
-    /// The input errors of [`PointSet::new`] and [`SimplePolygon::new`]
-    /// (for a graph: of [`graph`]), and for a single
+    /// The input errors of [`PointSet::new`], [`SimplePolygon::new`] and
+    /// their `with_elevations` (for a graph: of [`graph`], which ignores
+    /// elevations), and for a single
     /// criterion or a graph its refusal ([`Error::Unsupported`],
     /// [`Error::Interrupted`]). A comparison reports each criterion's
     /// refusal in its result instead.
@@ -220,11 +221,7 @@ impl Request {
             let graph = graph(read.working_points(), kind, &options)?;
             (Results::Graph { kind, graph }, None)
         } else {
-            let domain = if polygon {
-                Domain::Polygon(SimplePolygon::new(read.working_points())?)
-            } else {
-                Domain::Points(PointSet::new(read.working_points())?)
-            };
+            let domain = input_domain(&read, polygon)?;
             before.push(Phase {
                 name: "validate",
                 ms: ms_since(t0),
@@ -263,6 +260,32 @@ impl Request {
             phases,
             start,
         })
+    }
+}
+
+/// The validated input of a triangulation or comparison: `read`'s working
+/// points as a point set, or as a polygon when `polygon`, with its
+/// elevations when it has them.
+fn input_domain(read: &ReadInput, polygon: bool) -> Result<Domain> {
+    let z = read.elevations.as_deref();
+    if polygon {
+        let ring = SimplePolygon::new(read.working_points())?;
+        let Some(mut z) = z else {
+            return Ok(Domain::Polygon(ring));
+        };
+        // A ring that repeats its first vertex at the end lost it in
+        // `SimplePolygon::new`; its elevation goes with it if it agrees.
+        let n = ring.point_set().input_points().len();
+        if z.len() == n + 1 && z[n] == z[0] {
+            z = &z[..n];
+        }
+        Ok(Domain::Polygon(ring.with_elevations(z)?))
+    } else {
+        let points = PointSet::new(read.working_points())?;
+        Ok(Domain::Points(match z {
+            Some(z) => points.with_elevations(z)?,
+            None => points,
+        }))
     }
 }
 
@@ -512,5 +535,73 @@ mod tests {
             4
         );
         assert_eq!(outcome.phases()[0].name, "validate");
+    }
+
+    #[test]
+    fn elevations_reach_the_point_set_and_the_document_or_are_refused() {
+        use crate::error::ElevationProblem;
+        let square = [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0], [1.0, 0.0]];
+        let z = vec![1.0, 2.0, 3.0, 4.0, 2.0];
+        let task = || Task::triangulate("delaunay").unwrap();
+        let outcome = Request::new(read(&square).with_elevations(z.clone()), task())
+            .run()
+            .unwrap();
+        assert_eq!(
+            outcome.point_set().unwrap().elevations(),
+            Some(&[1.0, 2.0, 3.0, 4.0][..])
+        );
+        let doc = outcome.to_json();
+        assert_eq!(doc["elevations"], serde_json::json!(z));
+        // Without elevations the document has no such field.
+        let plain = Request::new(read(&square), task()).run().unwrap();
+        assert!(plain.to_json().get("elevations").is_none());
+        // Duplicates that disagree, a NaN, a wrong count: refused by name.
+        for (z, problem) in [
+            (
+                vec![1.0, 2.0, 3.0, 4.0, 9.0],
+                ElevationProblem::ConflictingDuplicate { index: 4, kept: 1 },
+            ),
+            (
+                vec![1.0, f64::NAN, 3.0, 4.0, 2.0],
+                ElevationProblem::NonFinite {
+                    index: 1,
+                    value: f64::NAN,
+                },
+            ),
+            (
+                vec![1.0, 2.0],
+                ElevationProblem::CountMismatch {
+                    points: 5,
+                    elevations: 2,
+                },
+            ),
+        ] {
+            let e = Request::new(read(&square).with_elevations(z), task())
+                .run()
+                .unwrap_err();
+            match (&e, &problem) {
+                (
+                    Error::InvalidElevations(ElevationProblem::NonFinite { index, .. }),
+                    ElevationProblem::NonFinite {
+                        index: expected, ..
+                    },
+                ) => assert_eq!(index, expected),
+                (Error::InvalidElevations(p), _) => assert_eq!(p, &problem),
+                _ => panic!("{e:?}"),
+            }
+        }
+        // A polygon's ring may close on its first vertex, elevation included.
+        let ring = ReadInput::from_doubles(Input::Polygon(vec![
+            [0.0, 0.0],
+            [2.0, 0.0],
+            [1.0, 2.0],
+            [0.0, 0.0],
+        ]))
+        .with_elevations(vec![5.0, 6.0, 7.0, 5.0]);
+        let outcome = Request::new(ring, task()).run().unwrap();
+        assert_eq!(
+            outcome.polygon().unwrap().point_set().elevations(),
+            Some(&[5.0, 6.0, 7.0][..])
+        );
     }
 }

@@ -481,3 +481,89 @@ fn a_50_mb_token_gives_a_short_escaped_message_in_every_reader() {
         assert!(bytes >= long.len(), "{format:?}: {message}");
     }
 }
+
+/// The points and elevations of the file at `path` (format by extension).
+fn read_with_elevations(path: &std::path::Path) -> (Vec<Point>, Option<Vec<f64>>) {
+    let read = io::read(Source::Path(path), &ReadOptions::default()).unwrap();
+    (read.input.points().to_vec(), read.elevations)
+}
+
+#[test]
+fn elevations_survive_every_format_that_holds_them() {
+    use optri::request::{Request, Task};
+    let dir = scratch("elevations");
+    let mut rng = StdRng::seed_from_u64(SEED_POINT_SETS);
+    for (k, (name, pts)) in point_sets().into_iter().enumerate() {
+        // One elevation per distinct point, so duplicates agree; awkward
+        // magnitudes and signs.
+        let ps = PointSet::new(&pts).unwrap();
+        let per_distinct: Vec<f64> = (0..ps.len())
+            .map(|_| rng.gen_range(-1.0..1.0) * [1.0, 1e-30, 1e40, 3.0][rng.gen_range(0..4)])
+            .collect();
+        let z: Vec<f64> = (0..pts.len() as u32)
+            .map(|i| per_distinct[ps.distinct_index(i) as usize])
+            .collect();
+        // An `x y z` text file reads with its elevations ...
+        let text: String = pts
+            .iter()
+            .zip(&z)
+            .map(|(p, z)| format!("{:e} {:e} {z:e}\n", p[0], p[1]))
+            .collect();
+        let input = dir.join(format!("p{k}.txt"));
+        std::fs::write(&input, text).unwrap();
+        let read = io::read(Source::Path(&input), &ReadOptions::default()).unwrap();
+        assert_eq!(read.elevations.as_deref(), Some(&z[..]), "{name}");
+        // ... the request carries them to the point set and the document ...
+        let outcome = Request::new(read, Task::triangulate("delaunay").unwrap())
+            .run()
+            .unwrap();
+        let distinct: Vec<f64> = (0..ps.len() as u32)
+            .map(|d| z[ps.input_index(d) as usize])
+            .collect();
+        assert_eq!(
+            outcome.point_set().unwrap().elevations(),
+            Some(&distinct[..]),
+            "{name}"
+        );
+        let value = outcome.to_json();
+        assert_eq!(value["elevations"], serde_json::json!(z), "{name}");
+        // ... and every output that holds them reads back to the same values.
+        for extension in ["json", "geojson", "ele", "edge"] {
+            let path = dir.join(format!("t{k}.{extension}"));
+            let written = write(outcome.document(), &path);
+            let points_file = written.last().unwrap();
+            let (back, back_z) = read_with_elevations(points_file);
+            assert_eq!(back, pts, "{name} .{extension}");
+            assert_eq!(back_z.as_deref(), Some(&z[..]), "{name} .{extension}");
+        }
+        let again = io::triangulation_from_json(&value).unwrap();
+        assert_eq!(
+            again.point_set().elevations(),
+            Some(&distinct[..]),
+            "{name}"
+        );
+        let document = io::TriangulationReport::new(&again).to_json();
+        assert_eq!(document["elevations"], value["elevations"], "{name}");
+    }
+    // Without elevations no output invents them.
+    let pts = &point_sets()[0].1;
+    let t = delaunay(&PointSet::new(pts).unwrap()).unwrap();
+    for extension in ["json", "geojson", "ele"] {
+        let path = dir.join(format!("plain.{extension}"));
+        let written = write(io::TriangulationReport::new(&t), &path);
+        assert_eq!(read_with_elevations(written.last().unwrap()).1, None);
+    }
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn a_file_mixing_two_and_three_columns_names_the_line() {
+    for (text, line) in [("0 0 1\n1 0 2\n# c\n0 1\n", 4), ("0 0\n1 0\n0 1 5\n", 3)] {
+        let (at, m) = parse_error(read_points(text, InputFormat::Text).unwrap_err());
+        assert_eq!(at, line, "{text}: {m}");
+        assert!(
+            m.contains("every row must have the same number of columns"),
+            "{m}"
+        );
+    }
+}

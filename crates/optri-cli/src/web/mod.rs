@@ -10,10 +10,10 @@
 //! | `GET /` | the page ([`INDEX_HTML`] with [`PLAYGROUND_JS`] and [`PLAYGROUND_CSS`], embedded; nothing is loaded from elsewhere) |
 //! | `GET /api/criteria` | the registry listing document of `optri criteria --json` |
 //! | `GET /api/limits` | `{"max_body_bytes", "max_points", "time_limit_s", "max_running", "small_points", "read_timeout_s"}` |
-//! | `POST /api/triangulate` `{"points": [[x, y], …], "criterion"?, "polygon"?, "options"?}` | the triangulation document of `optri triangulate --json` |
+//! | `POST /api/triangulate` `{"points": [[x, y], …], "criterion"?, "polygon"?, "options"?}` | the triangulation document of `optri triangulate --json` (points may be `[x, y, z]`, all of them: `z` is the elevation) |
 //! | `POST /api/compare` `{"points", "criteria"?: [names], "polygon"?, "options"?}` | the comparison document of `optri compare --json` |
 //! | `POST /api/graph` `{"points", "kind", "options"?}` | the graph document of `optri graph --json` |
-//! | `POST /api/read` `{"text", "filename"?, "format"?}` | `{"points": [[x, y], …], "polygon": bool, "format"}`: a file parsed by the library's readers |
+//! | `POST /api/read` `{"text", "filename"?, "format"?}` | `{"points": [[x, y], …], "polygon": bool, "format"}`: a file parsed by the library's readers (`[x, y, z]` when it has elevations) |
 //!
 //! Every `GET` route answers `HEAD` (the same headers, no body). `options`
 //! maps option names of the listing to values (strings or numbers), checked
@@ -509,7 +509,8 @@ impl Api {
 }
 
 /// The library's request for a triangulate, compare or graph `body`: each
-/// point an `[x, y]` pair (400 otherwise), at most [`Limits::max_points`]
+/// point an `[x, y]` pair or each an `[x, y, z]` triple (400 otherwise;
+/// see [`points_and_elevations`]), at most [`Limits::max_points`]
 /// (422), taken at their decimal values when the `body` writes none with
 /// more than 15 significant digits ([`ReadInput::from_json_numbers`], as the
 /// GeoJSON reader does), with the options named in the body (400 for one the
@@ -545,17 +546,7 @@ fn prepare(kind: Kind, body: &[u8], limits: &Limits, cancel: Cancel) -> Result<P
         ));
     }
     let count = points.len();
-    let points = points
-        .iter()
-        .enumerate()
-        .map(|(i, p)| match p[..] {
-            [x, y] => Ok([x, y]),
-            _ => Err(bad_request(format!(
-                "point {i} has {} numbers; each point is [x, y]",
-                p.len()
-            ))),
-        })
-        .collect::<Result<Vec<[f64; 2]>, Refusal>>()?;
+    let (points, elevations) = points_and_elevations(&points)?;
     let input = if polygon {
         io::Input::Polygon(points)
     } else {
@@ -563,7 +554,10 @@ fn prepare(kind: Kind, body: &[u8], limits: &Limits, cancel: Cancel) -> Result<P
     };
     // `parse` accepted the body, so it is UTF-8 and the lossy view is
     // the text itself.
-    let read = ReadInput::from_json_numbers(input, &String::from_utf8_lossy(body));
+    let mut read = ReadInput::from_json_numbers(input, &String::from_utf8_lossy(body));
+    if let Some(z) = elevations {
+        read = read.with_elevations(z);
+    }
     let mut request =
         Request::new(read, task).with_options(Options::default().with_cancel(cancel.clone()));
     if !limits.time_limit.is_zero() {
@@ -600,6 +594,33 @@ fn prepare(kind: Kind, body: &[u8], limits: &Limits, cancel: Cancel) -> Result<P
         cancel,
         time_limit: limits.time_limit,
     })
+}
+
+/// A request's points, and their elevations when every point has one.
+type PointsWithElevations = (Vec<[f64; 2]>, Option<Vec<f64>>);
+
+/// A request's `points`: every one `[x, y]`, or every one `[x, y, z]` (then
+/// `z` is its elevation); 400 naming the first point that is neither or
+/// differs from point 0.
+fn points_and_elevations(points: &[Vec<f64>]) -> Result<PointsWithElevations, Refusal> {
+    let width = points.first().map_or(2, Vec::len);
+    let bad = points
+        .iter()
+        .position(|p| !matches!(p.len(), 2 | 3) || p.len() != width);
+    if let Some(i) = bad {
+        let n = points[i].len();
+        return Err(bad_request(if matches!(n, 2 | 3) {
+            format!(
+                "point {i} has {n} numbers, but point 0 has {width}; every point is [x, y], or \
+                 every point [x, y, z]"
+            )
+        } else {
+            format!("point {i} has {n} numbers; each point is [x, y] or [x, y, z]")
+        }));
+    }
+    let xy = points.iter().map(|p| [p[0], p[1]]).collect();
+    let z = (width == 3).then(|| points.iter().map(|p| p[2]).collect());
+    Ok((xy, z))
 }
 
 /// Runs a prepared request and answers with its document. A comparison
@@ -665,10 +686,21 @@ fn read(body: &[u8]) -> Result<Reply, Refusal> {
         let name = request.filename.as_deref().unwrap_or("the input");
         (422, format!("{name}: {e}"))
     })?;
+    // With elevations, every point is `[x, y, z]`, as the page sends it back.
+    let points: Vec<Value> = match &read.elevations {
+        Some(z) => read
+            .input
+            .points()
+            .iter()
+            .zip(z)
+            .map(|(p, z)| json!([p[0], p[1], z]))
+            .collect(),
+        None => read.input.points().iter().map(|p| json!(p)).collect(),
+    };
     Ok(Reply::json(
         200,
         &json!({
-            "points": read.input.points(),
+            "points": points,
             "polygon": matches!(read.input, io::Input::Polygon(_)),
             "format": read.format.map(InputFormat::name),
         }),
@@ -810,5 +842,77 @@ mod tests {
         let doc: Value = serde_json::from_str(&reply.body).unwrap();
         assert_eq!(reply.status, 422);
         assert!(doc.get("criterion").is_none(), "{doc}");
+    }
+
+    #[test]
+    fn points_carry_elevations_all_or_none() {
+        let api = Api::new(limits(Duration::from_secs(60)));
+        let ask = |kind: Kind, body: Value| {
+            let reply = block_on(api.answer(
+                Endpoint::Run(kind),
+                Bytes::from(body.to_string()),
+                Instant::now() + Duration::from_secs(600),
+            ));
+            (
+                reply.status,
+                serde_json::from_str::<Value>(&reply.body).unwrap(),
+            )
+        };
+        let terrain = json!([[0, 0, 1], [4, 0, 2.5], [0, 3, -1], [4, 3, 0]]);
+        let (status, doc) = ask(Kind::Triangulate, json!({ "points": terrain }));
+        assert_eq!(status, 200, "{doc}");
+        assert_eq!(doc["elevations"], json!([1.0, 2.5, -1.0, 0.0]));
+        assert_eq!(doc["coordinates"][1], json!([4.0, 0.0]));
+        let (status, doc) = ask(
+            Kind::Compare,
+            json!({ "points": terrain, "criteria": ["greedy"] }),
+        );
+        assert_eq!(status, 200, "{doc}");
+        assert_eq!(doc["results"][0]["elevations"][1], 2.5);
+        // Mixed lengths are refused naming the point; so are bad elevations.
+        for (points, status, needle) in [
+            (
+                json!([[0, 0, 1], [4, 0], [0, 3, 2]]),
+                400,
+                "point 1 has 2 numbers, but point 0 has 3",
+            ),
+            (
+                json!([[0, 0], [4, 0], [0, 3, 2]]),
+                400,
+                "point 2 has 3 numbers, but point 0 has 2",
+            ),
+            (
+                json!([[0, 0], [4, 0, 1, 2], [0, 3]]),
+                400,
+                "point 1 has 4 numbers; each point is",
+            ),
+            (
+                json!([[0, 0, 1], [4, 0, 1e300], [0, 3, 2]]),
+                422,
+                "point 1 has elevation",
+            ),
+            (
+                json!([[0, 0, 1], [4, 0, 2], [0, 3, 2], [4, 0, 3]]),
+                422,
+                "point 3 repeats point 1",
+            ),
+        ] {
+            let (got, doc) = ask(Kind::Triangulate, json!({ "points": points }));
+            assert_eq!(got, status, "{doc}");
+            let message = doc["error"].as_str().unwrap();
+            assert!(message.contains(needle), "{message}");
+        }
+        // A file with a z column reads back as triples.
+        let reply = read(
+            json!({ "text": "0 0 1\n4 0 2\n0 3 3\n" })
+                .to_string()
+                .as_bytes(),
+        )
+        .unwrap();
+        let doc: Value = serde_json::from_str(&reply.body).unwrap();
+        assert_eq!(
+            doc["points"],
+            json!([[0.0, 0.0, 1.0], [4.0, 0.0, 2.0], [0.0, 3.0, 3.0]])
+        );
     }
 }

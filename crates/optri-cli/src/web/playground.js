@@ -8,7 +8,7 @@
 // reports itself without holding up the others.
 const SVG_NS = "http://www.w3.org/2000/svg";
 const state = {
-  points: [],          // [[x, y], ...] in world coordinates (y up)
+  points: [],          // [[x, y], ...] or, with elevations, [[x, y, z], ...] (world, y up)
   polygon: false,      // send the points as a simple polygon's ring
   view: { x0: 0, y0: 0, size: 1000 },  // world square shown in the editor
   document: null,      // the last results, as a comparison document
@@ -48,7 +48,13 @@ function rng(seed) {
   };
 }
 const round2 = (v) => Math.round(v * 100) / 100;
+// A smooth surface over the editor's square, in whole units: the elevation
+// of the "terrain" generator.
+const terrainHeight = (x, y) => Math.round(100 * Math.sin(x / 160) * Math.cos(y / 210));
 const generators = {
+  terrain(n, rand) {
+    return generators.uniform(n, rand).map(([x, y]) => [x, y, terrainHeight(x, y)]);
+  },
   uniform(n, rand) {
     return Array.from({ length: n }, () => [round2(50 + 900 * rand()), round2(50 + 900 * rand())]);
   },
@@ -102,7 +108,22 @@ function drawEditor() {
     el("circle", { cx: x, cy: y, r: 9, "data-index": i }, svg);
   });
   $("status").textContent = state.points.length + " point" + (state.points.length === 1 ? "" : "s") +
-    (state.polygon ? " (polygon ring)" : "");
+    (hasElevations() ? " with elevations" : "") + (state.polygon ? " (polygon ring)" : "");
+}
+
+// Whether the points carry an elevation (every one does, or none).
+const hasElevations = () => state.points.length > 0 && state.points[0].length === 3;
+
+// A point placed at world (x, y): with elevations, it takes the elevation of
+// the nearest point (a click has no height of its own).
+function placed([x, y]) {
+  if (!hasElevations()) return [x, y];
+  let nearest = state.points[0], best = Infinity;
+  for (const p of state.points) {
+    const d = (p[0] - x) ** 2 + (p[1] - y) ** 2;
+    if (d < best) { best = d; nearest = p; }
+  }
+  return [x, y, nearest[2]];
 }
 
 let drag = null;
@@ -119,13 +140,15 @@ function setupEditor() {
     }
     if (e.button !== 0 || e.shiftKey) return;
     const [sx, sy] = eventPoint(e);
-    state.points.push(toWorld(sx, sy).map(round2));
+    state.points.push(placed(toWorld(sx, sy).map(round2)));
     changed();
   });
   svg.addEventListener("pointermove", (e) => {
     if (drag === null) return;
     const [sx, sy] = eventPoint(e);
-    state.points[drag] = toWorld(Math.min(Math.max(sx, 0), 1000), Math.min(Math.max(sy, 0), 1000)).map(round2);
+    // A dragged point keeps its elevation.
+    const [x, y] = toWorld(Math.min(Math.max(sx, 0), 1000), Math.min(Math.max(sy, 0), 1000)).map(round2);
+    state.points[drag] = [x, y, ...state.points[drag].slice(2)];
     changed();
   });
   const end = () => { drag = null; };
@@ -455,7 +478,7 @@ async function start() {
     : showError("nothing to download yet: add points");
   $("download-svg").onclick = downloadSvg;
   $("download-points").onclick = () => download("points.txt", "text/plain",
-    state.points.map(([x, y]) => x + " " + y).join("\n") + "\n");
+    state.points.map((p) => p.join(" ")).join("\n") + "\n");
   try {
     state.limits = (await api("/api/limits")).value;
     const { value } = await api("/api/criteria");

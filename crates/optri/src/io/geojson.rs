@@ -3,10 +3,18 @@
 //! and graphs (`LineString`s), both with their points as `Point`s so that
 //! they read back.
 //!
+//! A position's optional third value is the point's elevation
+//! ([`ReadInput::elevations`]): either every position read has one or none
+//! has (a document mixing `[x, y]` and `[x, y, z]` is an error naming the
+//! first position that differs), and the writers write `[x, y, z]` when the
+//! points have elevations. An optri document's `elevations` are read with its
+//! `coordinates`.
+//!
+//! [`ReadInput::elevations`]: super::ReadInput::elevations
 //! [`InputFormat::GeoJson`]: super::InputFormat::GeoJson
 
 use super::json::document_coordinates;
-use super::{check_coordinate, parse, shown, Input, HOLES_UNSUPPORTED};
+use super::{check_value, parse, shown, Input, HOLES_UNSUPPORTED};
 use crate::error::Result;
 use crate::kernel::Point;
 use serde::ser::{Serialize, Serializer};
@@ -26,24 +34,31 @@ fn json_type(v: &Value) -> &'static str {
 
 /// Reads a GeoJSON document as points or, when it holds no `Point` or
 /// `MultiPoint` but one `Polygon` (or a `MultiPolygon` of one polygon), and
-/// `polygons` is set, as that polygon's outer ring (closing vertex dropped).
-pub(super) fn read_geojson_input(text: &str, polygons: bool) -> Result<Input> {
+/// `polygons` is set, as that polygon's outer ring (closing vertex dropped);
+/// with the elevations, one per point, when the positions have a third value.
+pub(super) fn read_geojson_input(text: &str, polygons: bool) -> Result<(Input, Option<Vec<f64>>)> {
     if text.trim().is_empty() {
-        return Ok(Input::Points(Vec::new()));
+        return Ok((Input::Points(Vec::new()), None));
     }
     let root: Value =
         serde_json::from_str(text).map_err(|e| parse(e.line(), format!("invalid JSON: {e}")))?;
     let mut found = GeoJsonPoints::default();
     // optri's own JSON documents (no "type"): their "coordinates", or the
-    // "points" array of earlier versions.
+    // "points" array of earlier versions, and their "elevations".
     let geojson = root.get("type").is_some();
     if let Some((name, list)) = document_coordinates(&root).filter(|_| !geojson) {
         collect_positions(list, name, &mut found.points)?;
-        return Ok(Input::Points(found.points));
+        let (points, z) = found.points.finish();
+        let z = match root.get("elevations") {
+            Some(list) if z.is_none() => Some(document_elevations(list, points.len())?),
+            _ => z,
+        };
+        return Ok((Input::Points(points), z));
     }
     collect_geojson(&root, "the document", &mut found)?;
     if found.points.is_empty() && polygons && !found.polygons.is_empty() {
-        return polygon_ring(&found.polygons).map(Input::Polygon);
+        let (ring, z) = polygon_ring(&found.polygons)?.finish();
+        return Ok((Input::Polygon(ring), z));
     }
     if found.points.is_empty() {
         let what = if found.skipped.is_empty() {
@@ -61,13 +76,85 @@ pub(super) fn read_geojson_input(text: &str, polygons: bool) -> Result<Input> {
             format!("GeoJSON: no Point or MultiPoint geometry found (the document has {what})"),
         ));
     }
-    Ok(Input::Points(found.points))
+    let (points, z) = found.points.finish();
+    Ok((Input::Points(points), z))
+}
+
+/// An optri document's `elevations`: `count` numbers, each checked as a
+/// coordinate is.
+fn document_elevations(list: &Value, count: usize) -> Result<Vec<f64>> {
+    let bad = |m: String| parse(0, format!("\"elevations\": {m}"));
+    let Some(list) = list.as_array() else {
+        return Err(bad(format!("expected an array, found {}", json_type(list))));
+    };
+    if list.len() != count {
+        return Err(bad(format!(
+            "{} elevations for {count} coordinates",
+            list.len()
+        )));
+    }
+    list.iter()
+        .enumerate()
+        .map(|(k, v)| {
+            let value = v
+                .as_f64()
+                .ok_or_else(|| bad(format!("[{k}] is {}, not a number", json_type(v))))?;
+            check_value(value, "elevation", &v.to_string(), 0)
+                .map_err(|e| bad(format!("[{k}]: {e}")))
+        })
+        .collect()
+}
+
+/// Positions as read: the points, and their elevations while every
+/// position so far had a third value.
+#[derive(Default)]
+struct PositionList {
+    points: Vec<Point>,
+    elevations: Vec<f64>,
+    /// Where the first position is and whether it has an elevation: all
+    /// others must agree.
+    first: Option<(String, bool)>,
+}
+
+impl PositionList {
+    /// Appends the position `v` found at `at`.
+    fn push(&mut self, v: &Value, at: &str) -> Result<()> {
+        let (p, z) = position(v, at)?;
+        let (first_at, with_z) = self
+            .first
+            .get_or_insert_with(|| (at.to_string(), z.is_some()));
+        if *with_z != z.is_some() {
+            let dims = |z: bool| if z { "[x, y, z]" } else { "[x, y]" };
+            return Err(parse(
+                0,
+                format!(
+                    "GeoJSON: {at}: the position is {} but {first_at} is {}; give every \
+                     position an elevation or none",
+                    dims(z.is_some()),
+                    dims(*with_z)
+                ),
+            ));
+        }
+        self.points.push(p);
+        self.elevations.extend(z);
+        Ok(())
+    }
+
+    fn is_empty(&self) -> bool {
+        self.points.is_empty()
+    }
+
+    /// The points, and their elevations if every position had one.
+    fn finish(self) -> (Vec<Point>, Option<Vec<f64>>) {
+        let with_z = self.first.is_some_and(|(_, z)| z);
+        (self.points, with_z.then_some(self.elevations))
+    }
 }
 
 /// The outer ring of the one polygon among `polygons` (`Polygon` and
 /// `MultiPolygon` geometries with where they are), without its closing
 /// vertex.
-fn polygon_ring(polygons: &[(String, &Value)]) -> Result<Vec<Point>> {
+fn polygon_ring(polygons: &[(String, &Value)]) -> Result<PositionList> {
     // Every polygon as (where, its rings).
     let mut all: Vec<(String, &Value)> = Vec::new();
     for (at, geometry) in polygons {
@@ -135,10 +222,25 @@ fn polygon_ring(polygons: &[(String, &Value)]) -> Result<Vec<Point>> {
             ))
         }
     }
-    let mut ring = Vec::new();
+    let mut ring = PositionList::default();
     collect_positions(&rings[0], &format!("{at}[0]"), &mut ring)?;
-    if ring.len() > 1 && ring.first() == ring.last() {
-        ring.pop();
+    let n = ring.points.len();
+    // The closing vertex repeats the first, elevation included (else the
+    // ring's one point would have two elevations).
+    if n > 1 && ring.points[0] == ring.points[n - 1] {
+        if ring.elevations.first() != ring.elevations.last() {
+            return Err(parse(
+                0,
+                format!(
+                    "GeoJSON: {at}[0]: the ring closes at its first point with another \
+                     elevation ({} and {})",
+                    ring.elevations[0],
+                    ring.elevations[n - 1]
+                ),
+            ));
+        }
+        ring.points.pop();
+        ring.elevations.truncate(n - 1);
     }
     Ok(ring)
 }
@@ -149,7 +251,7 @@ fn polygon_ring(polygons: &[(String, &Value)]) -> Result<Vec<Point>> {
 /// found).
 #[derive(Default)]
 struct GeoJsonPoints<'v> {
-    points: Vec<Point>,
+    points: PositionList,
     polygons: Vec<(String, &'v Value)>,
     skipped: Vec<(&'static str, usize)>,
 }
@@ -191,7 +293,7 @@ fn collect_geojson<'v>(v: &'v Value, at: &str, found: &mut GeoJsonPoints<'v>) ->
                 collect_geojson(g, &format!("{at}.geometries[{k}]"), found)?;
             }
         }
-        "Point" => found.points.push(position(member("coordinates")?, at)?),
+        "Point" => found.points.push(member("coordinates")?, at)?,
         "MultiPoint" => collect_positions(member("coordinates")?, at, &mut found.points)?,
         other => {
             // Skipping lines and polygons lets a triangulation's GeoJSON be
@@ -216,7 +318,7 @@ fn collect_geojson<'v>(v: &'v Value, at: &str, found: &mut GeoJsonPoints<'v>) ->
     Ok(())
 }
 
-fn collect_positions(list: &Value, at: &str, out: &mut Vec<Point>) -> Result<()> {
+fn collect_positions(list: &Value, at: &str, out: &mut PositionList) -> Result<()> {
     let Some(list) = list.as_array() else {
         return Err(parse(
             0,
@@ -227,13 +329,13 @@ fn collect_positions(list: &Value, at: &str, out: &mut Vec<Point>) -> Result<()>
         ));
     };
     for (k, p) in list.iter().enumerate() {
-        out.push(position(p, &format!("{at}[{k}]"))?);
+        out.push(p, &format!("{at}[{k}]"))?;
     }
     Ok(())
 }
 
-/// A GeoJSON position `[x, y]` or `[x, y, z]` (the third value is ignored).
-fn position(v: &Value, at: &str) -> Result<Point> {
+/// A GeoJSON position `[x, y]` or `[x, y, z]`, with `z` if there is one.
+fn position(v: &Value, at: &str) -> Result<(Point, Option<f64>)> {
     let bad = || {
         parse(
             0,
@@ -247,25 +349,30 @@ fn position(v: &Value, at: &str) -> Result<Point> {
     if !(2..=3).contains(&a.len()) {
         return Err(bad());
     }
-    let mut p = [0.0; 2];
-    for (k, c) in p.iter_mut().enumerate() {
+    let mut values = [0.0; 3];
+    for (k, c) in values.iter_mut().enumerate().take(a.len()) {
         let value = a[k].as_f64().ok_or_else(bad)?;
-        *c = check_coordinate(value, &a[k].to_string(), 0)
+        let what = if k == 2 { "elevation" } else { "coordinate" };
+        *c = check_value(value, what, &a[k].to_string(), 0)
             .map_err(|e| parse(0, format!("GeoJSON: {at}: {e}")))?;
     }
-    Ok(p)
+    let [x, y, z] = values;
+    Ok(([x, y], (a.len() == 3).then_some(z)))
 }
 
 /// A GeoJSON `FeatureCollection` with one `Polygon` per triangle (properties:
 /// `triangle` number and its input-index `vertices`) and, if
 /// `include_points`, one `Point` per input point (property `index`).
+/// Positions are `[x, y, z]` when the point set has elevations.
 #[cfg(test)]
 pub(crate) fn triangulation_to_geojson(
     t: &crate::structures::Triangulation,
     include_points: bool,
 ) -> Value {
+    let elevations = super::input_elevations(t.point_set());
     to_value(&TriangulationFeatures {
         points: t.points(),
+        elevations: elevations.as_deref(),
         triangles: t.triangles(),
         include_points,
     })
@@ -278,7 +385,11 @@ pub(crate) fn triangulation_to_geojson(
 /// If an edge refers to an index outside `points`.
 #[cfg(test)]
 pub(crate) fn graph_to_geojson(points: &[Point], edges: &[[u32; 2]]) -> Value {
-    to_value(&GraphFeatures { points, edges })
+    to_value(&GraphFeatures {
+        points,
+        elevations: None,
+        edges,
+    })
 }
 
 #[cfg(test)]
@@ -291,6 +402,8 @@ fn to_value(v: &impl Serialize) -> Value {
 /// (so a writer streams it without building a value tree).
 pub(super) struct TriangulationFeatures<'a> {
     pub(super) points: &'a [Point],
+    /// One per point: the third value of every position.
+    pub(super) elevations: Option<&'a [f64]>,
     pub(super) triangles: &'a [[u32; 3]],
     pub(super) include_points: bool,
 }
@@ -298,7 +411,41 @@ pub(super) struct TriangulationFeatures<'a> {
 /// A graph's `FeatureCollection`, serialised feature by feature.
 pub(super) struct GraphFeatures<'a> {
     pub(super) points: &'a [Point],
+    /// One per point: the third value of every position.
+    pub(super) elevations: Option<&'a [f64]>,
     pub(super) edges: &'a [[u32; 2]],
+}
+
+/// The points with their elevations, if any, as GeoJSON positions.
+#[derive(Clone, Copy)]
+struct Positions<'a> {
+    points: &'a [Point],
+    elevations: Option<&'a [f64]>,
+}
+
+impl Positions<'_> {
+    /// Point `i`'s position: `[x, y]`, or `[x, y, z]`.
+    fn at(&self, i: usize) -> Position {
+        Position(self.points[i], self.elevations.map(|z| z[i]))
+    }
+}
+
+/// A GeoJSON position: `[x, y]`, or `[x, y, z]` with an elevation.
+#[derive(Clone, Copy)]
+struct Position(Point, Option<f64>);
+
+impl Serialize for Position {
+    fn serialize<S: Serializer>(&self, serializer: S) -> std::result::Result<S::Ok, S::Error> {
+        use serde::ser::SerializeSeq;
+        let Position([x, y], z) = *self;
+        let mut seq = serializer.serialize_seq(Some(2 + usize::from(z.is_some())))?;
+        seq.serialize_element(&x)?;
+        seq.serialize_element(&y)?;
+        if let Some(z) = z {
+            seq.serialize_element(&z)?;
+        }
+        seq.end()
+    }
 }
 
 #[derive(serde::Serialize)]
@@ -348,12 +495,12 @@ fn feature<C, P>(geometry: &'static str, coordinates: C, properties: P) -> Featu
 fn feature_collection<S: Serializer, T: Serialize>(
     serializer: S,
     items: impl Iterator<Item = T>,
-    points: Option<&[Point]>,
+    points: Option<Positions<'_>>,
 ) -> std::result::Result<S::Ok, S::Error> {
     use serde::ser::{SerializeMap, SerializeSeq};
     struct Features<'a, I> {
         items: std::cell::Cell<Option<I>>,
-        points: Option<&'a [Point]>,
+        points: Option<Positions<'a>>,
     }
     impl<I: Iterator<Item = T>, T: Serialize> Serialize for Features<'_, I> {
         fn serialize<S: Serializer>(&self, serializer: S) -> std::result::Result<S::Ok, S::Error> {
@@ -361,8 +508,11 @@ fn feature_collection<S: Serializer, T: Serialize>(
             for item in self.items.take().into_iter().flatten() {
                 seq.serialize_element(&item)?;
             }
-            for (i, p) in self.points.unwrap_or(&[]).iter().enumerate() {
-                seq.serialize_element(&feature("Point", p, PointProperties { index: i }))?;
+            if let Some(positions) = self.points {
+                for i in 0..positions.points.len() {
+                    let point = positions.at(i);
+                    seq.serialize_element(&feature("Point", point, PointProperties { index: i }))?;
+                }
             }
             seq.end()
         }
@@ -381,9 +531,12 @@ fn feature_collection<S: Serializer, T: Serialize>(
 
 impl Serialize for TriangulationFeatures<'_> {
     fn serialize<S: Serializer>(&self, serializer: S) -> std::result::Result<S::Ok, S::Error> {
-        let pts = self.points;
-        let triangles = self.triangles.iter().enumerate().map(|(k, tri)| {
-            let ring = [tri[0], tri[1], tri[2], tri[0]].map(|i| pts[i as usize]);
+        let positions = Positions {
+            points: self.points,
+            elevations: self.elevations,
+        };
+        let triangles = self.triangles.iter().enumerate().map(move |(k, tri)| {
+            let ring = [tri[0], tri[1], tri[2], tri[0]].map(|i| positions.at(i as usize));
             feature(
                 "Polygon",
                 [ring],
@@ -393,21 +546,28 @@ impl Serialize for TriangulationFeatures<'_> {
                 },
             )
         });
-        feature_collection(serializer, triangles, self.include_points.then_some(pts))
+        feature_collection(
+            serializer,
+            triangles,
+            self.include_points.then_some(positions),
+        )
     }
 }
 
 impl Serialize for GraphFeatures<'_> {
     fn serialize<S: Serializer>(&self, serializer: S) -> std::result::Result<S::Ok, S::Error> {
-        let pts = self.points;
-        let edges = self.edges.iter().map(|&[a, b]| {
+        let positions = Positions {
+            points: self.points,
+            elevations: self.elevations,
+        };
+        let edges = self.edges.iter().map(move |&[a, b]| {
             feature(
                 "LineString",
-                [pts[a as usize], pts[b as usize]],
+                [positions.at(a as usize), positions.at(b as usize)],
                 EdgeProperties { edge: [a, b] },
             )
         });
-        feature_collection(serializer, edges, Some(pts))
+        feature_collection(serializer, edges, Some(positions))
     }
 }
 
@@ -421,7 +581,7 @@ mod tests {
     fn geojson_points_and_errors() {
         let text = r#"{"type":"FeatureCollection","features":[
             {"type":"Feature","geometry":{"type":"Point","coordinates":[1,2]},"properties":{}},
-            {"type":"Feature","geometry":{"type":"MultiPoint","coordinates":[[3,4],[5,6,7]]}},
+            {"type":"Feature","geometry":{"type":"MultiPoint","coordinates":[[3,4],[5,6]]}},
             {"type":"Feature","geometry":null}]}"#;
         assert_eq!(
             points_of(text, InputFormat::GeoJson).unwrap(),
@@ -494,6 +654,95 @@ mod tests {
             .unwrap(),
             vec![[1.0, 2.0], [3.0, 4.0]]
         );
+    }
+
+    #[test]
+    fn three_dimensional_positions_give_elevations_all_or_none() {
+        use crate::io::{read, Input, ReadOptions, Source};
+        let read_geojson = |text: &str| {
+            let options = ReadOptions::default()
+                .with_format(InputFormat::GeoJson)
+                .with_polygons(true);
+            read(Source::Text(text), &options)
+        };
+        let text = r#"{"type":"FeatureCollection","features":[
+            {"type":"Feature","geometry":{"type":"Point","coordinates":[1,2,10]},"properties":{}},
+            {"type":"Feature","geometry":{"type":"MultiPoint","coordinates":[[3,4,-0.5],[5,6,0]]}}]}"#;
+        let r = read_geojson(text).unwrap();
+        assert_eq!(r.input.points(), [[1.0, 2.0], [3.0, 4.0], [5.0, 6.0]]);
+        assert_eq!(r.elevations, Some(vec![10.0, -0.5, 0.0]));
+        assert_eq!(
+            read_geojson(r#"{"type":"Point","coordinates":[1,2]}"#)
+                .unwrap()
+                .elevations,
+            None
+        );
+        // Mixing is an error naming the first position that differs, and
+        // the first position.
+        for (text, needles) in [
+            (
+                r#"{"type":"MultiPoint","coordinates":[[0,0,1],[1,0,2],[0,1]]}"#,
+                ["the document[2]: the position is [x, y] but the document[0] is [x, y, z]"],
+            ),
+            (
+                r#"{"type":"FeatureCollection","features":[
+                    {"type":"Feature","geometry":{"type":"Point","coordinates":[1,2]}},
+                    {"type":"Feature","geometry":{"type":"Point","coordinates":[1,3,5]}}]}"#,
+                ["features[1].geometry: the position is [x, y, z] but features[0].geometry is [x, y]"],
+            ),
+            (
+                r#"{"type":"Point","coordinates":[1,2,null]}"#,
+                ["expected a position [x, y]"],
+            ),
+            (
+                r#"{"type":"MultiPoint","coordinates":[[0,0,1],[1,0,1e300]]}"#,
+                ["the document[1]: elevation '1e+300' is outside the exact range"],
+            ),
+        ] {
+            let e = read_geojson(text).unwrap_err().to_string();
+            for needle in needles {
+                assert!(e.contains(needle), "{text}: {e}");
+            }
+        }
+        // A polygon's ring: the closing vertex goes with its elevation,
+        // which must agree with the first.
+        let ring = r#"{"type":"Polygon","coordinates":[[[0,0,1],[2,0,2],[1,2,3],[0,0,1]]]}"#;
+        let r = read_geojson(ring).unwrap();
+        assert_eq!(
+            r.input,
+            Input::Polygon(vec![[0.0, 0.0], [2.0, 0.0], [1.0, 2.0]])
+        );
+        assert_eq!(r.elevations, Some(vec![1.0, 2.0, 3.0]));
+        let e = read_geojson(&ring.replace("[0,0,1]]]", "[0,0,4]]]"))
+            .unwrap_err()
+            .to_string();
+        assert!(
+            e.contains("closes at its first point with another elevation (1 and 4)"),
+            "{e}"
+        );
+        // An optri document's elevations are read with its coordinates.
+        let doc = r#"{"coordinates":[[0,0],[1,0],[0,1]],"elevations":[5,6,7]}"#;
+        assert_eq!(
+            read_geojson(doc).unwrap().elevations,
+            Some(vec![5.0, 6.0, 7.0])
+        );
+        for (doc, needle) in [
+            (
+                r#"{"coordinates":[[0,0],[1,0]],"elevations":[5]}"#,
+                "1 elevations for 2 coordinates",
+            ),
+            (
+                r#"{"coordinates":[[0,0]],"elevations":["a"]}"#,
+                "[0] is a string, not a number",
+            ),
+            (
+                r#"{"coordinates":[[0,0]],"elevations":5}"#,
+                "expected an array, found a number",
+            ),
+        ] {
+            let e = read_geojson(doc).unwrap_err().to_string();
+            assert!(e.contains(needle), "{doc}: {e}");
+        }
     }
 
     #[test]
@@ -589,5 +838,22 @@ mod tests {
         .unwrap_err()
         .to_string();
         assert!(e.contains("Polygon"), "{e}");
+        // With elevations, every position is [x, y, z] and reads back.
+        let z: Vec<f64> = (0..pts.len()).map(|i| i as f64 * 0.25).collect();
+        let mut z = z;
+        z[pts.len() - 2] = z[3]; // the duplicate of point 3 (awkward_points)
+        let t = delaunay(&PointSet::new(&pts).unwrap().with_elevations(&z).unwrap()).unwrap();
+        let v = triangulation_to_geojson(&t, true);
+        assert_eq!(
+            v["features"][0]["geometry"]["coordinates"][0][0]
+                .as_array()
+                .unwrap()
+                .len(),
+            3
+        );
+        let options = crate::io::ReadOptions::default().with_format(InputFormat::GeoJson);
+        let r = crate::io::read(crate::io::Source::Text(&v.to_string()), &options).unwrap();
+        assert_eq!(r.input.points(), pts);
+        assert_eq!(r.elevations, Some(z));
     }
 }

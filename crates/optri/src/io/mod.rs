@@ -5,7 +5,7 @@
 //! | module | reads | writes |
 //! |---|---|---|
 //! | `format` | [`InputFormat`] by extension, name or content; [`OutputFormat`] by extension | |
-//! | `text` | `x y` per line, or CSV whose header names the coordinate columns | |
+//! | `text` | `x y` or `x y z` per line, or CSV whose header names the coordinate columns | |
 //! | `node` | Triangle `.node` | `.node` + `.ele` or `.edge` |
 //! | `poly` | Triangle `.poly`: one closed boundary, no holes | |
 //! | `tsplib` | TSPLIB `.tsp` | |
@@ -17,7 +17,9 @@
 //!
 //! [`read`] returns a [`ReadInput`]: the points or a polygon's ring
 //! ([`Input`]), the coordinates' decimal values where they are exact
-//! (`decimal` module docs) and warnings about what was skipped. Front ends
+//! (`decimal` module docs), the elevations when the input has a third
+//! coordinate ([`ReadInput::elevations`]) and warnings about what was
+//! skipped. Front ends
 //! that receive numbers rather than files build one with
 //! [`ReadInput::from_doubles`] or [`ReadInput::from_json_numbers`].
 //!
@@ -108,13 +110,20 @@ pub struct ReadInput {
     /// Those integers when `k ≠ 0` (with `k == 0` they are the user's
     /// doubles), in the order of [`Input::points`].
     pub scaled: Option<Scaled>,
-    /// What the reader skipped, for the user (e.g. the third column of a
-    /// headerless `x y z` file, or the columns a CSV header names besides
-    /// the coordinates).
+    /// What the reader skipped, for the user (e.g. the columns 3 and on of
+    /// a headerless file of four or more columns, or the columns a CSV
+    /// header names besides the coordinates).
     pub warnings: Vec<String>,
     /// The format the input was read in; `None` for numbers a front end
     /// received ([`from_doubles`](Self::from_doubles)).
     pub format: Option<InputFormat>,
+    /// An elevation per point, in the order of [`Input::points`] (input
+    /// order), when the input carried a third coordinate: a text file's `z`
+    /// column, GeoJSON's 3-D positions, a Triangle file's first vertex
+    /// attribute. Readers check each value as they check a coordinate;
+    /// [`crate::PointSet::with_elevations`] checks the rest (the count, and
+    /// that duplicates agree) when a request builds its input.
+    pub elevations: Option<Vec<f64>>,
 }
 
 impl ReadInput {
@@ -130,6 +139,19 @@ impl ReadInput {
     /// `k` of the scaling (0 when the algorithms run on the user's values).
     pub fn scale_exponent(&self) -> i32 {
         self.scaled.as_ref().map_or(0, |s| s.exponent)
+    }
+
+    /// This input with an elevation per point (in the order of
+    /// [`Input::points`]), e.g. the third column a front end received.
+    /// Elevations are never scaled: they stay the user's values (the
+    /// scaling of `x` and `y` is a uniform factor, see [`Self::scaled`]).
+    /// They are checked when a request builds its input
+    /// ([`crate::PointSet::with_elevations`]).
+    pub fn with_elevations(self, elevations: Vec<f64>) -> Self {
+        Self {
+            elevations: Some(elevations),
+            ..self
+        }
     }
 
     /// `input` given as doubles by a front end (Python floats, the numbers
@@ -171,16 +193,18 @@ impl ReadInput {
             scaled,
             warnings: Vec::new(),
             format: None,
+            elevations: None,
         }
     }
 }
 
 /// Points as a reader collects them: the user's doubles, the decimal values
-/// so far, and warnings.
+/// so far, the elevations (none, or one per point), and warnings.
 #[derive(Default)]
 pub(super) struct Collected {
     pub(super) points: Vec<Point>,
     pub(super) decimal: decimal::DecimalScaler,
+    pub(super) elevations: Vec<f64>,
     pub(super) warnings: Vec<String>,
 }
 
@@ -191,6 +215,13 @@ impl Collected {
         self.decimal.push(x);
         self.decimal.push(y);
         self.points.push(p);
+        Ok(())
+    }
+
+    /// Parses and appends the elevation of the point just pushed, written as
+    /// `z` on `line`. A reader calls it for every point or for none.
+    pub(super) fn push_elevation(&mut self, z: &str, line: usize) -> Result<()> {
+        self.elevations.push(elevation(z, line)?);
         Ok(())
     }
 
@@ -207,6 +238,11 @@ impl Collected {
             exponent: s.exponent,
             points: reorder(s.points),
         });
+        debug_assert!(self.elevations.is_empty() || self.elevations.len() == points.len());
+        let elevations = (!self.elevations.is_empty()).then(|| match order {
+            Some(order) => order.iter().map(|&v| self.elevations[v]).collect(),
+            None => self.elevations,
+        });
         ReadInput {
             input: if polygon {
                 Input::Polygon(points)
@@ -217,8 +253,21 @@ impl Collected {
             scaled,
             warnings: self.warnings,
             format: Some(format),
+            elevations,
         }
     }
+}
+
+/// The elevations of `point_set` in input order (duplicates included), if
+/// it has any: what the writers write beside the input points.
+fn input_elevations(point_set: &crate::PointSet) -> Option<Vec<f64>> {
+    let z = point_set.elevations()?;
+    let n = point_set.input_points().len() as u32;
+    Some(
+        (0..n)
+            .map(|i| z[point_set.distinct_index(i) as usize])
+            .collect(),
+    )
 }
 
 fn parse(line: usize, message: impl Into<String>) -> Error {
@@ -282,15 +331,30 @@ fn coordinate(token: &str, line: usize) -> Result<f64> {
 }
 
 fn check_coordinate(value: f64, token: &str, line: usize) -> Result<f64> {
+    check_value(value, "coordinate", token, line)
+}
+
+/// Parses one elevation token, checked as a coordinate is (the range that
+/// [`crate::PointSet::with_elevations`] accepts).
+fn elevation(token: &str, line: usize) -> Result<f64> {
+    let value: f64 = token
+        .parse()
+        .map_err(|_| parse(line, format!("elevation {}", not_a_number(token))))?;
+    check_value(value, "elevation", token, line)
+}
+
+/// `value` (written as `token` on `line`) if it is finite and in the exact
+/// range; `what` names it in the message (`coordinate`, `elevation`).
+fn check_value(value: f64, what: &str, token: &str, line: usize) -> Result<f64> {
     kernel::check_coordinate(value).map_err(|problem| match problem {
         CoordinateProblem::NonFinite => parse(
             line,
-            format!("coordinate {} is not a finite number", quoted(token)),
+            format!("{what} {} is not a finite number", quoted(token)),
         ),
         CoordinateProblem::OutOfRange => parse(
             line,
             format!(
-                "coordinate {} is outside the exact range (|v| must be 0 or between \
+                "{what} {} is outside the exact range (|v| must be 0 or between \
                  {MIN_COORDINATE:e} and {MAX_COORDINATE:e}); rescale the input",
                 quoted(token)
             ),

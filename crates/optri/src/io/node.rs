@@ -1,6 +1,12 @@
 //! Triangle's `.node` (points) and `.ele` (triangles) files: the reader
 //! of `.node` ([`InputFormat::Node`]) and the writer of both.
 //!
+//! Triangle's vertex attributes are numbers it interpolates; optri reads
+//! the first one as the vertex's elevation ([`ReadInput::elevations`]) when
+//! the header declares at least one, checks the others are numbers and
+//! ignores them, and writes an elevation as the one attribute.
+//!
+//! [`ReadInput::elevations`]: super::ReadInput::elevations
 //! [`InputFormat::Node`]: super::InputFormat::Node
 
 use super::{not_a_number, parse, quoted, strip_comment, Collected};
@@ -50,8 +56,8 @@ pub(super) struct VertexSection {
 }
 
 /// Reads a vertex-section header `n dim attributes boundary_marker` and its
-/// `n` vertex lines `id x y [attributes…] [marker]` from `lines`; `None` if
-/// there are no lines at all.
+/// `n` vertex lines `id x y [attributes…] [marker]` from `lines`, the first
+/// attribute as the elevation; `None` if there are no lines at all.
 pub(super) fn read_vertex_section<'t>(
     lines: &mut impl Iterator<Item = (usize, Vec<&'t str>)>,
 ) -> Result<Option<VertexSection>> {
@@ -139,6 +145,9 @@ pub(super) fn read_vertex_section<'t>(
             t.parse::<f64>().map_err(|_| parse(line, not_a_number(t)))?;
         }
         points.push(tokens[1], tokens[2], line)?;
+        if attributes > 0 {
+            points.push_elevation(tokens[3], line)?;
+        }
     }
     if points.points.len() != count {
         return Err(parse(
@@ -168,26 +177,44 @@ fn coordinate_text(v: f64) -> String {
 }
 
 /// Triangle's `.node` and `.ele` texts. Numbering is 0-based and equals the
-/// input index; every input point is listed (duplicates too).
+/// input index; every input point is listed (duplicates too), with its
+/// elevation as the one attribute when the point set has elevations.
 #[cfg(test)]
 pub(crate) fn triangulation_to_triangle_files(
     t: &crate::structures::Triangulation,
 ) -> (String, String) {
-    (node_text(t.points()), ele_text(t.triangles()))
+    let elevations = super::input_elevations(t.point_set());
+    (
+        node_text(t.points(), elevations.as_deref()),
+        ele_text(t.triangles()),
+    )
 }
 
-/// A `.node` text of `points`, 0-based ids (= input indices).
-pub(super) fn node_text(pts: &[Point]) -> String {
+/// A `.node` text of `points`, 0-based ids (= input indices), with the
+/// `elevations` (one per point) as the one attribute.
+pub(super) fn node_text(pts: &[Point], elevations: Option<&[f64]>) -> String {
     let mut node = String::with_capacity(pts.len() * 24);
     let _ = writeln!(node, "# optri: input points, 0-based (id = input index)");
-    let _ = writeln!(node, "{} 2 0 0", pts.len());
+    match elevations {
+        Some(_) => {
+            let _ = writeln!(node, "# attribute 1: elevation");
+            let _ = writeln!(node, "{} 2 1 0", pts.len());
+        }
+        None => {
+            let _ = writeln!(node, "{} 2 0 0", pts.len());
+        }
+    }
     for (i, p) in pts.iter().enumerate() {
-        let _ = writeln!(
+        let _ = write!(
             node,
             "{i} {} {}",
             coordinate_text(p[0]),
             coordinate_text(p[1])
         );
+        if let Some(z) = elevations {
+            let _ = write!(node, " {}", coordinate_text(z[i]));
+        }
+        node.push('\n');
     }
     node
 }
@@ -221,7 +248,7 @@ pub(super) fn edge_text(edges: &[[u32; 2]]) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::io::{awkward_points, line_of, points_of, InputFormat};
+    use crate::io::{awkward_points, line_of, points_of, read_str, InputFormat};
     use crate::{delaunay, PointSet};
 
     #[test]
@@ -250,6 +277,37 @@ mod tests {
     }
 
     #[test]
+    fn the_first_attribute_is_the_elevation() {
+        let text = "4 2 2 1\n1 0 0 7 -1 1\n2 1 0 6.5 0 1\n3 1 1 7 0 0\n4 0 1 0 0 1\n";
+        let read = read_str(text, InputFormat::Node).unwrap();
+        assert_eq!(read.elevations, Some(vec![7.0, 6.5, 7.0, 0.0]));
+        // No attribute, no elevation (a boundary marker is none).
+        let read = read_str("3 2 0 1\n0 0 0 1\n1 1 0 1\n2 0 1 0\n", InputFormat::Node).unwrap();
+        assert_eq!(read.elevations, None);
+        for (text, bad_line, needle) in [
+            (
+                "2 2 1 0\n0 0 0 nan\n1 1 0 1\n",
+                2,
+                "elevation 'nan' is not a finite",
+            ),
+            (
+                "2 2 1 0\n0 0 0 1\n1 1 0 -1e301\n",
+                3,
+                "outside the exact range",
+            ),
+            (
+                "2 2 1 0\n0 0 0 1\n1 1 0\n",
+                3,
+                "expected 4 fields (id x y attributes…)",
+            ),
+        ] {
+            let (line, m) = line_of(points_of(text, InputFormat::Node).unwrap_err());
+            assert_eq!(line, bad_line, "{text}: {m}");
+            assert!(m.contains(needle), "{text}: {m}");
+        }
+    }
+
+    #[test]
     fn triangle_files_round_trip() {
         let mut pts = awkward_points();
         pts.push([3e40, -5e-20]);
@@ -271,5 +329,17 @@ mod tests {
             })
             .collect();
         assert_eq!(triangles, t.triangles());
+        // Elevations go out as the one attribute and come back, duplicates
+        // included.
+        let z: Vec<f64> = (0..pts.len()).map(|i| (i % 7) as f64 - 2.5).collect();
+        let mut z = z;
+        let last = pts.len() - 3; // the duplicate of point 3 (awkward_points)
+        z[last] = z[3];
+        let with_z = PointSet::new(&pts).unwrap().with_elevations(&z).unwrap();
+        let (node, _) = triangulation_to_triangle_files(&delaunay(&with_z).unwrap());
+        assert!(node.contains(&format!("{} 2 1 0", pts.len())), "{node}");
+        let read = read_str(&node, InputFormat::Node).unwrap();
+        assert_eq!(read.input.points(), pts);
+        assert_eq!(read.elevations, Some(z));
     }
 }

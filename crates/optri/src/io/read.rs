@@ -109,9 +109,10 @@ fn read_text(text: &str, format: InputFormat, polygons: bool) -> Result<ReadInpu
         }
         InputFormat::Tsplib => tsplib::read_tsplib(text)?.finish(format, false, None),
         InputFormat::GeoJson => {
-            let input = geojson::read_geojson_input(text, polygons)?;
+            let (input, elevations) = geojson::read_geojson_input(text, polygons)?;
             ReadInput {
                 format: Some(format),
+                elevations,
                 ..ReadInput::from_json_numbers(input, text)
             }
         }

@@ -1,6 +1,15 @@
-//! Plain text point files: one `x y` per line, or a table (CSV, TSV, …)
-//! whose header row names the coordinate columns ([`InputFormat::Text`]).
+//! Plain text point files: one `x y` or `x y z` per line, or a table (CSV,
+//! TSV, …) whose header row names the coordinate columns
+//! ([`InputFormat::Text`]).
 //!
+//! A third coordinate is an elevation ([`ReadInput::elevations`]): the third
+//! column of a headerless file of three columns, or the column a header
+//! names `z` (or `elevation`, `ele`, `altitude`, `alt`). Every row has as many columns
+//! as the first, so a file mixing `x y` and `x y z` lines is an error naming
+//! the first line that differs; a headerless file of four or more columns
+//! reads only `x y`, with a warning (which column is `z` would be a guess).
+//!
+//! [`ReadInput::elevations`]: super::ReadInput::elevations
 //! [`InputFormat::Text`]: super::InputFormat::Text
 
 use super::{not_a_number, parse, quoted, strip_comment, Collected};
@@ -16,6 +25,9 @@ const COORDINATE_PAIRS: [(&str, &str); 6] = [
     ("longitude", "latitude"),
     ("easting", "northing"),
 ];
+
+/// The header names of an elevation column, matched case-insensitively.
+const ELEVATION_NAMES: [&str; 5] = ["z", "elevation", "ele", "altitude", "alt"];
 
 /// How many column names a message lists before `…`.
 const LISTED_NAMES: usize = 8;
@@ -57,6 +69,8 @@ fn text_fields(line_text: &str) -> Vec<&str> {
 struct Columns {
     /// The columns of x and y.
     xy: [usize; 2],
+    /// The column of the elevation, if there is one.
+    z: Option<usize>,
     /// Every row's field count.
     count: usize,
     /// The line that set it (the header, or the first row).
@@ -81,10 +95,11 @@ pub(super) fn read_text(text: &str) -> Result<Collected> {
                 // A header is allowed only as the first content line and
                 // only when none of its fields is a number.
                 if fields.iter().all(|t| t.parse::<f64>().is_err()) {
-                    let (xy, warning) = header_columns(&fields, line)?;
+                    let (xy, z, warning) = header_columns(&fields, line)?;
                     points.warnings.extend(warning);
                     columns = Some(Columns {
                         xy,
+                        z,
                         count: fields.len(),
                         line,
                         named: true,
@@ -97,11 +112,12 @@ pub(super) fn read_text(text: &str) -> Result<Collected> {
                         format!("expected 'x y', found a single value {}", quoted(fields[0])),
                     ));
                 }
-                if fields.len() > 2 {
+                if fields.len() > 3 {
                     points.warnings.push(ignored_columns(fields.len(), line));
                 }
                 &*columns.insert(Columns {
                     xy: [0, 1],
+                    z: (fields.len() == 3).then_some(2),
                     count: fields.len(),
                     line,
                     named: false,
@@ -111,7 +127,7 @@ pub(super) fn read_text(text: &str) -> Result<Collected> {
         // An empty field where a number must be (in a headerless file:
         // anywhere) is reported before the column count it changes.
         let empty = (0..fields.len())
-            .find(|&k| fields[k].is_empty() && (!columns.named || columns.xy.contains(&k)));
+            .find(|&k| fields[k].is_empty() && (!columns.named || columns.reads(k)));
         if let Some(k) = empty {
             return Err(parse(
                 line,
@@ -153,8 +169,18 @@ pub(super) fn read_text(text: &str) -> Result<Collected> {
         }
         let [x, y] = columns.xy;
         points.push(fields[x], fields[y], line)?;
+        if let Some(z) = columns.z {
+            points.push_elevation(fields[z], line)?;
+        }
     }
     Ok(points)
+}
+
+impl Columns {
+    /// Whether column `k` holds a number that is read (x, y or z).
+    fn reads(&self, k: usize) -> bool {
+        self.xy.contains(&k) || self.z == Some(k)
+    }
 }
 
 fn plural(n: usize) -> &'static str {
@@ -174,13 +200,17 @@ fn column_name(field: &str) -> &str {
     unquoted.unwrap_or(name).trim()
 }
 
-/// The columns of x and y that the header `fields` on `line` names, and a
-/// warning naming the other columns (skipped) if there are any.
+/// The columns of x and y that the header `fields` on `line` names, the
+/// elevation's column if it names one, and a warning naming the other
+/// columns (skipped) if there are any.
 ///
 /// # Errors
 /// When a field is empty, or the header names no coordinate pair, more than
-/// one, or one of the pair's columns twice.
-fn header_columns(fields: &[&str], line: usize) -> Result<([usize; 2], Option<String>)> {
+/// one, one of the pair's columns twice, or more than one elevation column.
+fn header_columns(
+    fields: &[&str],
+    line: usize,
+) -> Result<([usize; 2], Option<usize>, Option<String>)> {
     let names: Vec<&str> = fields.iter().map(|f| column_name(f)).collect();
     if let Some(k) = names.iter().position(|n| n.is_empty()) {
         return Err(parse(
@@ -242,13 +272,42 @@ fn header_columns(fields: &[&str], line: usize) -> Result<([usize; 2], Option<St
             ));
         }
     };
+    let elevation_columns: Vec<usize> = (0..names.len())
+        .filter(|&k| {
+            ELEVATION_NAMES
+                .iter()
+                .any(|n| names[k].eq_ignore_ascii_case(n))
+        })
+        .collect();
+    let z = match elevation_columns[..] {
+        [] => None,
+        [z] => Some(z),
+        [a, b, ..] => {
+            return Err(parse(
+                line,
+                format!(
+                    "the header names more than one elevation column ({} in column {} and {} \
+                     in column {}); keep one and rename the others",
+                    quoted(names[a]),
+                    a + 1,
+                    quoted(names[b]),
+                    b + 1
+                ),
+            ))
+        }
+    };
+    let read = |k: &usize| xy.contains(k) || z == Some(*k);
     let skipped = (0..names.len())
-        .filter(|k| !xy.contains(k))
+        .filter(|k| !read(k))
         .map(|k| format!("{} (column {})", quoted(names[k]), k + 1));
-    let count = names.len() - 2;
+    let count = names.len() - 2 - usize::from(z.is_some());
     let warning = (count > 0).then(|| {
+        let elevation = z.map_or(String::new(), |z| {
+            format!(", the elevation is {} (column {})", quoted(names[z]), z + 1)
+        });
         format!(
-            "line {line}: skipping {count} column{} {}; x and y are {} and {} (columns {} and {})",
+            "line {line}: skipping {count} column{} {}; x and y are {} and {} (columns {} and \
+             {}){elevation}",
             plural(count),
             listed(count, skipped),
             quoted(names[xy[0]]),
@@ -257,7 +316,7 @@ fn header_columns(fields: &[&str], line: usize) -> Result<([usize; 2], Option<St
             xy[1] + 1
         )
     });
-    Ok((xy, warning))
+    Ok((xy, z, warning))
 }
 
 /// The first [`LISTED_NAMES`] of the `count` `items`, comma-separated,
@@ -270,17 +329,14 @@ fn listed(count: usize, items: impl Iterator<Item = String>) -> String {
     text
 }
 
-/// The warning for rows of `columns > 2` values without a header naming
-/// the coordinates (e.g. an `x y z` cloud): the first two are read.
+/// The warning for rows of `columns > 3` values without a header naming
+/// the coordinates: the first two are read, and no elevation (which column
+/// holds it would be a guess).
 fn ignored_columns(columns: usize, line: usize) -> String {
-    let ignored = if columns == 3 {
-        "column 3".to_string()
-    } else {
-        format!("columns 3 to {columns}")
-    };
     format!(
         "line {line}: rows have {columns} columns and no header names them; reading columns 1 \
-         and 2 as x y and ignoring {ignored} (a header line such as `x y z` names them)"
+         and 2 as x y and ignoring columns 3 to {columns} (a header line such as `x y z` names \
+         them; a column named z is read as the elevation)"
     )
 }
 
@@ -296,20 +352,22 @@ mod tests {
             points_of(text, InputFormat::Text).unwrap(),
             vec![[1.0, 2.0], [3.0, 4.0], [5.0, 6.0], [7.0, 8.0]]
         );
-        // Consistent extra columns are allowed; x, y are the first two, with
-        // a warning naming what is ignored unless a header names the columns.
-        let read = read_str("1 2 9\n3 4 9\n", InputFormat::Text).unwrap();
+        // Three columns without a header are x y z; more are allowed, x, y
+        // being the first two, with a warning naming what is ignored unless a
+        // header names the columns.
+        let read = read_str("1 2 9\n3 4 -9.5\n", InputFormat::Text).unwrap();
         assert_eq!(read.input.points(), [[1.0, 2.0], [3.0, 4.0]]);
+        assert_eq!(read.elevations, Some(vec![9.0, -9.5]));
+        assert!(read.warnings.is_empty(), "{:?}", read.warnings);
+        let read = read_str("# c\n1 2 9 8\n3 4 9 8\n", InputFormat::Text).unwrap();
+        assert_eq!(read.elevations, None);
         assert_eq!(
             read.warnings,
             [
-                "line 1: rows have 3 columns and no header names them; reading columns 1 and 2 \
-              as x y and ignoring column 3 (a header line such as `x y z` names them)"
+                "line 2: rows have 4 columns and no header names them; reading columns 1 and 2 \
+                 as x y and ignoring columns 3 to 4 (a header line such as `x y z` names them; \
+                 a column named z is read as the elevation)"
             ]
-        );
-        let read = read_str("# c\n1 2 9 8\n3 4 9 8\n", InputFormat::Text).unwrap();
-        assert!(
-            read.warnings[0].starts_with("line 2:") && read.warnings[0].contains("columns 3 to 4")
         );
         for plain in ["x y\n1 2\n3 4\n", "1 2\n3 4\n"] {
             assert!(read_str(plain, InputFormat::Text)
@@ -318,11 +376,12 @@ mod tests {
                 .is_empty());
         }
         // A header names the skipped columns, and the warning names them.
-        let read = read_str("x y z\n1 2 9\n3 4 9\n", InputFormat::Text).unwrap();
+        let read = read_str("x y w\n1 2 9\n3 4 9\n", InputFormat::Text).unwrap();
         assert_eq!(
             read.warnings,
-            ["line 1: skipping 1 column 'z' (column 3); x and y are 'x' and 'y' (columns 1 and 2)"]
+            ["line 1: skipping 1 column 'w' (column 3); x and y are 'x' and 'y' (columns 1 and 2)"]
         );
+        assert_eq!(read.elevations, None);
         assert_eq!(
             points_of("\u{feff}-1e3 2.5E-2\r\n", InputFormat::Text).unwrap(),
             vec![[-1000.0, 0.025]]
@@ -479,6 +538,95 @@ mod tests {
         assert_eq!(
             points_of("0 \t 0\n\t1   0  \n0,\t1 # c,,\n", InputFormat::Text).unwrap(),
             vec![[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]]
+        );
+    }
+
+    #[test]
+    fn a_third_coordinate_is_an_elevation_and_never_dropped_silently() {
+        // A header names the elevation column, anywhere and in any case.
+        for (text, points, z) in [
+            (
+                "x y z\n1 2 9\n3 4 8\n",
+                [[1.0, 2.0], [3.0, 4.0]],
+                [9.0, 8.0],
+            ),
+            (
+                "Z,lon,lat\n9,1,2\n8,3,4\n",
+                [[1.0, 2.0], [3.0, 4.0]],
+                [9.0, 8.0],
+            ),
+            (
+                "x;y;Elevation\n1;2;-1e-3\n3;4;0\n",
+                [[1.0, 2.0], [3.0, 4.0]],
+                [-1e-3, 0.0],
+            ),
+        ] {
+            let read = read_str(text, InputFormat::Text).unwrap();
+            assert_eq!(read.input.points(), points, "{text}");
+            assert_eq!(read.elevations.as_deref(), Some(&z[..]), "{text}");
+            assert!(read.warnings.is_empty(), "{text}: {:?}", read.warnings);
+        }
+        // With other columns skipped, the warning says which one is z.
+        let read = read_str("name,lon,lat,alt\nBern,7.4,46.9,540\n", InputFormat::Text).unwrap();
+        assert_eq!(read.elevations, Some(vec![540.0]));
+        assert_eq!(
+            read.warnings,
+            [
+                "line 1: skipping 1 column 'name' (column 1); x and y are 'lon' and 'lat' \
+                 (columns 2 and 3), the elevation is 'alt' (column 4)"
+            ]
+        );
+        // Two-column files have none.
+        assert_eq!(
+            read_str("0 0\n1 0\n", InputFormat::Text)
+                .unwrap()
+                .elevations,
+            None
+        );
+        // Mixing two and three columns is an error naming the line, either way.
+        for (text, bad_line, counts) in [
+            ("0 0 1\n1 0 2\n0 1\n", 3, ("2 columns", "line 1 has 3")),
+            ("# c\n0 0\n1 0 5\n", 3, ("3 columns", "line 2 has 2")),
+            ("x y z\n0 0 1\n1 0\n", 3, ("2 columns", "names 3")),
+        ] {
+            let (line, m) = line_of(points_of(text, InputFormat::Text).unwrap_err());
+            assert_eq!(line, bad_line, "{text}: {m}");
+            assert!(m.contains(counts.0) && m.contains(counts.1), "{text}: {m}");
+        }
+        // A bad elevation is named with its line, as a coordinate is.
+        for (text, bad_line, needle) in [
+            (
+                "0 0 1\n1 0 nan\n",
+                2,
+                "elevation 'nan' is not a finite number",
+            ),
+            (
+                "0 0 1\n1 0 1e999\n",
+                2,
+                "elevation '1e999' is not a finite number",
+            ),
+            (
+                "0 0 1e300\n",
+                1,
+                "elevation '1e300' is outside the exact range",
+            ),
+            ("x,y,z\n0,0,\n", 2, "field 3 is empty"),
+            (
+                "x,y,z,name\n0,0,high,a\n",
+                2,
+                "elevation 'high' is not a number",
+            ),
+        ] {
+            let (line, m) = line_of(points_of(text, InputFormat::Text).unwrap_err());
+            assert_eq!(line, bad_line, "{text}: {m}");
+            assert!(m.contains(needle), "{text}: {m}");
+        }
+        // Two elevation columns would be a guess.
+        let (line, m) = line_of(points_of("x,y,z,alt\n0,0,1,2\n", InputFormat::Text).unwrap_err());
+        assert_eq!(line, 1);
+        assert!(
+            m.contains("more than one elevation column ('z' in column 3 and 'alt' in column 4)"),
+            "{m}"
         );
     }
 

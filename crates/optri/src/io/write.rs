@@ -148,6 +148,8 @@ fn write_triangulation(
 ) -> Result<Vec<PathBuf>> {
     let t = report.triangulation();
     let points = report.coordinates();
+    let elevations = report.elevations();
+    let elevations = elevations.as_deref();
     let format = OutputFormat::from_path(path)?;
     match format {
         OutputFormat::Json => write_json_file(path, report, options.style)?,
@@ -155,6 +157,7 @@ fn write_triangulation(
             path,
             &geojson::TriangulationFeatures {
                 points,
+                elevations,
                 triangles: t.triangles(),
                 include_points: true,
             },
@@ -162,10 +165,12 @@ fn write_triangulation(
         )?,
         OutputFormat::Svg => write_file(path, &svg::report_to_svg(report, title))?,
         OutputFormat::Triangle => {
-            return write_triangle_files(format, path, &node::ele_text(t.triangles()), points)
+            let ele = node::ele_text(t.triangles());
+            return write_triangle_files(format, path, &ele, points, elevations);
         }
         OutputFormat::TriangleEdges => {
-            return write_triangle_files(format, path, &node::edge_text(&t.edges()), points)
+            let edges = node::edge_text(&t.edges());
+            return write_triangle_files(format, path, &edges, points, elevations);
         }
     }
     Ok(vec![path.to_path_buf()])
@@ -178,16 +183,22 @@ fn write_graph(
     options: &WriteOptions,
 ) -> Result<Vec<PathBuf>> {
     let (points, edges) = (report.points(), report.edges());
+    let elevations = report.elevations();
     let format = OutputFormat::from_path_for_graph(path)?;
     match format {
         OutputFormat::Json => write_json_file(path, report, options.style)?,
         OutputFormat::GeoJson => write_json_file(
             path,
-            &geojson::GraphFeatures { points, edges },
+            &geojson::GraphFeatures {
+                points,
+                elevations,
+                edges,
+            },
             options.style,
         )?,
         OutputFormat::TriangleEdges => {
-            return write_triangle_files(format, path, &node::edge_text(edges), points)
+            let text = node::edge_text(edges);
+            return write_triangle_files(format, path, &text, points, elevations);
         }
         // `.ele` (Triangle) was refused by `from_path_for_graph`.
         OutputFormat::Svg | OutputFormat::Triangle => {
@@ -242,16 +253,17 @@ fn write_comparison(
 }
 
 /// Writes Triangle's `first` file (`.ele` or `.edge`) at `path` and the
-/// `.node` of `points` beside it.
+/// `.node` of `points` (with their `elevations`) beside it.
 fn write_triangle_files(
     format: OutputFormat,
     path: &Path,
     first: &str,
     points: &[crate::kernel::Point],
+    elevations: Option<&[f64]>,
 ) -> Result<Vec<PathBuf>> {
     let files = format.files_written(path);
     write_file(&files[0], first)?;
-    write_file(&files[1], &node::node_text(points))?;
+    write_file(&files[1], &node::node_text(points, elevations))?;
     Ok(files)
 }
 

@@ -18,9 +18,10 @@
 //!
 //! Indices are input indices (0-based) and `coordinates` lists every input
 //! point, merged duplicates included, so the document describes the input as
-//! given.
+//! given; `elevations`, when the input had them, lists their elevations in
+//! the same order.
 
-use super::{Arithmetic, Input, ReadInput};
+use super::{input_elevations, Arithmetic, Input, ReadInput};
 use crate::criteria::{BoundMeasure, CertifiedBound, Diagnostics, Optimality};
 use crate::error::{Error, Result};
 use crate::kernel::metrics::{area_scaled, over_power_of_ten_rounded, Rounding, Rounding::Nearest};
@@ -30,6 +31,7 @@ use crate::structures::{Domain, PointSet, SimplePolygon, Stats, Triangulation};
 use crate::timing::Phase;
 use serde::ser::{Serialize, Serializer};
 use serde_json::Value;
+use std::borrow::Cow;
 
 /// The `"schema_version"` of the documents written here. Adding a field
 /// keeps the version; removing or renaming one, or changing its meaning,
@@ -51,11 +53,13 @@ pub struct TriangulationReport<'a> {
 }
 
 /// How the triangulated points relate to the user's: the arithmetic and,
-/// when the algorithms ran on scaled integers, the user's values and `k`.
+/// when the algorithms ran on scaled integers, the user's values and `k`;
+/// and the elevations as read.
 #[derive(Clone, Copy, Debug)]
 struct InputUnits<'a> {
     arithmetic: Arithmetic,
     user: Option<(&'a [Point], i32)>,
+    elevations: Option<&'a [f64]>,
 }
 
 impl<'a> InputUnits<'a> {
@@ -66,6 +70,7 @@ impl<'a> InputUnits<'a> {
                 .scaled
                 .as_ref()
                 .map(|s| (read.input.points(), s.exponent)),
+            elevations: read.elevations.as_deref(),
         }
     }
 }
@@ -109,6 +114,17 @@ impl<'a> TriangulationReport<'a> {
         match self.input.and_then(|i| i.user) {
             Some((user, _)) => user,
             None => self.triangulation.points(),
+        }
+    }
+
+    /// The elevation of each input point (in the order of
+    /// [`coordinates`](Self::coordinates)), when the input had them: as read
+    /// ([`with_input`](Self::with_input)), else those of the triangulation's
+    /// point set.
+    pub fn elevations(&self) -> Option<Cow<'a, [f64]>> {
+        match self.input.and_then(|i| i.elevations) {
+            Some(z) => Some(Cow::Borrowed(z)),
+            None => input_elevations(self.triangulation.point_set()).map(Cow::Owned),
         }
     }
 
@@ -225,6 +241,7 @@ impl Serialize for TriangulationReport<'_> {
             triangles: t.triangles(),
             edges: t.edges(),
             coordinates: self.coordinates(),
+            elevations: self.elevations(),
         }
         .serialize(serializer)
     }
@@ -294,6 +311,8 @@ struct TriangulationDocument<'a> {
     triangles: &'a [[u32; 3]],
     edges: Vec<[u32; 2]>,
     coordinates: &'a [Point],
+    #[serde(skip_serializing_if = "Option::is_none")]
+    elevations: Option<Cow<'a, [f64]>>,
 }
 
 /// A graph as a JSON document (`"document": "graph"`).
@@ -312,6 +331,7 @@ pub struct GraphReport<'a> {
     timing: Option<&'a [Phase]>,
     arithmetic: Option<Arithmetic>,
     metric: Option<&'a crate::kernel::Metric>,
+    elevations: Option<&'a [f64]>,
 }
 
 impl<'a> GraphReport<'a> {
@@ -325,6 +345,7 @@ impl<'a> GraphReport<'a> {
             timing: None,
             arithmetic: None,
             metric: None,
+            elevations: None,
         }
     }
 
@@ -339,6 +360,7 @@ impl<'a> GraphReport<'a> {
             timing: None,
             arithmetic: None,
             metric: None,
+            elevations: None,
         }
     }
 
@@ -361,11 +383,13 @@ impl<'a> GraphReport<'a> {
     }
 
     /// Describes a graph of `read`'s working points: the document gets
-    /// `coordinate_arithmetic`, and its `coordinates` are the user's values.
+    /// `coordinate_arithmetic`, its `coordinates` are the user's values, and
+    /// `elevations` the input's, if it had them.
     pub fn with_input(self, read: &'a ReadInput) -> Self {
         Self {
             points: read.input.points(),
             arithmetic: Some(read.arithmetic),
+            elevations: read.elevations.as_deref(),
             ..self
         }
     }
@@ -397,6 +421,12 @@ impl<'a> GraphReport<'a> {
         self.edges
     }
 
+    /// The elevation of each point, when the input had them
+    /// ([`with_input`](Self::with_input)).
+    pub fn elevations(&self) -> Option<&'a [f64]> {
+        self.elevations
+    }
+
     /// The document as a JSON value.
     pub fn to_json(&self) -> Value {
         to_value(self)
@@ -417,6 +447,7 @@ impl Serialize for GraphReport<'_> {
             timing_ms: self.timing.map(TimingMap),
             edges: self.edges,
             coordinates: self.points,
+            elevations: self.elevations,
         }
         .serialize(serializer)
     }
@@ -442,6 +473,8 @@ struct GraphDocument<'a> {
     timing_ms: Option<TimingMap<'a>>,
     edges: &'a [[u32; 2]],
     coordinates: &'a [Point],
+    #[serde(skip_serializing_if = "Option::is_none")]
+    elevations: Option<&'a [f64]>,
 }
 
 /// The results of [`compare`](crate::compare) as a JSON document
@@ -619,14 +652,14 @@ pub(super) fn document_coordinates(document: &Value) -> Option<(&'static str, &V
 
 /// Reads a triangulation document back and validates it: the
 /// [`TriangulationReport`] document, or the document of earlier versions
-/// (with the coordinates as a `points` array). Only `coordinates` and
-/// `triangles` are read; the duplicates follow from the coordinates and every
-/// other field from the triangulation.
+/// (with the coordinates as a `points` array). Only `coordinates`,
+/// `triangles` and `elevations` (when present) are read; the duplicates
+/// follow from the coordinates and every other field from the triangulation.
 ///
 /// # Errors
 /// [`Error::Parse`] (line 0) for a malformed object, a graph document or a
-/// newer `schema_version`; the errors of [`PointSet::new`] and
-/// [`Triangulation::from_triangles`].
+/// newer `schema_version`; the errors of [`PointSet::new`],
+/// [`PointSet::with_elevations`] and [`Triangulation::from_triangles`].
 pub fn triangulation_from_json(value: &Value) -> Result<Triangulation> {
     let bad = |m: &str| Error::Parse {
         line: 0,
@@ -652,6 +685,12 @@ pub fn triangulation_from_json(value: &Value) -> Result<Triangulation> {
         .ok_or_else(|| bad("no \"coordinates\" (nor the \"points\" array of earlier versions)"))?;
     let points: Vec<Point> = serde_json::from_value(coordinates.clone())
         .map_err(|e| bad(&format!("\"{name}\": {e}")))?;
+    let elevations: Option<Vec<f64>> = match value.get("elevations") {
+        None => None,
+        Some(z) => Some(
+            serde_json::from_value(z.clone()).map_err(|e| bad(&format!("\"elevations\": {e}")))?,
+        ),
+    };
     let triangles: Vec<[u32; 3]> = serde_json::from_value(
         value
             .get("triangles")
@@ -690,13 +729,21 @@ pub fn triangulation_from_json(value: &Value) -> Result<Triangulation> {
     } else {
         Triangulation::from_triangles(&PointSet::new(working)?, triangles)?
     };
-    Ok(match &read.scaled {
-        Some(_) => {
-            // A polygon ring may repeat its first vertex at the end, which
-            // `SimplePolygon::new` dropped: keep as many user points.
-            let n = triangulation.point_set().input_points().len();
-            triangulation.with_point_set(PointSet::new(&read.input.points()[..n])?)
+    // A polygon ring may repeat its first vertex at the end, which
+    // `SimplePolygon::new` dropped: keep as many user points.
+    let n = triangulation.point_set().input_points().len();
+    let point_set = match &read.scaled {
+        Some(_) => PointSet::new(&read.input.points()[..n])?,
+        None => triangulation.point_set().clone(),
+    };
+    Ok(match elevations {
+        Some(z) => {
+            // The elevation of a repeated closing vertex goes with it.
+            let closing = polygon && z.len() == n + 1 && z[n] == z[0];
+            let z = if closing { &z[..n] } else { &z[..] };
+            triangulation.with_point_set(point_set.with_elevations(z)?)
         }
+        None if read.scaled.is_some() => triangulation.with_point_set(point_set),
         None => triangulation,
     })
 }
