@@ -56,6 +56,13 @@ criteria! {
     MaxMinArea => criteria::area::MAXMIN_ENTRY,
     /// Minimises the largest triangle area (as MaxMin area).
     MinMaxArea => criteria::area::MINMAX_ENTRY,
+    /// Minimises the largest minus the smallest triangle area (exact in
+    /// convex position and on simple polygons).
+    MinMaxDeltaArea => criteria::delta::AREA_ENTRY,
+    /// Minimises the largest minus the smallest interior angle (as δ-area).
+    MinMaxDeltaAngle => criteria::delta::ANGLE_ENTRY,
+    /// Minimises the longest minus the shortest edge (as δ-area).
+    MinMaxDeltaLength => criteria::delta::LENGTH_ENTRY,
 }
 
 impl Criterion {
