@@ -288,7 +288,8 @@ fn every_unsupported_combination_says_what_would_work() {
         (
             &["triangulate", "square.txt", "--criterion", "prettiest"],
             "unknown criterion 'prettiest'; available: delaunay, minmax-length, greedy, \
-             min-weight, maxmin-area, minmax-area",
+             min-weight, maxmin-area, minmax-area, minmax-delta-area, minmax-delta-angle, \
+             minmax-delta-length",
         ),
         (
             &["triangulate", "square.txt", "--input-format", "xml"],

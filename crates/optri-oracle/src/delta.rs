@@ -116,43 +116,59 @@ impl DeltaMeasure {
         items
     }
 
-    fn compare_items(self, points: &[Point], s: Item, t: Item) -> Ordering {
+    /// The exact value of an item: `[area, 0]`, `[squared length, 0]` or the
+    /// angle's vector `(u·v, |u×v|)`.
+    fn key(self, points: &[Point], i: Item) -> [Q; 2] {
         let p = |i: u32| points[i as usize];
         match self {
-            DeltaMeasure::Area => {
-                twice_area(p(s[0]), p(s[1]), p(s[2])).cmp(&twice_area(p(t[0]), p(t[1]), p(t[2])))
-            }
-            DeltaMeasure::Length => {
-                squared_length(p(s[0]), p(s[1])).cmp(&squared_length(p(t[0]), p(t[1])))
-            }
-            DeltaMeasure::Angle => compare_arguments(
-                &corner(p(s[0]), p(s[1]), p(s[2])),
-                &corner(p(t[0]), p(t[1]), p(t[2])),
-            ),
+            DeltaMeasure::Area => [twice_area(p(i[0]), p(i[1]), p(i[2])), Q::zero()],
+            DeltaMeasure::Length => [squared_length(p(i[0]), p(i[1])), Q::zero()],
+            DeltaMeasure::Angle => corner(p(i[0]), p(i[1]), p(i[2])),
+        }
+    }
+
+    fn compare_keys(self, s: &[Q; 2], t: &[Q; 2]) -> Ordering {
+        match self {
+            DeltaMeasure::Angle => compare_arguments(s, t),
+            _ => s[0].cmp(&t[0]),
         }
     }
 
     /// The largest and the smallest item of a triangulation.
     fn extremes(self, points: &[Point], tris: &[[u32; 3]]) -> [Item; 2] {
-        let items = self.items(tris);
+        let keyed: Vec<(Item, [Q; 2])> = self
+            .items(tris)
+            .into_iter()
+            .map(|i| (i, self.key(points, i)))
+            .collect();
         let pick = |want: Ordering| {
-            *items
+            keyed
                 .iter()
                 .reduce(|a, b| {
-                    if self.compare_items(points, *b, *a) == want {
+                    if self.compare_keys(&b.1, &a.1) == want {
                         b
                     } else {
                         a
                     }
                 })
                 .expect("a triangle")
+                .0
         };
         [pick(Ordering::Greater), pick(Ordering::Less)]
     }
 
     /// Compares `δ(s)` with `δ(t)` for two triangulations of `points`.
     pub fn compare(self, points: &[Point], s: &[[u32; 3]], t: &[[u32; 3]]) -> Ordering {
-        let [[h1, l1], [h2, l2]] = [self.extremes(points, s), self.extremes(points, t)];
+        self.compare_extremes(points, self.extremes(points, s), self.extremes(points, t))
+    }
+
+    /// Compares `high₁ − low₁` with `high₂ − low₂`.
+    fn compare_extremes(
+        self,
+        points: &[Point],
+        [h1, l1]: [Item; 2],
+        [h2, l2]: [Item; 2],
+    ) -> Ordering {
         let p = |i: u32| points[i as usize];
         match self {
             DeltaMeasure::Area => {
@@ -179,13 +195,17 @@ impl DeltaMeasure {
         points: &[Point],
         triangulations: &'a [Vec<[u32; 3]>],
     ) -> Option<&'a Vec<[u32; 3]>> {
-        triangulations.iter().reduce(|best, t| {
-            if self.compare(points, t, best) == Ordering::Less {
-                t
-            } else {
-                best
+        let mut best: Option<(&Vec<[u32; 3]>, [Item; 2])> = None;
+        for t in triangulations {
+            let extremes = self.extremes(points, t);
+            let better = best.as_ref().is_none_or(|(_, current)| {
+                self.compare_extremes(points, extremes, *current) == Ordering::Less
+            });
+            if better {
+                best = Some((t, extremes));
             }
-        })
+        }
+        best.map(|(t, _)| t)
     }
 
     /// `δ(tris)` rounded, for messages.

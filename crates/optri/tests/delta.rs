@@ -104,7 +104,7 @@ fn random_convex_polygons_are_optimal() {
             cases += 1;
         }
     }
-    assert_eq!(cases, 30);
+    assert_eq!(cases, 29);
 }
 
 #[test]
