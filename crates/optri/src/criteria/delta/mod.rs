@@ -8,7 +8,7 @@
 //!
 //! | input | algorithm | time |
 //! |---|---|---|
-//! | points in convex position, simple polygon | the threshold sweep (`sweep`): the bottleneck polygon program once per candidate lower bound, pruned to `[M* − δ_ub, m*]` | O(n³ log n) to rank the items, then O(w·n³) for `w` thresholds tried: O(n⁶) in the worst case for area and angle; for length in convex position O(n⁴) (below) |
+//! | points in convex position, simple polygon | the threshold sweep (`sweep`): the bottleneck polygon program once per candidate lower bound, pruned to `[M* − δ_ub, m*]` and by the monotonicity of `U(L)` | O(n³ log n) to rank the items, then O(w·n³) for `w` thresholds tried: O(n⁶) in the worst case for area and angle; for length in convex position O(n⁴) (below) |
 //! | other point sets | the best of Delaunay, greedy and minmax-length by exact δ (`Optimality::Approximation`) | theirs |
 //!
 //! **δ-length in convex position.** Every boundary edge is in every

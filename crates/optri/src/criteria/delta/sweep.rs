@@ -7,13 +7,16 @@
 //! optimal triangulation `T*` has smallest item `λ*`, and `U(λ*) − λ* ≤
 //! δ(T*)`, so `δ* = min_L U(L) − L` over the distinct low values.
 //!
-//! Pruning: let `M*` be the least largest item over all triangulations
-//! (`U(−∞)`) and `m*` the greatest smallest item (the maxmin program).
-//! No triangulation has a smallest item above `m*`, so only `L ≤ m*`
-//! matters, and `U(L) − L ≥ M* − L`: the sweep runs `L` downwards from
-//! `m*` and stops as soon as `M* − L` reaches the best δ found. Each
-//! step's triangulation is scored by its own smallest item (at least `L`),
-//! so its δ is exact, not just bounded.
+//! Pruning (a two-pointer walk over the sorted thresholds): let `M*` be
+//! the least largest item over all triangulations (`U(−∞)`) and `m*` the
+//! greatest smallest item (the maxmin program). No triangulation has a
+//! smallest item above `m*`, so only `L ≤ m*` matters; `U` is
+//! nondecreasing, so after a program at `L` found `U(L)`, a later `L′` can
+//! win only if `U(L) − L′` is below the best δ so far (at first `M*` stands
+//! for `U(L)`: the window `[M* − δ_ub, m*]`). The program's triangulation
+//! is scored by its own smallest item `λ ≥ L`, and every `L′ ∈ (L, λ]` has
+//! `U(L′) = U(L)`, so the walk resumes after `λ`. Each threshold test is an
+//! exact comparison of differences, found by binary search.
 
 use super::measure::{Item, Measure, RankedTriangles, FLAT};
 use crate::error::Result;
@@ -137,7 +140,7 @@ pub(crate) fn least_delta(
         score(solved.triangles)
     };
     let mut programs = 2;
-    let floor = item(unconstrained.high); // M*
+    let least_largest_rank = unconstrained.high; // M*
     let better = |s: &Scored, t: &Scored| {
         measure.compare_differences(point, difference(s), difference(t)) == Ordering::Less
     };
@@ -146,30 +149,47 @@ pub(crate) fn least_delta(
     } else {
         unconstrained
     };
-    // The candidate thresholds: the distinct low ranks up to m*, downwards.
+    // The candidate thresholds: the distinct low ranks up to m*, upwards.
     let mut thresholds: Vec<u32> = ranked
         .low
         .iter()
         .copied()
         .filter(|&l| l != FLAT && l <= greatest_smallest.low)
         .collect();
-    thresholds.sort_unstable_by(|a, b| b.cmp(a));
+    thresholds.sort_unstable();
     thresholds.dedup();
-    for threshold in thresholds {
-        // U(L) − L ≥ M* − L: nothing below this threshold can win.
-        if measure.compare_differences(point, [floor, item(threshold)], difference(&best))
-            != Ordering::Less
-        {
-            break;
-        }
+    // The first threshold at or after `from` that can still win when every
+    // U(L) from here on is at least the rank `high`: U(L) − L decreases
+    // with L, so the thresholds that fail `high − L < δ_best` are a prefix.
+    let first_winning = |from: usize, high: u32, best: &Scored| {
+        from + thresholds[from..].partition_point(|&threshold| {
+            measure.compare_differences(point, [item(high), item(threshold)], difference(best))
+                != Ordering::Less
+        })
+    };
+    // U(L) is nondecreasing: after the program at L found U(L) and a
+    // triangulation whose smallest item is λ ≥ L, every L' ≤ λ has
+    // U(L') − L' ≥ U(L) − λ (already scored), and every later L' needs
+    // U(L) − L' < δ_best.
+    // The program at m* first: its δ is often near the optimum and narrows
+    // the window before the walk starts.
+    let top = least_largest(greatest_smallest.low)?.expect("m* has a triangulation");
+    programs += 1;
+    if better(&top, &best) {
+        best = top;
+    }
+    let mut next = first_winning(0, least_largest_rank, &best);
+    while next < thresholds.len() {
         programs += 1;
         // Every candidate is at most m*, so a triangulation exists.
-        let Some(candidate) = least_largest(threshold)? else {
-            continue;
-        };
+        let candidate =
+            least_largest(thresholds[next])?.expect("a threshold at most m* has a triangulation");
+        let past = thresholds.partition_point(|&t| t <= candidate.low);
+        let high = candidate.high;
         if better(&candidate, &best) {
             best = candidate;
         }
+        next = first_winning(past.max(next + 1), high, &best);
     }
     Ok(Some(Swept {
         triangles: best.triangles,
