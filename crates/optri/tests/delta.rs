@@ -89,7 +89,7 @@ fn is_convex_position(points: &[Point]) -> bool {
 
 #[test]
 fn random_convex_polygons_are_optimal() {
-    let mut rng = StdRng::seed_from_u64(0xDE17A_0001);
+    let mut rng = StdRng::seed_from_u64(0x000D_E17A_0001);
     let mut cases = 0;
     for n in 3..=8 {
         for round in 0..5 {
@@ -152,7 +152,7 @@ fn regular_and_cocircular_polygons_are_optimal() {
 
 #[test]
 fn simple_polygons_are_optimal() {
-    let mut rng = StdRng::seed_from_u64(0xDE17A_0002);
+    let mut rng = StdRng::seed_from_u64(0x000D_E17A_0002);
     let mut cases = 0;
     for n in 4..=9 {
         for _ in 0..4 {
@@ -166,7 +166,7 @@ fn simple_polygons_are_optimal() {
 
 #[test]
 fn general_point_sets_are_valid_and_not_below_the_optimum() {
-    let mut rng = StdRng::seed_from_u64(0xDE17A_0003);
+    let mut rng = StdRng::seed_from_u64(0x000D_E17A_0003);
     let (mut cases, mut optimal) = (0, 0);
     while cases < 30 {
         let n = rng.gen_range(5..=8);
@@ -216,7 +216,7 @@ fn limits_and_registry() {
 #[test]
 #[ignore]
 fn larger_convex_polygons_are_optimal() {
-    let mut rng = StdRng::seed_from_u64(0xDE17A_0004);
+    let mut rng = StdRng::seed_from_u64(0x000D_E17A_0004);
     for n in 9..=10 {
         for round in 0..5 {
             let shape = [ConvexShape::Parabola, ConvexShape::Lens][round % 2];
