@@ -313,7 +313,35 @@ pub const OPTIMALITY_CHECKS: &[(&str, OptimalityCheck)] = &[
             all,
         )
     }),
+    ("minmax-delta-area", |exact, points, tris, all| {
+        delta_check(oracle::DeltaMeasure::Area, exact, points, tris, all)
+    }),
+    ("minmax-delta-angle", |exact, points, tris, all| {
+        delta_check(oracle::DeltaMeasure::Angle, exact, points, tris, all)
+    }),
+    ("minmax-delta-length", |exact, points, tris, all| {
+        delta_check(oracle::DeltaMeasure::Length, exact, points, tris, all)
+    }),
 ];
+
+/// A δ-triangulation is never better than the optimum over `all`, and equal
+/// to it when it claims to be exact.
+fn delta_check(
+    measure: oracle::DeltaMeasure,
+    exact: bool,
+    points: &[[f64; 2]],
+    tris: &[[u32; 3]],
+    all: &[Vec<[u32; 3]>],
+) -> Result<(), String> {
+    let Some(best) = measure.optimum(points, all) else {
+        return Ok(());
+    };
+    match measure.compare(points, tris, best) {
+        std::cmp::Ordering::Less => Err("delta below the optimum".to_string()),
+        std::cmp::Ordering::Greater if exact => Err("delta not minimal".to_string()),
+        _ => Ok(()),
+    }
+}
 
 /// The optimality check of `criterion`.
 ///

@@ -298,7 +298,9 @@ fn every_unsupported_combination_says_what_would_work() {
         (
             &["triangulate", "square.txt", "--criterion", "prettiest"],
             "unknown criterion 'prettiest'; available: delaunay, minmax-length, greedy, \
-             min-weight, maxmin-area, minmax-area",
+             min-weight, maxmin-area, minmax-area, minmax-angle, maxmin-height, \
+             minmax-eccentricity, minmax-slope, minmax-delta-area, minmax-delta-angle, \
+             minmax-delta-length",
         ),
         (
             &["triangulate", "square.txt", "--input-format", "xml"],

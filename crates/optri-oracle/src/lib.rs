@@ -30,6 +30,7 @@
 
 pub mod bottleneck_measures;
 pub mod data;
+pub mod delta;
 pub mod enumerate;
 pub mod exact;
 pub mod graphs;
@@ -43,6 +44,7 @@ pub mod polygon;
 pub mod symbolic;
 
 pub use data::data_dir;
+pub use delta::DeltaMeasure;
 pub use enumerate::{
     all_triangulations, canonical_triangle, canonical_triangulation, edge_length, empty_segments,
     flip_graph_triangulations, greedy_triangulation, max_edge_squared, max_twice_area,

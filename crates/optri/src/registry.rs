@@ -66,6 +66,13 @@ criteria! {
     /// Minimises the steepest slope over per-point elevations (edge
     /// insertion).
     MinMaxSlope => criteria::edge_insertion::MINMAX_SLOPE_ENTRY,
+    /// Minimises the largest minus the smallest triangle area (exact in
+    /// convex position and on simple polygons).
+    MinMaxDeltaArea => criteria::delta::AREA_ENTRY,
+    /// Minimises the largest minus the smallest interior angle (as δ-area).
+    MinMaxDeltaAngle => criteria::delta::ANGLE_ENTRY,
+    /// Minimises the longest minus the shortest edge (as δ-area).
+    MinMaxDeltaLength => criteria::delta::LENGTH_ENTRY,
 }
 
 impl Criterion {

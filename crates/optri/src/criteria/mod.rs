@@ -13,6 +13,7 @@
 //! | `min-weight` | `min_weight` | Dickerson et al. 1997 (LMT-skeleton); Klincsek 1980 |
 //! | `maxmin-area`, `minmax-area` | `area` | Vassilev 2005 |
 //! | `minmax-angle`, `maxmin-height`, `minmax-eccentricity`, `minmax-slope` | `edge_insertion` | Bern, Edelsbrunner, Eppstein, Mitchell & Tan 1993 |
+//! | `minmax-delta-area`, `minmax-delta-angle`, `minmax-delta-length` | `delta` | Vassilev 2005 (Table 1.1) |
 //!
 //! Simple polygons ([`crate::triangulate`]): every criterion has a
 //! [`PolygonSolver`] in its own module; the decomposable ones run the shared
@@ -20,6 +21,7 @@
 
 pub(crate) mod area;
 pub(crate) mod delaunay;
+pub(crate) mod delta;
 pub(crate) mod edge_insertion;
 pub(crate) mod greedy;
 pub(crate) mod min_weight;

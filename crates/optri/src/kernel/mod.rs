@@ -42,6 +42,7 @@
 
 mod certified_incircle;
 mod degrees;
+mod differences;
 pub(crate) mod expansion;
 mod extremes;
 mod length_order;
@@ -69,6 +70,9 @@ pub const MAX_COORDINATE: f64 = 3.2138760885179806e60; // 2^201
 /// Smallest accepted non-zero absolute coordinate value, 2⁻¹⁴².
 pub const MIN_COORDINATE: f64 = 1.793662034335766e-43; // 2^-142
 
+pub(crate) use differences::{
+    compare_angle_differences, compare_area_differences, compare_length_differences,
+};
 pub(crate) use extremes::Extremes;
 pub(crate) use length_order::{EuclideanOrder, LengthOrder};
 pub use length_sums::compare_length_sums;

@@ -28,7 +28,7 @@
 mod simple_polygon;
 
 pub use simple_polygon::MAX_POLYGON_VERTICES;
-pub(crate) use simple_polygon::{check_size, corner_point, on_simple_polygon};
+pub(crate) use simple_polygon::{check_size, corner_point, diagonal_table, on_simple_polygon};
 
 /// A decomposable objective: the cost of a triangulation is the
 /// [`combine`](Self::combine) of the costs of its diagonals and triangles.

@@ -37,7 +37,7 @@ pub(crate) fn corner_point(polygon: &SimplePolygon) -> impl Fn(usize) -> Point +
 /// `table[i * k + j]` for corners `i < j`: is the chord a diagonal? Boundary
 /// edges are `false`. Rows in parallel; every chord is a diagonal of a
 /// strictly convex polygon.
-fn diagonal_table(polygon: &SimplePolygon) -> Vec<bool> {
+pub(crate) fn diagonal_table(polygon: &SimplePolygon) -> Vec<bool> {
     let k = polygon.len();
     let ccw = polygon.counter_clockwise();
     let convex = polygon.is_strictly_convex();
