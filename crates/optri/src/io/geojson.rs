@@ -378,20 +378,6 @@ pub(crate) fn triangulation_to_geojson(
     })
 }
 
-/// A GeoJSON `FeatureCollection`: one `LineString` per edge (property
-/// `edge: [a, b]`), then one `Point` per point (property `index`).
-///
-/// # Panics
-/// If an edge refers to an index outside `points`.
-#[cfg(test)]
-pub(crate) fn graph_to_geojson(points: &[Point], edges: &[[u32; 2]]) -> Value {
-    to_value(&GraphFeatures {
-        points,
-        elevations: None,
-        edges,
-    })
-}
-
 #[cfg(test)]
 fn to_value(v: &impl Serialize) -> Value {
     // Strings, numbers and arrays only.
