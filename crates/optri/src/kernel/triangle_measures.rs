@@ -39,10 +39,13 @@
 //! Ties (isosceles triangles, a side parallel to the gradient) go to the
 //! vertex that comes first in the order the corners were given.
 
+#[cfg(any(test, feature = "internals"))]
 use super::metrics::angle_deg;
 use super::predicates::{compare_corner_angles, compare_lengths, dot_sign};
+#[cfg(any(test, feature = "internals"))]
 use super::rounding::{round_ratio, Rounding};
 use super::{Point, UNIT_ROUNDOFF};
+#[cfg(any(test, feature = "internals"))]
 use num_bigint::BigUint;
 use num_rational::BigRational;
 use num_traits::{Signed, Zero};
@@ -103,6 +106,7 @@ impl TriangleMeasure {
         }
     }
 
+    #[cfg(any(test, feature = "internals"))]
     /// The measure's value for reports: degrees for angles, lengths for the
     /// others (square roots of the exact squared forms), correctly rounded.
     pub(crate) fn reported(self, t: &Corners) -> f64 {
@@ -262,6 +266,7 @@ fn gradient_line_vertex(t: &Corners) -> usize {
     order[1]
 }
 
+#[cfg(any(test, feature = "internals"))]
 /// `√r` for a rational `r ≥ 0`, correctly rounded to the nearest double:
 /// `s = ⌊√(r·4^K)⌋` brackets `√r` in `[s, s + 1)·2^−K`, and `K` grows until
 /// both ends round to the same double (an exact square root stops the loop
@@ -290,6 +295,7 @@ fn rounded_square_root(r: &BigRational) -> f64 {
     }
 }
 
+#[cfg(any(test, feature = "internals"))]
 /// `⌊num·2^e / den⌋` for any integer `e`.
 fn shifted_quotient(num: &BigUint, den: &BigUint, e: i64) -> BigUint {
     if e >= 0 {
@@ -299,6 +305,7 @@ fn shifted_quotient(num: &BigUint, den: &BigUint, e: i64) -> BigUint {
     }
 }
 
+#[cfg(any(test, feature = "internals"))]
 /// Is `num·2^e / den` an integer?
 fn exact_shift(num: &BigUint, den: &BigUint, e: i64) -> bool {
     if e >= 0 {

@@ -71,11 +71,13 @@ impl Badness<'_> {
         s.len().cmp(&t.len())
     }
 
+    #[cfg(any(test, feature = "internals"))]
     /// The reported value of a triangle (degrees for angles).
     pub fn reported(&self, t: [u32; 3]) -> f64 {
         self.measure.reported(&self.corners(t))
     }
 
+    #[cfg(any(test, feature = "internals"))]
     /// The worst triangle of a non-empty list.
     pub fn worst(&self, triangles: &[[u32; 3]]) -> Option<[u32; 3]> {
         triangles.iter().copied().reduce(|w, t| {

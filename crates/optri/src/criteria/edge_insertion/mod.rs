@@ -146,6 +146,7 @@ pub(crate) fn edge_insertion_triangles(
     Ok((mesh.triangles().collect(), steps))
 }
 
+#[cfg(any(test, feature = "internals"))]
 /// The value of the worst of `triangles` (distinct indices of `points`)
 /// under `measure`, correctly rounded (degrees for angles; 0 for none).
 pub(crate) fn worst_value(
