@@ -392,7 +392,13 @@ fn read_parses_files_with_the_library_readers() {
         (
             "3 2 0\n1 0 0\n2 1 0\n3 0 1\n",
             "text",
-            json!([[3.0, 2.0], [1.0, 0.0], [2.0, 1.0], [3.0, 0.0]]),
+            // Three columns without a header: x y z.
+            json!([
+                [3.0, 2.0, 0.0],
+                [1.0, 0.0, 0.0],
+                [2.0, 1.0, 0.0],
+                [3.0, 0.0, 1.0]
+            ]),
         ),
         (
             "0 2\n1 3\n5 6\n",
@@ -447,7 +453,8 @@ fn bad_requests_get_a_4xx_with_the_message_and_the_server_survives() {
     let e = refused(raw(r#"{"points": [[0, 0, 1], [1, 0], [0, 1]]}"#), 400);
     assert_eq!(
         e,
-        "invalid request: point 0 has 3 numbers; each point is [x, y]"
+        "invalid request: point 1 has 2 numbers, but point 0 has 3; every point is [x, y], or \
+         every point [x, y, z]"
     );
     let e = refused(
         raw(r#"{"points": [[0, 0], [1, 0], [0, 1]], "colour": "red"}"#),
