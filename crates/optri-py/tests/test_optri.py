@@ -117,12 +117,23 @@ def optima(points):
 # --- known optimal values -------------------------------------------------
 
 
+def compare_2d(points):
+    """`optri.compare` on points without elevations: every criterion answers
+    in registry order, and those that read elevations refuse them."""
+    results = optri.compare(points)
+    assert list(results) == names()
+    for c in optri.criteria():
+        if c["needs_elevations"]:
+            refused = results.pop(c["name"])
+            assert isinstance(refused, ValueError) and "needs an elevation" in str(refused)
+    return results
+
+
 def test_square_with_centre_has_one_triangulation_and_its_values():
     # The centre lies on both diagonals, so the fan of 4 triangles is the only
     # triangulation; every criterion that takes interior points returns it.
     assert optima(SQUARE_AND_CENTRE)["count"] == 1
-    results = optri.compare(SQUARE_AND_CENTRE)
-    assert list(results) == names()
+    results = compare_2d(SQUARE_AND_CENTRE)
     for name, t in results.items():
         tris = check_triangulation(t, SQUARE_AND_CENTRE)
         assert sorted(tuple(sorted(x)) for x in tris) == [(0, 1, 4), (0, 3, 4), (1, 2, 4), (2, 3, 4)], name
@@ -162,8 +173,7 @@ def test_general_sets_match_the_brute_force_optima(seed):
     rnd = random.Random(seed)
     pts = random_points(rnd, 5 + seed % 3)
     best = optima(pts)
-    results = optri.compare(pts)
-    assert list(results) == names()
+    results = compare_2d(pts)
     for name, t in results.items():
         m = measures(pts, check_triangulation(t, pts))
         if name == "min-weight":
@@ -196,8 +206,7 @@ def test_convex_sets_match_the_brute_force_optima(seed):
     rnd = random.Random(100 + seed)
     pts = convex_points(rnd, 5 + seed % 4)
     best = optima(pts)
-    results = optri.compare(pts)
-    assert list(results) == names()
+    results = compare_2d(pts)
     for name, t in results.items():
         m = measures(pts, check_triangulation(t, pts))
         if name == "min-weight":
@@ -374,7 +383,10 @@ def test_write_and_read_back(tmp_path):
 L_SHAPE = [(0, 0), (0, 2), (1, 2), (1, 1), (2, 1), (2, 0)]  # clockwise
 
 
-@pytest.mark.parametrize("criterion", [c["name"] for c in optri.criteria() if "polygon" in c["inputs"]])
+@pytest.mark.parametrize(
+    "criterion",
+    [c["name"] for c in optri.criteria() if "polygon" in c["inputs"] and not c["needs_elevations"]],
+)
 def test_polygon_interior(criterion):
     t = optri.triangulate_polygon(L_SHAPE, criterion=criterion)
     assert t.domain == "polygon" and len(t.simplices) == len(L_SHAPE) - 2
@@ -400,7 +412,15 @@ def test_criteria_and_kinds_come_from_the_registry():
     entries = optri.criteria()
     assert names()[:3] == ["delaunay", "minmax-length", "greedy"]
     for e in entries:
-        assert set(e) == {"name", "description", "optimality", "inputs", "options", "reference"}
+        assert set(e) == {
+            "name",
+            "description",
+            "optimality",
+            "inputs",
+            "options",
+            "reference",
+            "needs_elevations",
+        }
         assert e["description"] and e["reference"]
     assert [k["name"] for k in optri.graph_kinds()] == ["hull", "delaunay", "rng", "gabriel", "mst"]
     registry = optri.registry()
@@ -688,7 +708,7 @@ def test_decimal_files_through_read_points_match_the_cli(tmp_path):
     # Graphs and comparisons decide on the decimals too.
     assert optri.graph_document(TENTHS, "hull")["coordinate_arithmetic"] == "decimal-exact"
     assert len(optri.graph(TENTHS, "hull")) == 4
-    for name, result in optri.compare(TENTHS).items():
+    for name, result in compare_2d(TENTHS).items():
         assert len(result.simplices) == 2, name
 
 
