@@ -76,8 +76,14 @@ pub fn check_readers(data: &[u8]) {
             continue;
         }
         let solved = match &got.input {
+            // Elevations that conflict on duplicates are refused before any
+            // run (`PointSet::with_elevations`), so there is no document.
             Input::Points(_) => PointSet::new(points)
                 .ok()
+                .and_then(|set| match &got.elevations {
+                    Some(z) => set.with_elevations(z).ok(),
+                    None => Some(set),
+                })
                 .map(|set| triangulate(&set, Criterion::Delaunay)),
             Input::Polygon(_) => SimplePolygon::new(points)
                 .ok()
