@@ -34,7 +34,7 @@ fn uniform_points(c: &mut Criterion) {
             b.iter(|| optri::delaunay(ps).unwrap())
         });
         group.bench_with_input(BenchmarkId::new("minmax_length", n), &ps, |b, ps| {
-            b.iter(|| optri::minmax_length(ps).unwrap())
+            b.iter(|| optri::triangulate(ps, optri::Criterion::MinMaxLength).unwrap())
         });
         group.bench_with_input(
             BenchmarkId::new("polygon_algorithm_on_every_region", n),
@@ -59,7 +59,7 @@ fn convex_position(c: &mut Criterion) {
         let pts = perturbed_circle(&mut StdRng::seed_from_u64(SEED_CONVEX), n, 1e-3);
         let ps = PointSet::new(&pts).unwrap();
         group.bench_with_input(BenchmarkId::new("quadratic", n), &ps, |b, ps| {
-            b.iter(|| optri::minmax_length(ps).unwrap())
+            b.iter(|| optri::triangulate(ps, optri::Criterion::MinMaxLength).unwrap())
         });
         group.bench_with_input(BenchmarkId::new("cubic_reference", n), &ps, |b, ps| {
             b.iter(|| optri::internals::minmax_length_cubic(ps).unwrap())
@@ -69,7 +69,7 @@ fn convex_position(c: &mut Criterion) {
         let pts = perturbed_circle(&mut StdRng::seed_from_u64(SEED_CONVEX), n, 1e-3);
         let ps = PointSet::new(&pts).unwrap();
         group.bench_with_input(BenchmarkId::new("quadratic", n), &ps, |b, ps| {
-            b.iter(|| optri::minmax_length(ps).unwrap())
+            b.iter(|| optri::triangulate(ps, optri::Criterion::MinMaxLength).unwrap())
         });
     }
     group.finish();

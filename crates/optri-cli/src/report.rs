@@ -178,12 +178,7 @@ pub(crate) fn graph_summary(run: &Run, written: &[PathBuf]) -> String {
     let edges = &graph.edges;
     // From the points the graph was computed on (the scaled decimals, if
     // any), divided back exactly and rounded once.
-    let total = optri::kernel::metrics::total_length_scaled(
-        run.read().working_points(),
-        edges,
-        run.read().scale_exponent(),
-        optri::kernel::metrics::Rounding::Nearest,
-    );
+    let total = run.read().total_length(edges);
     // Under a norm the edges were chosen by metric lengths; the total
     // reported stays Euclidean, and says so.
     let metric = &run.outcome.options().metric;

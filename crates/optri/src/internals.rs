@@ -25,6 +25,9 @@ pub mod kernel {
         compare_corner_angles, compare_doubled_area, cross_sign, dot_sign, exact_squared_length,
         on_open_segment, DiamondPosition, DiamondTriangles,
     };
+    pub use crate::kernel::reporting::{
+        area_scaled, length_scaled, over_power_of_ten_rounded, total_length_scaled, Rounding,
+    };
     pub use crate::kernel::squared_length::SquaredLength;
     pub use crate::kernel::symbolic::{compare_equal_lengths_symbolic, height_sign, segment_order};
     pub use crate::kernel::wedge::{

@@ -26,7 +26,7 @@
 //! | 2 | `structures` | [`PointSet`], [`SimplePolygon`], [`Triangulation`] and its [`Domain`], Delaunay adjacency, planar graph |
 //! | 3 | `graphs` | [`delaunay`], [`convex_hull`], [`relative_neighborhood_graph`], [`gabriel_graph`], [`minimum_spanning_tree`] |
 //! | 4 | `polygon_program` | Klincsek's polygon dynamic program over an objective |
-//! | 5 | `criteria` | one module per criterion: [`minmax_length`], [`greedy`], [`min_weight`], [`maxmin_area`] / [`minmax_area`], Delaunay; the polygon solvers |
+//! | 5 | `criteria` | one module per criterion (minmax length, greedy, min weight, the area criteria, edge insertion, the δ-criteria, Delaunay), run through [`triangulate`]; the polygon solvers |
 //! | 6 | `registry` | [`Criterion`], [`GraphKind`], [`triangulate`], [`compare`], [`graph`] |
 //! | 7 | `io` (public, feature `io`) | readers, writers, the one JSON result schema |
 //!
@@ -55,10 +55,7 @@ mod spatial;
 mod structures;
 mod timing;
 
-pub use criteria::area::{maxmin_area, maxmin_area_at_least, minmax_area, MaxMinAreaDecision};
-pub use criteria::greedy::greedy;
-pub use criteria::min_weight::min_weight;
-pub use criteria::minmax_length::minmax_length;
+pub use criteria::area::{maxmin_area_at_least, MaxMinAreaDecision};
 pub use criteria::{
     BoundMeasure, CertifiedBound, CriterionInfo, Diagnostics, InputKind, Optimality, OptionInfo,
     Options, Progress, OPTIONS,

@@ -193,9 +193,13 @@ fn check(points: &[Point], what: &str, tally: &mut Tally) -> Option<GreedyAlgori
     }
     if ps.len() <= 500 {
         // `greedy` is `greedy_triangulation` without the algorithm name.
-        let t = optri::greedy(&ps).unwrap();
+        let t = triangulate(&ps, Criterion::Greedy).unwrap().triangulation;
         t.validate().unwrap();
-        assert_eq!(distinct_edges(&ps, &t), reference, "greedy() on {what}");
+        assert_eq!(
+            distinct_edges(&ps, &t),
+            reference,
+            "triangulate(greedy) on {what}"
+        );
     }
     tally.sets += 1;
     Some(algorithm)

@@ -5,11 +5,9 @@
 //! boundaries, decimal input, and the agreement of certified bounds with
 //! the measures they bound.
 
+use optri::internals::kernel::{area_scaled, length_scaled, total_length_scaled, Rounding};
 use optri::io::{read, InputFormat, ReadOptions, Source, TriangulationReport};
-use optri::kernel::metrics::{
-    angle_deg, area, area_scaled, length, length_scaled, total_length, total_length_scaled,
-    Rounding,
-};
+use optri::kernel::metrics::{angle_deg, area, length, total_length};
 use optri::kernel::Point;
 use optri::{triangulate, Criterion, Measure, PointSet, Triangulation};
 use optri_oracle::measures as oracle;

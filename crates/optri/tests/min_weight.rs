@@ -18,7 +18,7 @@
 //! triangulation within the tolerance in the exhaustive enumeration).
 
 use optri::kernel::Point;
-use optri::{min_weight, triangulate, Criterion, PointSet};
+use optri::{triangulate, Criterion, PointSet};
 use optri_oracle::inputs::{
     convex_by_construction, lattice_points, rounded_circle,
     ConvexShape::{Lens, Parabola},
@@ -130,7 +130,9 @@ fn min_weight_equals_the_exhaustive_optimum_on_small_convex_sets() {
         }
         assert_eq!(optri::convex_hull(&ps).len(), ps.len(), "case {case}");
         let d = ps.points();
-        let t = min_weight(&ps).unwrap();
+        let t = triangulate(&ps, Criterion::MinWeight)
+            .unwrap()
+            .triangulation;
         t.validate().unwrap();
         let mine = distinct_triangles(&ps, &t);
         let (best, optimal) = optimum_by(d, |tris| TotalF64(total_length(d, tris)));
@@ -175,7 +177,9 @@ fn min_weight_equals_the_oracle_dp_and_bounds_the_greedy_triangulation() {
         let (oracle, tris, is_unique) =
             klincsek_unique(d, &polygon, MinWeight, |a, b| a.0 > b.0 * (1.0 + TOLERANCE))
                 .expect("convex polygon");
-        let t = min_weight(&ps).unwrap();
+        let t = triangulate(&ps, Criterion::MinWeight)
+            .unwrap()
+            .triangulation;
         t.validate().unwrap();
         let mine = distinct_triangles(&ps, &t);
         let weight = total_length(d, &mine);
@@ -238,7 +242,7 @@ fn greedy_matches_the_oracle_greedy_on_small_sets() {
             continue;
         };
         let d = ps.points();
-        let t = optri::greedy(&ps).unwrap();
+        let t = triangulate(&ps, Criterion::Greedy).unwrap().triangulation;
         t.validate().unwrap();
         assert_eq!(
             canonical_triangulation(d, &distinct_triangles(&ps, &t)),
@@ -254,7 +258,9 @@ fn greedy_matches_the_oracle_greedy_on_small_sets() {
 fn min_weight_takes_non_convex_input() {
     // A triangle with a point inside has exactly one triangulation.
     let ps = PointSet::new(&[[0.0, 0.0], [4.0, 0.0], [0.0, 4.0], [1.0, 1.0]]).unwrap();
-    let t = min_weight(&ps).unwrap();
+    let t = triangulate(&ps, Criterion::MinWeight)
+        .unwrap()
+        .triangulation;
     t.validate().unwrap();
     assert_eq!(t.triangles().len(), 3);
     let s = triangulate(&ps, Criterion::MinWeight).unwrap();

@@ -4,7 +4,7 @@
 
 use optri::internals::minmax_length_cubic;
 use optri::kernel::{compare_lengths, orient_sign, Point};
-use optri::{minmax_length, Criterion, Diagnostics, PointSet, Triangulation};
+use optri::{Criterion, Diagnostics, PointSet, Triangulation};
 use optri_oracle::inputs::{
     circle_r5_ccw, grid, lattice_points, perturbed_circle, uniform_in_square, uniform_unit_square,
 };
@@ -283,7 +283,9 @@ fn paper_section_2_example_beats_delaunay() {
     // ad; the minmax triangulation uses bc. Rational stand-in: √3 ≈ 1.732.
     let pts = [[-2.0, 0.0], [1.0, 1.732], [1.0, -1.732], [1.9, 0.0]];
     let ps = PointSet::new(&pts).unwrap();
-    let t = minmax_length(&ps).unwrap();
+    let t = optri::triangulate(&ps, Criterion::MinMaxLength)
+        .unwrap()
+        .triangulation;
     t.validate().unwrap();
     let d = optri::delaunay(&ps).unwrap();
     assert_eq!(cmp_seg(longest(&t), longest(&d)), Ordering::Less);
@@ -298,7 +300,9 @@ fn paper_section_5_3_remark_example() {
     let s = 1.7320508075688772;
     let pts = [[0.0, 0.0], [2.0, 0.0], [1.0, s], [1.0, -s + 0.05]];
     let ps = PointSet::new(&pts).unwrap();
-    let t = minmax_length(&ps).unwrap();
+    let t = optri::triangulate(&ps, Criterion::MinMaxLength)
+        .unwrap()
+        .triangulation;
     t.validate().unwrap();
     assert!(t.edges().contains(&[0, 1]));
     check_against_exhaustive(&pts);
@@ -317,7 +321,9 @@ fn duplicates_and_errors() {
         [1.0, 1.0],
     ];
     let ps = PointSet::new(&pts).unwrap();
-    let t = minmax_length(&ps).unwrap();
+    let t = optri::triangulate(&ps, Criterion::MinMaxLength)
+        .unwrap()
+        .triangulation;
     t.validate().unwrap();
     assert_eq!(t.triangles().len(), 2);
     assert!(PointSet::new(&[[0.0, 0.0], [1.0, 1.0], [2.0, 2.0]]).is_err());

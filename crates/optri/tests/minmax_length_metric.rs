@@ -279,7 +279,9 @@ fn euclidean_metric_is_the_euclidean_product() {
     for _ in 0..5 {
         let pts = uniform_unit_square(&mut rng, 200);
         let ps = PointSet::new(&pts).unwrap();
-        let a = optri::minmax_length(&ps).unwrap();
+        let a = optri::triangulate(&ps, optri::Criterion::MinMaxLength)
+            .unwrap()
+            .triangulation;
         let b = solve(&pts, &Metric::euclidean());
         assert_eq!(a.triangles(), b.triangles());
     }

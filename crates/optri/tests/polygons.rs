@@ -26,8 +26,7 @@
 
 use optri::kernel::Point;
 use optri::{
-    maxmin_area, minmax_area, triangulate, Criterion, Domain, Error, Optimality, PointSet,
-    SimplePolygon, UnsupportedReason,
+    triangulate, Criterion, Domain, Error, Optimality, PointSet, SimplePolygon, UnsupportedReason,
 };
 use optri_oracle::polygon as op;
 use optri_oracle::{
@@ -508,8 +507,18 @@ fn area_criteria_on_convex_point_sets_match_the_oracle() {
             };
             with_collinear += (ring.len() > n) as usize;
             for (criterion, t) in [
-                (Criterion::MaxMinArea, maxmin_area(&ps).unwrap()),
-                (Criterion::MinMaxArea, minmax_area(&ps).unwrap()),
+                (
+                    Criterion::MaxMinArea,
+                    triangulate(&ps, Criterion::MaxMinArea)
+                        .unwrap()
+                        .triangulation,
+                ),
+                (
+                    Criterion::MinMaxArea,
+                    triangulate(&ps, Criterion::MinMaxArea)
+                        .unwrap()
+                        .triangulation,
+                ),
             ] {
                 t.validate().unwrap();
                 let s = triangulate(&ps, criterion).unwrap();
@@ -598,7 +607,10 @@ fn area_criteria_on_general_point_sets_are_honest() {
     }
     assert!(cases >= 150 && exact >= 20, "{cases} {exact}");
     let ps = PointSet::new(&[[0.0, 0.0], [4.0, 0.0], [0.0, 4.0], [1.0, 1.0]]).unwrap();
-    assert!(maxmin_area(&ps).is_ok() && minmax_area(&ps).is_ok());
+    assert!(
+        triangulate(&ps, Criterion::MaxMinArea).is_ok()
+            && triangulate(&ps, Criterion::MinMaxArea).is_ok()
+    );
     assert_eq!(
         Criterion::from_name("MAXMIN-AREA").unwrap(),
         Criterion::MaxMinArea

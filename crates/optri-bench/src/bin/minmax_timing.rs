@@ -140,7 +140,11 @@ fn main() {
         "cubic" => {
             for &n in &sizes {
                 let ps = PointSet::new(&convex(n)).unwrap();
-                let (t, q) = secs(|| optri::minmax_length(&ps).unwrap());
+                let (t, q) = secs(|| {
+                    optri::triangulate(&ps, optri::Criterion::MinMaxLength)
+                        .unwrap()
+                        .triangulation
+                });
                 let (r, c) = secs(|| optri::internals::minmax_length_cubic(&ps).unwrap());
                 let le = |t: &optri::Triangulation| {
                     let e = t.longest_edge();

@@ -141,6 +141,18 @@ impl ReadInput {
         self.scaled.as_ref().map_or(0, |s| s.exponent)
     }
 
+    /// The total Euclidean length of `edges` (indices into
+    /// [`Self::working_points`]) in the user's units: the exact sum over the
+    /// points the algorithms ran on, divided back by `10^k` and rounded once.
+    pub fn total_length(&self, edges: &[[u32; 2]]) -> f64 {
+        kernel::reporting::total_length_scaled(
+            self.working_points(),
+            edges,
+            self.scale_exponent(),
+            kernel::reporting::Rounding::Nearest,
+        )
+    }
+
     /// This input with an elevation per point (in the order of
     /// [`Input::points`]), e.g. the third column a front end received.
     /// Elevations are never scaled: they stay the user's values (the

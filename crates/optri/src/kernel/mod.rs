@@ -48,14 +48,23 @@ mod extremes;
 mod length_order;
 pub(crate) mod length_sums;
 pub(crate) mod lune;
-pub mod metrics;
 pub(crate) mod norm;
 pub(crate) mod predicates;
+pub(crate) mod reporting;
 mod rounding;
 pub(crate) mod squared_length;
 pub(crate) mod symbolic;
 mod triangle_measures;
 pub(crate) mod wedge;
+
+/// Measures for reporting: lengths, areas, angles and total lengths, each
+/// the exact value rounded once to the nearest `f64`. They never decide
+/// anything (the predicates above do); they are what a user reads, so a
+/// triangle of positive area never reports area 0. How each is rounded:
+/// the `reporting` module's docs.
+pub mod metrics {
+    pub use super::reporting::{angle_deg, angles_deg, area, length, total_length};
+}
 
 /// A point in the plane, `[x, y]`.
 pub type Point = [f64; 2];

@@ -43,6 +43,7 @@ pub enum Rounding {
     /// The nearest double (ties to the one with an even significand).
     Nearest,
     /// The largest double not above the value (for certified lower bounds).
+    #[cfg_attr(not(any(feature = "io", feature = "internals")), allow(dead_code))]
     Down,
 }
 

@@ -39,9 +39,9 @@
 //! Ties (isosceles triangles, a side parallel to the gradient) go to the
 //! vertex that comes first in the order the corners were given.
 
-#[cfg(any(test, feature = "internals"))]
-use super::metrics::angle_deg;
 use super::predicates::{compare_corner_angles, compare_lengths, dot_sign};
+#[cfg(any(test, feature = "internals"))]
+use super::reporting::angle_deg;
 #[cfg(any(test, feature = "internals"))]
 use super::rounding::{round_ratio, Rounding};
 use super::{Point, UNIT_ROUNDOFF};

@@ -3,7 +3,7 @@
 //! interior), exact validation, and quality measures.
 
 use crate::error::{Error, Result};
-use crate::kernel::metrics::{
+use crate::kernel::reporting::{
     angle_deg, area_scaled, exact_total_length, length_scaled, LengthSum, Rounding,
 };
 use crate::kernel::{

@@ -177,42 +177,6 @@ pub(crate) fn solve_minmax_polygon(
     solve_polygon(polygon, AreaBottleneck::MinMax, options.stop(), phases)
 }
 
-/// A triangulation of `points` (in convex position) maximising the smallest
-/// triangle area, exactly. Polygons: [`crate::triangulate`] with
-/// [`crate::Criterion::MaxMinArea`].
-///
-/// Points not in convex position get the best of four approximations (see
-/// the module table; `optri::triangulate` reports whether it is provably
-/// optimal and a certified bound).
-///
-/// # Errors
-/// [`UnsupportedReason::TooManyPoints`] above 12 000 points in strictly
-/// convex position, or 4000 in convex position with collinear hull points.
-pub fn maxmin_area(points: &PointSet) -> Result<Triangulation> {
-    solve_points(
-        points,
-        AreaBottleneck::MaxMin,
-        &Stop::default(),
-        &mut Vec::new(),
-    )
-    .map(|s| s.triangulation)
-}
-
-/// A triangulation of `points` (in convex position) minimising the largest
-/// triangle area, exactly; see [`maxmin_area`].
-///
-/// # Errors
-/// As [`maxmin_area`].
-pub fn minmax_area(points: &PointSet) -> Result<Triangulation> {
-    solve_points(
-        points,
-        AreaBottleneck::MinMax,
-        &Stop::default(),
-        &mut Vec::new(),
-    )
-    .map(|s| s.triangulation)
-}
-
 fn solved(triangulation: Triangulation, algorithm: &str) -> Solved {
     Solved {
         triangulation,

@@ -176,7 +176,7 @@ pub(crate) fn greedy_triangulation_timed(
 }
 
 /// The greedy triangulation of `points` (see the module docs).
-pub fn greedy(points: &PointSet) -> Result<Triangulation> {
+pub(crate) fn greedy(points: &PointSet) -> Result<Triangulation> {
     greedy_triangulation(points).map(|(t, _)| t)
 }
 

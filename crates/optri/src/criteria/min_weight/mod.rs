@@ -154,19 +154,6 @@ fn out_of_time(seconds: f64) -> String {
 /// certified lower bound.
 pub const MAX_POINTS: usize = 4000;
 
-/// A minimum-weight triangulation of `points` (any point set with three
-/// points not on one line). For a result that is not proven optimal (a
-/// face beyond the exact search's budget) use
-/// [`triangulate`](crate::triangulate) with [`Criterion::MinWeight`](crate::Criterion::MinWeight),
-/// which says so.
-///
-/// # Errors
-/// [`Error::Unsupported`] if all points are collinear.
-pub fn min_weight(points: &PointSet) -> Result<Triangulation> {
-    let mut phases = Vec::new();
-    solve(points, &Options::default(), &mut phases).map(|s| s.triangulation)
-}
-
 /// `min-weight` on a simple polygon ([`crate::triangulate`]): the
 /// polygon program with the total length of the diagonals (the boundary's
 /// length is the same in every triangulation), exact sums of square roots
@@ -427,11 +414,11 @@ pub(crate) struct General {
 /// down where `stats` rounds to nearest).
 #[cfg(feature = "internals")]
 pub(crate) fn certified_weight_below(triangulation: &Triangulation) -> f64 {
-    crate::kernel::metrics::total_length_scaled(
+    crate::kernel::reporting::total_length_scaled(
         triangulation.point_set().input_points(),
         &triangulation.edges(),
         0,
-        crate::kernel::metrics::Rounding::Down,
+        crate::kernel::reporting::Rounding::Down,
     )
 }
 

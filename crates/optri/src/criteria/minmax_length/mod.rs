@@ -470,7 +470,7 @@ fn run(
 ///
 /// # Errors
 /// Propagates failures of the Delaunay construction.
-pub fn minmax_length(points: &PointSet) -> Result<Triangulation> {
+pub(crate) fn minmax_length(points: &PointSet) -> Result<Triangulation> {
     run(points, PRODUCT, &Stop::default(), &mut Vec::new()).map(|(t, _)| t)
 }
 

@@ -24,7 +24,9 @@
 use super::{input_elevations, Arithmetic, Input, ReadInput};
 use crate::criteria::{BoundMeasure, CertifiedBound, Diagnostics, Optimality};
 use crate::error::{Error, Result};
-use crate::kernel::metrics::{area_scaled, over_power_of_ten_rounded, Rounding, Rounding::Nearest};
+use crate::kernel::reporting::{
+    area_scaled, over_power_of_ten_rounded, Rounding, Rounding::Nearest,
+};
 use crate::kernel::Point;
 use crate::registry::{Comparison, GraphKind, Solution};
 use crate::structures::{Domain, PointSet, SimplePolygon, Stats, Triangulation};

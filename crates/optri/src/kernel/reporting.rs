@@ -125,6 +125,7 @@ pub fn angles_deg(a: Point, b: Point, c: Point) -> [f64; 3] {
 
 /// `v / 10^k` for a finite `v ≥ 0`, rounded once as `mode` says (a lower
 /// bound in the user's units stays a lower bound with [`Rounding::Down`]).
+#[cfg_attr(not(any(feature = "io", feature = "internals")), allow(dead_code))] // bounds in the JSON
 pub fn over_power_of_ten_rounded(v: f64, k: i32, mode: Rounding) -> f64 {
     if !(v.is_finite() && v > 0.0) {
         return v / 10f64.powi(k);
