@@ -108,6 +108,36 @@ impl ConstrainedDelaunay {
 }
 
 /// The pairs `[min, max]` of `constraints`, sorted, without repeats.
+/// The first of `edges` (in their order) that crosses an earlier one or
+/// passes through a point, when each is added in turn as a constraint to
+/// the Delaunay triangulation of `points` (distinct, not all collinear);
+/// `None` when all of them fit. spade decides both by its exact
+/// orientation tests; the work is expected O(n log n) plus the triangulation
+/// edges the constraints cross, where a sweep over x-ranges is quadratic on
+/// polygons whose edges share x-ranges (a star with alternating radii).
+///
+/// # Errors
+/// [`Error::Internal`] if spade fails or drops a point.
+pub fn first_unfit_constraint(points: &[Point], edges: &[[u32; 2]]) -> Result<Option<usize>> {
+    let mut cdt: ConstrainedDelaunayTriangulation<Vertex> =
+        ConstrainedDelaunayTriangulation::with_capacity(
+            points.len(),
+            3 * points.len(),
+            2 * points.len(),
+        );
+    let handles = insert_in_brio_order(&mut cdt, points)?;
+    for (i, &[u, v]) in edges.iter().enumerate() {
+        if cdt
+            .try_add_constraint(handles[u as usize], handles[v as usize])
+            .len()
+            != 1
+        {
+            return Ok(Some(i));
+        }
+    }
+    Ok(None)
+}
+
 fn sorted_pairs(constraints: &[[u32; 2]]) -> Vec<[u32; 2]> {
     let mut sorted: Vec<[u32; 2]> = constraints
         .iter()

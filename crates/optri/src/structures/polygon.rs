@@ -29,7 +29,10 @@ impl SimplePolygon {
     ///
     /// Simplicity is checked exactly on every pair of edges whose x-ranges
     /// overlap (a sweep over edges sorted by their smallest x): O(n log n + k)
-    /// for k such pairs, O(n²) in the worst case.
+    /// for k such pairs. When k would exceed 16n, the edges are instead added
+    /// one by one as constraints of a Delaunay triangulation (expected
+    /// O(n log n) plus the triangulation edges they cross), which finds the
+    /// first edge that meets an earlier one.
     ///
     /// # Errors
     /// The coordinate errors of [`PointSet::new`], and
@@ -95,6 +98,58 @@ impl SimplePolygon {
         })
     }
 
+    /// When the sweep below would test more than a linear number of edge
+    /// pairs (edges sharing x-ranges, as in a star with alternating radii):
+    /// the ring's edges added one by one as constraints of a Delaunay
+    /// triangulation, which finds the first edge that crosses an earlier one
+    /// or passes through a vertex in expected O(n log n); that edge is then
+    /// named with the smallest other edge it meets (one O(n) scan). `None`
+    /// when the sweep is cheap or the points are not a valid point set (then
+    /// the sweep decides).
+    fn first_crossing_by_constraints(ring: &[Point]) -> Option<Option<PolygonProblem>> {
+        const SWEEP_PAIRS_PER_EDGE: usize = 16;
+        let n = ring.len();
+        let seg = |i: usize| (ring[i], ring[(i + 1) % n]);
+        let low = |i: usize| seg(i).0[0].min(seg(i).1[0]);
+        let high = |i: usize| seg(i).0[0].max(seg(i).1[0]);
+        // The number of pairs with overlapping x-ranges, counted up to the
+        // budget in O(n log n): for each edge by its low end, the edges whose
+        // low end lies in [low, high].
+        let mut lows: Vec<f64> = (0..n).map(low).collect();
+        lows.sort_by(f64::total_cmp);
+        let budget = SWEEP_PAIRS_PER_EDGE * n + 4096;
+        let mut pairs = 0usize;
+        for i in 0..n {
+            let from = lows.partition_point(|&x| x < low(i));
+            let to = lows.partition_point(|&x| x <= high(i));
+            pairs += to - from;
+            if pairs > budget {
+                break;
+            }
+        }
+        if pairs <= budget {
+            return None;
+        }
+        let edges: Vec<[u32; 2]> = (0..n).map(|i| [i as u32, ((i + 1) % n) as u32]).collect();
+        let first =
+            crate::structures::constrained_delaunay::first_unfit_constraint(ring, &edges).ok()?;
+        let Some(i) = first else {
+            return Some(None);
+        };
+        let (a, b) = seg(i);
+        let other = (0..n).find(|&j| {
+            let adjacent = j == i || (i + 1) % n == j || (j + 1) % n == i;
+            !adjacent && {
+                let (c, d) = seg(j);
+                segments_intersect(a, b, c, d)
+            }
+        })?;
+        Some(Some(PolygonProblem::EdgesIntersect {
+            first: [i.min(other), (i.min(other) + 1) % n],
+            second: [i.max(other), (i.max(other) + 1) % n],
+        }))
+    }
+
     /// The first pair of edges that meet improperly, or `None` if simple.
     fn first_problem(ring: &[Point]) -> Option<PolygonProblem> {
         let n = ring.len();
@@ -113,6 +168,9 @@ impl SimplePolygon {
                     second: edge((i + 1) % n),
                 });
             }
+        }
+        if let Some(problem) = Self::first_crossing_by_constraints(ring) {
+            return problem;
         }
         let mut order: Vec<usize> = (0..n).collect();
         let low = |i: usize| seg(i).0[0].min(seg(i).1[0]);
@@ -335,5 +393,66 @@ mod tests {
         );
         // Straight vertices are fine.
         assert!(SimplePolygon::new(&[[0.0, 0.0], [1.0, 0.0], [2.0, 0.0], [1.0, 1.0]]).is_ok());
+    }
+
+    /// Stars with alternating radii share x-ranges between most edge pairs,
+    /// so the check goes through the constrained triangulation: it agrees
+    /// with the test of every pair on simple stars, stars with a crossing,
+    /// a vertex moved onto another edge and a spike through several edges,
+    /// and names two non-adjacent edges that meet.
+    #[test]
+    fn crowded_stars_are_checked_by_constraints() {
+        let n = 400;
+        let star: Vec<Point> = (0..n)
+            .map(|k| {
+                let a = std::f64::consts::TAU * k as f64 / n as f64;
+                let r = if k % 2 == 0 { 1.0 } else { 0.5 };
+                [r * a.cos(), r * a.sin()]
+            })
+            .collect();
+        assert!(SimplePolygon::first_crossing_by_constraints(&star).is_some());
+        let meet = |ring: &[Point], i: usize, j: usize| {
+            let m = ring.len();
+            segments_intersect(ring[i], ring[(i + 1) % m], ring[j], ring[(j + 1) % m])
+        };
+        let all_pairs_simple = |ring: &[Point]| {
+            let m = ring.len();
+            (0..m).all(|i| (i + 2..m).all(|j| (j + 1) % m == i || !meet(ring, i, j)))
+        };
+        let mut variants = vec![star.clone()];
+        let mut crossing = star.clone();
+        crossing.swap(10, 12); // two outer vertices exchanged: edges cross
+        variants.push(crossing);
+        let mut touching = star.clone();
+        // Vertex 101 (inner) moved onto the midpoint of edge 200-201.
+        touching[101] = [
+            (star[200][0] + star[201][0]) / 2.0,
+            (star[200][1] + star[201][1]) / 2.0,
+        ];
+        variants.push(touching);
+        let mut spike = star.clone();
+        spike[51] = [-3.0 * star[51][0], -3.0 * star[51][1]]; // across the star
+        variants.push(spike);
+        // The exchange and the touching vertex are not simple; the spike is
+        // decided by the test of every pair like the rest.
+        assert!(all_pairs_simple(&variants[0]));
+        assert!(!all_pairs_simple(&variants[1]) && !all_pairs_simple(&variants[2]));
+        for ring in &variants {
+            let simple = all_pairs_simple(ring);
+            match SimplePolygon::new(ring) {
+                Ok(_) => assert!(simple),
+                Err(Error::InvalidPolygon(PolygonProblem::EdgesIntersect { first, second })) => {
+                    assert!(!simple);
+                    let m = ring.len();
+                    assert_eq!(
+                        [first[1], second[1]],
+                        [(first[0] + 1) % m, (second[0] + 1) % m]
+                    );
+                    assert!(first[0] < second[0] && meet(ring, first[0], second[0]));
+                    assert!((second[0] + 1) % m != first[0] && first[1] != second[0]);
+                }
+                Err(e) => panic!("unexpected {e}"),
+            }
+        }
     }
 }

@@ -49,8 +49,9 @@ pub(crate) fn diamond_candidates(pts: &[Point]) -> Vec<[u32; 2]> {
 ///
 /// # Errors
 /// [`crate::Error::Interrupted`] when `stop` says so (read every 64
-/// points: on points in nearly convex position a point has Θ(n)
-/// candidates).
+/// points, and inside a point's search at every ring and every 64 exact
+/// tests: on points in nearly convex position a point has Θ(n) candidates
+/// whose diamonds each span Θ(n) grid cells).
 pub(crate) fn diamond_filter(
     pts: &[Point],
     grid: &PointCells,
@@ -73,7 +74,7 @@ pub(crate) fn diamond_filter(
                     return out;
                 }
                 for &p in chunk {
-                    search_from(pts, grid, bbox, &rings, p, scratch, &mut out);
+                    search_from(pts, grid, bbox, &rings, p, stop, scratch, &mut out);
                 }
                 out
             })
@@ -152,13 +153,16 @@ thread_local! {
 /// pair whose direction is dead for the killers of the previous stop test
 /// fails the exact test (its length is at least that ring's radius), so it
 /// is skipped without changing the result. Angles are computed only for
-/// the points a test or a killer needs.
+/// the points a test or a killer needs. A search that `stop` ends leaves
+/// `out` incomplete (the filter then fails).
+#[allow(clippy::too_many_arguments)]
 fn search_from(
     pts: &[Point],
     grid: &PointCells,
     bbox: [f64; 4],
     rings: &Rings,
     p: u32,
+    stop: &Stop,
     scratch: &mut SearchScratch,
     out: &mut Vec<[u32; 2]>,
 ) {
@@ -177,8 +181,12 @@ fn search_from(
     killers.clear();
     let mut read: Option<CellBlock> = None;
     let mut last = 0;
-    for k in 0..count {
+    let mut tests = 0u32;
+    'rings: for k in 0..count {
         last = k;
+        if stop.reason().is_some() {
+            break;
+        }
         let radius = rings.radius[k];
         // Every point closer than `radius` lies in this block. Points
         // farther behind than `BEHIND_REACH·radius` are neither ahead nor
@@ -204,9 +212,14 @@ fn search_from(
             let mut angle = f64::NAN;
             if ahead(dx, dy) {
                 angle = angle_of(dx, dy);
-                if direction_alive(angle, killers) && diamond_survives(a, pts[q as usize], d2, grid)
-                {
-                    out.push([p.min(q), p.max(q)]);
+                if direction_alive(angle, killers) {
+                    tests += 1;
+                    if tests.is_multiple_of(64) && stop.reason().is_some() {
+                        break 'rings;
+                    }
+                    if diamond_survives(a, pts[q as usize], d2, grid) {
+                        out.push([p.min(q), p.max(q)]);
+                    }
                 }
             }
             // A point more than α' behind the half-plane ahead (within
