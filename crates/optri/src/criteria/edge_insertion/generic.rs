@@ -18,19 +18,21 @@
 //! triangles of equal value (coplanar lifted triangles for slope) may admit
 //! an improving insertion only from the other one's anchor.
 //!
-//! Optionally an n × n bit matrix of anchor–candidate pairs that failed
-//! (the O(n²)-space structure of the weak-anchor algorithm) skips pairs
-//! that failed since the worst value last changed. Whether such a pair can
+//! Optionally the set of anchor–candidate pairs that failed (the weak-anchor
+//! algorithm's n × n table, kept as a hash set so that its memory follows
+//! the attempts made: n² bytes are 10 GB at 10⁵ points) skips pairs that
+//! failed since the worst value last changed. Whether such a pair can
 //! never succeed later is the paper's lemma, not checked here; so a pass
-//! that finds nothing while it skipped pairs clears the matrix and runs
+//! that finds nothing while it skipped pairs clears the set and runs
 //! again, and the loop stops only after a full pass without skips — the
-//! same stopping condition as without the matrix.
+//! same stopping condition as without the set.
 
 use super::insertion::{Badness, Mesh};
 use crate::error::Result;
 use crate::interrupt::Stop;
 use crate::kernel::properly_cross;
 use std::cmp::Ordering;
+use std::collections::HashSet;
 
 /// Counters of one run.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -58,7 +60,7 @@ pub(crate) fn improve(
 ) -> Result<Steps> {
     let n = badness.points.len();
     let mut steps = Steps::default();
-    let mut tried = vec![false; if remember_failures { n * n } else { 0 }];
+    let mut tried: HashSet<u64> = HashSet::new();
     let mut worst_value: Option<[u32; 3]> = None;
     let mut skipped = false;
     let no_constraint = |_: u32, _: u32| false;
@@ -74,7 +76,7 @@ pub(crate) fn improve(
                 None => true,
             };
             if changed {
-                tried.fill(false);
+                tried.clear();
                 worst_value = Some(representative);
             }
         }
@@ -91,8 +93,8 @@ pub(crate) fn improve(
                 {
                     continue;
                 }
-                let pair = a as usize * n + v as usize;
-                if remember_failures && tried[pair] {
+                let pair = (u64::from(a) << 32) | u64::from(v);
+                if remember_failures && tried.contains(&pair) {
                     skipped = true;
                     continue;
                 }
@@ -109,12 +111,12 @@ pub(crate) fn improve(
                     continue 'improve;
                 }
                 if remember_failures {
-                    tried[pair] = true;
+                    tried.insert(pair);
                 }
             }
         }
         if skipped {
-            tried.fill(false);
+            tried.clear();
             skipped = false;
             continue;
         }

@@ -17,7 +17,7 @@
 //!
 //! | input | algorithm | time |
 //! |---|---|---|
-//! | point set | Delaunay, then the edge-insertion loop (`generic`): anchors of all tied worst triangles, sides of each insertion retriangulated by the lexicographic-bottleneck polygon program (`insertion`), accepted when the decreasing vector of badness values decreases; an n × n matrix of failed anchor–candidate pairs, cleared when the worst value changes, and a final pass without it | no polynomial bound claimed (see below) |
+//! | point set | Delaunay, then the edge-insertion loop (`generic`): anchors of all tied worst triangles, sides of each insertion retriangulated by the lexicographic-bottleneck polygon program (`insertion`), accepted when the decreasing vector of badness values decreases; a set of failed anchor–candidate pairs, cleared when the worst value changes, and a final pass without it | no polynomial bound claimed (see below) |
 //! | simple polygon | the polygon program with the bottleneck triangle objective (every measure here is decomposable) | O(n³) |
 //!
 //! # What is and is not implemented
