@@ -349,7 +349,7 @@ function panelSvg(result) {
   const svg = el("svg", { viewBox: "0 0 1000 1000", class: "panel-svg", "data-criterion": result.criterion });
   const corners = (t) => t.map((i) => map(c[i]).map((v) => v.toFixed(2)).join(",")).join(" ");
   const tris = el("g", { class: "triangles" }, svg);
-  for (const t of result.triangles) el("polygon", { class: "tri", points: corners(t) }, tris);
+  for (const t of result.triangles) el("polygon", { class: "tri", points: corners(t), "data-triangle": t.join(" ") }, tris);
   const s = result.stats;
   el("polygon", { class: "largest", points: corners(s.largest_triangle), "data-triangle": s.largest_triangle.join(" ") }, svg);
   el("polygon", { class: "smallest", points: corners(s.smallest_triangle), "data-triangle": s.smallest_triangle.join(" ") }, svg);
@@ -520,8 +520,10 @@ function graphPanel(kind, doc) {
   const c = doc.coordinates, map = projection(c);
   const svg = el("svg", { viewBox: "0 0 1000 1000", class: "graph-svg", "data-kind": kind });
   const edges = el("g", { class: "edges" }, svg);
-  for (const [p, q] of doc.edges.map((e) => e.map((i) => map(c[i])))) {
-    el("line", { class: "edge", x1: p[0].toFixed(2), y1: p[1].toFixed(2), x2: q[0].toFixed(2), y2: q[1].toFixed(2) }, edges);
+  for (const [a, b] of doc.edges) {
+    const [p, q] = [map(c[a]), map(c[b])];
+    el("line", { class: "edge", x1: p[0].toFixed(2), y1: p[1].toFixed(2), x2: q[0].toFixed(2), y2: q[1].toFixed(2),
+      "data-edge": a + " " + b }, edges);
   }
   drawPoints(svg, c, map);
   const description = graphEntry(kind)?.description || "";
