@@ -426,6 +426,26 @@ def test_a_link_restores_the_view_and_draws_what_the_api_answers(server, browser
     page.close()
 
 
+def test_a_link_restores_a_polygon_with_elevations(server, browser):
+    # A non-convex ring (an L), each point with an elevation.
+    ring = [[0, 0, 1], [6, 0, 2.5], [6, 2, 3], [2, 2, 0.1], [2, 5, -4], [0, 5, 7]]
+    page = browser.new_page()
+    posts = record_posts(page)
+    page.goto(server + link(["minmax-slope", "delaunay"], ring, poly=1))
+    page.wait_for_selector("body[data-ready=yes]")
+    settle(page)
+    assert page.locator("#polygon").is_checked()
+    expect(page.locator("#status")).to_have_text("6 points with elevations (polygon ring)")
+    bodies = {b["criterion"]: b for path, b in posts if path == "api/triangulate"}
+    for name in ["delaunay", "minmax-slope"]:
+        assert bodies[name] == {"points": ring, "criterion": name, "polygon": True}
+        doc = api(server, "/api/triangulate", bodies[name])
+        assert doc["domain"] == "polygon" and doc["elevations"] == [p[2] for p in ring]
+        assert drawn(page, name) == sorted(tuple(sorted(t)) for t in doc["triangles"])
+        assert len(doc["triangles"]) == len(ring) - 2
+    page.close()
+
+
 def test_edits_rewrite_the_link_in_place_and_the_link_reproduces_them(page, browser):
     set_criteria(page, {"delaunay", "minmax-length"})
     history = page.evaluate("history.length")
