@@ -258,7 +258,8 @@ async function triangulate(criterion, points, polygon, signal) {
 // A proximity graph's answer: its graph document, or { error, status }.
 async function requestGraph(kind, points, signal) {
   const answer = await post("/api/graph", { points, kind, ...requestOptions(graphEntry(kind)) }, signal);
-  if (answer.aborted || answer.status === 200) return answer.aborted ? answer : answer.value;
+  if (answer.aborted) return answer;
+  if (answer.status === 200) return answer.value;
   return { kind, error: (answer.status ? answer.status + ": " : "") + answer.value.error, status: answer.status };
 }
 
