@@ -5,11 +5,17 @@
 // files parsed by the library's readers (POST /api/read). The page only
 // draws. The criteria are requested side by side, so a fast one is drawn as
 // soon as it answers and a slow one (stopped by the server's time limit)
-// reports itself without holding up the others.
+// reports itself without holding up the others. The view (points, criteria,
+// options) lives in the URL's fragment, so a link reproduces it.
 const SVG_NS = "http://www.w3.org/2000/svg";
 const state = {
   points: [],          // [[x, y], ...] or, with elevations, [[x, y, z], ...] (world, y up)
   polygon: false,      // send the points as a simple polygon's ring
+  metric: "euclidean", // for the criteria and graphs that take one: euclidean, l1, linf or lp:P
+  timeLimit: null,     // seconds each computation may take (null: the server's limit)
+  graph: "",           // the proximity graph shown ("" for none)
+  listing: { criteria: [], graphs: [] },  // the registry listing (GET /api/criteria)
+  maxLp: 64,           // the largest Lp exponent the server takes (read from the listing)
   view: { x0: 0, y0: 0, size: 1000 },  // world square shown in the editor
   document: null,      // the last results, as a comparison document
   documentText: "",
@@ -181,6 +187,7 @@ function checkedCriteria() {
 let timer = null;
 function changed(refit) {
   if (refit) fitView();
+  showLinkError("");
   // Tests (and the curious) can wait for data-state="done".
   document.body.dataset.state = "pending";
   drawEditor();
@@ -193,50 +200,79 @@ function changed(refit) {
 const BUSY_RETRIES = 10;
 const sleep = (ms) => new Promise((resolve) => setTimeout(resolve, ms));
 
-// One criterion's answer: { result } (its triangulation document, or
-// { criterion, error, status } for a refusal, a stop or a failure), or
-// { inputError } when the input itself is refused (the same for every
-// criterion: too few points, collinear, a bad request), or { aborted }.
-async function triangulate(criterion, points, polygon, signal) {
+// A POST of the API, asked again while the server is busy: { status, value }
+// (status 0: the server cannot be reached), or { aborted }.
+async function post(path, body, signal) {
   for (let attempt = 0; ; attempt++) {
     let response, text;
     try {
-      response = await fetch("/api/triangulate", {
-        method: "POST", headers: { "Content-Type": "application/json" }, signal,
-        body: JSON.stringify({ points, criterion, polygon }),
+      response = await fetch(path, {
+        method: "POST", headers: { "Content-Type": "application/json" }, signal, body: JSON.stringify(body),
       });
       text = await response.text();
     } catch (e) {
       if (e.name === "AbortError") return { aborted: true };
-      return { result: { criterion, error: "cannot reach the optri server: " + e.message, status: 0 } };
+      return { status: 0, value: { error: "cannot reach the optri server: " + e.message } };
     }
     let value;
     try { value = JSON.parse(text); } catch (_) { value = { error: text }; }
-    if (response.ok) return { result: value };
     const retry = Number(response.headers.get("Retry-After"));
     if (response.status === 503 && retry > 0 && attempt < BUSY_RETRIES) {
       await sleep(retry * 1000);
       if (signal.aborted) return { aborted: true };
       continue;
     }
-    const message = value.error || response.statusText;
-    // A criterion's own refusal names it (422), a stop (503) or a failure
-    // (500) concerns this criterion's run; anything else the input.
-    if (value.criterion || response.status === 503 || response.status === 500) {
-      return { result: { criterion, error: message, status: response.status } };
-    }
-    return { inputError: response.status + ": " + message };
+    if (!response.ok && !value.error) value.error = response.statusText;
+    return { status: response.status, value };
   }
+}
+
+// The options a request carries: the metric where the listing says the
+// criterion or graph reads one (any other is refused by the server), and
+// the time limit the page sets.
+function requestOptions(entry) {
+  const options = {};
+  if (takesMetric(entry) && state.metric !== "euclidean") options.metric = state.metric;
+  if (state.timeLimit !== null) options.time_limit = Math.min(state.timeLimit, state.limits.time_limit_s || Infinity);
+  return Object.keys(options).length ? { options } : {};
+}
+
+// One criterion's answer: { result } (its triangulation document, or
+// { criterion, error, status } for a refusal, a stop or a failure), or
+// { inputError } when the input itself is refused (the same for every
+// criterion: too few points, collinear, a bad request), or { aborted }.
+async function triangulate(criterion, points, polygon, signal) {
+  const answer = await post("/api/triangulate",
+    { points, criterion, polygon, ...requestOptions(criterionEntry(criterion)) }, signal);
+  if (answer.aborted) return answer;
+  const { status, value } = answer;
+  if (status === 200) return { result: value };
+  // A criterion's own refusal names it (422), a stop (503) or a failure
+  // (500) concerns this criterion's run; anything else the input.
+  if (value.criterion || status === 503 || status === 500 || status === 0) {
+    return { result: { criterion, error: value.error, status } };
+  }
+  return { inputError: status + ": " + value.error };
+}
+
+// A proximity graph's answer: its graph document, or { error, status }.
+async function requestGraph(kind, points, signal) {
+  const answer = await post("/api/graph", { points, kind, ...requestOptions(graphEntry(kind)) }, signal);
+  if (answer.aborted) return answer;
+  if (answer.status === 200) return answer.value;
+  return { kind, error: (answer.status ? answer.status + ": " : "") + answer.value.error, status: answer.status };
 }
 
 async function compute() {
   const id = ++state.request;
   if (state.abort) state.abort.abort();
   const criteria = checkedCriteria();
-  if (state.points.length === 0 || criteria.length === 0) {
+  writeLocation();
+  if (state.points.length === 0 || (criteria.length === 0 && !state.graph)) {
     state.abort = null;
     state.document = null;
     $("panels").replaceChildren();
+    $("graph-view").replaceChildren();
     $("stats").hidden = true;
     showError("");
     document.body.dataset.state = "done";
@@ -245,10 +281,15 @@ async function compute() {
   const abort = new AbortController();
   state.abort = abort;
   document.body.dataset.state = "busy";
-  const { points, polygon } = state;
+  const { points, polygon, graph } = state;
   // Every panel appears at once, busy, and is replaced by its result.
-  const panels = criteria.map(busyPanel);
+  const panels = criteria.map((name) => busyPanel(name, { criterion: name }));
   $("panels").replaceChildren(...panels);
+  // The proximity graph is asked for beside the criteria.
+  $("graph-view").replaceChildren(...(graph ? [busyPanel(graph + " graph", { graph })] : []));
+  const graphJob = graph ? requestGraph(graph, points, abort.signal).then((answer) => {
+    if (!answer.aborted && id === state.request) $("graph-view").replaceChildren(graphPanel(graph, answer));
+  }) : null;
   $("stats").hidden = true;
   state.document = null;
   const results = criteria.map(() => null);
@@ -274,10 +315,11 @@ async function compute() {
       drawTable(results.filter((r) => r !== null));
     }
   };
-  await Promise.all(Array.from({ length: parallel }, worker));
+  await Promise.all([...Array.from({ length: parallel }, worker), graphJob]);
   if (id !== state.request) return;
   if (inputError !== null) {
     $("panels").replaceChildren();
+    $("graph-view").replaceChildren();
     $("stats").hidden = true;
     showError(inputError);
   } else {
@@ -304,21 +346,30 @@ function bounds(coords) {
 // One panel's picture: every triangle, the smallest and largest triangles
 // and the longest edge (the indices the stats name), and the points.
 function panelSvg(result) {
-  const c = result.coordinates, b = bounds(c);
-  const map = ([x, y]) => [(x - b.x0) / b.size * 1000, 1000 - (y - b.y0) / b.size * 1000];
+  const c = result.coordinates, map = projection(c);
   const svg = el("svg", { viewBox: "0 0 1000 1000", class: "panel-svg", "data-criterion": result.criterion });
   const corners = (t) => t.map((i) => map(c[i]).map((v) => v.toFixed(2)).join(",")).join(" ");
   const tris = el("g", { class: "triangles" }, svg);
-  for (const t of result.triangles) el("polygon", { class: "tri", points: corners(t) }, tris);
+  for (const t of result.triangles) el("polygon", { class: "tri", points: corners(t), "data-triangle": t.join(" ") }, tris);
   const s = result.stats;
   el("polygon", { class: "largest", points: corners(s.largest_triangle), "data-triangle": s.largest_triangle.join(" ") }, svg);
   el("polygon", { class: "smallest", points: corners(s.smallest_triangle), "data-triangle": s.smallest_triangle.join(" ") }, svg);
   const [p, q] = s.longest_edge.map((i) => map(c[i]));
   el("line", { class: "longest", x1: p[0], y1: p[1], x2: q[0], y2: q[1], "data-edge": s.longest_edge.join(" ") }, svg);
-  const r = Math.max(3, Math.min(9, 60 / Math.sqrt(c.length)));
-  const pts = el("g", {}, svg);
-  for (const pt of c) { const [x, y] = map(pt); el("circle", { class: "pt", cx: x.toFixed(2), cy: y.toFixed(2), r }, pts); }
+  drawPoints(svg, c, map);
   return svg;
+}
+
+// World coordinates (y up) to a panel's 1000 x 1000 box (y down), framing `coords`.
+function projection(coords) {
+  const b = bounds(coords);
+  return ([x, y]) => [(x - b.x0) / b.size * 1000, 1000 - (y - b.y0) / b.size * 1000];
+}
+
+function drawPoints(svg, coords, map) {
+  const r = Math.max(3, Math.min(9, 60 / Math.sqrt(coords.length)));
+  const pts = el("g", {}, svg);
+  for (const pt of coords) { const [x, y] = map(pt); el("circle", { class: "pt", cx: x.toFixed(2), cy: y.toFixed(2), r }, pts); }
 }
 
 // The quality measures come from the registry listing (its "measures":
@@ -336,13 +387,14 @@ function panelHead(criterion, badge, className, title) {
   return h;
 }
 
-// A criterion's panel while its request runs.
-function busyPanel(criterion) {
+// A criterion's (or the graph's) panel while its request runs; `data` names
+// it for the page's tests.
+function busyPanel(title, data) {
   const panel = document.createElement("div");
   panel.className = "panel busy";
-  panel.dataset.criterion = criterion;
+  Object.assign(panel.dataset, data);
   panel.dataset.state = "busy";
-  panel.append(panelHead(criterion, "computing…", "badge"),
+  panel.append(panelHead(title, "computing…", "badge"),
     Object.assign(document.createElement("div"), { className: "spinner", textContent: "computing" }));
   return panel;
 }
@@ -359,11 +411,125 @@ function resultPanel(r) {
     panel.dataset.state = stopped ? "stopped" : "refused";
     panel.append(panelHead(r.criterion, stopped ? "stopped" : r.status === 422 ? "refused" : "failed", "badge approx"),
       Object.assign(document.createElement("p"), { className: "refused", textContent: r.error }));
+    if (criterionEntry(r.criterion)?.needs_elevations && !hasElevations()) {
+      panel.append(Object.assign(document.createElement("p"), { className: "hint", textContent: ELEVATIONS_HINT }));
+    }
   } else {
     panel.dataset.state = "done";
     panel.append(panelHead(r.criterion, r.exact ? "exact" : r.optimality, "badge" + (r.exact ? "" : " approx"),
-      r.optimality_bound || r.algorithm), panelSvg(r));
+      r.optimality_bound || r.algorithm), panelSvg(r), resultFacts(r));
   }
+  return panel;
+}
+
+// ---- what a result guarantees ---------------------------------------------
+// The document does not name the measure its criterion optimises, so the
+// page knows it by name. Most are in `stats` (each the exact value rounded
+// once); the others, and the differences of the δ criteria, the page
+// computes in floating point from the document's coordinates, marked "≈".
+const TRIANGLE_OBJECTIVES = {
+  "delaunay": ["min angle°", (r) => r.stats.min_angle_deg],
+  "minmax-length": ["max edge", (r) => (r.metric ? r.metric.max_edge_length : r.stats.max_edge_length)],
+  "min-weight": ["total length", (r) => r.stats.total_edge_length],
+  "maxmin-area": ["min area", (r) => r.stats.min_area],
+  "minmax-area": ["max area", (r) => r.stats.max_area],
+  "minmax-angle": ["max angle°", (r) => r.stats.max_angle_deg],
+  "maxmin-height": ["min height", (r) => triangleExtremes(r).minHeight, true],
+  "minmax-eccentricity": ["max eccentricity", (r) => triangleExtremes(r).maxEccentricity, true],
+  "minmax-slope": ["max slope", (r) => triangleExtremes(r).maxSlope, true],
+  "minmax-delta-area": ["max − min area", (r) => r.stats.max_area - r.stats.min_area, true],
+  "minmax-delta-angle": ["max − min angle°", (r) => r.stats.max_angle_deg - r.stats.min_angle_deg, true],
+  "minmax-delta-length": ["longest − shortest edge", (r) => r.stats.max_edge_length - triangleExtremes(r).minEdge, true],
+};
+
+// The smallest height, the largest eccentricity (distance from the
+// circumcentre to the closed triangle: at an obtuse corner o between p and
+// q, |pq|·|op·oq| / (2·|cross|), else 0) and the largest slope (gradient of
+// the linear interpolant of the elevations) over the triangles, and the
+// shortest edge: the measures of Bern et al. (1993), in floating point.
+function triangleExtremes(r) {
+  const c = r.coordinates, z = r.elevations, length = (a, b) => Math.hypot(c[a][0] - c[b][0], c[a][1] - c[b][1]);
+  let minHeight = Infinity, maxEccentricity = 0, maxSlope = 0, minEdge = Infinity;
+  for (const [a, b] of r.edges) minEdge = Math.min(minEdge, length(a, b));
+  for (const [i, j, k] of r.triangles) {
+    const ux = c[j][0] - c[i][0], uy = c[j][1] - c[i][1], vx = c[k][0] - c[i][0], vy = c[k][1] - c[i][1];
+    const cross = Math.abs(ux * vy - uy * vx);
+    minHeight = Math.min(minHeight, cross / Math.max(length(j, k), length(i, k), length(i, j)));
+    for (const [o, p, q] of [[i, j, k], [j, k, i], [k, i, j]]) {
+      const dot = (c[p][0] - c[o][0]) * (c[q][0] - c[o][0]) + (c[p][1] - c[o][1]) * (c[q][1] - c[o][1]);
+      if (dot < 0) maxEccentricity = Math.max(maxEccentricity, length(p, q) * -dot / (2 * cross));
+    }
+    if (z) {
+      const uz = z[j] - z[i], vz = z[k] - z[i];
+      maxSlope = Math.max(maxSlope, Math.hypot(uy * vz - uz * vy, uz * vx - ux * vz) / cross);
+    }
+  }
+  return { minHeight, maxEccentricity, maxSlope, minEdge };
+}
+
+// A certified bound in words (docs/json-schema.md, `bound`).
+function boundText(bound) {
+  const relation = bound.kind === "upper" ? "≤" : "≥";
+  if (bound.measure === "area") {
+    const which = bound.kind === "upper" ? "smallest" : "largest";
+    return `the optimum's ${which} area ${relation} ${fmt(bound.area)} (triangle ${bound.triangle.join(" ")})`;
+  }
+  if (bound.measure === "total edge length") {
+    return `the optimal total length ${relation} ${fmt(bound.weight)}; this result is within ${fmt(bound.gap)} of it`;
+  }
+  const { kind, measure, ...rest } = bound;
+  return `${kind} bound on the ${measure}: ${JSON.stringify(rest)}`;
+}
+
+// Under a result's drawing: its guarantee, its certified bound when not
+// exact, and the value of the measure its criterion optimises.
+function resultFacts(r) {
+  const list = document.createElement("dl");
+  list.className = "facts";
+  const add = (term, text, fact, title) => {
+    const dd = Object.assign(document.createElement("dd"), { textContent: text, title: title || "" });
+    dd.dataset.fact = fact;
+    list.append(Object.assign(document.createElement("dt"), { textContent: term }), dd);
+  };
+  add("exact", r.exact ? "yes: provably optimal" : "no: " + r.optimality, "exact");
+  if (state.metric !== "euclidean" && !takesMetric(criterionEntry(r.criterion))) {
+    add("metric", "Euclidean (takes no metric)", "metric");
+  }
+  if (!r.exact && r.optimality_bound) add("guarantee", r.optimality_bound, "guarantee");
+  if (r.bound) add("bound", boundText(r.bound), "bound");
+  const objective = TRIANGLE_OBJECTIVES[r.criterion];
+  if (objective) {
+    const [label, value, computed] = objective;
+    add(label + (r.metric ? ` (${r.metric.name})` : ""), (computed ? "≈ " : "") + fmt(value(r)), "measure",
+      computed ? "computed by the page in floating point from the document" : "from the document");
+  }
+  return list;
+}
+
+// The proximity graph's panel: its edges and points, or why there are none.
+function graphPanel(kind, doc) {
+  const panel = document.createElement("div");
+  panel.className = "panel graph-panel";
+  panel.dataset.graph = kind;
+  if (doc.error) {
+    panel.dataset.state = "refused";
+    panel.append(panelHead(kind + " graph", "refused", "badge approx"),
+      Object.assign(document.createElement("p"), { className: "refused", textContent: doc.error }));
+    return panel;
+  }
+  panel.dataset.state = "done";
+  const c = doc.coordinates, map = projection(c);
+  const svg = el("svg", { viewBox: "0 0 1000 1000", class: "graph-svg", "data-kind": kind });
+  const edges = el("g", { class: "edges" }, svg);
+  for (const [a, b] of doc.edges) {
+    const [p, q] = [map(c[a]), map(c[b])];
+    el("line", { class: "edge", x1: p[0].toFixed(2), y1: p[1].toFixed(2), x2: q[0].toFixed(2), y2: q[1].toFixed(2),
+      "data-edge": a + " " + b }, edges);
+  }
+  drawPoints(svg, c, map);
+  const description = graphEntry(kind)?.description || "";
+  panel.append(panelHead(kind + " graph", doc.edges.length + " edges", "badge", description), svg);
+  if (doc.metric) panel.append(Object.assign(document.createElement("p"), { className: "hint", textContent: "metric: " + doc.metric }));
   return panel;
 }
 
@@ -456,9 +622,257 @@ function downloadSvg() {
   download("optri-compare.svg", "image/svg+xml", new XMLSerializer().serializeToString(out));
 }
 
+// ---- options: the metric, the time limit, the proximity graph --------------
+// The listing says which criteria and graph kinds read a metric (each
+// entry's `options`); the others always measure Euclidean lengths.
+const takesMetric = (entry) => (entry?.options || []).includes("metric");
+const criterionEntry = (name) => state.listing.criteria.find((c) => c.name === name);
+const graphEntry = (name) => state.listing.graphs.find((g) => g.name === name);
+const ELEVATIONS_HINT = "reads an elevation per point: generate “terrain” points, or paste or upload " +
+  "an x y z file (a clicked point then takes its nearest point's elevation)";
+
+// The metric the controls show, or null when the Lp exponent is not an
+// integer the server takes.
+function metricOfControls() {
+  const kind = $("metric").value;
+  $("lp-box").hidden = kind !== "lp";
+  if (kind !== "lp") return kind;
+  const p = Number($("lp").value);
+  return Number.isInteger(p) && p >= 1 && p <= state.maxLp ? "lp:" + p : null;
+}
+
+function showMetric(metric) {
+  const lp = /^lp:(\d+)$/.exec(metric);
+  $("metric").value = lp ? "lp" : metric;
+  if (lp) $("lp").value = lp[1];
+  $("lp-box").hidden = !lp;
+}
+
+// The metric control is live only when a chosen criterion or the graph
+// reads a metric; its tooltip and note say which do.
+function describeMetricUse() {
+  const users = checkedCriteria().filter((name) => takesMetric(criterionEntry(name)));
+  if (state.graph && takesMetric(graphEntry(state.graph))) users.push(state.graph + " graph");
+  const all = [...state.listing.criteria.filter(takesMetric).map((c) => c.name),
+    ...state.listing.graphs.filter(takesMetric).map((g) => g.name + " graph")];
+  const note = users.length
+    ? "The metric applies to " + users.join(", ") + "; the other criteria measure Euclidean lengths."
+    : "None of the chosen criteria or graph takes a metric; these do: " + all.join(", ") + ".";
+  for (const control of [$("metric"), $("lp")]) {
+    control.disabled = users.length === 0;
+    control.title = note;
+  }
+  $("metric-note").textContent = note;
+}
+
+function setupOptions() {
+  $("metric").onchange = $("lp").oninput = () => {
+    const metric = metricOfControls();
+    if (metric === null) {
+      showError(`Lp: p must be an integer from 1 to ${state.maxLp}`);
+      return;
+    }
+    state.metric = metric;
+    changed();
+  };
+  $("time-limit").oninput = (e) => {
+    const text = e.target.value.trim(), seconds = Number(text);
+    if (text !== "" && !(seconds > 0)) return;
+    state.timeLimit = text === "" ? null : seconds;
+    changed();
+  };
+  $("graph").onchange = (e) => {
+    state.graph = e.target.value;
+    $("graph-description").textContent = state.graph ? graphEntry(state.graph).description : "";
+    describeMetricUse();
+    changed();
+  };
+}
+
+// The criteria's checkboxes and the graph kinds, from the listing.
+function showListing(listing) {
+  const tag = (text, title) => Object.assign(document.createElement("span"), { className: "tag", textContent: text, title });
+  const box = $("criteria");
+  box.replaceChildren();
+  for (const c of listing.criteria) {
+    const label = document.createElement("label");
+    const input = Object.assign(document.createElement("input"), { type: "checkbox", value: c.name, checked: true });
+    input.onchange = () => { describeMetricUse(); changed(); };
+    label.append(input, " " + c.name);
+    if (takesMetric(c)) label.append(" ", tag("metric", "measures lengths in the chosen metric"));
+    if (c.needs_elevations) label.append(" ", tag("needs elevations", ELEVATIONS_HINT));
+    label.append(Object.assign(document.createElement("small"), { textContent: " — " + c.description }));
+    label.title = c.reference + (takesMetric(c) ? "" : "\nTakes no metric: lengths are Euclidean.");
+    box.append(label);
+  }
+  for (const g of listing.graphs) {
+    const option = Object.assign(document.createElement("option"), {
+      value: g.name, textContent: g.name + (takesMetric(g) ? " (metric)" : ""), title: g.description,
+    });
+    $("graph").append(option);
+  }
+  // "lp:P (integer 1 <= P <= 64)": the largest exponent the server takes.
+  const metric = listing.options.find((o) => o.name === "metric");
+  const most = /P <= (\d+)/.exec(metric?.values || "");
+  if (most) state.maxLp = Number(most[1]);
+  $("lp").max = state.maxLp;
+}
+
+// ---- the view in the URL ------------------------------------------------------
+// The fragment (never sent to the server, no length limit of a request line)
+// holds the view, e.g. #v=1&c=delaunay,greedy&m=l1&g=mst&t=5&poly=1&p=0,0;4,0;2,3&end
+//   v     the format's version (a later format gets another)
+//   c     the checked criteria (absent: every one)
+//   m     the metric: l1, linf or lp:P (absent: euclidean)
+//   g     the proximity graph shown; t: the time limit in seconds
+//   poly  1: the points are a simple polygon's ring
+//   p     the points, x,y or x,y,z, separated by ";", each number in shortest
+//         round-trip decimals (String(x)), so the link gives the same doubles
+//   end   always last, so that a link cut short is told from a whole one
+const LINK_VERSION = "1";
+const LINK_KEYS = ["v", "c", "m", "g", "t", "poly", "p"];
+const LINK_NUMBER = /^[+-]?(\d+\.?\d*|\.\d+)(e[+-]?\d+)?$/i;
+
+function linkFragment() {
+  const keys = ["v=" + LINK_VERSION, "c=" + checkedCriteria().join(",")];
+  if (state.metric !== "euclidean") keys.push("m=" + state.metric);
+  if (state.graph) keys.push("g=" + state.graph);
+  if (state.timeLimit !== null) keys.push("t=" + String(state.timeLimit));
+  if (state.polygon) keys.push("poly=1");
+  if (state.points.length) keys.push("p=" + state.points.map((p) => p.map(String).join(",")).join(";"));
+  return "#" + [...keys, "end"].join("&");
+}
+
+const linkUrl = () => location.href.split("#")[0] + linkFragment();
+
+// Keeps the URL on the view, replacing the history entry (an entry per
+// click would make Back walk through every edit).
+function writeLocation() {
+  const fragment = linkFragment();
+  if (location.hash !== fragment) history.replaceState(null, "", fragment);
+  if (!$("share-url").hidden) $("share-url").value = linkUrl();
+}
+
+function parseMetric(text) {
+  if (["euclidean", "l1", "linf"].includes(text)) return text;
+  const lp = /^lp:(\d+)$/.exec(text);
+  if (lp && Number(lp[1]) >= 1 && Number(lp[1]) <= state.maxLp) return "lp:" + Number(lp[1]);
+  throw new Error(`the metric “${text}” is not euclidean, l1, linf or lp:P with 1 ≤ P ≤ ${state.maxLp}`);
+}
+
+function parsePoints(text) {
+  const points = text.split(";").map((item, k) => {
+    const numbers = item.split(",");
+    if ((numbers.length !== 2 && numbers.length !== 3) || !numbers.every((v) => LINK_NUMBER.test(v))) {
+      throw new Error(`point ${k + 1}, “${item}”, is not x,y or x,y,z`);
+    }
+    return numbers.map(Number);
+  });
+  const mixed = points.findIndex((p) => p.length !== points[0].length);
+  if (mixed >= 0) throw new Error(`point ${mixed + 1} has ${points[mixed].length} numbers, point 1 has ${points[0].length}`);
+  if (!points.flat().every(Number.isFinite)) throw new Error("a coordinate is too large");
+  return points;
+}
+
+const defaultView = () => ({
+  criteria: state.listing.criteria.map((c) => c.name), metric: "euclidean", graph: "",
+  timeLimit: null, polygon: false, points: [],
+});
+
+// The view a fragment describes; throws an Error saying what is wrong.
+function parseFragment(fragment) {
+  let text;
+  try { text = decodeURIComponent(fragment.replace(/^#/, "")); } catch (_) { throw new Error("its percent-encoding is broken"); }
+  const items = text.split("&");
+  if (items[items.length - 1] !== "end") throw new Error("it is cut short (it does not end with “&end”)");
+  const keys = new Map();
+  for (const item of items.slice(0, -1)) {
+    const eq = item.indexOf("=");
+    const key = item.slice(0, eq);
+    if (eq < 1 || !LINK_KEYS.includes(key)) throw new Error(`“${item}” is not one of its keys (${LINK_KEYS.join(", ")})`);
+    if (keys.has(key)) throw new Error(`the key ${key} appears twice`);
+    keys.set(key, item.slice(eq + 1));
+  }
+  if (keys.get("v") !== LINK_VERSION) {
+    throw new Error(keys.has("v") ? `its version v=${keys.get("v")} is not one this page reads (v=${LINK_VERSION})`
+      : "it has no version (v=1)");
+  }
+  const view = defaultView();
+  if (keys.has("c")) {
+    view.criteria = keys.get("c") === "" ? [] : keys.get("c").split(",");
+    const unknown = view.criteria.find((name) => !criterionEntry(name));
+    if (unknown !== undefined) throw new Error(`“${unknown}” is not a criterion of this server`);
+  }
+  if (keys.has("m")) view.metric = parseMetric(keys.get("m"));
+  if (keys.has("g")) {
+    view.graph = keys.get("g");
+    if (!graphEntry(view.graph)) throw new Error(`“${view.graph}” is not a graph kind of this server`);
+  }
+  if (keys.has("t")) {
+    view.timeLimit = Number(keys.get("t"));
+    if (!LINK_NUMBER.test(keys.get("t")) || !(view.timeLimit > 0)) throw new Error(`the time limit “${keys.get("t")}” is not a positive number`);
+  }
+  if (keys.has("poly")) {
+    if (!["0", "1"].includes(keys.get("poly"))) throw new Error(`poly=${keys.get("poly")} is not 0 or 1`);
+    view.polygon = keys.get("poly") === "1";
+  }
+  if (keys.has("p") && keys.get("p") !== "") view.points = parsePoints(keys.get("p"));
+  return view;
+}
+
+function applyView(view) {
+  state.points = view.points;
+  state.polygon = view.polygon;
+  $("polygon").checked = view.polygon;
+  state.metric = view.metric;
+  showMetric(view.metric);
+  state.timeLimit = view.timeLimit;
+  $("time-limit").value = view.timeLimit === null ? "" : String(view.timeLimit);
+  state.graph = view.graph;
+  $("graph").value = view.graph;
+  $("graph-description").textContent = view.graph ? graphEntry(view.graph).description : "";
+  for (const box of document.querySelectorAll("#criteria input")) box.checked = view.criteria.includes(box.value);
+  describeMetricUse();
+}
+
+// Shows the view of the URL's fragment; one that cannot be read is said so
+// and the default view is shown instead (never a blank page).
+function restoreLocation() {
+  let view = defaultView(), problem = null;
+  if (location.hash.length > 1) {
+    try { view = parseFragment(location.hash); } catch (e) { problem = e.message; }
+  }
+  applyView(view);
+  changed(true);
+  if (problem) showLinkError(`This link could not be read: ${problem}. Showing the default view instead.`);
+}
+
+function showLinkError(message) {
+  $("link-error").textContent = message;
+  $("link-error").hidden = !message;
+}
+
+// Copies the link; where the clipboard is unavailable (an insecure origin,
+// a refused permission) the link is shown in a field to copy by hand.
+async function copyLink() {
+  const url = linkUrl(), field = $("share-url");
+  try {
+    if (!navigator.clipboard) throw new Error("no clipboard");
+    await navigator.clipboard.writeText(url);
+    field.hidden = true;
+    $("share-status").textContent = "link copied";
+  } catch (_) {
+    field.value = url;
+    field.hidden = false;
+    field.select();
+    $("share-status").textContent = "copy the link from the field below";
+  }
+}
+
 // ---- start ------------------------------------------------------------------
 async function start() {
   setupEditor();
+  setupOptions();
   $("generate").onclick = () => {
     const n = Math.max(1, Math.min(5000, Number($("n").value) || 30));
     state.points = generators[$("generator").value](n, rng(Number($("seed").value)));
@@ -479,22 +893,18 @@ async function start() {
   $("download-svg").onclick = downloadSvg;
   $("download-points").onclick = () => download("points.txt", "text/plain",
     state.points.map((p) => p.join(" ")).join("\n") + "\n");
+  $("copy-link").onclick = copyLink;
   try {
     state.limits = (await api("/api/limits")).value;
+    if (state.limits.time_limit_s) $("time-limit").max = state.limits.time_limit_s;
     const { value } = await api("/api/criteria");
+    state.listing = value;
     COLUMNS = [["triangles", (s) => s.triangles, null],
       ...value.measures.map((m) => [m.label, (s) => s[m.name], m.better === "smaller" ? "min" : "max"])];
-    const box = $("criteria");
-    box.replaceChildren();
-    for (const c of value.criteria) {
-      const label = document.createElement("label");
-      const input = Object.assign(document.createElement("input"), { type: "checkbox", value: c.name, checked: true });
-      input.onchange = () => changed();
-      const small = Object.assign(document.createElement("small"), { textContent: " — " + c.description });
-      label.append(input, " " + c.name, small);
-      label.title = c.reference;
-      box.append(label);
-    }
+    showListing(value);
+    restoreLocation();
+    // A link pasted into this tab's address bar changes only the fragment.
+    addEventListener("hashchange", restoreLocation);
     document.body.dataset.ready = "yes";
   } catch (e) {
     showError("cannot reach the optri server: " + e.message);

@@ -7,16 +7,22 @@ checks what is drawn against an independent count: a triangulation of n
 points with h on the convex hull has 2n - h - 2 triangles. Each criterion
 is its own request: a panel is busy until its answer arrives, and one
 stopped by the server's time limit says so while the others are drawn.
+A link (the view in the URL's fragment) restores the points, criteria and
+options and draws what the API answers for the same request; the metric
+reaches only the criteria and graphs that take it; a graph is drawn; a
+result that is not exact shows its certified bound.
 
 Run by .ci/run:  python -m pytest crates/optri-cli/tests/browser
 A screenshot goes to $OPTRI_SCREENSHOT (default: a temporary file).
 """
 
 import json
+import math
 import os
 import re
 import subprocess
 import tempfile
+import urllib.request
 from pathlib import Path
 
 import pytest
@@ -329,7 +335,8 @@ def test_a_criterion_out_of_time_says_so_and_the_others_are_drawn(hurried_page):
 
 
 def test_screenshot(page):
-    set_criteria(page, {"delaunay", "greedy", "minmax-area"})
+    set_criteria(page, {"delaunay", "minmax-length", "minmax-area"})
+    page.select_option("#graph", "mst")
     page.select_option("#generator", "clustered")
     page.fill("#n", "36")
     page.fill("#seed", "3")
@@ -340,3 +347,334 @@ def test_screenshot(page):
     page.screenshot(path=path)
     size = Path(path).stat().st_size
     assert 10_000 < size < 200_000, size
+
+
+# ---- links, metric, graphs, bounds -------------------------------------------
+
+# Points whose decimals are not binary fractions, so a link that rounded them
+# would be caught: x,y for a pentagon and two interior points.
+LINK_POINTS = [[0.1, 0.2], [10.3, 0.7], [12.55, 8.125], [5.0000001, 13.3], [-2.9, 7.1], [4.2, 5.4], [6.6, 3.3]]
+
+
+def api(url, path, body):
+    request = urllib.request.Request(url + path.lstrip("/"), data=json.dumps(body).encode(),
+                                     headers={"Content-Type": "application/json"})
+    with urllib.request.urlopen(request) as answer:
+        return json.load(answer)
+
+
+def link(criteria, points, **keys):
+    """A fragment in the page's format: v=1, c, the other keys, p, end."""
+    items = ["v=1", "c=" + ",".join(criteria)]
+    items += [f"{k}={v}" for k, v in keys.items()]
+    items.append("p=" + ";".join(",".join(repr(float(v)) if v != int(v) else str(int(v)) for v in p) for p in points))
+    return "#" + "&".join(items + ["end"])
+
+
+def record_posts(page):
+    """Every API POST body the page sends, as (path, body)."""
+    posts = []
+    page.on("request", lambda r: r.method == "POST" and posts.append((r.url.split("/", 3)[3], r.post_data_json)))
+    return posts
+
+
+def drawn(page, criterion):
+    """The triangles drawn in a criterion's panel, as sorted index triples."""
+    shown = page.locator(f'svg.panel-svg[data-criterion="{criterion}"] polygon.tri')
+    return sorted(tuple(sorted(map(int, t.split()))) for t in shown.evaluate_all("ps => ps.map(p => p.dataset.triangle)"))
+
+
+def fact(page, criterion, name):
+    return page.locator(f'#panels .panel[data-criterion="{criterion}"] dd[data-fact="{name}"]')
+
+
+def checked(page):
+    return [b.get_attribute("value") for b in page.locator("#criteria input:checked").all()]
+
+
+def test_a_link_restores_the_view_and_draws_what_the_api_answers(server, browser):
+    fragment = link(["minmax-length", "greedy"], LINK_POINTS, m="lp:3", g="rng")
+    page = browser.new_page()
+    posts = record_posts(page)
+    page.goto(server + fragment)
+    page.wait_for_selector("body[data-ready=yes]")
+    settle(page)
+    assert checked(page) == ["minmax-length", "greedy"]
+    assert page.locator("#metric").input_value() == "lp"
+    assert page.locator("#lp").input_value() == "3"
+    assert page.locator("#graph").input_value() == "rng"
+    assert page.locator("#editor circle").count() == len(LINK_POINTS)
+    assert page.evaluate("location.hash") == fragment, "the link is already the page's own"
+    # The requests carry the link's numbers (the same doubles), and the
+    # metric only where the criterion takes one.
+    bodies = {b.get("criterion", b.get("kind")): b for path, b in posts if path.startswith("api/")}
+    assert bodies["minmax-length"] == {"points": LINK_POINTS, "criterion": "minmax-length", "polygon": False,
+                                       "options": {"metric": "lp:3"}}
+    assert bodies["greedy"] == {"points": LINK_POINTS, "criterion": "greedy", "polygon": False}
+    assert bodies["rng"] == {"points": LINK_POINTS, "kind": "rng", "options": {"metric": "lp:3"}}
+    # What is drawn is what the API answers for the same request.
+    for name, body in [("minmax-length", bodies["minmax-length"]), ("greedy", bodies["greedy"])]:
+        doc = api(server, "/api/triangulate", body)
+        assert drawn(page, name) == sorted(tuple(sorted(t)) for t in doc["triangles"]), name
+        assert len(doc["triangles"]) == 2 * 7 - hull_size([tuple(p) for p in LINK_POINTS]) - 2
+    graph = api(server, "/api/graph", bodies["rng"])
+    shown = page.locator('svg.graph-svg[data-kind="rng"] line.edge').evaluate_all("ls => ls.map(l => l.dataset.edge)")
+    assert sorted(shown) == sorted(f"{a} {b}" for a, b in graph["edges"])
+    expect(fact(page, "minmax-length", "measure")).to_have_text(re.compile(r"^\d"))
+    expect(page.locator('#panels .panel[data-criterion="minmax-length"] dt').nth(1)).to_have_text("max edge (lp:3)")
+    assert page.locator("#link-error").is_hidden()
+    page.close()
+
+
+def test_a_link_restores_a_polygon_with_elevations(server, browser):
+    # A non-convex ring (an L), each point with an elevation.
+    ring = [[0, 0, 1], [6, 0, 2.5], [6, 2, 3], [2, 2, 0.1], [2, 5, -4], [0, 5, 7]]
+    page = browser.new_page()
+    posts = record_posts(page)
+    page.goto(server + link(["minmax-slope", "delaunay"], ring, poly=1))
+    page.wait_for_selector("body[data-ready=yes]")
+    settle(page)
+    assert page.locator("#polygon").is_checked()
+    expect(page.locator("#status")).to_have_text("6 points with elevations (polygon ring)")
+    bodies = {b["criterion"]: b for path, b in posts if path == "api/triangulate"}
+    for name in ["delaunay", "minmax-slope"]:
+        assert bodies[name] == {"points": ring, "criterion": name, "polygon": True}
+        doc = api(server, "/api/triangulate", bodies[name])
+        assert doc["domain"] == "polygon" and doc["elevations"] == [p[2] for p in ring]
+        assert drawn(page, name) == sorted(tuple(sorted(t)) for t in doc["triangles"])
+        assert len(doc["triangles"]) == len(ring) - 2
+    page.close()
+
+
+def test_edits_rewrite_the_link_in_place_and_the_link_reproduces_them(page, browser):
+    set_criteria(page, {"delaunay", "minmax-length"})
+    history = page.evaluate("history.length")
+    click_points(page, CLICKS)
+    page.select_option("#metric", "l1")
+    settle(page)
+    page.check("#polygon")
+    settle(page)
+    page.uncheck("#polygon")
+    settle(page)
+    assert page.evaluate("history.length") == history, "replaceState: no history entry per edit"
+    fragment = page.evaluate("location.hash")
+    assert fragment.startswith("#v=1&c=delaunay,minmax-length&m=l1&p=") and fragment.endswith("&end")
+    points = [[float(v) for v in p.split(",")] for p in re.search(r"&p=([^&]*)", fragment).group(1).split(";")]
+    assert len(points) == len(CLICKS)
+    # A second tab opened on the link draws the same triangles.
+    before = {name: drawn(page, name) for name in ["delaunay", "minmax-length"]}
+    other = browser.new_page()
+    other.goto(page.url)
+    other.wait_for_selector("body[data-ready=yes]")
+    settle(other)
+    assert other.evaluate("location.hash") == fragment
+    assert {name: drawn(other, name) for name in before} == before
+    assert other.locator("#metric").input_value() == "l1"
+    other.close()
+
+
+@pytest.mark.parametrize("fragment, message", [
+    ("#v=1&c=delaunay&p=0,0;4,0;0,3;4,", "cut short"),
+    ("#v=1&c=delaunay&p=0,0;4,0;0,3;4,&end", "point 4"),
+    ("#v=2&c=delaunay&p=0,0;4,0;0,3&end", "version v=2"),
+    ("#v=1&c=delaunay,no-such-criterion&p=0,0;4,0;0,3&end", "no-such-criterion"),
+    ("#v=1&c=minmax-length&m=lp:0&p=0,0;4,0;0,3&end", "lp:0"),
+    ("#v=1&c=delaunay&p=0,0;4,0,1;0,3&end", "point 2 has 3 numbers"),
+    ("#v=1&c=delaunay&zoom=2&p=0,0;4,0;0,3&end", "zoom=2"),
+])
+def test_a_bad_link_says_so_and_shows_the_default_view(server, browser, fragment, message):
+    page = browser.new_page()
+    page.goto(server + fragment)
+    page.wait_for_selector("body[data-ready=yes]")
+    settle(page)
+    expect(page.locator("#link-error")).to_be_visible()
+    expect(page.locator("#link-error")).to_contain_text("This link could not be read")
+    expect(page.locator("#link-error")).to_contain_text(message)
+    expect(page.locator("#link-error")).to_contain_text("default view")
+    # The default view: every criterion, no points, a working editor.
+    assert len(checked(page)) == page.locator("#criteria input").count() > 10
+    assert page.locator("#editor circle").count() == 0
+    click_points(page, CLICKS[:3])
+    expect(page.locator("#link-error")).to_be_hidden()
+    expect(page.locator('svg.panel-svg[data-criterion="delaunay"] polygon.tri')).to_have_count(1)
+    # A good link pasted into the same tab (only the fragment changes).
+    page.goto(server + link(["greedy"], LINK_POINTS))
+    expect(page.locator("#editor circle")).to_have_count(7)
+    settle(page)
+    assert checked(page) == ["greedy"] and page.locator("#editor circle").count() == 7
+    page.close()
+
+
+def test_the_metric_reaches_only_the_criteria_that_take_it(page):
+    posts = record_posts(page)
+    set_criteria(page, {"delaunay"})
+    assert page.locator("#metric").is_disabled()
+    assert "minmax-length" in page.locator("#metric").get_attribute("title")
+    set_criteria(page, {"delaunay", "minmax-length"})
+    assert page.locator("#metric").is_enabled()
+    click_points(page, CLICKS)
+    euclidean = page.locator('#panels .panel[data-criterion="minmax-length"] dd[data-fact="measure"]').inner_text()
+    posts.clear()
+    page.select_option("#metric", "linf")
+    settle(page)
+    bodies = {b["criterion"]: b for path, b in posts if path == "api/triangulate"}
+    assert bodies["minmax-length"]["options"] == {"metric": "linf"}
+    assert "options" not in bodies["delaunay"]
+    expect(fact(page, "delaunay", "metric")).to_contain_text("Euclidean")
+    linf = fact(page, "minmax-length", "measure").inner_text()
+    # |e|∞ ≤ |e|₂ for every edge, so the L∞ optimum is at most the Euclidean one.
+    assert float(linf) <= float(euclidean)
+    posts.clear()
+    page.select_option("#metric", "lp")
+    page.fill("#lp", "7")
+    settle(page)
+    bodies = {b["criterion"]: b for path, b in posts if path == "api/triangulate"}
+    assert bodies["minmax-length"]["options"] == {"metric": "lp:7"}
+    with page.expect_download() as d:
+        page.click("#download-json")
+    doc = json.loads(Path(d.value.path()).read_text())
+    assert doc["results"][1]["metric"]["name"] == "lp:7"
+    assert "m=lp:7" in page.evaluate("location.hash")
+
+
+def test_a_graph_view_draws_its_edges(page):
+    posts = record_posts(page)
+    set_criteria(page, set())
+    click_points(page, CLICKS)
+    assert page.locator("#panels .panel").count() == 0
+    n, h = len(CLICKS), hull_size(click_points_spots(page))
+    for kind, edges in [("mst", n - 1), ("hull", h), ("delaunay", 3 * n - h - 3)]:
+        page.select_option("#graph", kind)
+        settle(page)
+        expect(page.locator(f'svg.graph-svg[data-kind="{kind}"] line.edge')).to_have_count(edges)
+    # The Delaunay graph takes no metric; the RNG does, the Gabriel graph not.
+    assert page.locator("#metric").is_disabled()
+    page.select_option("#graph", "rng")
+    page.select_option("#metric", "l1")
+    for kind in ["rng", "gabriel"]:
+        posts.clear()
+        page.select_option("#graph", kind)
+        settle(page)
+        assert page.locator("#metric").is_disabled() == (kind == "gabriel")
+        assert page.locator(f'svg.graph-svg[data-kind="{kind}"] line.edge').count() >= n - 1, "contains the MST"
+        body = [b for path, b in posts if path == "api/graph"][-1]
+        assert body.get("options") == ({"metric": "l1"} if kind == "rng" else None), kind
+    page.select_option("#graph", "")
+    settle(page)
+    assert page.locator("#graph-view .panel").count() == 0
+
+
+def click_points_spots(page):
+    """The editor's points, as screen spots (the hull size is the same)."""
+    return [(float(c.get_attribute("cx")), -float(c.get_attribute("cy"))) for c in page.locator("#editor circle").all()]
+
+
+def test_a_result_that_is_not_exact_shows_its_bound(page):
+    # maxmin-area on points not in convex position: Delaunay with a certified
+    # upper bound; a δ criterion: the best of three, with its guarantee.
+    set_criteria(page, {"maxmin-area", "minmax-delta-length"})
+    click_points(page, CLICKS)
+    expect(fact(page, "maxmin-area", "exact")).to_have_text(re.compile("^no"))
+    with page.expect_download() as d:
+        page.click("#download-json")
+    area, delta = json.loads(Path(d.value.path()).read_text())["results"]
+    assert area["exact"] is False and area["bound"]["kind"] == "upper"
+    bound = fact(page, "maxmin-area", "bound").inner_text()
+    assert bound.startswith("the optimum's smallest area ≤ ")
+    assert " ".join(map(str, area["bound"]["triangle"])) in bound
+    assert math.isclose(float(bound.split("≤ ")[1].split()[0]), area["bound"]["area"], rel_tol=1e-5)
+    expect(fact(page, "maxmin-area", "guarantee")).to_have_text(area["optimality_bound"])
+    assert delta["exact"] is False
+    expect(fact(page, "minmax-delta-length", "guarantee")).to_have_text(delta["optimality_bound"])
+    # The δ measure, checked against the document's own edges.
+    coords = delta["coordinates"]
+    lengths = [math.dist(coords[a], coords[b]) for a, b in delta["edges"]]
+    shown = fact(page, "minmax-delta-length", "measure").inner_text()
+    assert shown.startswith("≈ ") and math.isclose(float(shown[2:]), max(lengths) - min(lengths), rel_tol=1e-5)
+
+
+def test_min_weight_with_a_tiny_time_limit_shows_its_lower_bound(page):
+    set_criteria(page, {"min-weight"})
+    page.fill("#time-limit", "0.01")
+    page.select_option("#generator", "circle")
+    page.fill("#n", "200")
+    page.click("#generate")
+    settle(page)
+    assert "&t=0.01&" in page.evaluate("location.hash")
+    expect(fact(page, "min-weight", "exact")).to_have_text(re.compile("^no"))
+    expect(fact(page, "min-weight", "bound")).to_contain_text("the optimal total length ≥ ")
+    expect(page.locator('#stats tbody tr[data-criterion="min-weight"]')).to_contain_text("(!)")
+
+
+def edge_insertion_measures(doc):
+    """Smallest height, largest eccentricity and largest slope over the
+    document's triangles (Bern et al. 1993), computed here independently:
+    the height from the area and the longest side, the eccentricity as the
+    distance from the circumcentre to the farthest side's line when the
+    circumcentre is outside, the slope from the plane's normal."""
+    c, z = doc["coordinates"], doc.get("elevations")
+    heights, eccentricities, slopes = [], [], []
+    for t in doc["triangles"]:
+        (ax, ay), (bx, by), (cx, cy) = (c[i] for i in t)
+        area2 = abs((bx - ax) * (cy - ay) - (by - ay) * (cx - ax))
+        sides = [math.dist(c[t[1]], c[t[2]]), math.dist(c[t[0]], c[t[2]]), math.dist(c[t[0]], c[t[1]])]
+        heights.append(area2 / max(sides))
+        d = 2 * ((ax * (by - cy)) + bx * (cy - ay) + cx * (ay - by))
+        ux = ((ax * ax + ay * ay) * (by - cy) + (bx * bx + by * by) * (cy - ay) + (cx * cx + cy * cy) * (ay - by)) / d
+        uy = ((ax * ax + ay * ay) * (cx - bx) + (bx * bx + by * by) * (ax - cx) + (cx * cx + cy * cy) * (bx - ax)) / d
+        k = sides.index(max(sides))
+        p, q = [c[i] for j, i in enumerate(t) if j != k]
+        opposite = c[t[k]]
+        # The circumcentre lies outside exactly when it is across the longest side from its corner.
+        side = lambda pt: (q[0] - p[0]) * (pt[1] - p[1]) - (q[1] - p[1]) * (pt[0] - p[0])
+        outside = side((ux, uy)) * side(opposite) < 0
+        eccentricities.append(abs(side((ux, uy))) / math.dist(p, q) if outside else 0.0)
+        if z:
+            (za, zb, zc) = (z[i] for i in t)
+            nx = (by - ay) * (zc - za) - (zb - za) * (cy - ay)
+            ny = (zb - za) * (cx - ax) - (bx - ax) * (zc - za)
+            slopes.append(math.hypot(nx, ny) / area2)
+    return min(heights), max(eccentricities), max(slopes) if slopes else None
+
+
+def test_edge_insertion_measures_and_slope_with_elevations(page):
+    set_criteria(page, {"maxmin-height", "minmax-eccentricity", "minmax-slope"})
+    label = page.locator("#criteria label").filter(has=page.locator('input[value="minmax-slope"]'))
+    expect(label.locator(".tag")).to_have_text("needs elevations")
+    assert "elevation" in label.locator(".tag").get_attribute("title")
+    click_points(page, CLICKS)
+    slope = page.locator('#panels .panel[data-criterion="minmax-slope"]')
+    expect(slope.locator(".refused")).to_contain_text("needs an elevation")
+    expect(slope.locator(".hint")).to_contain_text("terrain")
+    page.select_option("#generator", "terrain")
+    page.fill("#n", "25")
+    page.fill("#seed", "4")
+    page.click("#generate")
+    settle(page)
+    assert re.search(r"&p=[^;]*,[^;]*,[^;]*;", page.evaluate("location.hash")), "the link keeps x,y,z"
+    with page.expect_download() as d:
+        page.click("#download-json")
+    docs = {r["criterion"]: r for r in json.loads(Path(d.value.path()).read_text())["results"]}
+    for name, index in [("maxmin-height", 0), ("minmax-eccentricity", 1), ("minmax-slope", 2)]:
+        expected = edge_insertion_measures(docs[name])[index]
+        shown = fact(page, name, "measure").inner_text()
+        assert shown.startswith("≈ "), name
+        assert math.isclose(float(shown[2:]), expected, rel_tol=1e-5, abs_tol=1e-9), (name, shown, expected)
+
+
+def test_copy_link_uses_the_clipboard_or_shows_the_link(page, browser, server):
+    set_criteria(page, {"delaunay"})
+    click_points(page, CLICKS[:4])
+    browser.grant_permissions(["clipboard-read", "clipboard-write"], origin=server.rstrip("/"))
+    page.click("#copy-link")
+    expect(page.locator("#share-status")).to_have_text("link copied")
+    assert page.evaluate("navigator.clipboard.readText()") == page.url
+    assert page.locator("#share-url").is_hidden()
+    # Without a clipboard: the link in a field, kept up to date.
+    page.evaluate("Object.defineProperty(navigator, 'clipboard', { value: undefined })")
+    page.click("#copy-link")
+    expect(page.locator("#share-url")).to_be_visible()
+    assert page.locator("#share-url").input_value() == page.url
+    click_points(page, CLICKS[4:5])
+    assert page.locator("#share-url").input_value() == page.url
+    assert page.url.count(";") == 4
