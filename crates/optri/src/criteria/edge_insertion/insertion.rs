@@ -12,9 +12,7 @@
 //! minimised): with ties between worst triangles, a plain bottleneck
 //! retriangulation can leave an improvable triangulation unimproved.
 
-use crate::kernel::{
-    on_open_segment, orient_sign, properly_cross, Corners, Point, TriangleMeasure,
-};
+use crate::kernel::{orient_sign, properly_cross, Corners, Point, TriangleMeasure};
 use crate::polygon_program::{optimal_triangulation, Objective};
 use crate::structures::PolygonCycle;
 use std::cell::RefCell;
@@ -174,7 +172,10 @@ impl Mesh {
     /// The insertion of `a–v` from the triangle `[a, b, c]` (counter-
     /// clockwise, `a` its anchor) with lexicographic-bottleneck sides, if
     /// `a–v` is a valid segment properly crossing `bc`, meeting no edge in
-    /// `fixed` (constraints), and the sides can be triangulated.
+    /// `fixed` (constraints), and the sides can be triangulated; `None` also
+    /// when the insertion would add a triangle worse than `[a, b, c]`, which
+    /// must be a worst triangle of the mesh (such an insertion is never
+    /// accepted).
     pub fn insertion(
         &self,
         badness: &Badness,
@@ -187,10 +188,8 @@ impl Mesh {
         if !properly_cross(p(a), p(v), p(b), p(c)) || fixed(b, c) {
             return None;
         }
-        if points.iter().any(|&x| on_open_segment(x, p(a), p(v))) {
-            return None;
-        }
-        // Walk from bc to v: `left` and `right` are the current crossed
+        // Walk from bc to v (a point on the open segment a–v is the apex of
+        // a crossed triangle on the way, so the walk finds it): `left` and `right` are the current crossed
         // edge's endpoints on either side of a → v.
         let (mut left, mut right) = (c, b);
         let mut removed = vec![[a, b, c]];
@@ -211,7 +210,7 @@ impl Mesh {
                     right = s;
                     right_chain.push(s);
                 }
-                _ => return None, // s on a–v: excluded by validity
+                _ => return None, // s on the open segment a–v: not a valid segment
             }
             if fixed(left, right) {
                 return None;
@@ -224,6 +223,21 @@ impl Mesh {
         let mut right_side = vec![a];
         right_side.extend(&right_chain);
         right_side.push(v);
+        // An accepted insertion adds no triangle worse than [a, b, c] (a
+        // worst triangle, which it removes: the removed vector starts with
+        // its value). Each side's triangulation has a triangle on a–v whose
+        // third corner is one of that side's, so a side where every such
+        // triangle is worse rules the insertion out in O(k) comparisons
+        // instead of the O(k³) program.
+        let worst = [a, b, c];
+        let fits = |side: &[u32]| {
+            side.iter().any(|&w| {
+                w != a && w != v && badness.compare([a, v, w], worst) != Ordering::Greater
+            })
+        };
+        if !fits(&left_side) || !fits(&right_side) {
+            return None;
+        }
         let mut added = retriangulate(badness, &left_side)?;
         added.extend(retriangulate(badness, &right_side)?);
         Some(Insertion { removed, added })
