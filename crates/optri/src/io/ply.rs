@@ -333,6 +333,10 @@ fn read_property(tokens: &[&str], line: usize) -> Result<Property> {
 
 /// Reads the `vertex` element of the PLY file `bytes` as points.
 pub(super) fn read_ply(bytes: &[u8]) -> Result<Collected> {
+    if bytes.iter().all(u8::is_ascii_whitespace) {
+        // Nothing at all, as for every reader: no points.
+        return Ok(Collected::default());
+    }
     let header = read_header(bytes)?;
     let mut vertices = header.elements.iter().filter(|e| e.name == "vertex");
     let vertex = vertices
