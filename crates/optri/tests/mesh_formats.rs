@@ -219,7 +219,10 @@ fn every_mesh_output_holds_the_input_points_and_the_triangles() {
             ] {
                 let path = dir.join(format!("{k}-{with_z}-{name}"));
                 let options = WriteOptions::default().with_ply_encoding(encoding);
-                assert_eq!(io::write(report, &path, &options).unwrap(), [path.clone()]);
+                assert_eq!(
+                    io::write(report, &path, &options).unwrap(),
+                    std::slice::from_ref(&path)
+                );
                 let (vertices, faces) = parse_mesh(&path);
                 let xy: Vec<Point> = vertices.iter().map(|v| [v[0], v[1]]).collect();
                 let zs: Vec<f64> = vertices.iter().map(|v| v[2]).collect();

@@ -362,7 +362,7 @@ pub(super) fn read_ply(bytes: &[u8]) -> Result<Collected> {
         .iter()
         .map(|p| p.name.as_str())
         .filter(|name| !["x", "y", "z"].contains(name))
-        .map(|name| quoted(name))
+        .map(quoted)
         .collect();
     if !skipped.is_empty() {
         points
