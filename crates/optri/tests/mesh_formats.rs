@@ -76,10 +76,7 @@ fn parse_obj(text: &str) -> (Vec<[f64; 3]>, Vec<Vec<u32>>) {
     for line in text.lines().filter(|l| !l.starts_with('#')) {
         let mut tokens = line.split(' ');
         match tokens.next() {
-            Some("v") => {
-                let v: Vec<f64> = tokens.map(|t| t.parse().unwrap()).collect();
-                vertices.push([v[0], v[1], v[2]]);
-            }
+            Some("v") => vertices.extend(vertex_lines(&mut [&line[2..]].into_iter(), 1)),
             Some("f" | "l") => cells.push(tokens.map(|t| t.parse::<u32>().unwrap() - 1).collect()),
             other => panic!("unexpected OBJ statement {other:?}"),
         }
@@ -87,34 +84,42 @@ fn parse_obj(text: &str) -> (Vec<[f64; 3]>, Vec<Vec<u32>>) {
     (vertices, cells)
 }
 
+/// The numbers of a line separated by single spaces.
+fn numbers<T: std::str::FromStr>(line: &str) -> Vec<T>
+where
+    T::Err: std::fmt::Debug,
+{
+    line.split(' ').map(|t| t.parse().unwrap()).collect()
+}
+
+/// The `n` vertex lines `x y z` that follow in `lines`.
+fn vertex_lines<'a>(lines: &mut impl Iterator<Item = &'a str>, n: usize) -> Vec<[f64; 3]> {
+    (0..n)
+        .map(|_| {
+            let v: Vec<f64> = numbers(lines.next().unwrap());
+            [v[0], v[1], v[2]]
+        })
+        .collect()
+}
+
+/// The face lines `3 a b c` of `lines`, as `[a, b, c]`.
+fn face_lines<'a>(lines: impl Iterator<Item = &'a str>) -> Vec<Vec<u32>> {
+    lines
+        .map(|l| {
+            let f: Vec<u32> = numbers(l);
+            assert_eq!(f[0], 3);
+            f[1..].to_vec()
+        })
+        .collect()
+}
+
 /// `(vertices, faces)` of an OFF written by optri.
 fn parse_off(text: &str) -> (Vec<[f64; 3]>, Vec<Vec<u32>>) {
     let mut lines = text.lines();
     assert_eq!(lines.next(), Some("OFF"));
-    let counts: Vec<usize> = lines
-        .next()
-        .unwrap()
-        .split(' ')
-        .map(|t| t.parse().unwrap())
-        .collect();
-    let vertices = (0..counts[0])
-        .map(|_| {
-            let v: Vec<f64> = lines
-                .next()
-                .unwrap()
-                .split(' ')
-                .map(|t| t.parse().unwrap())
-                .collect();
-            [v[0], v[1], v[2]]
-        })
-        .collect();
-    let faces: Vec<Vec<u32>> = lines
-        .map(|l| l.split(' ').map(|t| t.parse().unwrap()).collect())
-        .map(|f: Vec<u32>| {
-            assert_eq!(f[0], 3);
-            f[1..].to_vec()
-        })
-        .collect();
+    let counts: Vec<usize> = numbers(lines.next().unwrap());
+    let vertices = vertex_lines(&mut lines, counts[0]);
+    let faces = face_lines(lines);
     assert_eq!([counts[1], counts[2]], [faces.len(), 0]);
     (vertices, faces)
 }
@@ -136,21 +141,12 @@ fn parse_ply(bytes: &[u8]) -> (Vec<[f64; 3]>, Vec<Vec<u32>>) {
     let body = &bytes[at..];
     if header.contains("format ascii 1.0") {
         let mut lines = std::str::from_utf8(body).unwrap().lines();
-        let vertices = (0..n)
-            .map(|_| {
-                let v: Vec<f64> = lines
-                    .next()
-                    .unwrap()
-                    .split(' ')
-                    .map(|t| t.parse().unwrap())
-                    .collect();
-                [v[0], v[1], v[2]]
-            })
-            .collect();
-        let cells: Vec<Vec<u32>> = lines
-            .map(|l| l.split(' ').map(|t| t.parse().unwrap()).collect())
-            .map(|c: Vec<u32>| if faces > 0 { c[1..].to_vec() } else { c })
-            .collect();
+        let vertices = vertex_lines(&mut lines, n);
+        let cells: Vec<Vec<u32>> = if faces > 0 {
+            face_lines(lines)
+        } else {
+            lines.map(numbers).collect()
+        };
         assert_eq!(cells.len(), faces + edges);
         return (vertices, cells);
     }
