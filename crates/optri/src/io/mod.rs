@@ -29,7 +29,9 @@
 //! Every reader returns the points in file order (so point `i` of the result
 //! is input index `i` everywhere else in optri) and reports problems as
 //! [`Error::Parse`] with the 1-based line number (`line: 0` when the problem
-//! concerns the whole input, e.g. an empty file). Coordinates are checked
+//! concerns the whole input, e.g. an empty file; a binary PLY body has no
+//! lines, so its errors have line 0 and name the byte offset, element, row
+//! and property). Coordinates are checked
 //! there, where the line is still known: a NaN, an infinity (including a
 //! literal that overflows `f64`) or a value outside the exact range of
 //! [`crate::kernel`] is rejected with its line. A message quotes at most the
