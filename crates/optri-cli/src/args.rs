@@ -40,13 +40,15 @@ pub(crate) enum Command {
 pub(crate) struct InputArgs {
     /// Point file, or `-` for stdin: text (`x y` per line, or CSV whose header names x/y,
     /// lon/lat, lng/lat, long/lat, longitude/latitude or easting/northing; other columns are
-    /// skipped with a warning), .node, .tsp, .geojson/.json. `triangulate` also takes a simple
+    /// skipped with a warning), .node, .tsp, .geojson/.json, .ply (ASCII or binary: the vertex
+    /// element's x, y and optional z), .obj (the `v` lines). `triangulate` also takes a simple
     /// polygon (a Triangle .poly, or a GeoJSON Polygon without points) and triangulates its
     /// interior.
     pub input: String,
-    /// Input format: text, node, poly, tsplib, geojson (default: by extension, else by content,
-    /// where .node and .poly are recognised only when the whole file matches their headers and
-    /// is not also a table of numbers; anything else is text).
+    /// Input format: text, node, poly, tsplib, geojson, ply, obj (default: by extension, else by
+    /// content, where PLY is recognised by its `ply` first line, .node and .poly only when the
+    /// whole file matches their headers and is not also a table of numbers; anything else is
+    /// text).
     #[arg(long, value_name = "FMT")]
     pub input_format: Option<String>,
 }
@@ -60,9 +62,10 @@ pub(crate) struct TriangulateArgs {
     pub criterion: String,
     #[command(flatten)]
     pub run: RunArgs,
-    /// Write the triangulation; format by extension: .json .svg .geojson, or .ele / .edge
-    /// (Triangle's triangles / edges), which also write the points to the .node file beside
-    /// them (X.ele writes X.node; refused if X.node is the input). Repeatable.
+    /// Write the triangulation; format by extension: .json .svg .geojson, .obj .ply .off
+    /// (meshes: every input point as a vertex at its elevation or 0, then the triangles), or
+    /// .ele / .edge (Triangle's triangles / edges), which also write the points to the .node
+    /// file beside them (X.ele writes X.node; refused if X.node is the input). Repeatable.
     #[arg(long, short, value_name = "FILE")]
     pub output: Vec<PathBuf>,
     /// Print one JSON object with the result to stdout instead of a summary (the same
@@ -83,19 +86,33 @@ pub(crate) struct StyleArgs {
     /// Indent JSON and GeoJSON output files (default: compact, one line).
     #[arg(long)]
     pub pretty: bool,
+    /// Write .ply files in ASCII (default: binary little-endian).
+    #[arg(long)]
+    pub ply_ascii: bool,
     /// No warnings (e.g. about ignored columns) on stderr.
     #[arg(long, short)]
     pub quiet: bool,
 }
 
 impl StyleArgs {
-    /// The layout of JSON and GeoJSON files.
-    pub fn json_style(&self) -> optri::io::JsonStyle {
-        if self.pretty {
-            optri::io::JsonStyle::Pretty
+    /// How output files are written: the layout of JSON and GeoJSON, the
+    /// encoding of PLY, and the picture's `title`.
+    pub fn write_options(&self, title: String) -> optri::io::WriteOptions {
+        use optri::io::{JsonStyle, PlyEncoding, WriteOptions};
+        let style = if self.pretty {
+            JsonStyle::Pretty
         } else {
-            optri::io::JsonStyle::Compact
-        }
+            JsonStyle::Compact
+        };
+        let ply = if self.ply_ascii {
+            PlyEncoding::Ascii
+        } else {
+            PlyEncoding::BinaryLittleEndian
+        };
+        WriteOptions::default()
+            .with_title(title)
+            .with_style(style)
+            .with_ply_encoding(ply)
     }
 }
 
@@ -108,8 +125,9 @@ pub(crate) struct GraphArgs {
     pub kind: GraphKind,
     #[command(flatten)]
     pub run: RunArgs,
-    /// Write the graph; format by extension: .svg .json .geojson, or .edge (Triangle's
-    /// format), which also writes the points to the .node file beside it. Repeatable.
+    /// Write the graph; format by extension: .svg .json .geojson, .obj (`l` lines) .ply (an
+    /// `edge` element), or .edge (Triangle's format), which also writes the points to the .node
+    /// file beside it. Repeatable.
     #[arg(long, short, value_name = "FILE")]
     pub output: Vec<PathBuf>,
     /// Print one JSON object with the edges to stdout instead of a summary (the same

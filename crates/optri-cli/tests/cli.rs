@@ -1087,3 +1087,126 @@ fn bad_polygons_fail_cleanly_naming_what_is_wrong() {
         &["x.poly", "edge 0-1 meets edge 2-3"],
     );
 }
+
+/// `x y z` points with a duplicate (index 6 of index 1).
+const TERRAIN: &str = "0 0 1\n4 0 2\n4 4 3.5\n0 4 -1\n1 1 0.25\n3 2 7\n4 0 2\n";
+
+#[test]
+fn triangulate_writes_obj_ply_and_off_meshes() {
+    let dir = scratch("meshes");
+    let input = write(&dir, "terrain.txt", TERRAIN);
+    let path = |name: &str| dir.join(name).to_str().unwrap().to_string();
+    let (obj, ply, off, ascii) = (path("t.obj"), path("t.ply"), path("t.off"), path("a.ply"));
+    let args = [
+        "triangulate",
+        &input,
+        "--json",
+        "-o",
+        &obj,
+        "-o",
+        &ply,
+        "-o",
+        &off,
+    ];
+    let json = stdout_json(&run(&args));
+    let triangles: Vec<[u32; 3]> = serde_json::from_value(json["triangles"].clone()).unwrap();
+    let points = file_points(&input);
+    let z = [1.0, 2.0, 3.5, -1.0, 0.25, 7.0, 2.0];
+    // OBJ and PLY read back as the input points with their elevations.
+    for file in [&obj, &ply] {
+        let source = optri::io::Source::Path(std::path::Path::new(file));
+        let read = optri::io::read(source, &optri::io::ReadOptions::default()).unwrap();
+        assert_eq!(read.input.points(), points, "{file}");
+        assert_eq!(read.elevations.as_deref(), Some(&z[..]), "{file}");
+    }
+    // Binary by default, ASCII on request.
+    let head = |file: &str| std::fs::read(file).unwrap()[..40].to_vec();
+    assert!(String::from_utf8_lossy(&head(&ply)).contains("format binary_little_endian 1.0"));
+    let out = run(&["triangulate", &input, "--ply-ascii", "-o", &ascii]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(String::from_utf8_lossy(&head(&ascii)).contains("format ascii 1.0"));
+    // The faces are the document's triangles, in every format.
+    let off_text = std::fs::read_to_string(&off).unwrap();
+    let off_faces: Vec<[u32; 3]> = off_text
+        .lines()
+        .skip(2 + points.len())
+        .map(|l| {
+            let f: Vec<u32> = l.split(' ').map(|t| t.parse().unwrap()).collect();
+            assert_eq!(f[0], 3);
+            [f[1], f[2], f[3]]
+        })
+        .collect();
+    assert_eq!(off_faces, triangles);
+    assert!(off_text.starts_with(&format!("OFF\n7 {} 0\n0 0 1\n4 0 2\n", triangles.len())));
+    let obj_faces: Vec<[u32; 3]> = std::fs::read_to_string(&obj)
+        .unwrap()
+        .lines()
+        .filter_map(|l| l.strip_prefix("f "))
+        .map(|l| {
+            let f: Vec<u32> = l
+                .split(' ')
+                .map(|t| t.parse::<u32>().unwrap() - 1)
+                .collect();
+            [f[0], f[1], f[2]]
+        })
+        .collect();
+    assert_eq!(obj_faces, triangles);
+    // A graph goes to OBJ, not to OFF, which is refused naming the format.
+    let g_obj = path("g.obj");
+    let out = run(&["graph", &input, "--kind", "mst", "-o", &g_obj]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let lines = std::fs::read_to_string(&g_obj).unwrap();
+    assert_eq!(lines.lines().filter(|l| l.starts_with("l ")).count(), 5);
+    let g_off = path("g.off");
+    assert_fails(
+        &run(&["graph", &input, "--kind", "mst", "-o", &g_off]),
+        &["g.off", "OFF holds faces"],
+    );
+}
+
+#[test]
+fn triangulate_reads_ply_and_obj_meshes() {
+    let dir = scratch("mesh-inputs");
+    let input = write(&dir, "terrain.txt", TERRAIN);
+    let ply = dir.join("t.ply").to_str().unwrap().to_string();
+    let first = stdout_json(&run(&["triangulate", &input, "--json", "-o", &ply]));
+    // The binary PLY, by its extension, and as content on stdin in ASCII.
+    let again = stdout_json(&run(&["triangulate", &ply, "--json", "-q"]));
+    for key in ["coordinates", "elevations", "triangles", "duplicates"] {
+        assert_eq!(again[key], first[key], "{key}");
+    }
+    let ascii = "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n\
+                 property uchar red\nelement face 1\nproperty list uchar int vertex_index\n\
+                 end_header\n0 0 9\n4 0 9\n4 4 9\n0 4 9\n4 0 1 2 3\n";
+    let out = run_stdin(&["triangulate", "-", "--json"], ascii);
+    let json = stdout_json(&out);
+    assert_eq!(json["points"], 4);
+    assert!(json["elevations"].is_null());
+    let warnings = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        warnings.contains("<stdin>: vertex properties ignored: 'red'")
+            && warnings.contains("'face' (1 items) ignored"),
+        "{warnings}"
+    );
+    // OBJ by its extension; a bad vertex names its line.
+    let obj = write(
+        &dir,
+        "m.obj",
+        "o m\nv 0 0 1\nv 4 0 2\nvn 0 0 1\nv 0 4 3\nf 1 2 3\n",
+    );
+    let json = stdout_json(&run(&["triangulate", &obj, "--json", "-q"]));
+    assert_eq!(json["elevations"], serde_json::json!([1.0, 2.0, 3.0]));
+    let bad = write(&dir, "bad.obj", "v 0 0\nv 1 x\n");
+    assert_fails(
+        &run(&["triangulate", &bad]),
+        &["bad.obj:2: 'x' is not a number"],
+    );
+}

@@ -304,7 +304,7 @@ fn every_unsupported_combination_says_what_would_work() {
         ),
         (
             &["triangulate", "square.txt", "--input-format", "xml"],
-            "unknown input format 'xml'; available: text, node, poly, tsplib, geojson",
+            "unknown input format 'xml'; available: text, node, poly, tsplib, geojson, ply, obj",
         ),
         (
             &["triangulate", "two.txt"],
@@ -320,8 +320,8 @@ fn every_unsupported_combination_says_what_would_work() {
         ),
         (
             &["graph", "square.txt", "--kind", "mst", "-o", "g.ele"],
-            "cannot write 'g.ele': a graph is not a triangulation; use .svg, .json, .geojson or \
-             .edge",
+            "cannot write 'g.ele': a graph is not a triangulation; use .svg, .json, .geojson, \
+             .edge, .obj or .ply",
         ),
     ];
     for (args, message) in cases {
@@ -359,7 +359,7 @@ fn every_io_failure_is_reported_before_any_work() {
         (
             &["triangulate", "square.txt", "-o", "out.png"],
             "cannot write 'out.png': unknown output extension; supported: .json, .svg, .ele or \
-             .edge (write the sibling .node too), .geojson",
+             .edge (write the sibling .node too), .geojson, .obj, .ply, .off",
         ),
         (
             &["triangulate", "square.txt", "-o", "no/such/dir/out.json"],

@@ -6,7 +6,7 @@ use super::Reading;
 use crate::args::GraphArgs;
 use crate::report;
 use crate::CliResult;
-use optri::io::{self, OutputFormat, WriteOptions};
+use optri::io::{self, OutputFormat};
 use optri::request::Task;
 
 pub(crate) fn run(args: GraphArgs) -> CliResult<()> {
@@ -22,8 +22,7 @@ pub(crate) fn run(args: GraphArgs) -> CliResult<()> {
     let mut run = reading.run(Task::Graph(args.kind), options)?;
     run.progress.phase("writing");
     let title = run.title(args.kind.name());
-    let style = args.style.json_style();
-    let options = WriteOptions::default().with_title(title).with_style(style);
+    let options = args.style.write_options(title);
     let written = run.write(&args.output, |outcome, path| {
         io::write(outcome.document(), path, &options)
     })?;

@@ -5,7 +5,7 @@ use super::Reading;
 use crate::args::TriangulateArgs;
 use crate::report;
 use crate::CliResult;
-use optri::io::{self, OutputFormat, WriteOptions};
+use optri::io::{self, OutputFormat};
 use optri::request::Task;
 
 pub(crate) fn run(args: TriangulateArgs) -> CliResult<()> {
@@ -39,8 +39,7 @@ pub(crate) fn run(args: TriangulateArgs) -> CliResult<()> {
     let title = run.title(&report::label(solution.criterion, solution.exact));
     // A JSON output holds the phases timed so far (the write and the total
     // are still running).
-    let style = args.style.json_style();
-    let options = WriteOptions::default().with_title(title).with_style(style);
+    let options = args.style.write_options(title);
     let written = run.write(&args.output, |outcome, path| {
         io::write(outcome.document(), path, &options)
     })?;

@@ -6,11 +6,11 @@ use std::path::{Path, PathBuf};
 
 /// The supported input extensions, for messages.
 const SUPPORTED_INPUTS: &str =
-    ".txt .xy .csv .pts (text), .node, .poly (polygon), .tsp, .geojson .json";
+    ".txt .xy .csv .pts (text), .node, .poly (polygon), .tsp, .geojson .json, .ply, .obj";
 
 /// The supported output extensions, for messages.
 const SUPPORTED_OUTPUTS: &str =
-    ".json, .svg, .ele or .edge (write the sibling .node too), .geojson";
+    ".json, .svg, .ele or .edge (write the sibling .node too), .geojson, .obj, .ply, .off";
 
 /// `path`'s extension in lower case, if it has one.
 fn lowercase_extension(path: &Path) -> Option<String> {
@@ -61,6 +61,14 @@ pub enum InputFormat {
     /// documents (an object without `"type"`): their `"coordinates"`, or the
     /// `"points"` array of documents before schema version 1.
     GeoJson,
+    /// PLY (the Stanford polygon format), ASCII or binary of either byte
+    /// order: the `vertex` element's `x`, `y` and optional `z` properties,
+    /// of any numeric type; every other element and property (faces,
+    /// normals, colours, list properties) is skipped.
+    Ply,
+    /// Wavefront `.obj`: the `v x y [z …]` statements; every other
+    /// statement (`vt`, `vn`, `f`, `l`, groups, materials) is skipped.
+    Obj,
 }
 
 impl InputFormat {
@@ -71,6 +79,8 @@ impl InputFormat {
         InputFormat::Poly,
         InputFormat::Tsplib,
         InputFormat::GeoJson,
+        InputFormat::Ply,
+        InputFormat::Obj,
     ];
 
     /// The name accepted by [`from_name`](Self::from_name).
@@ -81,12 +91,14 @@ impl InputFormat {
             InputFormat::Poly => "poly",
             InputFormat::Tsplib => "tsplib",
             InputFormat::GeoJson => "geojson",
+            InputFormat::Ply => "ply",
+            InputFormat::Obj => "obj",
         }
     }
 
     /// The format implied by `path`'s extension (case-insensitive):
     /// `.txt .xy .csv .pts` → Text, `.node` → Node, `.poly` → Poly, `.tsp` → Tsplib,
-    /// `.geojson .json` → GeoJson.
+    /// `.geojson .json` → GeoJson, `.ply` → Ply, `.obj` → Obj.
     ///
     /// # Errors
     /// [`Error::Io`] naming the path and listing the supported extensions
@@ -99,6 +111,8 @@ impl InputFormat {
             Some("poly") => Ok(InputFormat::Poly),
             Some("tsp") => Ok(InputFormat::Tsplib),
             Some("geojson" | "json") => Ok(InputFormat::GeoJson),
+            Some("ply") => Ok(InputFormat::Ply),
+            Some("obj") => Ok(InputFormat::Obj),
             _ => Err(Error::Io(format!(
                 "cannot read '{}' by its extension: unknown input extension; supported: \
                  {SUPPORTED_INPUTS}",
@@ -107,7 +121,8 @@ impl InputFormat {
         }
     }
 
-    /// Looks a format up by name (`text`, `node`, `poly`, `tsplib`, `geojson`; also
+    /// Looks a format up by name (`text`, `node`, `poly`, `tsplib`, `geojson`,
+    /// `ply`, `obj`; also
     /// the aliases `txt`, `tsp`, `json`).
     ///
     /// # Errors
@@ -119,6 +134,8 @@ impl InputFormat {
             "poly" => Ok(InputFormat::Poly),
             "tsplib" | "tsp" => Ok(InputFormat::Tsplib),
             "geojson" | "json" => Ok(InputFormat::GeoJson),
+            "ply" => Ok(InputFormat::Ply),
+            "obj" => Ok(InputFormat::Obj),
             _ => Err(Error::UnknownName {
                 kind: "input format",
                 name: name.to_string(),
@@ -129,7 +146,8 @@ impl InputFormat {
 
     /// Picks the format by content (for stdin and files without a known
     /// extension), on evidence that no other format could be meant: a
-    /// leading `{` means GeoJSON; a line `NODE_COORD_SECTION`, or a first
+    /// first line `ply` means PLY (its magic line; OBJ has none and is read
+    /// only by extension or name); a leading `{` means GeoJSON; a line `NODE_COORD_SECTION`, or a first
     /// line `NAME`, `TYPE`, `DIMENSION` or `COMMENT` followed by `:`, means
     /// TSPLIB; Triangle's `.node` and `.poly` are recognised only when the
     /// whole file has their structure (counts, ids and columns as the
@@ -140,7 +158,11 @@ impl InputFormat {
     /// lines (`n 2 0 1` over `id x y marker`), or one that breaks its own
     /// counts: name the format (or use the extension) to read those.
     pub fn sniff(text: &str) -> Self {
-        let trimmed = text.trim_start_matches('\u{feff}').trim_start();
+        let text = text.trim_start_matches('\u{feff}');
+        if super::ply::has_magic(text.as_bytes()) {
+            return InputFormat::Ply;
+        }
+        let trimmed = text.trim_start();
         if trimmed.starts_with('{') {
             return InputFormat::GeoJson;
         }
@@ -239,6 +261,16 @@ pub enum OutputFormat {
     /// `.geojson`: a triangulation's triangles or a graph's edges as
     /// features, then the points.
     GeoJson,
+    /// `.obj` (Wavefront): the points as `v x y z`, then a triangulation's
+    /// faces `f a b c` or a graph's lines `l a b`, 1-based.
+    Obj,
+    /// `.ply`: an element `vertex` (`x y z`), then `face` (a triangulation)
+    /// or `edge` (a graph); binary little-endian unless
+    /// [`WriteOptions::ply`](super::WriteOptions::ply) asks for ASCII.
+    Ply,
+    /// `.off` (Object File Format): the points as `x y z`, then the faces
+    /// `3 a b c` (triangulations only: OFF has no edges).
+    Off,
 }
 
 impl OutputFormat {
@@ -254,6 +286,9 @@ impl OutputFormat {
             Some("ele") => Ok(OutputFormat::Triangle),
             Some("edge") => Ok(OutputFormat::TriangleEdges),
             Some("geojson") => Ok(OutputFormat::GeoJson),
+            Some("obj") => Ok(OutputFormat::Obj),
+            Some("ply") => Ok(OutputFormat::Ply),
+            Some("off") => Ok(OutputFormat::Off),
             _ => Err(Error::Io(format!(
                 "cannot write '{}': unknown output extension; supported: {SUPPORTED_OUTPUTS}",
                 path.display()
@@ -262,15 +297,21 @@ impl OutputFormat {
     }
 
     /// The format for writing a graph to `path`: [`from_path`](Self::from_path),
-    /// except that `.ele` is refused (a graph is not a triangulation).
+    /// except that `.ele` and `.off` are refused (a graph is not a
+    /// triangulation, and OFF holds faces only).
     ///
     /// # Errors
-    /// As [`from_path`](Self::from_path), and [`Error::Io`] for `.ele`.
+    /// As [`from_path`](Self::from_path), and [`Error::Io`] for `.ele` and
+    /// `.off`.
     pub fn from_path_for_graph(path: &Path) -> Result<Self> {
+        const GRAPH_OUTPUTS: &str = "use .svg, .json, .geojson, .edge, .obj or .ply";
         match Self::from_path(path)? {
             OutputFormat::Triangle => Err(Error::Io(format!(
-                "cannot write '{}': a graph is not a triangulation; use .svg, .json, .geojson \
-                 or .edge",
+                "cannot write '{}': a graph is not a triangulation; {GRAPH_OUTPUTS}",
+                path.display()
+            ))),
+            OutputFormat::Off => Err(Error::Io(format!(
+                "cannot write '{}': OFF holds faces, not a graph's edges; {GRAPH_OUTPUTS}",
                 path.display()
             ))),
             format => Ok(format),

@@ -9,6 +9,9 @@
 //! | `node` | Triangle `.node` | `.node` + `.ele` or `.edge` |
 //! | `poly` | Triangle `.poly`: one closed boundary, no holes | |
 //! | `tsplib` | TSPLIB `.tsp` | |
+//! | `ply` | PLY (ASCII, binary either endian): the `vertex` element | triangulations and graphs (ASCII or binary) |
+//! | `obj` | Wavefront `.obj`: the `v` statements | triangulations and graphs |
+//! | `off` | | `.off`: triangulations |
 //! | `geojson` | `Point`/`MultiPoint`; one `Polygon` (outer ring) | triangulations and graphs |
 //! | `json` | [`triangulation_from_json`]; its `coordinates` through the GeoJSON reader | the one result schema: [`TriangulationReport`], [`GraphReport`], [`ComparisonReport`] |
 //! | `svg` | | single picture, graph, multi-panel comparison |
@@ -26,7 +29,9 @@
 //! Every reader returns the points in file order (so point `i` of the result
 //! is input index `i` everywhere else in optri) and reports problems as
 //! [`Error::Parse`] with the 1-based line number (`line: 0` when the problem
-//! concerns the whole input, e.g. an empty file). Coordinates are checked
+//! concerns the whole input, e.g. an empty file; a binary PLY body has no
+//! lines, so its errors have line 0 and name the byte offset, element, row
+//! and property). Coordinates are checked
 //! there, where the line is still known: a NaN, an infinity (including a
 //! literal that overflows `f64`) or a value outside the exact range of
 //! [`crate::kernel`] is rejected with its line. A message quotes at most the
@@ -51,6 +56,9 @@ mod geojson;
 mod json;
 mod listing;
 mod node;
+mod obj;
+mod off;
+mod ply;
 mod poly;
 mod read;
 mod svg;
@@ -67,7 +75,7 @@ pub use json::{
 pub use listing::registry_listing;
 pub use read::{read, ReadOptions, Source};
 pub use svg::panels_to_svg;
-pub use write::{write, Document, JsonStyle, WriteOptions};
+pub use write::{write, Document, JsonStyle, PlyEncoding, WriteOptions};
 
 use crate::error::{Error, Result};
 use crate::kernel::{self, CoordinateProblem, Point, MAX_COORDINATE, MIN_COORDINATE};
@@ -230,6 +238,15 @@ impl Collected {
         Ok(())
     }
 
+    /// Appends a point stored as binary numbers (a binary PLY's), read at
+    /// its coordinates' shortest round-trip decimals as front ends read
+    /// doubles ([`ReadInput::from_doubles`]); `point` is already checked.
+    pub(super) fn push_binary(&mut self, point: Point) {
+        self.decimal.push_shortest(point[0]);
+        self.decimal.push_shortest(point[1]);
+        self.points.push(point);
+    }
+
     /// Parses and appends the elevation of the point just pushed, written as
     /// `z` on `line`. A reader calls it for every point or for none.
     pub(super) fn push_elevation(&mut self, z: &str, line: usize) -> Result<()> {
@@ -266,6 +283,50 @@ impl Collected {
             warnings: self.warnings,
             format: Some(format),
             elevations,
+        }
+    }
+}
+
+/// What the mesh writers (OBJ, PLY, OFF) write: every input point as a
+/// vertex, at its elevation (0 without), and the triangles or the edges over
+/// those vertices' input indices.
+pub(super) struct Mesh<'a> {
+    pub(super) points: &'a [Point],
+    pub(super) elevations: Option<&'a [f64]>,
+    pub(super) cells: Cells<'a>,
+}
+
+/// The cells of a [`Mesh`].
+#[derive(Clone, Copy)]
+pub(super) enum Cells<'a> {
+    /// A triangulation's counter-clockwise triangles.
+    Triangles(&'a [[u32; 3]]),
+    /// A graph's edges.
+    Edges(&'a [[u32; 2]]),
+}
+
+impl Mesh<'_> {
+    /// Each vertex as `[x, y, z]`, in input order.
+    pub(super) fn vertices(&self) -> impl Iterator<Item = [f64; 3]> + '_ {
+        self.points.iter().enumerate().map(|(i, p)| {
+            let z = self.elevations.map_or(0.0, |z| z[i]);
+            [p[0], p[1], z]
+        })
+    }
+}
+
+/// A number in shortest round-trip notation, with an exponent for very
+/// large or small magnitudes (Rust's `{}` never uses one, so `1e300` would
+/// take 301 digits): reading it back gives the identical `f64`.
+pub(super) struct Shortest(pub(super) f64);
+
+impl std::fmt::Display for Shortest {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let a = self.0.abs();
+        if a == 0.0 || (1e-5..1e16).contains(&a) {
+            write!(f, "{}", self.0)
+        } else {
+            write!(f, "{:e}", self.0)
         }
     }
 }

@@ -9,7 +9,7 @@
 //! [`ReadInput::elevations`]: super::ReadInput::elevations
 //! [`InputFormat::Node`]: super::InputFormat::Node
 
-use super::{not_a_number, parse, quoted, strip_comment, Collected};
+use super::{not_a_number, parse, quoted, strip_comment, Collected, Shortest};
 use crate::error::Result;
 use crate::kernel::Point;
 use std::fmt::Write;
@@ -165,17 +165,6 @@ pub(super) fn read_vertex_section<'t>(
     }))
 }
 
-/// A coordinate in shortest round-trip notation, with an exponent for very
-/// large or small magnitudes (Rust's `{}` never uses one).
-fn coordinate_text(v: f64) -> String {
-    let a = v.abs();
-    if a == 0.0 || (1e-5..1e16).contains(&a) {
-        format!("{v}")
-    } else {
-        format!("{v:e}")
-    }
-}
-
 /// Triangle's `.node` and `.ele` texts. Numbering is 0-based and equals the
 /// input index; every input point is listed (duplicates too), with its
 /// elevation as the one attribute when the point set has elevations.
@@ -205,14 +194,9 @@ pub(super) fn node_text(pts: &[Point], elevations: Option<&[f64]>) -> String {
         }
     }
     for (i, p) in pts.iter().enumerate() {
-        let _ = write!(
-            node,
-            "{i} {} {}",
-            coordinate_text(p[0]),
-            coordinate_text(p[1])
-        );
+        let _ = write!(node, "{i} {} {}", Shortest(p[0]), Shortest(p[1]));
         if let Some(z) = elevations {
-            let _ = write!(node, " {}", coordinate_text(z[i]));
+            let _ = write!(node, " {}", Shortest(z[i]));
         }
         node.push('\n');
     }

@@ -3,7 +3,7 @@
 //! extension and then by content; whether a polygon may be returned) and
 //! hands the text to the reader of its format.
 
-use super::{geojson, node, parse, poly, text, tsplib, InputFormat, ReadInput};
+use super::{geojson, node, obj, parse, ply, poly, text, tsplib, InputFormat, ReadInput};
 use crate::error::{Error, Result};
 use std::borrow::Cow;
 use std::path::Path;
@@ -71,30 +71,30 @@ impl ReadOptions {
 /// holes are not supported yet") or more than one polygon.
 pub fn read(source: Source<'_>, options: &ReadOptions) -> Result<ReadInput> {
     let file;
-    let (text, by_extension) = match source {
-        Source::Text(text) => {
-            let text = text.strip_prefix('\u{feff}').unwrap_or(text);
-            (Cow::Borrowed(text), None)
-        }
-        Source::Bytes(bytes) => (decode(bytes), None),
+    let (bytes, by_extension) = match source {
+        Source::Text(text) => (text.as_bytes(), None),
+        Source::Bytes(bytes) => (bytes, None),
         Source::Path(path) => {
             file = std::fs::read(path)
                 .map_err(|e| Error::Io(format!("cannot read '{}': {e}", path.display())))?;
-            (decode(&file), InputFormat::from_path(path).ok())
+            (file.as_slice(), InputFormat::from_path(path).ok())
         }
     };
-    let format = options
-        .format
-        .or(by_extension)
-        .unwrap_or_else(|| InputFormat::sniff(&text));
+    let bytes = bytes.strip_prefix(b"\xef\xbb\xbf").unwrap_or(bytes);
+    let format = options.format.or(by_extension);
+    // PLY is read as bytes (its body may be binary), so its magic line is
+    // looked for before any decoding.
+    if format == Some(InputFormat::Ply) || format.is_none() && ply::has_magic(bytes) {
+        return checked(ply::read_ply(bytes)?.finish(InputFormat::Ply, false, None));
+    }
+    let text = decode(bytes);
+    let format = format.unwrap_or_else(|| InputFormat::sniff(&text));
     read_text(&text, format, options.polygons)
 }
 
-/// `bytes` as text: a UTF-8 byte-order mark dropped (it is not part of the
-/// first token), and each sequence that is not UTF-8 replaced by U+FFFD.
+/// `bytes` as text: each sequence that is not UTF-8 replaced by U+FFFD.
 /// Borrowed when the input is UTF-8.
 fn decode(bytes: &[u8]) -> Cow<'_, str> {
-    let bytes = bytes.strip_prefix(b"\xef\xbb\xbf").unwrap_or(bytes);
     String::from_utf8_lossy(bytes)
 }
 
@@ -108,6 +108,8 @@ fn read_text(text: &str, format: InputFormat, polygons: bool) -> Result<ReadInpu
             collected.finish(format, polygons, Some(&ring))
         }
         InputFormat::Tsplib => tsplib::read_tsplib(text)?.finish(format, false, None),
+        InputFormat::Ply => ply::read_ply(text.as_bytes())?.finish(format, false, None),
+        InputFormat::Obj => obj::read_obj(text)?.finish(format, false, None),
         InputFormat::GeoJson => {
             let (input, elevations) = geojson::read_geojson_input(text, polygons)?;
             ReadInput {
@@ -117,6 +119,11 @@ fn read_text(text: &str, format: InputFormat, polygons: bool) -> Result<ReadInpu
             }
         }
     };
+    checked(read)
+}
+
+/// `read`, unless it holds no point.
+fn checked(read: ReadInput) -> Result<ReadInput> {
     if read.input.points().is_empty() {
         return Err(parse(0, "no points found in the input"));
     }

@@ -1,9 +1,12 @@
 //! The one writer entry point: [`write`](write()) puts a [`Document`] (a
 //! triangulation, a graph or a comparison) into a file in the format of its
 //! extension ([`OutputFormat`]), as [`WriteOptions`] say (the picture's
-//! title, the JSON layout).
+//! title, the JSON layout, the PLY encoding).
 
-use super::{geojson, node, svg, ComparisonReport, GraphReport, OutputFormat, TriangulationReport};
+use super::{
+    geojson, node, obj, off, ply, svg, Cells, ComparisonReport, GraphReport, Mesh, OutputFormat,
+    TriangulationReport,
+};
 use crate::error::{Error, Result};
 use serde::Serialize;
 use serde_json::Value;
@@ -73,6 +76,18 @@ pub enum JsonStyle {
     Pretty,
 }
 
+/// How `.ply` files are encoded.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum PlyEncoding {
+    /// `binary_little_endian` (the default): the doubles and indices as
+    /// stored, 24 bytes a vertex and 13 a triangle, nothing formatted or
+    /// parsed.
+    #[default]
+    BinaryLittleEndian,
+    /// `ascii`: the numbers in shortest round-trip notation.
+    Ascii,
+}
+
 /// How [`write`](write()) writes.
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
 #[non_exhaustive]
@@ -83,6 +98,8 @@ pub struct WriteOptions {
     pub title: Option<String>,
     /// The layout of JSON and GeoJSON files.
     pub style: JsonStyle,
+    /// The encoding of PLY files.
+    pub ply: PlyEncoding,
 }
 
 impl WriteOptions {
@@ -97,6 +114,12 @@ impl WriteOptions {
         self.style = style;
         self
     }
+
+    /// These options with PLY files encoded as `encoding`.
+    pub fn with_ply_encoding(mut self, encoding: PlyEncoding) -> Self {
+        self.ply = encoding;
+        self
+    }
 }
 
 /// Writes `document` in the format of `path`'s extension ([`OutputFormat`]):
@@ -107,7 +130,11 @@ impl WriteOptions {
 ///   points;
 /// - `.svg`: a picture (a comparison: its triangulations side by side);
 /// - `.ele` (triangulations) and `.edge` (triangulations and graphs):
-///   Triangle's files, with the points in the `.node` beside them.
+///   Triangle's files, with the points in the `.node` beside them;
+/// - `.obj`, `.ply` (triangulations and graphs) and `.off`
+///   (triangulations): every input point as a vertex `x y z` (`z` its
+///   elevation, 0 without), then the triangles or the edges; PLY in
+///   binary little-endian unless [`WriteOptions::ply`] says ASCII.
 ///
 /// Coordinates are the document's (the user's values, see
 /// [`TriangulationReport::coordinates`]). Returns the files written (two for
@@ -115,7 +142,7 @@ impl WriteOptions {
 ///
 /// # Errors
 /// [`Error::Io`] naming the path for an unknown extension, a format the
-/// document has no form in (`.ele` for a graph; anything but `.svg` and
+/// document has no form in (`.ele` and `.off` for a graph; anything but `.svg` and
 /// `.json` for a comparison, or `.svg` when every criterion refused the
 /// input), or when writing fails.
 ///
@@ -172,6 +199,15 @@ fn write_triangulation(
             let edges = node::edge_text(&t.edges());
             return write_triangle_files(format, path, &edges, points, elevations);
         }
+        OutputFormat::Obj | OutputFormat::Ply | OutputFormat::Off => {
+            let cells = Cells::Triangles(t.triangles());
+            let mesh = Mesh {
+                points,
+                elevations,
+                cells,
+            };
+            write_mesh_file(format, path, &mesh, options)?
+        }
     }
     Ok(vec![path.to_path_buf()])
 }
@@ -200,8 +236,17 @@ fn write_graph(
             let text = node::edge_text(edges);
             return write_triangle_files(format, path, &text, points, elevations);
         }
-        // `.ele` (Triangle) was refused by `from_path_for_graph`.
-        OutputFormat::Svg | OutputFormat::Triangle => {
+        OutputFormat::Obj | OutputFormat::Ply => {
+            let cells = Cells::Edges(edges);
+            let mesh = Mesh {
+                points,
+                elevations,
+                cells,
+            };
+            write_mesh_file(format, path, &mesh, options)?
+        }
+        // `.ele` (Triangle) and `.off` were refused by `from_path_for_graph`.
+        OutputFormat::Svg | OutputFormat::Triangle | OutputFormat::Off => {
             write_file(path, &svg::graph_to_svg(points, edges, title))?
         }
     }
@@ -275,21 +320,46 @@ fn write_error(path: &Path, e: &dyn std::fmt::Display) -> Error {
     Error::Io(format!("cannot write '{}': {e}", path.display()))
 }
 
+/// Writes the file at `path` as a stream: `contents` writes into a buffer
+/// that goes to the file as it fills, so no whole-file text is held.
+fn write_streamed(
+    path: &Path,
+    contents: impl FnOnce(&mut std::io::BufWriter<std::fs::File>) -> std::io::Result<()>,
+) -> Result<()> {
+    use std::io::Write;
+    let file = std::fs::File::create(path).map_err(|e| write_error(path, &e))?;
+    let mut out = std::io::BufWriter::with_capacity(1 << 16, file);
+    contents(&mut out)
+        .and_then(|()| out.flush())
+        .map_err(|e| write_error(path, &e))
+}
+
 /// Serialises `document` straight into the file at `path` (no string or
 /// value tree in between, so the memory is that of the document's own
 /// data), with a final newline.
 fn write_json_file(path: &Path, document: &impl Serialize, style: JsonStyle) -> Result<()> {
     use std::io::Write;
-    let file = std::fs::File::create(path).map_err(|e| write_error(path, &e))?;
-    let mut out = std::io::BufWriter::with_capacity(1 << 16, file);
-    match style {
-        JsonStyle::Compact => serde_json::to_writer(&mut out, document),
-        JsonStyle::Pretty => serde_json::to_writer_pretty(&mut out, document),
-    }
-    .map_err(|e| write_error(path, &e))?;
-    out.write_all(b"\n")
-        .and_then(|()| out.flush())
-        .map_err(|e| write_error(path, &e))
+    write_streamed(path, |out| {
+        match style {
+            JsonStyle::Compact => serde_json::to_writer(&mut *out, document),
+            JsonStyle::Pretty => serde_json::to_writer_pretty(&mut *out, document),
+        }?;
+        out.write_all(b"\n")
+    })
+}
+
+/// Writes `mesh` at `path` in the mesh format `format` (OBJ, PLY or OFF).
+fn write_mesh_file(
+    format: OutputFormat,
+    path: &Path,
+    mesh: &Mesh,
+    options: &WriteOptions,
+) -> Result<()> {
+    write_streamed(path, |out| match format {
+        OutputFormat::Obj => obj::write(out, mesh),
+        OutputFormat::Ply => ply::write(out, mesh, options.ply == PlyEncoding::Ascii),
+        _ => off::write(out, mesh),
+    })
 }
 
 #[cfg(test)]
