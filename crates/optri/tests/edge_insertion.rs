@@ -215,6 +215,46 @@ fn a_grid_of_tied_right_angles_terminates_at_the_optimum() {
     }
 }
 
+/// A spent time limit keeps the triangulation the loop reached: valid, not
+/// exact, never worse than Delaunay's under the measure (the oracle's
+/// values); a cancel is an error.
+#[test]
+fn a_time_limit_keeps_the_triangulation_reached() {
+    let side = 40;
+    let pts: Vec<Point> = (0..side * side)
+        .map(|k| [(k % side) as f64, (k / side) as f64])
+        .collect();
+    let mut rng = StdRng::seed_from_u64(7);
+    let z = elevations(&mut rng, &pts);
+    let ps = point_set(&pts, &z).unwrap();
+    let delaunay: Vec<[u32; 3]> = triangulate(&ps, Criterion::Delaunay)
+        .unwrap()
+        .triangulation
+        .triangles()
+        .to_vec();
+    for &(criterion, b) in &CRITERIA {
+        let options = optri::Options::default().with_time_limit(std::time::Duration::ZERO);
+        let solution = optri::triangulate_with(&ps, criterion, &options).unwrap();
+        assert!(!solution.exact, "{}", criterion.name());
+        solution.triangulation.validate().unwrap();
+        let (p, zs) = (ps.points(), ps.elevations().unwrap());
+        let worst = |ts: &[[u32; 3]]| {
+            ts.iter()
+                .map(|t| badness(b, p, zs, t.map(|i| ps.distinct_index(i))))
+                .max()
+                .unwrap()
+        };
+        assert!(worst(solution.triangulation.triangles()) <= worst(&delaunay));
+        let cancel = optri::Cancel::new();
+        cancel.cancel();
+        let cancelled = optri::Options::default().with_cancel(cancel);
+        assert!(matches!(
+            optri::triangulate_with(&ps, criterion, &cancelled),
+            Err(Error::Interrupted(_))
+        ));
+    }
+}
+
 #[test]
 fn larger_sets_match_the_generic_loop() {
     let mut rng = StdRng::seed_from_u64(0x5eed_e1b0);

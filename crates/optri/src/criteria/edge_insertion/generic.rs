@@ -41,6 +41,10 @@ pub(crate) struct Steps {
     pub insertions: u64,
     /// Insertions tried (valid segments whose sides were retriangulated).
     pub attempts: u64,
+    /// The time limit ended the loop before its stopping condition: the
+    /// mesh is valid and no worse than where it started, but not proven
+    /// optimal.
+    pub stopped: bool,
 }
 
 /// Does `a–v` properly cross the side `bc` of `[a, b, c]`?
@@ -49,9 +53,14 @@ fn crosses_opposite_side(badness: &Badness, [a, b, c]: [u32; 3], v: u32) -> bool
     properly_cross(p(a), p(v), p(b), p(c))
 }
 
-/// Runs the loop on `mesh` until no anchor insertion improves it.
-/// With `remember_failures`, pairs that failed are not retried until the
-/// worst value changes.
+/// Runs the loop on `mesh` until no anchor insertion improves it, or until
+/// `stop`'s time limit (read at every pass and every 64 candidates), which
+/// leaves the mesh as it is with [`Steps::stopped`]. With
+/// `remember_failures`, pairs that failed are not retried until the worst
+/// value changes.
+///
+/// # Errors
+/// [`crate::Error::Interrupted`] when the run is cancelled.
 pub(crate) fn improve(
     mesh: &mut Mesh,
     badness: &Badness,
@@ -64,8 +73,22 @@ pub(crate) fn improve(
     let mut worst_value: Option<[u32; 3]> = None;
     let mut skipped = false;
     let no_constraint = |_: u32, _: u32| false;
+    let mut candidates = 0u32;
+    // A spent time limit keeps the mesh reached; a cancel aborts.
+    let spent = |steps: &mut Steps| -> Result<bool> {
+        match stop.reason() {
+            Some(crate::error::Interruption::TimeLimit { .. }) => {
+                steps.stopped = true;
+                Ok(true)
+            }
+            Some(why) => Err(crate::error::Error::Interrupted(why)),
+            None => Ok(false),
+        }
+    };
     'improve: loop {
-        stop.check()?;
+        if spent(&mut steps)? {
+            return Ok(steps);
+        }
         let worst = mesh.worst_triangles(badness);
         let Some(&representative) = worst.first() else {
             return Ok(steps);
@@ -92,6 +115,10 @@ pub(crate) fn improve(
                     || !crosses_opposite_side(badness, anchored, v)
                 {
                     continue;
+                }
+                candidates += 1;
+                if candidates.is_multiple_of(64) && spent(&mut steps)? {
+                    return Ok(steps);
                 }
                 let pair = (u64::from(a) << 32) | u64::from(v);
                 if remember_failures && tried.contains(&pair) {

@@ -177,10 +177,21 @@ fn solve(
     let mut diagnostics = Diagnostics::default();
     diagnostics.add("insertions", steps.insertions);
     diagnostics.add("insertion attempts", steps.attempts);
+    let (algorithm, optimality) = if steps.stopped {
+        (
+            format!("{ALGORITHM}, stopped by the time limit"),
+            Optimality::Approximation {
+                bound: "not proven optimal: the time limit stopped the edge-insertion loop; \
+                        the triangulation reached, no worse than Delaunay's under the measure",
+            },
+        )
+    } else {
+        (ALGORITHM.to_string(), Optimality::Exact)
+    };
     Ok(Solved {
         triangulation: Triangulation::from_distinct(points, triangles),
-        algorithm: ALGORITHM.to_string(),
-        optimality: Optimality::Exact,
+        algorithm,
+        optimality,
         diagnostics,
         bound: None,
     })
