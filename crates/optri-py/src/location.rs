@@ -1,0 +1,247 @@
+//! Exact point location for `Triangulation.find_simplex`: which triangle
+//! contains a query point, decided by the kernel's exact orientation
+//! (Shewchuk, 1997, *Adaptive precision floating-point arithmetic and fast
+//! robust geometric predicates*, Discrete Comput. Geom. 18, §4), with a
+//! uniform grid of bucketed triangle bounding boxes to find the candidates
+//! (Akman, Franklin, Kankanhalli & Narayanaswami, 1989, *Geometric computing
+//! and uniform grid technique*, Computer-Aided Design 21(7)).
+//!
+//! Containment is closed: a query on a side or a corner is in every triangle
+//! that has it, and the answer is the smallest such index. The grid only
+//! narrows the candidates, so its floating-point arithmetic needs no error
+//! bound: a cell index is a monotone function of a coordinate (a rounded
+//! subtraction, a rounded product, `floor`, a clamp), so a query inside a
+//! triangle's bounding box falls in a cell the box was entered in.
+//!
+//! The triangles are in the working coordinates of the run: for decimal
+//! input scaled to integers by `10^k` (`optri::io::ReadInput::scaled`), the
+//! query `q` (the caller's doubles) is the exact point `q·10^k` there,
+//! located without rounding by [`optri::kernel::orient_sign_scaled`].
+
+use optri::kernel::{check_coordinate, orient_sign_scaled, CoordinateProblem, Point};
+
+/// How the caller's coordinates map to the working ones: the exact
+/// orientation of working vertices `a, b` and query `q` is that of
+/// `a·vertex_scale, b·vertex_scale, q·query_scale` (one of them is 1).
+#[derive(Clone, Copy, Debug)]
+struct Scale {
+    vertex: f64,
+    query: f64,
+}
+
+impl Scale {
+    /// The scale of decimal input multiplied by `10^exponent`, or `None`
+    /// when `10^|exponent|` is not a double (|exponent| > 22).
+    fn of_exponent(exponent: i32) -> Option<Self> {
+        if exponent.unsigned_abs() > 22 {
+            return None;
+        }
+        let power: f64 = format!("1e{}", exponent.unsigned_abs()).parse().ok()?;
+        Some(if exponent >= 0 {
+            Scale {
+                vertex: 1.0,
+                query: power,
+            }
+        } else {
+            Scale {
+                vertex: power,
+                query: 1.0,
+            }
+        })
+    }
+
+    /// The query in working coordinates, rounded (monotone in each
+    /// coordinate, which is all the grid needs).
+    fn approximate(self, q: Point) -> Point {
+        [
+            q[0] * self.query / self.vertex,
+            q[1] * self.query / self.vertex,
+        ]
+    }
+}
+
+/// A query coordinate that cannot be located exactly.
+#[derive(Debug)]
+pub(crate) enum QueryProblem {
+    /// NaN or infinite.
+    NonFinite,
+    /// Non-zero and closer to zero than the kernel's exact range.
+    TooSmall,
+}
+
+/// The triangles and the grid over their bounding boxes.
+pub(crate) struct Locator {
+    points: Vec<Point>,
+    triangles: Vec<[u32; 3]>,
+    scale: Scale,
+    /// The bounding box of every triangle corner: `[min, max]` per axis.
+    low: Point,
+    high: Point,
+    cells: [usize; 2],
+    /// Cells per unit length, per axis.
+    density: [f64; 2],
+    /// The triangles entered in cell `c` are `entries[starts[c]..starts[c + 1]]`,
+    /// by increasing index.
+    starts: Vec<usize>,
+    entries: Vec<u32>,
+}
+
+/// The grid is coarsened until it holds at most this many entries per
+/// triangle (plus a constant): thin triangles with long bounding boxes (a
+/// fan over a collinear run) would otherwise be entered in a whole row of
+/// cells each.
+const ENTRIES_PER_TRIANGLE: usize = 8;
+
+impl Locator {
+    /// The locator of `triangles` (counter-clockwise, indices into
+    /// `points`, the working coordinates), for queries in coordinates that
+    /// are the working ones divided by `10^exponent`. `None` when
+    /// `|exponent| > 22`.
+    pub(crate) fn new(points: &[Point], triangles: &[[u32; 3]], exponent: i32) -> Option<Self> {
+        let scale = Scale::of_exponent(exponent)?;
+        let mut low = [f64::INFINITY; 2];
+        let mut high = [f64::NEG_INFINITY; 2];
+        for &v in triangles.iter().flatten() {
+            for axis in 0..2 {
+                low[axis] = low[axis].min(points[v as usize][axis]);
+                high[axis] = high[axis].max(points[v as usize][axis]);
+            }
+        }
+        let mut locator = Locator {
+            points: points.to_vec(),
+            triangles: triangles.to_vec(),
+            scale,
+            low,
+            high,
+            cells: [1, 1],
+            density: [0.0; 2],
+            starts: Vec::new(),
+            entries: Vec::new(),
+        };
+        locator.bucket();
+        Some(locator)
+    }
+
+    /// Chooses about one cell per triangle, square in shape, and enters each
+    /// triangle in the cells of its bounding box, coarsening the grid while
+    /// that makes too many entries.
+    fn bucket(&mut self) {
+        let m = self.triangles.len().max(1);
+        let width = (self.high[0] - self.low[0]).max(f64::MIN_POSITIVE);
+        let height = (self.high[1] - self.low[1]).max(f64::MIN_POSITIVE);
+        let columns = ((m as f64 * width / height).sqrt().ceil() as usize).clamp(1, m);
+        let rows = m.div_ceil(columns).max(1);
+        self.cells = [columns, rows];
+        loop {
+            self.density = [
+                self.cells[0] as f64 / width,
+                self.cells[1] as f64 / height,
+            ];
+            let total: usize = (0..self.triangles.len())
+                .map(|i| {
+                    let [c0, c1, r0, r1] = self.cell_range(i);
+                    (c1 - c0 + 1) * (r1 - r0 + 1)
+                })
+                .sum();
+            if total <= ENTRIES_PER_TRIANGLE * m + 64 || self.cells == [1, 1] {
+                break;
+            }
+            self.cells = [self.cells[0].div_ceil(2), self.cells[1].div_ceil(2)];
+        }
+        let [columns, rows] = self.cells;
+        let mut counts = vec![0usize; columns * rows + 1];
+        for i in 0..self.triangles.len() {
+            let [c0, c1, r0, r1] = self.cell_range(i);
+            for r in r0..=r1 {
+                for c in c0..=c1 {
+                    counts[r * columns + c + 1] += 1;
+                }
+            }
+        }
+        for c in 1..counts.len() {
+            counts[c] += counts[c - 1];
+        }
+        let mut fill = counts.clone();
+        let mut entries = vec![0u32; counts[columns * rows]];
+        for i in 0..self.triangles.len() {
+            let [c0, c1, r0, r1] = self.cell_range(i);
+            for r in r0..=r1 {
+                for c in c0..=c1 {
+                    entries[fill[r * columns + c]] = i as u32;
+                    fill[r * columns + c] += 1;
+                }
+            }
+        }
+        self.starts = counts;
+        self.entries = entries;
+    }
+
+    /// The cell index along `axis` of coordinate `v`: monotone in `v`.
+    fn cell(&self, axis: usize, v: f64) -> usize {
+        let c = ((v - self.low[axis]) * self.density[axis]).floor();
+        // A negative or NaN `c` saturates to 0 in the cast.
+        (c as usize).min(self.cells[axis] - 1)
+    }
+
+    /// Triangle `i`'s bounding box as cells: `[column0, column1, row0, row1]`.
+    fn cell_range(&self, i: usize) -> [usize; 4] {
+        let corners = self.triangles[i].map(|v| self.points[v as usize]);
+        let (low, high) = bounding_box(&corners);
+        [
+            self.cell(0, low[0]),
+            self.cell(0, high[0]),
+            self.cell(1, low[1]),
+            self.cell(1, high[1]),
+        ]
+    }
+
+    /// The smallest index of a triangle that contains `q` (the caller's
+    /// coordinates), sides and corners included; `-1` when none does.
+    pub(crate) fn locate(&self, q: Point) -> Result<i64, QueryProblem> {
+        for v in q {
+            match check_coordinate(v) {
+                Ok(_) => {}
+                Err(CoordinateProblem::NonFinite) => return Err(QueryProblem::NonFinite),
+                // Beyond every corner (all are in the range), so outside.
+                Err(CoordinateProblem::OutOfRange) if v.abs() > 1.0 => return Ok(-1),
+                Err(CoordinateProblem::OutOfRange) => return Err(QueryProblem::TooSmall),
+            }
+        }
+        // A rounded coordinate outside `[low, high]` (doubles) means the
+        // exact one is outside too: rounding is monotone.
+        let w = self.scale.approximate(q);
+        if (0..2).any(|axis| w[axis] < self.low[axis] || w[axis] > self.high[axis]) {
+            return Ok(-1);
+        }
+        let cell = self.cell(1, w[1]) * self.cells[0] + self.cell(0, w[0]);
+        let candidates = &self.entries[self.starts[cell]..self.starts[cell + 1]];
+        for &i in candidates {
+            let corners = self.triangles[i as usize].map(|v| self.points[v as usize]);
+            let (low, high) = bounding_box(&corners);
+            if (0..2).any(|axis| w[axis] < low[axis] || w[axis] > high[axis]) {
+                continue;
+            }
+            let Scale { vertex, query } = self.scale;
+            let inside = (0..3).all(|j| {
+                orient_sign_scaled(corners[j], corners[(j + 1) % 3], q, vertex, query) >= 0
+            });
+            if inside {
+                return Ok(i64::from(i));
+            }
+        }
+        Ok(-1)
+    }
+}
+
+/// The `[min x, min y]` and `[max x, max y]` of `corners`.
+fn bounding_box(corners: &[Point; 3]) -> (Point, Point) {
+    let mut low = corners[0];
+    let mut high = corners[0];
+    for p in &corners[1..] {
+        for axis in 0..2 {
+            low[axis] = low[axis].min(p[axis]);
+            high[axis] = high[axis].max(p[axis]);
+        }
+    }
+    (low, high)
+}
