@@ -30,6 +30,12 @@ struct Scale {
 }
 
 impl Scale {
+    /// Working coordinates that are the caller's.
+    const UNIT: Scale = Scale {
+        vertex: 1.0,
+        query: 1.0,
+    };
+
     /// The scale of decimal input multiplied by `10^exponent`, or `None`
     /// when `10^|exponent|` is not a double (|exponent| > 22).
     fn of_exponent(exponent: i32) -> Option<Self> {
@@ -57,6 +63,25 @@ impl Scale {
             q[0] * self.query / self.vertex,
             q[1] * self.query / self.vertex,
         ]
+    }
+
+    /// `q` read as the input was: when both coordinates' shortest decimals
+    /// lie on the working grid, the working integers of those decimals.
+    /// A coordinate's decimal is `W·10^-k` for the integer `W` nearest its
+    /// scaled value when that decimal rounds back to it (one correctly
+    /// rounded operation) and `|W| < 10¹⁵`: a decimal of at most 15
+    /// significant digits is the only one that short rounding to its
+    /// double, so it is the shortest.
+    fn decimal(self, q: Point) -> Option<Point> {
+        if self.vertex == 1.0 && self.query == 1.0 {
+            return None;
+        }
+        let grid = |v: f64| {
+            let w = self.approximate([v, 0.0])[0].round();
+            let back = w * self.vertex / self.query;
+            (w.abs() < 1e15 && back == v).then_some(w)
+        };
+        Some([grid(q[0])?, grid(q[1])?])
     }
 }
 
@@ -133,10 +158,7 @@ impl Locator {
         let rows = m.div_ceil(columns).max(1);
         self.cells = [columns, rows];
         loop {
-            self.density = [
-                self.cells[0] as f64 / width,
-                self.cells[1] as f64 / height,
-            ];
+            self.density = [self.cells[0] as f64 / width, self.cells[1] as f64 / height];
             let total: usize = (0..self.triangles.len())
                 .map(|i| {
                     let [c0, c1, r0, r1] = self.cell_range(i);
@@ -207,9 +229,15 @@ impl Locator {
                 Err(CoordinateProblem::OutOfRange) => return Err(QueryProblem::TooSmall),
             }
         }
+        // A query on the input's decimal grid is located at its decimal,
+        // exactly; any other at its binary value.
+        let (q, scale) = match self.scale.decimal(q) {
+            Some(w) => (w, Scale::UNIT),
+            None => (q, self.scale),
+        };
         // A rounded coordinate outside `[low, high]` (doubles) means the
         // exact one is outside too: rounding is monotone.
-        let w = self.scale.approximate(q);
+        let w = scale.approximate(q);
         if (0..2).any(|axis| w[axis] < self.low[axis] || w[axis] > self.high[axis]) {
             return Ok(-1);
         }
@@ -221,7 +249,7 @@ impl Locator {
             if (0..2).any(|axis| w[axis] < low[axis] || w[axis] > high[axis]) {
                 continue;
             }
-            let Scale { vertex, query } = self.scale;
+            let Scale { vertex, query } = scale;
             let inside = (0..3).all(|j| {
                 orient_sign_scaled(corners[j], corners[(j + 1) % 3], q, vertex, query) >= 0
             });

@@ -254,13 +254,16 @@ impl Triangulation {
         }
         let t = &self.solution.triangulation;
         let n = self.read.input.points().len();
-        let values = py.detach(|| {
-            adjacency::vertex_to_simplex(t.triangles(), n, t.point_set().duplicates())
-        });
+        let values = py
+            .detach(|| adjacency::vertex_to_simplex(t.triangles(), n, t.point_set().duplicates()));
         let array = PyArray1::from_vec(py, int32_values(values)?);
         array.getattr("flags")?.setattr("writeable", false)?;
         let array = array.unbind();
-        Ok(self.vertex_to_simplex.get_or_init(|| array).bind(py).clone())
+        Ok(self
+            .vertex_to_simplex
+            .get_or_init(|| array)
+            .bind(py)
+            .clone())
     }
 
     /// (h, 2) int32: the boundary sides of the triangulated domain, each
@@ -285,10 +288,13 @@ impl Triangulation {
     /// the result an int32 array of shape (...). Exact: containment is
     /// decided by exact orientation signs, and a query on a side or a
     /// corner shared by several triangles gets the smallest of their
-    /// indices. Queries are doubles, located among the triangles as the
-    /// run computed them (for decimal input, at the decimals the points
-    /// were taken at). Raises ValueError for a query coordinate that is
-    /// NaN, infinite, or non-zero below 2**-142 in magnitude.
+    /// indices. Queries are taken as the points were: when the run was
+    /// "decimal-exact" on decimals scaled by 10**k, a query whose two
+    /// coordinates' reprs are decimals with at most k places (at most 15
+    /// significant digits) is located at those decimals, so
+    /// ``find_simplex(points)`` finds every point; any other query at its
+    /// binary value. Raises ValueError for a query coordinate that is NaN,
+    /// infinite, or non-zero below 2**-142 in magnitude.
     fn find_simplex<'py>(
         &self,
         py: Python<'py>,

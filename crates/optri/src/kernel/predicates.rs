@@ -614,7 +614,10 @@ mod tests {
     fn orient_scaled_reference(a: Point, b: Point, c: Point, s: f64, t: f64) -> i32 {
         use optri_oracle::{to_rational, BigRational};
         let scaled = |p: Point, f: f64| -> [BigRational; 2] {
-            [to_rational(p[0]) * to_rational(f), to_rational(p[1]) * to_rational(f)]
+            [
+                to_rational(p[0]) * to_rational(f),
+                to_rational(p[1]) * to_rational(f),
+            ]
         };
         let ([ax, ay], [bx, by], [cx, cy]) = (scaled(a, s), scaled(b, s), scaled(c, t));
         let d = (&bx - &ax) * (&cy - &ay) - (&by - &ay) * (&cx - &ax);
@@ -630,7 +633,13 @@ mod tests {
         // A query exactly on the scaled line, one ulp to either side, and
         // decimals whose doubles miss the line by their rounding error.
         let (a, b) = ([0.0, 0.0], [3.0, 1.0]);
-        let mut queries = vec![[0.375, 0.125], [0.3, 0.1], [0.6, 0.2], [0.9, 0.3], [1.5, 0.5]];
+        let mut queries = vec![
+            [0.375, 0.125],
+            [0.3, 0.1],
+            [0.6, 0.2],
+            [0.9, 0.3],
+            [1.5, 0.5],
+        ];
         for delta in [-1i64, 1] {
             let y = f64::from_bits((0.125f64.to_bits() as i64 + delta) as u64);
             queries.push([0.375, y]);
@@ -645,7 +654,13 @@ mod tests {
         for _ in 0..200 {
             queries.push([3.0 * next(), next()]);
         }
-        let scales = [(1.0, 10.0), (1.0, 1e22), (10.0, 1.0), (1e22, 1.0), (1.0, 1.0)];
+        let scales = [
+            (1.0, 10.0),
+            (1.0, 1e22),
+            (10.0, 1.0),
+            (1e22, 1.0),
+            (1.0, 1.0),
+        ];
         for (s, t) in scales {
             for &c in &queries {
                 let expected = orient_scaled_reference(a, b, c, s, t);
