@@ -70,10 +70,10 @@ pub(crate) fn vertex_to_simplex(
 /// once; were it not so, the sides are given sorted instead.
 pub(crate) fn boundary(triangles: &[[u32; 3]], neighbors: &[[i64; 3]]) -> Vec<[u32; 2]> {
     let mut sides: Vec<[u32; 2]> = Vec::new();
-    for (t, across) in triangles.iter().zip(neighbors) {
-        for j in 0..3 {
-            if across[j] < 0 {
-                sides.push(side(*t, j));
+    for (&t, across) in triangles.iter().zip(neighbors) {
+        for (j, &neighbor) in across.iter().enumerate() {
+            if neighbor < 0 {
+                sides.push(side(t, j));
             }
         }
     }
