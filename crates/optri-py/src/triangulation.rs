@@ -174,9 +174,12 @@ impl Triangulation {
         let locator = match self.locator.get() {
             Some(locator) => locator,
             None => {
-                let triangles = self.solution.triangulation.triangles();
+                let t = &self.solution.triangulation;
                 let (points, exponent) = (self.read.working_points(), self.read.scale_exponent());
-                let built = py.detach(|| Locator::new(points, triangles, exponent));
+                let convex = matches!(t.domain(), optri::Domain::ConvexHull);
+                let neighbors = self.neighbor_table(py);
+                let built =
+                    py.detach(|| Locator::new(points, t.triangles(), neighbors, convex, exponent));
                 self.locator.get_or_init(|| built)
             }
         };

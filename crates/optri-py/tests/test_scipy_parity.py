@@ -170,6 +170,27 @@ def test_polygon_attributes_and_location():
     assert found == [smallest_containing(corners, (exact(x), exact(y))) for x, y in qs]
 
 
+@pytest.mark.parametrize("criterion", ["delaunay", "min-weight"])
+def test_location_in_a_comb_polygon_matches_brute_force(criterion):
+    # Walks from a start near the query leave the comb through its notches;
+    # the answer must still be the smallest triangle holding the query.
+    teeth = 6
+    ring = [(0, 0), (4 * teeth, 0)]
+    for k in reversed(range(teeth)):
+        ring += [(4 * k + 3, 8), (4 * k + 1, 8)]
+        if k > 0:
+            ring += [(4 * k + 1, 2), (4 * k - 1, 2)]
+    t = optri.triangulate_polygon(ring, criterion)
+    check_scipy_attributes(t, ring)
+    corners = [[(exact(ring[i][0]), exact(ring[i][1])) for i in tri] for tri in t.simplices.tolist()]
+    rnd = random.Random(8)
+    qs = [(rnd.uniform(-1, 4 * teeth + 1), rnd.uniform(-1, 9)) for _ in range(400)]
+    qs += [(x / 2, y / 2) for x in range(-1, 8 * teeth + 2) for y in range(-1, 18)]
+    found = t.find_simplex(qs).tolist()
+    assert found == [smallest_containing(corners, (exact(x), exact(y))) for x, y in qs]
+    assert 0 < sum(f >= 0 for f in found) < len(qs)
+
+
 def test_decimal_input_is_located_at_its_decimals():
     # 0.15, 0.05 is on the side from (0.1, 0) to (0.2, 0.1) as written, so
     # it is a hull vertex between them; located as decimals, every input
