@@ -59,7 +59,7 @@ pub fn incircle_sign(a: Point, b: Point, c: Point, d: Point) -> i32 {
 /// Exact for coordinates in the kernel's range (0 or a magnitude in
 /// [`MIN_COORDINATE`](super::MIN_COORDINATE)`..=`[`MAX_COORDINATE`](super::MAX_COORDINATE))
 /// and integer scales `1 ≤ s, t ≤ 2⁷⁴`: every product is a two-term
-/// expansion by [`two_product`] (its error term is a multiple of 2⁻¹⁹⁴, far
+/// expansion by an exact product (its error term is a multiple of 2⁻¹⁹⁴, far
 /// from underflow), and the determinant, expanded over those terms, is
 /// summed exactly. With `s = t = 1` it is [`orient_sign`].
 pub fn orient_sign_scaled(a: Point, b: Point, c: Point, s: f64, t: f64) -> i32 {
