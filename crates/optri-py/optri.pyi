@@ -18,6 +18,7 @@ SCHEMA_VERSION: int
 _ArrayLike = npt.ArrayLike
 _StrPath = Union[str, "PathLike[str]"]
 _IndexArray = npt.NDArray[np.int64]
+_Int32Array = npt.NDArray[np.int32]
 _PointArray = npt.NDArray[np.float64]
 
 class _Stats(TypedDict):
@@ -79,7 +80,9 @@ class Triangulation:
     """An optimal (or, where ``exact`` is False, best known) triangulation.
 
     The arrays are read-only; indices are 0-based input indices (ring
-    positions for a polygon).
+    positions for a polygon). ``simplices``, ``neighbors``,
+    ``vertex_to_simplex``, ``convex_hull`` and ``find_simplex`` follow
+    ``scipy.spatial.Delaunay`` (int32, scipy's meanings).
     """
 
     @property
@@ -89,8 +92,21 @@ class Triangulation:
     def elevations(self) -> Optional[npt.NDArray[np.float64]]:
         """(n,) float64: every input point's elevation, or None without them."""
     @property
-    def simplices(self) -> _IndexArray:
-        """(m, 3) int64: the triangles, counter-clockwise."""
+    def simplices(self) -> _Int32Array:
+        """(m, 3) int32: the triangles, counter-clockwise."""
+    @property
+    def neighbors(self) -> _Int32Array:
+        """(m, 3) int32: ``neighbors[i, j]`` is the triangle across the side
+        opposite corner ``simplices[i, j]``, -1 on the boundary."""
+    @property
+    def vertex_to_simplex(self) -> _Int32Array:
+        """(n,) int32: the smallest index of a triangle with each input point
+        as a corner; a merged duplicate maps as the point it was merged into."""
+    @property
+    def convex_hull(self) -> _Int32Array:
+        """(h, 2) int32: the boundary sides ``[a, b]`` of the triangulated
+        domain (the hull, or the polygon), domain on the left, counter-clockwise
+        from the smallest vertex index."""
     @property
     def edges(self) -> _IndexArray:
         """(k, 2) int64: every edge once, ``[a, b]`` with a < b, sorted."""
@@ -130,6 +146,20 @@ class Triangulation:
     @property
     def document(self) -> Dict[str, Any]:
         """The whole JSON document as a dict."""
+    @property
+    def __geo_interface__(self) -> Dict[str, Any]:
+        """A GeoJSON-like MultiPolygon: one closed counter-clockwise ring per
+        simplex, so ``shapely.geometry.shape(t)`` works."""
+    def find_simplex(self, xi: _ArrayLike) -> _Int32Array:
+        """The index of a triangle containing each query of ``xi`` (shape
+        (..., 2)) as an int32 array of shape (...), -1 outside. Exact; a query
+        on a shared side or corner gets the smallest index. For decimal input,
+        a query whose reprs lie on the input's decimal grid is taken at those
+        decimals, any other at its binary value. ValueError for NaN, infinite
+        or non-zero coordinates below 2**-142 in magnitude."""
+    def to_matplotlib(self) -> Any:
+        """A ``matplotlib.tri.Triangulation`` of ``points`` and ``simplices``
+        (ImportError naming matplotlib when it is missing)."""
     def to_json(self, pretty: bool = False) -> str:
         """The JSON document ``optri triangulate --json`` prints."""
     def write(self, path: _StrPath) -> List[Path]:

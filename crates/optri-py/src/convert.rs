@@ -4,7 +4,8 @@
 use numpy::{PyArray1, PyArray2, PyArrayMethods, PyUntypedArrayMethods};
 use optri::{Error, Interruption};
 use pyo3::exceptions::{
-    PyMemoryError, PyOSError, PyRuntimeError, PyTimeoutError, PyTypeError, PyValueError,
+    PyMemoryError, PyOSError, PyOverflowError, PyRuntimeError, PyTimeoutError, PyTypeError,
+    PyValueError,
 };
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
@@ -229,6 +230,33 @@ pub(crate) fn index_array<const K: usize>(
     rows: &[[u32; K]],
 ) -> PyResult<Py<PyArray2<i64>>> {
     let flat: Vec<i64> = rows.iter().flatten().map(|&i| i64::from(i)).collect();
+    let array = PyArray1::from_vec(py, flat).reshape([rows.len(), K])?;
+    array.getattr("flags")?.setattr("writeable", false)?;
+    Ok(array.unbind())
+}
+
+/// `values` as int32, scipy's dtype for `simplices`, `neighbors` and the
+/// other index arrays of `scipy.spatial.Delaunay`: `OverflowError` for an
+/// index beyond 2³¹ − 1 (more points or triangles than int32 can number).
+pub(crate) fn int32_values(values: impl IntoIterator<Item = i64>) -> PyResult<Vec<i32>> {
+    values
+        .into_iter()
+        .map(|v| {
+            i32::try_from(v).map_err(|_| {
+                PyOverflowError::new_err(format!(
+                    "index {v} does not fit the int32 index arrays (scipy's convention)"
+                ))
+            })
+        })
+        .collect()
+}
+
+/// A read-only `(len, K)` int32 array of index tuples, as [`int32_values`].
+pub(crate) fn int32_array<const K: usize, T: Copy + Into<i64>>(
+    py: Python<'_>,
+    rows: &[[T; K]],
+) -> PyResult<Py<PyArray2<i32>>> {
+    let flat = int32_values(rows.iter().flatten().map(|&i| i.into()))?;
     let array = PyArray1::from_vec(py, flat).reshape([rows.len(), K])?;
     array.getattr("flags")?.setattr("writeable", false)?;
     Ok(array.unbind())

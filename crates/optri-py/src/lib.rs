@@ -7,7 +7,9 @@
 //! criterion that lands in the registry is callable from Python without a
 //! change here, and every result attribute is a field of the document
 //! `optri triangulate --json` prints. Conventions follow `scipy.spatial`:
-//! `(n, 2)` float arrays in, `(m, 3)` / `(k, 2)` int64 index arrays out.
+//! `(n, 2)` float arrays in; `simplices`, `neighbors`, `vertex_to_simplex`,
+//! `convex_hull` and `find_simplex` as scipy's `Delaunay` gives them (int32),
+//! the other index arrays (`edges`, `duplicates`, `graph`) int64.
 //!
 //! Errors: the library's message, as `ValueError` for bad input and
 //! arguments, `OSError` for files, `RuntimeError` for a bug. Nothing here
@@ -15,7 +17,9 @@
 //! `PanicException`, never an abort. The GIL is released while the library
 //! works (`Python::detach`), so other Python threads run meanwhile.
 
+mod adjacency;
 mod convert;
+mod location;
 mod triangulation;
 
 use convert::{
@@ -414,7 +418,8 @@ fn read_polygon<'py>(
 /// Exact optimal planar triangulations and proximity graphs.
 ///
 /// ``triangulate(points, criterion)`` returns a ``Triangulation`` (attributes
-/// as scipy.spatial.Delaunay: ``points``, ``simplices``; plus ``exact``,
+/// as scipy.spatial.Delaunay: ``points``, ``simplices``, ``neighbors``,
+/// ``vertex_to_simplex``, ``convex_hull``, ``find_simplex``; plus ``exact``,
 /// ``algorithm``, ``stats``, ``timing_ms``, ``duplicates`` and the whole JSON
 /// ``document``); ``graph(points, kind)`` an edge array; ``compare`` every
 /// criterion at once; ``registry()`` is the registry listing (the JSON of

@@ -5,12 +5,18 @@
 //! JSON names and cannot drift from them; the arrays come from the same
 //! triangulation the document describes.
 
-use crate::convert::{index_array, json_text_to_py, point_array, to_py_err, value_array};
+use crate::adjacency;
+use crate::convert::{
+    index_array, int32_array, int32_values, json_text_to_py, point_array, points_arg, to_py_err,
+    value_array,
+};
+use crate::location::{Locator, QueryProblem};
 use numpy::{PyArray1, PyArray2};
 use optri::io::{self, ReadInput, TriangulationReport, WriteOptions};
 use optri::{Phase, Solution};
-use pyo3::exceptions::PyRuntimeError;
+use pyo3::exceptions::{PyImportError, PyRuntimeError, PyValueError};
 use pyo3::prelude::*;
+use pyo3::types::{PyDict, PyTuple};
 use serde::de::{Deserialize, Deserializer, IgnoredAny, MapAccess, Visitor};
 use serde_json::value::RawValue;
 use std::fmt;
@@ -70,10 +76,14 @@ impl Fields {
 /// An optimal (or, where `exact` is false, best known) triangulation.
 ///
 /// Attributes follow scipy.spatial.Delaunay: `points` (n, 2) float64, every
-/// input point; `elevations` (n,) float64 or None; `simplices` (m, 3) int64, counter-clockwise triangles as
-/// input indices; `edges` (k, 2) int64, sorted `[a, b]` pairs with a < b;
-/// `duplicates` (d, 2) int64, `[dropped, kept]` input indices of merged
-/// duplicate points. The arrays are read-only. The other attributes are the
+/// input point; `simplices` (m, 3) int32, counter-clockwise triangles as
+/// input indices; `neighbors` (m, 3) int32, the triangle opposite each
+/// corner (-1 on the boundary); `vertex_to_simplex` (n,) int32;
+/// `convex_hull` (h, 2) int32, the boundary sides; `find_simplex(xi)`,
+/// exact point location. Besides: `elevations` (n,) float64 or None;
+/// `edges` (k, 2) int64, sorted `[a, b]` pairs with a < b; `duplicates`
+/// (d, 2) int64, `[dropped, kept]` input indices of merged duplicate
+/// points. The arrays are read-only. The other attributes are the
 /// fields of the JSON document `optri triangulate --json` prints (see
 /// `document` and `to_json`), written on the first access to one of them
 /// (for large inputs that costs about as much as the quality measures of
@@ -94,10 +104,17 @@ pub struct Triangulation {
     points: Py<PyArray2<f64>>,
     /// The input's elevations, one per point, if it had them.
     elevations: Option<Py<PyArray1<f64>>>,
-    simplices: Py<PyArray2<i64>>,
+    simplices: Py<PyArray2<i32>>,
     duplicates: Py<PyArray2<i64>>,
-    /// Built on first use, as `fields`.
+    /// Built on first use, as `fields`, and so are the attributes below.
     edges: OnceLock<Py<PyArray2<i64>>>,
+    /// The triangle across each side, as [`adjacency::neighbors`].
+    neighbor_table: OnceLock<Vec<[i64; 3]>>,
+    neighbors: OnceLock<Py<PyArray2<i32>>>,
+    vertex_to_simplex: OnceLock<Py<PyArray1<i32>>>,
+    convex_hull: OnceLock<Py<PyArray2<i32>>>,
+    /// `None` when the decimal scale is beyond what the locator takes.
+    locator: OnceLock<Option<Locator>>,
 }
 
 impl Triangulation {
@@ -115,9 +132,14 @@ impl Triangulation {
                 Some(z) => Some(value_array(py, z)?),
                 None => None,
             },
-            simplices: index_array(py, t.triangles())?,
+            simplices: int32_array(py, t.triangles())?,
             duplicates: index_array(py, t.point_set().duplicates())?,
             edges: OnceLock::new(),
+            neighbor_table: OnceLock::new(),
+            neighbors: OnceLock::new(),
+            vertex_to_simplex: OnceLock::new(),
+            convex_hull: OnceLock::new(),
+            locator: OnceLock::new(),
             fields: OnceLock::new(),
             solution,
             read,
@@ -147,6 +169,40 @@ impl Triangulation {
         Ok(self.fields.get_or_init(|| fields))
     }
 
+    /// The point locator, built (without the GIL) on first use.
+    fn locator(&self, py: Python<'_>) -> PyResult<&Locator> {
+        let locator = match self.locator.get() {
+            Some(locator) => locator,
+            None => {
+                let t = &self.solution.triangulation;
+                let (points, exponent) = (self.read.working_points(), self.read.scale_exponent());
+                let convex = matches!(t.domain(), optri::Domain::ConvexHull);
+                let neighbors = self.neighbor_table(py);
+                let built =
+                    py.detach(|| Locator::new(points, t.triangles(), neighbors, convex, exponent));
+                self.locator.get_or_init(|| built)
+            }
+        };
+        locator.as_ref().ok_or_else(|| {
+            PyValueError::new_err(format!(
+                "find_simplex: the points were decimals computed times 10^{}, beyond the \
+                 10^±22 it locates exactly",
+                self.read.scale_exponent()
+            ))
+        })
+    }
+
+    /// The triangle across each side, computed (without the GIL) on first
+    /// use.
+    fn neighbor_table(&self, py: Python<'_>) -> &[[i64; 3]] {
+        if let Some(table) = self.neighbor_table.get() {
+            return table;
+        }
+        let triangles = self.solution.triangulation.triangles();
+        let table = py.detach(|| adjacency::neighbors(triangles));
+        self.neighbor_table.get_or_init(|| table)
+    }
+
     /// The document field `name` (`None` when the document has no such
     /// field, as for `bound` on most results).
     fn field<'py>(&self, py: Python<'py>, name: &str) -> PyResult<Bound<'py, PyAny>> {
@@ -172,10 +228,161 @@ impl Triangulation {
         self.elevations.as_ref().map(|z| z.bind(py).clone())
     }
 
-    /// (m, 3) int64: the triangles as input indices, counter-clockwise.
+    /// (m, 3) int32: the triangles as input indices, counter-clockwise.
     #[getter]
-    fn simplices<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray2<i64>> {
+    fn simplices<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray2<i32>> {
         self.simplices.bind(py).clone()
+    }
+
+    /// (m, 3) int32: `neighbors[i, j]` is the triangle that shares with
+    /// triangle `i` the side opposite its corner `simplices[i, j]`, -1 where
+    /// that side is on the boundary (scipy's meaning).
+    #[getter]
+    fn neighbors<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArray2<i32>>> {
+        if let Some(array) = self.neighbors.get() {
+            return Ok(array.bind(py).clone());
+        }
+        let array = int32_array(py, self.neighbor_table(py))?;
+        Ok(self.neighbors.get_or_init(|| array).bind(py).clone())
+    }
+
+    /// (n,) int32: for each input point, the smallest index of a triangle
+    /// with it as a corner; a merged duplicate maps as the point it was
+    /// merged into (scipy gives -1 for the duplicates Qhull drops), so the
+    /// triangle always contains the point.
+    #[getter]
+    fn vertex_to_simplex<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArray1<i32>>> {
+        if let Some(array) = self.vertex_to_simplex.get() {
+            return Ok(array.bind(py).clone());
+        }
+        let t = &self.solution.triangulation;
+        let n = self.read.input.points().len();
+        let values = py
+            .detach(|| adjacency::vertex_to_simplex(t.triangles(), n, t.point_set().duplicates()));
+        let array = PyArray1::from_vec(py, int32_values(values)?);
+        array.getattr("flags")?.setattr("writeable", false)?;
+        let array = array.unbind();
+        Ok(self
+            .vertex_to_simplex
+            .get_or_init(|| array)
+            .bind(py)
+            .clone())
+    }
+
+    /// (h, 2) int32: the boundary sides of the triangulated domain, each
+    /// `[a, b]` with the domain on its left, in counter-clockwise order from
+    /// the smallest vertex index. For points, the convex hull's edges (every
+    /// point on the hull boundary is a vertex, so a side between collinear
+    /// hull points is one edge each); for a polygon, the polygon's sides.
+    #[getter]
+    fn convex_hull<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArray2<i32>>> {
+        if let Some(array) = self.convex_hull.get() {
+            return Ok(array.bind(py).clone());
+        }
+        let triangles = self.solution.triangulation.triangles();
+        let neighbors = self.neighbor_table(py);
+        let sides = py.detach(|| adjacency::boundary(triangles, neighbors));
+        let array = int32_array(py, &sides)?;
+        Ok(self.convex_hull.get_or_init(|| array).bind(py).clone())
+    }
+
+    /// The index of a triangle containing each query point, -1 for a point
+    /// outside every triangle: ``xi`` is an array-like of shape (..., 2),
+    /// the result an int32 array of shape (...). Exact: containment is
+    /// decided by exact orientation signs, and a query on a side or a
+    /// corner shared by several triangles gets the smallest of their
+    /// indices. Queries are taken as the points were: when the run was
+    /// "decimal-exact" on decimals scaled by 10**k, a query whose two
+    /// coordinates' reprs are decimals with at most k places (at most 15
+    /// significant digits) is located at those decimals, so
+    /// ``find_simplex(points)`` finds every point; any other query at its
+    /// binary value. Raises ValueError for a query coordinate that is NaN,
+    /// infinite, or non-zero below 2**-142 in magnitude.
+    fn find_simplex<'py>(
+        &self,
+        py: Python<'py>,
+        xi: &Bound<'py, PyAny>,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        let array = py
+            .import("numpy")?
+            .call_method1("asarray", (xi,))
+            .map_err(|e| {
+                PyValueError::new_err(format!(
+                    "xi must be an array-like of shape (..., 2): {}",
+                    e.value(py)
+                ))
+            })?;
+        let shape: Vec<usize> = array.getattr("shape")?.extract()?;
+        let Some((&2, leading)) = shape.split_last() else {
+            return Err(PyValueError::new_err(format!(
+                "xi must have shape (..., 2), got {:?}",
+                shape
+            )));
+        };
+        let rows = array.call_method1("reshape", ((-1i64, 2i64),))?;
+        let queries = points_arg(py, &rows, "xi")?;
+        let locator = self.locator(py)?;
+        let found = py.detach(|| {
+            queries
+                .iter()
+                .enumerate()
+                .map(|(k, &q)| locator.locate(q).map_err(|problem| (k, q, problem)))
+                .collect::<Result<Vec<i64>, _>>()
+        });
+        let found = found.map_err(|(k, q, problem)| {
+            let why = match problem {
+                QueryProblem::NonFinite => "is not finite",
+                QueryProblem::TooSmall => {
+                    "has a non-zero coordinate below 2**-142 in magnitude, beyond the exact range"
+                }
+            };
+            PyValueError::new_err(format!("query {k} ({}, {}) {why}", q[0], q[1]))
+        })?;
+        let result = PyArray1::from_vec(py, int32_values(found)?);
+        result.call_method1("reshape", (PyTuple::new(py, leading)?,))
+    }
+
+    /// A ``matplotlib.tri.Triangulation`` of ``points`` and ``simplices``
+    /// (for ``triplot``, ``tripcolor``, ``tricontour``). Needs matplotlib,
+    /// imported here: ImportError naming it when it is missing.
+    fn to_matplotlib<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        let tri = py.import("matplotlib.tri").map_err(|e| {
+            PyImportError::new_err(format!(
+                "Triangulation.to_matplotlib needs matplotlib (pip install matplotlib): {}",
+                e.value(py)
+            ))
+        })?;
+        let columns = self.points.bind(py).getattr("T")?;
+        tri.getattr("Triangulation")?.call1((
+            columns.get_item(0)?,
+            columns.get_item(1)?,
+            self.simplices.bind(py),
+        ))
+    }
+
+    /// The triangles as a GeoJSON-like MultiPolygon (the ``__geo_interface__``
+    /// protocol, so ``shapely.geometry.shape(t)`` works): a dict with
+    /// "type" and "coordinates", one polygon per simplex, its one ring
+    /// closed and counter-clockwise, in the input coordinates.
+    #[getter]
+    fn __geo_interface__<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        let points = self.read.input.points();
+        let polygons: Vec<[[(f64, f64); 4]; 1]> = self
+            .solution
+            .triangulation
+            .triangles()
+            .iter()
+            .map(|&[a, b, c]| {
+                [[a, b, c, a].map(|v| {
+                    let p = points[v as usize];
+                    (p[0], p[1])
+                })]
+            })
+            .collect();
+        let dict = PyDict::new(py);
+        dict.set_item("type", "MultiPolygon")?;
+        dict.set_item("coordinates", polygons)?;
+        Ok(dict)
     }
 
     /// (k, 2) int64: every edge once, `[a, b]` with a < b, sorted.

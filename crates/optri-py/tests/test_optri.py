@@ -74,7 +74,7 @@ def check_triangulation(t, points):
     """Counter-clockwise simplices of input indices that exactly tile the
     convex hull of the distinct points, each of which is a vertex."""
     s = t.simplices
-    assert s.dtype == np.int64 and s.ndim == 2 and s.shape[1] == 3
+    assert s.dtype == np.int32 and s.ndim == 2 and s.shape[1] == 3
     dropped = {int(d) for d, _ in t.duplicates}
     distinct = {i for i in range(len(points)) if i not in dropped}
     for a, b, c in s.tolist():

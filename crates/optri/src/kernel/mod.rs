@@ -95,8 +95,8 @@ pub(crate) use predicates::{
     DiamondTriangles,
 };
 pub use predicates::{
-    compare_angles, compare_areas, compare_lengths, incircle_sign, orient_sign, properly_cross,
-    segments_intersect,
+    compare_angles, compare_areas, compare_lengths, incircle_sign, orient_sign, orient_sign_scaled,
+    properly_cross, segments_intersect,
 };
 pub(crate) use predicates::{compare_corner_angles, cross_sign, dot_sign, on_open_segment};
 pub(crate) use squared_length::SquaredLength;

@@ -45,6 +45,47 @@ pub fn incircle_sign(a: Point, b: Point, c: Point, d: Point) -> i32 {
     }
 }
 
+/// Exact sign of the orientation of `a·s, b·s, c·t`, every product taken
+/// exactly (never rounded): `1` counter-clockwise, `-1` clockwise, `0`
+/// collinear.
+///
+/// Locates a point given in one coordinate system among points computed in
+/// another, scaled one: decimal input runs on integers `10^k` times the
+/// decimals, and a query `c` in the caller's doubles is the exact point
+/// `c·10^k` there (`s = 1`, `t = 10^k`), or, for `k < 0`, the vertices are
+/// `10^-k` times larger than the working integers (`s = 10^-k`, `t = 1`);
+/// orientation is homogeneous, so scaling all three alike keeps its sign.
+///
+/// Exact for coordinates in the kernel's range (0 or a magnitude in
+/// [`MIN_COORDINATE`](super::MIN_COORDINATE)`..=`[`MAX_COORDINATE`](super::MAX_COORDINATE))
+/// and integer scales `1 ≤ s, t ≤ 2⁷⁴`: every product is a two-term
+/// expansion by an exact product (its error term is a multiple of 2⁻¹⁹⁴, far
+/// from underflow), and the determinant, expanded over those terms, is
+/// summed exactly. With `s = t = 1` it is [`orient_sign`].
+pub fn orient_sign_scaled(a: Point, b: Point, c: Point, s: f64, t: f64) -> i32 {
+    if s == 1.0 && t == 1.0 {
+        return orient_sign(a, b, c);
+    }
+    let scaled = |p: Point, f: f64| [two_product(p[0], f), two_product(p[1], f)];
+    let [ax, ay] = scaled(a, s);
+    let [bx, by] = scaled(b, s);
+    let [cx, cy] = scaled(c, t);
+    // ax·by − ay·bx + bx·cy − by·cx + cx·ay − cy·ax: the Ax·Ay terms of the
+    // difference form cancel, so six products of two-term values suffice.
+    let mut sum = Expansion::new();
+    for (p, q, sign) in [
+        (ax, by, 1.0),
+        (ay, bx, -1.0),
+        (bx, cy, 1.0),
+        (by, cx, -1.0),
+        (cx, ay, 1.0),
+        (cy, ax, -1.0),
+    ] {
+        sum.add_two_term_product(p, q, sign);
+    }
+    sum.sign()
+}
+
 /// Exact comparison of squared Euclidean lengths: `|ab|²` versus `|cd|²`.
 ///
 /// Never computes a rounded length: a filtered `f64` evaluation decides
@@ -567,6 +608,71 @@ pub fn segments_intersect(a: Point, b: Point, c: Point, d: Point) -> bool {
 mod tests {
     use super::*;
     use std::cmp::Ordering::*;
+
+    /// The exact orientation of `a·s, b·s, c·t` in rational arithmetic
+    /// (the oracle's, which shares no code with the kernel).
+    fn orient_scaled_reference(a: Point, b: Point, c: Point, s: f64, t: f64) -> i32 {
+        use optri_oracle::{to_rational, BigRational};
+        let scaled = |p: Point, f: f64| -> [BigRational; 2] {
+            [
+                to_rational(p[0]) * to_rational(f),
+                to_rational(p[1]) * to_rational(f),
+            ]
+        };
+        let ([ax, ay], [bx, by], [cx, cy]) = (scaled(a, s), scaled(b, s), scaled(c, t));
+        let d = (&bx - &ax) * (&cy - &ay) - (&by - &ay) * (&cx - &ax);
+        match d.cmp(&BigRational::from_integer(0.into())) {
+            Greater => 1,
+            Less => -1,
+            Equal => 0,
+        }
+    }
+
+    #[test]
+    fn scaled_orientation_matches_rational_arithmetic() {
+        // A query exactly on the scaled line, one ulp to either side, and
+        // decimals whose doubles miss the line by their rounding error.
+        let (a, b) = ([0.0, 0.0], [3.0, 1.0]);
+        let mut queries = vec![
+            [0.375, 0.125],
+            [0.3, 0.1],
+            [0.6, 0.2],
+            [0.9, 0.3],
+            [1.5, 0.5],
+        ];
+        for delta in [-1i64, 1] {
+            let y = f64::from_bits((0.125f64.to_bits() as i64 + delta) as u64);
+            queries.push([0.375, y]);
+        }
+        let mut state = 0x9e37_79b9_7f4a_7c15u64;
+        let mut next = || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            (state >> 11) as f64 / (1u64 << 53) as f64
+        };
+        for _ in 0..200 {
+            queries.push([3.0 * next(), next()]);
+        }
+        let scales = [
+            (1.0, 10.0),
+            (1.0, 1e22),
+            (10.0, 1.0),
+            (1e22, 1.0),
+            (1.0, 1.0),
+        ];
+        for (s, t) in scales {
+            for &c in &queries {
+                let expected = orient_scaled_reference(a, b, c, s, t);
+                let got = orient_sign_scaled(a, b, c, s, t);
+                assert_eq!(got, expected, "c = {c:?}, s = {s}, t = {t}");
+            }
+        }
+        assert_eq!(orient_sign_scaled(a, b, [0.375, 0.125], 1.0, 8.0), 0);
+        // The doubles of 0.3 and 0.1 are not 3/10 and 1/10: scaled by ten
+        // they miss the line through (0, 0) and (3, 1).
+        assert_ne!(orient_sign_scaled(a, b, [0.3, 0.1], 1.0, 10.0), 0);
+    }
 
     #[test]
     fn orientation_of_near_collinear_points_is_exact() {
