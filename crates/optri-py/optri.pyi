@@ -163,7 +163,7 @@ class Triangulation:
     def to_json(self, pretty: bool = False) -> str:
         """The JSON document ``optri triangulate --json`` prints."""
     def write(self, path: _StrPath) -> List[Path]:
-        """Writes .json, .svg, .geojson, .ele or .edge (+ .node); returns the paths."""
+        """Writes .json, .svg, .geojson, .ele or .edge (+ .node), .obj, .ply or .off; returns the paths."""
 
 def triangulate(
     points: _ArrayLike,
@@ -220,7 +220,7 @@ def graph_kinds() -> List[_GraphKindEntry]:
     """Every proximity graph kind of the registry."""
 
 def read_points(path: _StrPath, format: Optional[str] = None) -> _PointArray:
-    """Reads a point file (text, node, poly, tsplib, geojson) as an (n, 2) array."""
+    """Reads a point file (text, node, poly, tsplib, geojson, ply, obj) as an (n, 2) array."""
 
 def read_polygon(path: _StrPath, format: Optional[str] = None) -> _PointArray:
     """Reads a simple polygon's ring (.poly or GeoJSON Polygon) as an (n, 2) array."""

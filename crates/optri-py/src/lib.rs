@@ -367,8 +367,9 @@ fn input_format(format: Option<&str>) -> PyResult<Option<InputFormat>> {
 }
 
 /// Reads a point file with the library's readers and returns an (n, 2)
-/// float64 array in file order. ``format``: "text", "node", "poly", "tsplib"
-/// or "geojson"; by default from the extension, else from the content.
+/// float64 array in file order. ``format``: "text", "node", "poly", "tsplib",
+/// "geojson", "ply" or "obj"; by default from the extension, else from the
+/// content.
 ///
 /// Raises ValueError naming the file and line of the first problem (e.g.
 /// "pts.txt:3: 'x' is not a number") and OSError when the file cannot be

@@ -488,8 +488,9 @@ impl Triangulation {
     }
 
     /// Writes the triangulation to `path`, the format by its extension as
-    /// the CLI's `-o`: .json (this document), .svg, .geojson, or .ele or
-    /// .edge (and the .node beside it). Returns the paths written.
+    /// the CLI's `-o`: .json (this document), .svg, .geojson, .ele or .edge
+    /// (and the .node beside it), .obj, .ply (binary) or .off. Returns the
+    /// paths written.
     fn write(&self, py: Python<'_>, path: PathBuf) -> PyResult<Vec<PathBuf>> {
         let report = self.report();
         py.detach(|| io::write(report, &path, &WriteOptions::default()))
