@@ -50,27 +50,15 @@ impl ConstrainedDelaunay {
     /// constraints cross or pass through a point.
     pub fn new(points: &[Point], constraints: &[[u32; 2]]) -> Result<Self> {
         let sorted = sorted_pairs(constraints);
-        let mut cdt: ConstrainedDelaunayTriangulation<Vertex> =
-            ConstrainedDelaunayTriangulation::with_capacity(
-                points.len(),
-                3 * points.len(),
-                2 * points.len(),
-            );
-        let handles = insert_in_brio_order(&mut cdt, points)?;
-        for &[u, v] in &sorted {
-            // Empty if the constraint crosses one added before (spade then
-            // changes nothing), two or more pieces if it passes through a
-            // point.
-            let pieces = cdt.try_add_constraint(handles[u as usize], handles[v as usize]);
-            if pieces.len() != 1 {
-                return Err(Error::Internal(format!(
-                    "the constraint {{{u}, {v}}} among {} constraints on {} points crosses \
-                     another or passes through a point ({} pieces)",
-                    sorted.len(),
-                    points.len(),
-                    pieces.len()
-                )));
-            }
+        let (cdt, unfit) = constrained_in_order(points, &sorted)?;
+        if let Some(i) = unfit {
+            let [u, v] = sorted[i];
+            return Err(Error::Internal(format!(
+                "the constraint {{{u}, {v}}} among {} constraints on {} points crosses \
+                 another or passes through a point",
+                sorted.len(),
+                points.len()
+            )));
         }
         let (mut triangles, mut neighbours) = triangle_arrays(&cdt);
         drop(cdt);
@@ -107,7 +95,6 @@ impl ConstrainedDelaunay {
     }
 }
 
-/// The pairs `[min, max]` of `constraints`, sorted, without repeats.
 /// The first of `edges` (in their order) that crosses an earlier one or
 /// passes through a point, when each is added in turn as a constraint to
 /// the Delaunay triangulation of `points` (distinct, not all collinear);
@@ -119,6 +106,17 @@ impl ConstrainedDelaunay {
 /// # Errors
 /// [`Error::Internal`] if spade fails or drops a point.
 pub fn first_unfit_constraint(points: &[Point], edges: &[[u32; 2]]) -> Result<Option<usize>> {
+    constrained_in_order(points, edges).map(|(_, unfit)| unfit)
+}
+
+/// The Delaunay triangulation of `points` (inserted in BRIO order) with
+/// `edges` added in turn as constraints, up to the first that crosses an
+/// earlier one or passes through a point (spade then changes nothing, or
+/// splits it): the triangulation and that edge's position, if any.
+fn constrained_in_order(
+    points: &[Point],
+    edges: &[[u32; 2]],
+) -> Result<(ConstrainedDelaunayTriangulation<Vertex>, Option<usize>)> {
     let mut cdt: ConstrainedDelaunayTriangulation<Vertex> =
         ConstrainedDelaunayTriangulation::with_capacity(
             points.len(),
@@ -127,17 +125,17 @@ pub fn first_unfit_constraint(points: &[Point], edges: &[[u32; 2]]) -> Result<Op
         );
     let handles = insert_in_brio_order(&mut cdt, points)?;
     for (i, &[u, v]) in edges.iter().enumerate() {
-        if cdt
-            .try_add_constraint(handles[u as usize], handles[v as usize])
-            .len()
-            != 1
-        {
-            return Ok(Some(i));
+        // Empty if the constraint crosses one added before, two or more
+        // pieces if it passes through a point.
+        let pieces = cdt.try_add_constraint(handles[u as usize], handles[v as usize]);
+        if pieces.len() != 1 {
+            return Ok((cdt, Some(i)));
         }
     }
-    Ok(None)
+    Ok((cdt, None))
 }
 
+/// The pairs `[min, max]` of `constraints`, sorted, without repeats.
 fn sorted_pairs(constraints: &[[u32; 2]]) -> Vec<[u32; 2]> {
     let mut sorted: Vec<[u32; 2]> = constraints
         .iter()
