@@ -225,17 +225,29 @@ impl Mesh {
         right_side.push(v);
         // An accepted insertion adds no triangle worse than [a, b, c] (a
         // worst triangle, which it removes: the removed vector starts with
-        // its value). Each side's triangulation has a triangle on a–v whose
-        // third corner is one of that side's, so a side where every such
-        // triangle is worse rules the insertion out in O(k) comparisons
-        // instead of the O(k³) program.
+        // its value). Each side p → q of a counter-clockwise side polygon is
+        // in one triangle of its triangulation, whose third corner is a
+        // corner strictly left of p → q; a side where every such triangle
+        // is worse rules the insertion out in O(k²) comparisons at most,
+        // before the O(k³) program. The new edge a–v is tried first.
         let worst = [a, b, c];
-        let fits = |side: &[u32]| {
+        let edge_fits = |side: &[u32], from: u32, to: u32| {
             side.iter().any(|&w| {
-                w != a && w != v && badness.compare([a, v, w], worst) != Ordering::Greater
+                w != from
+                    && w != to
+                    && orient_sign(p(from), p(to), p(w)) > 0
+                    && badness.compare([from, to, w], worst) != Ordering::Greater
             })
         };
-        if !fits(&left_side) || !fits(&right_side) {
+        let side_fits = |side: &[u32]| {
+            let k = side.len();
+            (0..k).all(|i| edge_fits(side, side[i], side[(i + 1) % k]))
+        };
+        if !edge_fits(&left_side, a, v)
+            || !edge_fits(&right_side, v, a)
+            || !side_fits(&left_side)
+            || !side_fits(&right_side)
+        {
             return None;
         }
         let mut added = retriangulate(badness, &left_side)?;
