@@ -98,38 +98,15 @@ impl SimplePolygon {
         })
     }
 
-    /// When the sweep below would test more than a linear number of edge
-    /// pairs (edges sharing x-ranges, as in a star with alternating radii):
-    /// the ring's edges added one by one as constraints of a Delaunay
-    /// triangulation, which finds the first edge that crosses an earlier one
-    /// or passes through a vertex in expected O(n log n); that edge is then
-    /// named with the smallest other edge it meets (one O(n) scan). `None`
-    /// when the sweep is cheap or the points are not a valid point set (then
-    /// the sweep decides).
+    /// The first edge that meets another, found by adding the ring's edges
+    /// one by one as constraints of a Delaunay triangulation (expected
+    /// O(n log n) plus the edges crossed), named with the smallest other
+    /// edge it meets (one O(n) scan). For rings whose edges share x-ranges
+    /// (a star with alternating radii), where the sweep is quadratic.
+    /// `None` when the points are not a valid point set (the sweep decides).
     fn first_crossing_by_constraints(ring: &[Point]) -> Option<Option<PolygonProblem>> {
-        const SWEEP_PAIRS_PER_EDGE: usize = 16;
         let n = ring.len();
         let seg = |i: usize| (ring[i], ring[(i + 1) % n]);
-        let low = |i: usize| seg(i).0[0].min(seg(i).1[0]);
-        let high = |i: usize| seg(i).0[0].max(seg(i).1[0]);
-        // The number of pairs with overlapping x-ranges, counted up to the
-        // budget in O(n log n): for each edge by its low end, the edges whose
-        // low end lies in [low, high].
-        let mut lows: Vec<f64> = (0..n).map(low).collect();
-        lows.sort_by(f64::total_cmp);
-        let budget = SWEEP_PAIRS_PER_EDGE * n + 4096;
-        let mut pairs = 0usize;
-        for i in 0..n {
-            let from = lows.partition_point(|&x| x < low(i));
-            let to = lows.partition_point(|&x| x <= high(i));
-            pairs += to - from;
-            if pairs > budget {
-                break;
-            }
-        }
-        if pairs <= budget {
-            return None;
-        }
         let edges: Vec<[u32; 2]> = (0..n).map(|i| [i as u32, ((i + 1) % n) as u32]).collect();
         let first =
             crate::structures::constrained_delaunay::first_unfit_constraint(ring, &edges).ok()?;
@@ -148,6 +125,24 @@ impl SimplePolygon {
             first: [i.min(other), (i.min(other) + 1) % n],
             second: [i.max(other), (i.max(other) + 1) % n],
         }))
+    }
+
+    /// Would the sweep test more than 16 edge pairs per edge (x-ranges
+    /// overlapping)? Counted in O(n log n) on the edges sorted by their low
+    /// x (`by_low`), stopping at the budget.
+    fn sweep_is_crowded(ring: &[Point], by_low: &[usize]) -> bool {
+        let n = ring.len();
+        let seg = |i: usize| (ring[i], ring[(i + 1) % n]);
+        let low = |i: usize| seg(i).0[0].min(seg(i).1[0]);
+        let high = |i: usize| seg(i).0[0].max(seg(i).1[0]);
+        let lows: Vec<f64> = by_low.iter().map(|&i| low(i)).collect();
+        let budget = 16 * n + 4096;
+        let mut pairs = 0usize;
+        (0..n).any(|i| {
+            pairs +=
+                lows.partition_point(|&x| x <= high(i)) - lows.partition_point(|&x| x < low(i));
+            pairs > budget
+        })
     }
 
     /// The first pair of edges that meet improperly, or `None` if simple.
@@ -169,13 +164,15 @@ impl SimplePolygon {
                 });
             }
         }
-        if let Some(problem) = Self::first_crossing_by_constraints(ring) {
-            return problem;
-        }
         let mut order: Vec<usize> = (0..n).collect();
         let low = |i: usize| seg(i).0[0].min(seg(i).1[0]);
         let high = |i: usize| seg(i).0[0].max(seg(i).1[0]);
         order.sort_by(|&a, &b| low(a).total_cmp(&low(b)));
+        if Self::sweep_is_crowded(ring, &order) {
+            if let Some(problem) = Self::first_crossing_by_constraints(ring) {
+                return problem;
+            }
+        }
         let mut found: Option<[usize; 2]> = None;
         let mut active: Vec<usize> = Vec::new();
         for &i in &order {
@@ -410,7 +407,10 @@ mod tests {
                 [r * a.cos(), r * a.sin()]
             })
             .collect();
-        assert!(SimplePolygon::first_crossing_by_constraints(&star).is_some());
+        let mut by_low: Vec<usize> = (0..n).collect();
+        let low = |i: usize| star[i][0].min(star[(i + 1) % n][0]);
+        by_low.sort_by(|&a, &b| low(a).total_cmp(&low(b)));
+        assert!(SimplePolygon::sweep_is_crowded(&star, &by_low));
         let meet = |ring: &[Point], i: usize, j: usize| {
             let m = ring.len();
             segments_intersect(ring[i], ring[(i + 1) % m], ring[j], ring[(j + 1) % m])

@@ -229,7 +229,7 @@ impl Mesh {
         // in one triangle of its triangulation, whose third corner is a
         // corner strictly left of p → q; a side where every such triangle
         // is worse rules the insertion out in O(k²) comparisons at most,
-        // before the O(k³) program. The new edge a–v is tried first.
+        // before the O(k³) program.
         let worst = [a, b, c];
         let edge_fits = |side: &[u32], from: u32, to: u32| {
             side.iter().any(|&w| {
@@ -239,15 +239,15 @@ impl Mesh {
                     && badness.compare([from, to, w], worst) != Ordering::Greater
             })
         };
-        let side_fits = |side: &[u32]| {
+        // From side `first` on: a–v is side 0 of the left polygon and the
+        // closing side of the right one.
+        let side_fits = |side: &[u32], first: usize| {
             let k = side.len();
-            (0..k).all(|i| edge_fits(side, side[i], side[(i + 1) % k]))
+            (0..k)
+                .map(|i| (first + i) % k)
+                .all(|i| edge_fits(side, side[i], side[(i + 1) % k]))
         };
-        if !edge_fits(&left_side, a, v)
-            || !edge_fits(&right_side, v, a)
-            || !side_fits(&left_side)
-            || !side_fits(&right_side)
-        {
+        if !side_fits(&left_side, 0) || !side_fits(&right_side, right_side.len() - 1) {
             return None;
         }
         let mut added = retriangulate(badness, &left_side)?;
