@@ -580,6 +580,11 @@ function drawTable(results) {
 
 // ---- files and downloads ----------------------------------------------------
 async function loadText(text, filename) {
+  // The read supersedes a computation still pending or running, whose end
+  // would otherwise clear the read's error message.
+  clearTimeout(timer);
+  state.request++;
+  if (state.abort) state.abort.abort();
   document.body.dataset.state = "pending";
   try {
     const { value } = await api("/api/read", filename ? { text, filename } : { text });
