@@ -215,6 +215,37 @@ fn a_grid_of_tied_right_angles_terminates_at_the_optimum() {
     }
 }
 
+/// On a lattice every Delaunay triangle is a tied worst one; the hull's
+/// lower bound proves Delaunay optimal at once (Pick's theorem: every empty
+/// lattice triangle on a unit hull edge has its apex on the next row, so it
+/// has an angle of at least 90° and a height of at most 1/√2; no triangle
+/// can beat eccentricity 0).
+#[test]
+fn a_lattice_is_certified_by_the_hull_bound() {
+    for (w, h) in [(12, 12), (30, 7), (2, 40)] {
+        let pts: Vec<Point> = (0..w * h)
+            .map(|k| [(k % w) as f64 * 3.0 - 7.0, (k / w) as f64 * 3.0 + 1.0])
+            .collect();
+        let ps = PointSet::new(&pts).unwrap();
+        for criterion in [
+            Criterion::MinMaxAngle,
+            Criterion::MaxMinHeight,
+            Criterion::MinMaxEccentricity,
+        ] {
+            let s = triangulate(&ps, criterion).unwrap();
+            assert!(s.exact, "{}", criterion.name());
+            assert_eq!(s.diagnostics.get("met the hull bound"), Some(1));
+            assert_eq!(s.diagnostics.get("insertion attempts"), Some(0));
+            let stats = s.triangulation.stats();
+            match criterion {
+                Criterion::MinMaxAngle => assert_eq!(stats.max_angle_deg, 90.0),
+                Criterion::MaxMinHeight => assert_eq!(stats.min_height, 4.5f64.sqrt()),
+                _ => assert_eq!(stats.max_eccentricity, 0.0),
+            }
+        }
+    }
+}
+
 /// A spent time limit keeps the triangulation the loop reached: valid, not
 /// exact, never worse than Delaunay's under the measure (the oracle's
 /// values); a cancel is an error.

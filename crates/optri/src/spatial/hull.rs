@@ -10,6 +10,7 @@
 
 use crate::kernel::{orient_sign, Point};
 use crate::parallel::prelude::*;
+use std::cmp::Ordering;
 
 /// Below this many points the throw-away step is skipped (a chosen size:
 /// the sort is cheap there; the result does not depend on it).
@@ -105,6 +106,41 @@ pub(crate) fn is_strictly_convex_cycle(points: &[Point], cycle: &[u32]) -> bool 
     let k = cycle.len();
     let p = |c: usize| points[cycle[c % k] as usize];
     (0..k).all(|c| orient_sign(p(c), p(c + 1), p(c + 2)) > 0)
+}
+
+/// The *empty apexes* of the hull edge `ab` (consecutive counter-clockwise
+/// hull points): every `r` strictly left of `a → b` whose closed triangle
+/// `abr` holds no other point. Every triangulation has exactly one triangle
+/// on `ab`, and it is one of these (it uses every point as a vertex and no
+/// point lies on the open segment `ab`).
+///
+/// The closed triangle is the intersection of the closed wedges at `a` and
+/// `b` with the half-plane, so `r` is empty iff no other point `q` of the
+/// open half-plane has both `∠baq ≤ ∠bar` and `∠abq ≤ ∠abr`: sorting by the
+/// angle at `a` (ties by the angle at `b`) and keeping the strict running
+/// minima of the angle at `b` finds them, all by orientation tests, in
+/// `O(n log n)`. Listed by increasing angle at `a`; `inner` is scratch space.
+pub(crate) fn empty_apexes(points: &[Point], a: u32, b: u32, inner: &mut Vec<u32>) -> Vec<u32> {
+    let p = |v: u32| points[v as usize];
+    let (pa, pb) = (p(a), p(b));
+    inner.clear();
+    inner.extend((0..points.len() as u32).filter(|&r| orient_sign(pa, pb, p(r)) > 0));
+    // Both angles are compared by orientations: at a counter-clockwise from
+    // ab, at b clockwise from ba.
+    inner.sort_unstable_by(|&q, &r| match orient_sign(pa, p(q), p(r)) {
+        1 => Ordering::Less,
+        -1 => Ordering::Greater,
+        _ => orient_sign(pb, p(q), p(r)).cmp(&0),
+    });
+    let mut lowest_at_b: Option<u32> = None;
+    let mut apexes = Vec::new();
+    for &r in inner.iter() {
+        if lowest_at_b.is_none_or(|m| orient_sign(pb, p(m), p(r)) > 0) {
+            lowest_at_b = Some(r);
+            apexes.push(r);
+        }
+    }
+    apexes
 }
 
 #[cfg(test)]

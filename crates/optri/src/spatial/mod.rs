@@ -14,7 +14,7 @@ mod point_cells;
 
 pub(crate) use bbox::bounding_box;
 pub(crate) use grid::{fmax, fmin, SparseGrid};
-pub(crate) use hull::{convex_hull_cycle, is_strictly_convex_cycle};
+pub(crate) use hull::{convex_hull_cycle, empty_apexes, is_strictly_convex_cycle};
 pub(crate) use insertion_order::brio_order;
 pub(crate) use morton::morton_order;
 pub(crate) use order::{

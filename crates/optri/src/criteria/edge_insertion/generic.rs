@@ -26,13 +26,99 @@
 //! that finds nothing while it skipped pairs clears the set and runs
 //! again, and the loop stops only after a full pass without skips — the
 //! same stopping condition as without the set.
+//!
+//! # Stopping early: a lower bound from the hull
+//! Every triangulation has, on each hull edge `ab`, one triangle `abr`
+//! whose apex is an *empty apex* of `ab` ([`empty_apexes`]), so its worst
+//! triangle is at least `β(ab) = min_r badness(abr)` over those apexes, and
+//! the optimum is at least the largest `β` of any hull edges. When the
+//! worst value reaches such a bound the triangulation is optimal and the
+//! loop stops, before trying the anchors of every tied worst triangle. On a
+//! lattice, where every Delaunay triangle is a tied worst one (right
+//! angles, equal heights, zero eccentricity), that is the first pass. The
+//! hull edges searched are sides of worst triangles, a few per pass and
+//! [`MAX_BOUND_EDGES`] in all, so the bound costs `O(n log n)` per run.
 
 use super::insertion::{Badness, Mesh};
 use crate::error::Result;
 use crate::interrupt::Stop;
 use crate::kernel::properly_cross;
+use crate::spatial::{convex_hull_cycle, empty_apexes};
 use std::cmp::Ordering;
 use std::collections::HashSet;
+
+/// Hull edges searched for the lower bound in one run.
+const MAX_BOUND_EDGES: usize = 16;
+/// Hull edges searched in one pass of the loop.
+const BOUND_EDGES_PER_PASS: usize = 4;
+
+/// The lower bound of the module docs: the best triangle of the hull edges
+/// searched so far (its badness is the bound).
+struct HullBound {
+    /// Hull edges in counter-clockwise direction (inner side on the left).
+    hull_edges: HashSet<[u32; 2]>,
+    searched: HashSet<[u32; 2]>,
+    bound: Option<[u32; 3]>,
+    scratch: Vec<u32>,
+}
+
+impl HullBound {
+    fn new(badness: &Badness) -> Self {
+        let hull = convex_hull_cycle(badness.points);
+        let h = hull.len();
+        HullBound {
+            hull_edges: (0..h).map(|e| [hull[e], hull[(e + 1) % h]]).collect(),
+            searched: HashSet::new(),
+            bound: None,
+            scratch: Vec::new(),
+        }
+    }
+
+    /// Searches a few hull edges that are sides of `worst` triangles and
+    /// were not searched before, raising the bound.
+    fn tighten(&mut self, badness: &Badness, worst: &[[u32; 3]]) {
+        let mut this_pass = 0;
+        for t in worst {
+            for k in 0..3 {
+                let side = [t[k], t[(k + 1) % 3]];
+                for [a, b] in [side, [side[1], side[0]]] {
+                    if this_pass == BOUND_EDGES_PER_PASS || self.searched.len() == MAX_BOUND_EDGES {
+                        return;
+                    }
+                    if !self.hull_edges.contains(&[a, b]) || !self.searched.insert([a, b]) {
+                        continue;
+                    }
+                    this_pass += 1;
+                    // β(ab): the best triangle on ab.
+                    let best = empty_apexes(badness.points, a, b, &mut self.scratch)
+                        .into_iter()
+                        .map(|r| [a, b, r])
+                        .reduce(|s, t| {
+                            if badness.compare(t, s) == Ordering::Less {
+                                t
+                            } else {
+                                s
+                            }
+                        });
+                    if let Some(best) = best {
+                        if self
+                            .bound
+                            .is_none_or(|b| badness.compare(best, b) == Ordering::Greater)
+                        {
+                            self.bound = Some(best);
+                        }
+                    }
+                }
+            }
+        }
+    }
+
+    /// Does the bound prove a worst triangle `w` optimal?
+    fn certifies(&self, badness: &Badness, w: [u32; 3]) -> bool {
+        self.bound
+            .is_some_and(|b| badness.compare(w, b) != Ordering::Greater)
+    }
+}
 
 /// Counters of one run.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -45,6 +131,9 @@ pub(crate) struct Steps {
     /// mesh is valid and no worse than where it started, but not proven
     /// optimal.
     pub stopped: bool,
+    /// The worst value met the hull's lower bound (module docs): optimal
+    /// without trying every anchor.
+    pub met_hull_bound: bool,
 }
 
 /// Does `a–v` properly cross the side `bc` of `[a, b, c]`?
@@ -74,6 +163,7 @@ pub(crate) fn improve(
     let mut skipped = false;
     let no_constraint = |_: u32, _: u32| false;
     let mut candidates = 0u32;
+    let mut hull_bound = HullBound::new(badness);
     // A spent time limit keeps the mesh reached; a cancel aborts.
     let spent = |steps: &mut Steps| -> Result<bool> {
         match stop.reason() {
@@ -93,6 +183,11 @@ pub(crate) fn improve(
         let Some(&representative) = worst.first() else {
             return Ok(steps);
         };
+        hull_bound.tighten(badness, &worst);
+        if hull_bound.certifies(badness, representative) {
+            steps.met_hull_bound = true;
+            return Ok(steps);
+        }
         if remember_failures {
             let changed = match worst_value {
                 Some(w) => badness.compare(representative, w) != Ordering::Equal,

@@ -158,15 +158,13 @@ impl Mesh {
 
     /// The worst triangles (all tied at the largest badness), sorted.
     pub fn worst_triangles(&self, badness: &Badness) -> Vec<[u32; 3]> {
-        let mut worst: Vec<[u32; 3]> = Vec::new();
-        for t in self.triangles() {
-            match worst.first().map(|&w| badness.compare(t, w)) {
-                None | Some(Ordering::Equal) => worst.push(t),
-                Some(Ordering::Greater) => worst = vec![t],
-                Some(Ordering::Less) => {}
-            }
-        }
-        worst
+        let triangles: Vec<[u32; 3]> = self.triangles().collect();
+        badness
+            .measure
+            .worst_ties(triangles.iter().map(|&t| badness.corners(t)))
+            .into_iter()
+            .map(|i| triangles[i])
+            .collect()
     }
 
     /// The insertion of `a–v` from the triangle `[a, b, c]` (counter-

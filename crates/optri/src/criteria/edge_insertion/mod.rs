@@ -17,7 +17,7 @@
 //!
 //! | input | algorithm | time |
 //! |---|---|---|
-//! | point set | Delaunay, then the edge-insertion loop (`generic`): anchors of all tied worst triangles, sides of each insertion retriangulated by the lexicographic-bottleneck polygon program (`insertion`), accepted when the decreasing vector of badness values decreases; a set of failed anchor–candidate pairs, cleared when the worst value changes, and a final pass without it | no polynomial bound claimed (see below) |
+//! | point set | Delaunay, then the edge-insertion loop (`generic`): anchors of all tied worst triangles, sides of each insertion retriangulated by the lexicographic-bottleneck polygon program (`insertion`), accepted when the decreasing vector of badness values decreases; a set of failed anchor–candidate pairs, cleared when the worst value changes, and a final pass without it; a stop as soon as the worst value meets a lower bound from the hull edges' best empty triangles | no polynomial bound claimed (see below) |
 //! | simple polygon | the polygon program with the bottleneck triangle objective (every measure here is decomposable) | O(n³) |
 //!
 //! # What is and is not implemented
@@ -60,9 +60,21 @@ const REFERENCE: &str = "M. Bern, H. Edelsbrunner, D. Eppstein, S. Mitchell, T. 
 
 const ALGORITHM: &str = "edge insertion from Delaunay: insertions from the anchors of the worst \
                          triangles (sides retriangulated by the lexicographic-bottleneck polygon \
-                         program) until none improves";
+                         program) until none improves, or until the worst value meets the lower \
+                         bound of the hull edges' best triangles";
 
 const POLYGON_ALGORITHM: &str = "Klincsek's polygon program with the bottleneck triangle objective";
+
+/// The reported measure a triangle measure's bottleneck is.
+const fn optimised_measure(measure: TriangleMeasure) -> crate::structures::Measure {
+    use crate::structures::Measure;
+    match measure {
+        TriangleMeasure::LargestAngle => Measure::MaxAngle,
+        TriangleMeasure::SmallestHeight => Measure::MinHeight,
+        TriangleMeasure::Eccentricity => Measure::MaxEccentricity,
+        TriangleMeasure::Slope => Measure::MaxSlope,
+    }
+}
 
 macro_rules! edge_insertion_entry {
     ($entry:ident, $measure:expr, $name:literal, $description:literal, $z:literal) => {
@@ -74,6 +86,7 @@ macro_rules! edge_insertion_entry {
                 options: &[],
                 reference: REFERENCE,
                 needs_elevations: $z,
+                measure: Some(optimised_measure($measure)),
             },
             solve: |points, options, phases| solve(points, $measure, options, phases),
             solve_polygon: Some(|polygon, options, phases| {
@@ -177,6 +190,7 @@ fn solve(
     let mut diagnostics = Diagnostics::default();
     diagnostics.add("insertions", steps.insertions);
     diagnostics.add("insertion attempts", steps.attempts);
+    diagnostics.add("met the hull bound", u64::from(steps.met_hull_bound));
     let (algorithm, optimality) = if steps.stopped {
         (
             format!("{ALGORITHM}, stopped by the time limit"),

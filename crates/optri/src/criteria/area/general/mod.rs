@@ -117,7 +117,7 @@ use crate::kernel::{
     Point,
 };
 use crate::polygon_program::optimal_triangulation;
-use crate::spatial::convex_hull_cycle;
+use crate::spatial::{convex_hull_cycle, empty_apexes};
 use crate::structures::{DelaunayGraph, PlanarGraph, PointSet, PolygonCycle, NO_TRIANGLE};
 use std::cmp::Ordering;
 use std::collections::{HashMap, HashSet, VecDeque};
@@ -596,41 +596,31 @@ fn edge_bound(
     objective: AreaBottleneck,
     inner: &mut Vec<u32>,
 ) -> Option<[u32; 3]> {
-    let p = |v: u32| pts[v as usize];
-    let (pa, pb) = (p(a), p(b));
-    inner.clear();
-    inner.extend((0..pts.len() as u32).filter(|&r| orient_sign(pa, pb, p(r)) > 0));
     match objective {
         AreaBottleneck::MaxMin => {
-            // By the angle at a (counter-clockwise from ab), ties by the
-            // angle at b (clockwise from ba): both are orientations.
-            inner.sort_unstable_by(|&q, &r| match orient_sign(pa, p(q), p(r)) {
-                1 => Ordering::Less,
-                -1 => Ordering::Greater,
-                _ => orient_sign(pb, p(q), p(r)).cmp(&0),
-            });
-            let mut lowest_at_b: Option<u32> = None;
             let mut largest: Option<[u32; 3]> = None;
-            for &r in inner.iter() {
-                // r is an empty apex iff its angle at b is strictly below
-                // that of every point before it.
-                if lowest_at_b.is_none_or(|m| orient_sign(pb, p(m), p(r)) > 0) {
-                    lowest_at_b = Some(r);
-                    let t = [a, b, r];
-                    if largest.is_none_or(|l| area_order(pts, t, l) == Ordering::Greater) {
-                        largest = Some(t);
-                    }
+            for r in empty_apexes(pts, a, b, inner) {
+                let t = [a, b, r];
+                if largest.is_none_or(|l| area_order(pts, t, l) == Ordering::Greater) {
+                    largest = Some(t);
                 }
             }
             largest
         }
-        AreaBottleneck::MinMax => inner.iter().map(|&r| [a, b, r]).reduce(|s, t| {
-            if area_order(pts, t, s) == Ordering::Less {
-                t
-            } else {
-                s
-            }
-        }),
+        AreaBottleneck::MinMax => {
+            let (pa, pb) = (pts[a as usize], pts[b as usize]);
+            inner.clear();
+            inner.extend(
+                (0..pts.len() as u32).filter(|&r| orient_sign(pa, pb, pts[r as usize]) > 0),
+            );
+            inner.iter().map(|&r| [a, b, r]).reduce(|s, t| {
+                if area_order(pts, t, s) == Ordering::Less {
+                    t
+                } else {
+                    s
+                }
+            })
+        }
     }
 }
 
