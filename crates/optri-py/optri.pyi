@@ -21,7 +21,7 @@ _IndexArray = npt.NDArray[np.int64]
 _Int32Array = npt.NDArray[np.int32]
 _PointArray = npt.NDArray[np.float64]
 
-class _Stats(TypedDict):
+class _StatsAlways(TypedDict):
     max_edge_length: float
     longest_edge: List[int]
     total_edge_length: float
@@ -31,9 +31,18 @@ class _Stats(TypedDict):
     largest_triangle: List[int]
     min_angle_deg: float
     max_angle_deg: float
+    min_height: float
+    min_height_triangle: List[int]
+    max_eccentricity: float
+    max_eccentricity_triangle: List[int]
     triangles: int
     edges: int
     hull_points: int
+
+class _Stats(_StatsAlways, total=False):
+    # Only for points with elevations.
+    max_slope: float
+    max_slope_triangle: List[int]
 
 class _Bound(TypedDict):
     kind: str
@@ -47,6 +56,8 @@ class _CriterionEntry(TypedDict):
     inputs: List[str]
     options: List[str]
     reference: str
+    needs_elevations: bool
+    measure: Optional[str]
 
 class _GraphKindEntry(TypedDict):
     name: str

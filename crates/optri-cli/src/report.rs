@@ -224,9 +224,15 @@ fn significant(v: f64) -> String {
 struct Column(Option<Measure>);
 
 impl Column {
-    /// Every quality measure, in the library's order, then the time.
-    fn all() -> impl Iterator<Item = Column> {
-        Measure::ALL.into_iter().map(Some).chain([None]).map(Column)
+    /// Every quality measure, in the library's order (the slope only for
+    /// points with elevations), then the time.
+    fn all(elevations: bool) -> impl Iterator<Item = Column> {
+        Measure::ALL
+            .into_iter()
+            .filter(move |&m| elevations || m != Measure::MaxSlope)
+            .map(Some)
+            .chain([None])
+            .map(Column)
     }
 
     fn heading(self) -> &'static str {
@@ -239,7 +245,9 @@ impl Column {
 
     fn value(self, solution: &Solution, stats: &optri::Stats) -> f64 {
         match self.0 {
-            Some(m) => m.value(stats),
+            // Only the slope has no value, and only without elevations,
+            // where it has no column.
+            Some(m) => m.value(stats).unwrap_or(f64::NAN),
             None => solution.phases.iter().map(|p| p.ms).sum(),
         }
     }
@@ -331,7 +339,8 @@ pub(crate) fn comparison_table(run: &Run) -> String {
             ]
         })
         .collect();
-    for column in Column::all() {
+    let elevations = points.elevations().is_some();
+    for column in Column::all(elevations) {
         let shown: Vec<String> = solved
             .iter()
             .zip(&stats)
@@ -348,7 +357,7 @@ pub(crate) fn comparison_table(run: &Run) -> String {
     }
     let headings: Vec<&str> = ["criterion", "guarantee"]
         .into_iter()
-        .chain(Column::all().map(Column::heading))
+        .chain(Column::all(elevations).map(Column::heading))
         .collect();
     let widths: Vec<usize> = (0..headings.len())
         .map(|k| {
@@ -391,7 +400,7 @@ pub(crate) fn comparison_table(run: &Run) -> String {
         for row in &cells {
             text.push_str(&line(row));
         }
-        text.push_str("\n* best in its column (smallest, or largest for min area and min angle)\n");
+        text.push_str("\n* best in its column (smallest, or largest for min area, min angle and min height)\n");
     }
     for s in solved.iter().filter(|s| !s.exact) {
         let why = match s.optimality {

@@ -448,7 +448,9 @@ impl Triangulation {
 
     /// Quality measures, the CLI's `stats`: max_edge_length, longest_edge,
     /// total_edge_length, min_area, max_area, min_angle_deg, max_angle_deg,
-    /// triangles, edges, hull_points.
+    /// min_height, max_eccentricity (with their triangles), max_slope and
+    /// max_slope_triangle (only for points with elevations), triangles,
+    /// edges, hull_points.
     #[getter]
     fn stats<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
         self.field(py, "stats")

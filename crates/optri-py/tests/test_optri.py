@@ -34,6 +34,10 @@ STATS_KEYS = {
     "max_area",
     "min_angle_deg",
     "max_angle_deg",
+    "min_height",
+    "min_height_triangle",
+    "max_eccentricity",
+    "max_eccentricity_triangle",
     "triangles",
     "edges",
     "hull_points",
@@ -423,6 +427,7 @@ def test_criteria_and_kinds_come_from_the_registry():
             "options",
             "reference",
             "needs_elevations",
+            "measure",
         }
         assert e["description"] and e["reference"]
     assert [k["name"] for k in optri.graph_kinds()] == ["hull", "delaunay", "rng", "gabriel", "mst"]

@@ -250,6 +250,59 @@ fn check_stats(t: &Triangulation, k: i32, what: &str) {
     let max = angles.iter().copied().fold(0.0, f64::max);
     assert!(s.min_angle_deg > 0.0, "{what}");
     assert_eq!((s.min_angle_deg, s.max_angle_deg), (min, max), "{what}");
+    check_bottleneck_stats(t, &s, k, what);
+}
+
+/// Height, eccentricity and (with elevations) slope against the oracle's
+/// independent forms (`bottleneck_measures`): the reported triangle is the
+/// first of the worst, and the value is the exact one rounded once (lengths
+/// over `10^k`, slopes times `10^k`).
+fn check_bottleneck_stats(t: &Triangulation, s: &optri::Stats, k: i32, what: &str) {
+    use optri_oracle::bottleneck_measures::{badness, Bottleneck};
+    use optri_oracle::BigRational;
+    let pts = t.points();
+    let ps = t.point_set();
+    let z: Vec<f64> = match ps.elevations() {
+        Some(z) => (0..pts.len() as u32)
+            .map(|i| z[ps.distinct_index(i) as usize])
+            .collect(),
+        None => vec![0.0; pts.len()],
+    };
+    let worst = |b: Bottleneck| {
+        let keys: Vec<BigRational> = t
+            .triangles()
+            .iter()
+            .map(|&tri| badness(b, pts, &z, tri))
+            .collect();
+        let max = keys.iter().max().unwrap().clone();
+        let first = keys.iter().position(|key| *key == max).unwrap();
+        (t.triangles()[first], max)
+    };
+    let ten = oracle::power_of_ten(2 * k);
+    let (triangle, key) = worst(Bottleneck::MaxMinHeight);
+    assert_eq!(s.min_height_triangle, triangle, "{what}");
+    assert_eq!(s.min_height, oracle::nearest_sqrt(&(-key / &ten)), "{what}");
+    let (triangle, key) = worst(Bottleneck::MinMaxEccentricity);
+    assert_eq!(s.max_eccentricity_triangle, triangle, "{what}");
+    let expected = if num_traits::Zero::is_zero(&key) {
+        0.0
+    } else {
+        oracle::nearest_sqrt(&(key / &ten))
+    };
+    assert_eq!(s.max_eccentricity, expected, "{what}");
+    match ps.elevations() {
+        Some(_) => {
+            let (triangle, key) = worst(Bottleneck::MinMaxSlope);
+            assert_eq!(s.max_slope_triangle, Some(triangle), "{what}");
+            let expected = if num_traits::Zero::is_zero(&key) {
+                0.0
+            } else {
+                oracle::nearest_sqrt(&(key * &ten))
+            };
+            assert_eq!(s.max_slope, Some(expected), "{what}");
+        }
+        None => assert_eq!((s.max_slope, s.max_slope_triangle), (None, None), "{what}"),
+    }
 }
 
 #[test]
@@ -290,7 +343,31 @@ fn stats_of_triangulations_match_the_oracle() {
         0,
         "grid",
     );
-    assert_eq!(cases, 15);
+    // Elevations: the slope is reported and chosen exactly; a tilted plane
+    // gives every triangle the same slope (all tie: the first is reported).
+    for (name, z) in [
+        (
+            "random z",
+            (0..12)
+                .map(|_| rng.gen_range(-5.0..5.0))
+                .collect::<Vec<f64>>(),
+        ),
+        (
+            "plane",
+            lattice.iter().map(|p| 3.0 * p[0] - 2.0 * p[1]).collect(),
+        ),
+    ] {
+        let ps = PointSet::new(&lattice)
+            .unwrap()
+            .with_elevations(&z)
+            .unwrap();
+        for criterion in [Criterion::Delaunay, Criterion::MinMaxSlope] {
+            let t = triangulate(&ps, criterion).unwrap().triangulation;
+            check_stats(&t, 0, &format!("{name} {criterion:?}"));
+            cases += 1;
+        }
+    }
+    assert_eq!(cases, 19);
 }
 
 #[test]
@@ -428,6 +505,25 @@ fn measures_compare_exactly_where_the_rounded_values_tie() {
             "{measure:?}"
         );
         assert_eq!(short.compare_measure(&short, measure), Ordering::Equal);
+    }
+    // Heights and eccentricities against the oracle's exact worst values
+    // (its badness of a height is −h², so the order of values reverses).
+    use optri_oracle::bottleneck_measures::{bottleneck, Bottleneck};
+    for (measure, b) in [
+        (Measure::MinHeight, Bottleneck::MaxMinHeight),
+        (Measure::MaxEccentricity, Bottleneck::MinMaxEccentricity),
+    ] {
+        let worst = |t: &Triangulation| bottleneck(b, t.points(), &[0.0; 4], t.triangles());
+        let mut expected = worst(&short).cmp(&worst(&long));
+        if measure == Measure::MinHeight {
+            expected = expected.reverse();
+        }
+        assert_eq!(
+            short.compare_measure(&long, measure),
+            expected,
+            "{measure:?}"
+        );
+        assert_eq!(long.compare_measure(&short, measure), expected.reverse());
     }
     // The angles against the oracle's correctly rounded ones where they
     // differ as doubles.

@@ -424,9 +424,9 @@ function resultPanel(r) {
 
 // ---- what a result guarantees ---------------------------------------------
 // The document does not name the measure its criterion optimises, so the
-// page knows it by name. Most are in `stats` (each the exact value rounded
-// once); the others, and the differences of the δ criteria, the page
-// computes in floating point from the document's coordinates, marked "≈".
+// page knows it by name. Each is in `stats` (the exact value rounded once);
+// the differences of the δ criteria the page computes in floating point
+// from the document's coordinates, marked "≈".
 const TRIANGLE_OBJECTIVES = {
   "delaunay": ["min angle°", (r) => r.stats.min_angle_deg],
   "minmax-length": ["max edge", (r) => (r.metric ? r.metric.max_edge_length : r.stats.max_edge_length)],
@@ -434,37 +434,18 @@ const TRIANGLE_OBJECTIVES = {
   "maxmin-area": ["min area", (r) => r.stats.min_area],
   "minmax-area": ["max area", (r) => r.stats.max_area],
   "minmax-angle": ["max angle°", (r) => r.stats.max_angle_deg],
-  "maxmin-height": ["min height", (r) => triangleExtremes(r).minHeight, true],
-  "minmax-eccentricity": ["max eccentricity", (r) => triangleExtremes(r).maxEccentricity, true],
-  "minmax-slope": ["max slope", (r) => triangleExtremes(r).maxSlope, true],
+  "maxmin-height": ["min height", (r) => r.stats.min_height],
+  "minmax-eccentricity": ["max eccentricity", (r) => r.stats.max_eccentricity],
+  "minmax-slope": ["max slope", (r) => r.stats.max_slope],
   "minmax-delta-area": ["max − min area", (r) => r.stats.max_area - r.stats.min_area, true],
   "minmax-delta-angle": ["max − min angle°", (r) => r.stats.max_angle_deg - r.stats.min_angle_deg, true],
-  "minmax-delta-length": ["longest − shortest edge", (r) => r.stats.max_edge_length - triangleExtremes(r).minEdge, true],
+  "minmax-delta-length": ["longest − shortest edge", (r) => r.stats.max_edge_length - shortestEdge(r), true],
 };
 
-// The smallest height, the largest eccentricity (distance from the
-// circumcentre to the closed triangle: at an obtuse corner o between p and
-// q, |pq|·|op·oq| / (2·|cross|), else 0) and the largest slope (gradient of
-// the linear interpolant of the elevations) over the triangles, and the
-// shortest edge: the measures of Bern et al. (1993), in floating point.
-function triangleExtremes(r) {
-  const c = r.coordinates, z = r.elevations, length = (a, b) => Math.hypot(c[a][0] - c[b][0], c[a][1] - c[b][1]);
-  let minHeight = Infinity, maxEccentricity = 0, maxSlope = 0, minEdge = Infinity;
-  for (const [a, b] of r.edges) minEdge = Math.min(minEdge, length(a, b));
-  for (const [i, j, k] of r.triangles) {
-    const ux = c[j][0] - c[i][0], uy = c[j][1] - c[i][1], vx = c[k][0] - c[i][0], vy = c[k][1] - c[i][1];
-    const cross = Math.abs(ux * vy - uy * vx);
-    minHeight = Math.min(minHeight, cross / Math.max(length(j, k), length(i, k), length(i, j)));
-    for (const [o, p, q] of [[i, j, k], [j, k, i], [k, i, j]]) {
-      const dot = (c[p][0] - c[o][0]) * (c[q][0] - c[o][0]) + (c[p][1] - c[o][1]) * (c[q][1] - c[o][1]);
-      if (dot < 0) maxEccentricity = Math.max(maxEccentricity, length(p, q) * -dot / (2 * cross));
-    }
-    if (z) {
-      const uz = z[j] - z[i], vz = z[k] - z[i];
-      maxSlope = Math.max(maxSlope, Math.hypot(uy * vz - uz * vy, uz * vx - ux * vz) / cross);
-    }
-  }
-  return { minHeight, maxEccentricity, maxSlope, minEdge };
+// The shortest edge (for δ-length), in floating point.
+function shortestEdge(r) {
+  const c = r.coordinates;
+  return r.edges.reduce((m, [a, b]) => Math.min(m, Math.hypot(c[a][0] - c[b][0], c[a][1] - c[b][1])), Infinity);
 }
 
 // A certified bound in words (docs/json-schema.md, `bound`).
@@ -538,11 +519,13 @@ function drawTable(results) {
   const table = $("stats");
   table.replaceChildren();
   const solved = results.filter((r) => !r.error);
+  // A measure no result has (the slope, without elevations) gets no column.
+  const present = COLUMNS.filter(([, get]) => solved.some((r) => get(r.stats) !== undefined));
   const head = table.createTHead().insertRow();
-  for (const name of ["criterion", "guarantee", ...COLUMNS.map((c) => c[0]), "time ms"]) {
+  for (const name of ["criterion", "guarantee", ...present.map((c) => c[0]), "time ms"]) {
     head.append(Object.assign(document.createElement("th"), { textContent: name }));
   }
-  const columns = [...COLUMNS, ["time ms", libraryMs, "min"]];
+  const columns = [...present, ["time ms", libraryMs, "min"]];
   const measure = (r, get) => (get === libraryMs ? libraryMs(r) : get(r.stats));
   // Best by the value shown (ties are all marked).
   const best = columns.map(([, get, better]) => {

@@ -34,6 +34,7 @@ pub(crate) const INFO: CriterionInfo = CriterionInfo {
     options: &[],
     reference: "B. Delaunay, Sur la sphère vide, 1934; bulk load by spade (exact predicates)",
     needs_elevations: false,
+    measure: Some(crate::structures::Measure::MinAngle),
 };
 
 pub(crate) fn solve(points: &PointSet, _: &Options, phases: &mut Vec<Phase>) -> Result<Solved> {

@@ -28,7 +28,7 @@ pub(crate) mod min_weight;
 pub(crate) mod minmax_length;
 
 use crate::error::Result;
-use crate::structures::{PointSet, SimplePolygon, Triangulation};
+use crate::structures::{Measure, PointSet, SimplePolygon, Triangulation};
 use crate::timing::Phase;
 
 /// How good a criterion's answer is guaranteed to be.
@@ -107,6 +107,10 @@ pub struct CriterionInfo {
     /// ([`crate::PointSet::with_elevations`])? An input without them is
     /// refused with [`crate::UnsupportedReason::NeedsElevations`].
     pub needs_elevations: bool,
+    /// The quality measure whose worst value the criterion optimises, when
+    /// it is one of [`Measure`] (a picture highlights its worst triangle);
+    /// `None` for greedy and the δ-criteria.
+    pub measure: Option<Measure>,
 }
 
 /// What a criterion module provides to the registry: its description and

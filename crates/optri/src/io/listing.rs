@@ -26,6 +26,7 @@ pub fn registry_listing() -> Value {
                 "options": info.options,
                 "reference": info.reference,
                 "needs_elevations": info.needs_elevations,
+                "measure": info.measure.map(|m| m.name()),
             })
         })
         .collect();

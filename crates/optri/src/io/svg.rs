@@ -4,14 +4,16 @@
 //! fixed-size panel with a margin, and stroke widths and point radii are in
 //! panel pixels, so pictures of tiny and huge coordinates look alike. A
 //! triangulation panel highlights its longest edge (thick red, chosen exactly
-//! by [`Triangulation::longest_edge`]) and shades the triangle with the
-//! smallest angle (chosen exactly, as the `stats` minimum angle is).
+//! by [`Triangulation::longest_edge`]) and shades the worst triangle of the
+//! measure its criterion optimises (e.g. the largest-angle triangle of
+//! `minmax-angle`; [`Triangulation::worst_triangle`]), or the triangle with
+//! the smallest angle when the criterion optimises no triangle measure.
 //!
 //! Every edge is drawn as exactly one `<line class="edge">` and every panel
 //! title as one `<text class="title" …>`, so tests can count and read them.
 
 use crate::kernel::{metrics, Point};
-use crate::structures::{Domain, Triangulation};
+use crate::structures::{Domain, Measure, Triangulation};
 use std::fmt::Write;
 
 /// Plot width of one panel, pixels.
@@ -32,7 +34,8 @@ struct Panel<'a> {
     all_points: &'a [Point],
     edges: &'a [[u32; 2]],
     longest: Option<[u32; 2]>,
-    worst: Option<[u32; 3]>,
+    /// The shaded triangle and its legend.
+    worst: Option<([u32; 3], &'static str)>,
     /// A polygon domain's boundary cycle (input indices), drawn as one
     /// `<polygon class="boundary">` under the edges.
     boundary: Option<&'a [u32]>,
@@ -87,10 +90,28 @@ fn stats_lines(t: &Triangulation, s: &crate::structures::Stats) -> Vec<String> {
     ]
 }
 
+/// The triangle a panel shades for a criterion optimising `measure`, and
+/// its legend.
+fn shaded_triangle(t: &Triangulation, measure: Option<Measure>) -> ([u32; 3], &'static str) {
+    let label = |m: Measure| match m {
+        Measure::MinArea => "smallest triangle",
+        Measure::MaxArea => "largest triangle",
+        Measure::MaxAngle => "largest-angle triangle",
+        Measure::MinHeight => "smallest-height triangle",
+        Measure::MaxEccentricity => "most eccentric triangle",
+        Measure::MaxSlope => "steepest triangle",
+        _ => "smallest-angle triangle",
+    };
+    measure
+        .and_then(|m| Some((t.worst_triangle(m)?, label(m))))
+        .unwrap_or_else(|| (t.sharpest_triangle(), "smallest-angle triangle"))
+}
+
 fn triangulation_panel<'a>(
     t: &'a Triangulation,
     edges: &'a [[u32; 2]],
     title: &'a str,
+    measure: Option<Measure>,
 ) -> Panel<'a> {
     Panel {
         title,
@@ -99,7 +120,7 @@ fn triangulation_panel<'a>(
         all_points: t.points(),
         edges,
         longest: Some(t.longest_edge()),
-        worst: Some(t.sharpest_triangle()),
+        worst: Some(shaded_triangle(t, measure)),
         boundary: match t.domain() {
             Domain::Polygon { boundary } => Some(boundary),
             _ => None,
@@ -204,10 +225,13 @@ fn draw_panel(out: &mut String, x0: f64, y0: f64, plot_h: f64, panel: &Panel) {
             (edge_width * 2.5).max(1.5)
         );
     }
-    if let Some(tri) = panel.worst {
+    if let Some((tri, _)) = panel.worst {
         let _ = writeln!(
             out,
-            r##"<polygon class="worst" points="{}" fill="#f4a742" fill-opacity="0.6" stroke="#e07b00" stroke-width="{:.2}" stroke-linejoin="round"/>"##,
+            r##"<polygon class="worst" data-triangle="{},{},{}" points="{}" fill="#f4a742" fill-opacity="0.6" stroke="#e07b00" stroke-width="{:.2}" stroke-linejoin="round"/>"##,
+            tri[0],
+            tri[1],
+            tri[2],
             polygon_points(&tri),
             (edge_width * 2.5).max(1.5)
         );
@@ -245,10 +269,10 @@ fn draw_panel(out: &mut String, x0: f64, y0: f64, plot_h: f64, panel: &Panel) {
     out.push_str("</g>\n");
     let ly = y0 + HEADER + plot_h + MARGIN + 8.0;
     let lx = x0 + MARGIN;
-    if panel.longest.is_some() {
+    if let (Some(_), Some((_, shaded))) = (panel.longest, panel.worst) {
         let _ = writeln!(
             out,
-            r##"<g class="legend" font-size="11"><line x1="{lx:.2}" y1="{ly:.2}" x2="{:.2}" y2="{ly:.2}" stroke="#d62728" stroke-width="3"/><text x="{:.2}" y="{:.2}">longest edge</text><rect x="{:.2}" y="{:.2}" width="14" height="10" fill="#f4a742" fill-opacity="0.55"/><text x="{:.2}" y="{:.2}">smallest-angle triangle</text></g>"##,
+            r##"<g class="legend" font-size="11"><line x1="{lx:.2}" y1="{ly:.2}" x2="{:.2}" y2="{ly:.2}" stroke="#d62728" stroke-width="3"/><text x="{:.2}" y="{:.2}">longest edge</text><rect x="{:.2}" y="{:.2}" width="14" height="10" fill="#f4a742" fill-opacity="0.55"/><text x="{:.2}" y="{:.2}">{shaded}</text></g>"##,
             lx + 22.0,
             lx + 28.0,
             ly + 4.0,
@@ -284,7 +308,8 @@ pub(crate) fn triangulation_to_svg(t: &Triangulation, title: &str) -> String {
 pub(super) fn report_to_svg(report: &super::TriangulationReport, title: &str) -> String {
     let t = report.triangulation();
     let edges = t.edges();
-    let mut panel = triangulation_panel(t, &edges, title);
+    let measure = report.criterion().and_then(|c| c.info().measure);
+    let mut panel = triangulation_panel(t, &edges, title, measure);
     let user = report.coordinates();
     if !std::ptr::eq(user, t.points()) {
         let ps = t.point_set();
@@ -331,19 +356,28 @@ pub(crate) fn graph_to_svg(points: &[Point], edges: &[[u32; 2]], title: &str) ->
 /// Several triangulations side by side in a grid (up to three columns), each
 /// panel with its title and stats line.
 pub fn panels_to_svg(panels: &[(&str, &Triangulation)]) -> String {
+    let panels: Vec<_> = panels.iter().map(|&(title, t)| (title, t, None)).collect();
+    criterion_panels_to_svg(&panels)
+}
+
+/// [`panels_to_svg`] with the measure each panel's criterion optimises
+/// (its worst triangle is shaded).
+pub(crate) fn criterion_panels_to_svg(
+    panels: &[(&str, &Triangulation, Option<Measure>)],
+) -> String {
     let columns = panels.len().clamp(1, 3);
     let rows = panels.len().div_ceil(columns).max(1);
     let plot_h = panels
         .iter()
-        .map(|(_, t)| plot_height(t.points()))
+        .map(|(_, t, _)| plot_height(t.points()))
         .fold(0.0, f64::max)
         .max(PLOT_WIDTH / 3.0);
     let cell_w = PLOT_WIDTH + 2.0 * MARGIN;
     let cell_h = panel_height(plot_h);
     let mut body = String::new();
-    for (k, (title, t)) in panels.iter().enumerate() {
+    for (k, (title, t, measure)) in panels.iter().enumerate() {
         let edges = t.edges();
-        let panel = triangulation_panel(t, &edges, title);
+        let panel = triangulation_panel(t, &edges, title, *measure);
         let (col, row) = (k % columns, k / columns);
         draw_panel(
             &mut body,

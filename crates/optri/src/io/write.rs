@@ -262,7 +262,7 @@ fn write_comparison(
     match OutputFormat::from_path(path)? {
         OutputFormat::Json => write_json_file(path, report, options.style)?,
         OutputFormat::Svg => {
-            let titled: Vec<(String, &crate::Triangulation)> = report
+            let titled: Vec<(String, &crate::Triangulation, Option<crate::Measure>)> = report
                 .results()
                 .iter()
                 .filter_map(|(criterion, result)| {
@@ -273,7 +273,7 @@ fn write_comparison(
                         "uncertified"
                     };
                     let panel = format!("{title} — {} ({exactness})", criterion.name());
-                    Some((panel, &solution.triangulation))
+                    Some((panel, &solution.triangulation, criterion.info().measure))
                 })
                 .collect();
             if titled.is_empty() {
@@ -282,9 +282,11 @@ fn write_comparison(
                     &"every criterion refused the input, there is nothing to draw",
                 ));
             }
-            let panels: Vec<(&str, &crate::Triangulation)> =
-                titled.iter().map(|(t, tri)| (t.as_str(), *tri)).collect();
-            write_file(path, &svg::panels_to_svg(&panels))?
+            let panels: Vec<_> = titled
+                .iter()
+                .map(|(t, tri, measure)| (t.as_str(), *tri, *measure))
+                .collect();
+            write_file(path, &svg::criterion_panels_to_svg(&panels))?
         }
         _ => {
             return Err(write_error(
@@ -455,6 +457,48 @@ mod tests {
         let svg = std::fs::read_to_string(dir.join("c.svg")).unwrap();
         assert_eq!(svg.matches("<g class=\"panel\"").count(), 2);
         assert!(svg.contains("sq — delaunay (exact)"), "{svg}");
+        // Each panel shades the worst triangle of its criterion's measure.
+        let shaded = |svg: &str| -> Vec<String> {
+            svg.split("data-triangle=\"")
+                .skip(1)
+                .map(|s| s.split('"').next().unwrap().to_string())
+                .collect()
+        };
+        let criteria = [
+            Criterion::MinMaxAngle,
+            Criterion::MaxMinArea,
+            Criterion::Greedy,
+        ];
+        let results = compare(&ps, &criteria, &Options::default());
+        write(
+            ComparisonReport::new(&results),
+            &dir.join("w.svg"),
+            &options,
+        )
+        .unwrap();
+        let svg = std::fs::read_to_string(dir.join("w.svg")).unwrap();
+        let expected: Vec<String> = results
+            .iter()
+            .map(|(c, r)| {
+                let t = &r.as_ref().unwrap().triangulation;
+                let m = match c {
+                    Criterion::MinMaxAngle => crate::Measure::MaxAngle,
+                    Criterion::MaxMinArea => crate::Measure::MinArea,
+                    // Greedy optimises no measure: the smallest angle.
+                    _ => crate::Measure::MinAngle,
+                };
+                let [a, b, c] = t.worst_triangle(m).unwrap();
+                format!("{a},{b},{c}")
+            })
+            .collect();
+        assert_eq!(shaded(&svg), expected);
+        for legend in [
+            "largest-angle triangle",
+            "smallest triangle",
+            "smallest-angle triangle",
+        ] {
+            assert!(svg.contains(&format!(">{legend}</text>")), "{legend}");
+        }
         write(report, &dir.join("c.json"), &options).unwrap();
         let value: Value =
             serde_json::from_str(&std::fs::read_to_string(dir.join("c.json")).unwrap()).unwrap();

@@ -40,12 +40,9 @@
 //! vertex that comes first in the order the corners were given.
 
 use super::predicates::{compare_corner_angles, compare_lengths, dot_sign};
-#[cfg(any(test, feature = "internals"))]
 use super::reporting::angle_deg;
-#[cfg(any(test, feature = "internals"))]
 use super::rounding::{round_ratio, Rounding};
 use super::{Point, UNIT_ROUNDOFF};
-#[cfg(any(test, feature = "internals"))]
 use num_bigint::BigUint;
 use num_rational::BigRational;
 use num_traits::{Signed, Zero};
@@ -98,6 +95,69 @@ impl TriangleMeasure {
         }
     }
 
+    /// The position of the worst of `triangles` (exact; ties: the first),
+    /// `None` when there is none.
+    pub(crate) fn worst(self, triangles: impl Iterator<Item = Corners>) -> Option<usize> {
+        self.worst_ties(triangles).first().copied()
+    }
+
+    /// The positions of every worst triangle of `triangles` (all tied at
+    /// the worst value, in order). The worst so far keeps its enclosure and,
+    /// once needed, its exact value, so each triangle is enclosed once and
+    /// computed exactly at most once, only when the enclosures overlap (ties,
+    /// common on lattices, need it for every triangle).
+    pub(crate) fn worst_ties(self, triangles: impl Iterator<Item = Corners>) -> Vec<usize> {
+        let mut ties = Vec::new();
+        if self == TriangleMeasure::LargestAngle {
+            let mut best: Option<Corners> = None;
+            for (i, t) in triangles.enumerate() {
+                let order = best
+                    .as_ref()
+                    .map_or(Ordering::Greater, |b| self.compare_badness(&t, b));
+                if order == Ordering::Greater {
+                    ties.clear();
+                    best = Some(t);
+                }
+                if order != Ordering::Less {
+                    ties.push(i);
+                }
+            }
+            return ties;
+        }
+        let mut best: Option<(Corners, Option<Interval>, Option<BigRational>)> = None;
+        for (i, t) in triangles.enumerate() {
+            let enclosure = self.enclosure(&t);
+            let mut exact = None;
+            let badness = match &mut best {
+                None => Ordering::Greater,
+                Some((b, be, b_exact)) => {
+                    let values = match (enclosure, *be) {
+                        (Some(x), Some(y)) if x.hi < y.lo => Ordering::Less,
+                        (Some(x), Some(y)) if x.lo > y.hi => Ordering::Greater,
+                        _ => {
+                            let v = self.exact_squared(&t);
+                            let order = v.cmp(b_exact.get_or_insert_with(|| self.exact_squared(b)));
+                            exact = Some(v);
+                            order
+                        }
+                    };
+                    match self {
+                        TriangleMeasure::SmallestHeight => values.reverse(),
+                        _ => values,
+                    }
+                }
+            };
+            if badness == Ordering::Greater {
+                ties.clear();
+                best = Some((t, enclosure, exact));
+            }
+            if badness != Ordering::Less {
+                ties.push(i);
+            }
+        }
+        ties
+    }
+
     /// The anchor vertex (0, 1 or 2) of the triangle (module docs).
     pub(crate) fn anchor(self, t: &Corners) -> usize {
         match self {
@@ -106,18 +166,28 @@ impl TriangleMeasure {
         }
     }
 
-    #[cfg(any(test, feature = "internals"))]
     /// The measure's value for reports: degrees for angles, lengths for the
     /// others (square roots of the exact squared forms), correctly rounded.
     pub(crate) fn reported(self, t: &Corners) -> f64 {
-        match self {
+        self.reported_over_power_of_ten(t, 0)
+    }
+
+    /// [`Self::reported`] for corners that are `10^k` times the user's
+    /// coordinates (decimal input; elevations are never scaled): heights
+    /// and eccentricities are lengths, divided by `10^k`; a slope is an
+    /// elevation over a length, multiplied by `10^k`; angles do not change.
+    /// Rounded once, from the exact value.
+    pub(crate) fn reported_over_power_of_ten(self, t: &Corners, k: i32) -> f64 {
+        let squared = match self {
             TriangleMeasure::LargestAngle => {
                 let i = longest_side_vertex(t.0);
                 let [a, b, c] = rotate(t.0, i);
-                angle_deg(a, b, c)
+                return angle_deg(a, b, c);
             }
-            _ => rounded_square_root(&self.exact_squared(t)),
-        }
+            TriangleMeasure::Slope => self.exact_squared(t) * power_of_ten(2 * k),
+            _ => self.exact_squared(t) * power_of_ten(-2 * k),
+        };
+        rounded_square_root(&squared)
     }
 
     /// The squared value (cosine key for angles), exactly.
@@ -266,11 +336,20 @@ fn gradient_line_vertex(t: &Corners) -> usize {
     order[1]
 }
 
-#[cfg(any(test, feature = "internals"))]
 /// `√r` for a rational `r ≥ 0`, correctly rounded to the nearest double:
 /// `s = ⌊√(r·4^K)⌋` brackets `√r` in `[s, s + 1)·2^−K`, and `K` grows until
 /// both ends round to the same double (an exact square root stops the loop
 /// at once).
+/// `10^e` as an exact rational.
+fn power_of_ten(e: i32) -> BigRational {
+    let p = BigRational::from_integer(num_bigint::BigInt::from(10u8).pow(e.unsigned_abs()));
+    if e < 0 {
+        p.recip()
+    } else {
+        p
+    }
+}
+
 fn rounded_square_root(r: &BigRational) -> f64 {
     if r.is_zero() {
         return 0.0;
@@ -295,7 +374,6 @@ fn rounded_square_root(r: &BigRational) -> f64 {
     }
 }
 
-#[cfg(any(test, feature = "internals"))]
 /// `⌊num·2^e / den⌋` for any integer `e`.
 fn shifted_quotient(num: &BigUint, den: &BigUint, e: i64) -> BigUint {
     if e >= 0 {
@@ -305,7 +383,6 @@ fn shifted_quotient(num: &BigUint, den: &BigUint, e: i64) -> BigUint {
     }
 }
 
-#[cfg(any(test, feature = "internals"))]
 /// Is `num·2^e / den` an integer?
 fn exact_shift(num: &BigUint, den: &BigUint, e: i64) -> bool {
     if e >= 0 {

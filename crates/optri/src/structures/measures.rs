@@ -41,17 +41,26 @@ pub enum Measure {
     MinAngle,
     /// [`Stats::max_angle_deg`].
     MaxAngle,
+    /// [`Stats::min_height`].
+    MinHeight,
+    /// [`Stats::max_eccentricity`].
+    MaxEccentricity,
+    /// [`Stats::max_slope`] (only for points with elevations).
+    MaxSlope,
 }
 
 impl Measure {
     /// Every quality measure, in display order.
-    pub const ALL: [Measure; 6] = [
+    pub const ALL: [Measure; 9] = [
         Measure::MaxEdgeLength,
         Measure::TotalEdgeLength,
         Measure::MinArea,
         Measure::MaxArea,
         Measure::MinAngle,
         Measure::MaxAngle,
+        Measure::MinHeight,
+        Measure::MaxEccentricity,
+        Measure::MaxSlope,
     ];
 
     /// The [`Stats`] field (and JSON key), e.g. `"max_edge_length"`.
@@ -63,6 +72,9 @@ impl Measure {
             Measure::MaxArea => "max_area",
             Measure::MinAngle => "min_angle_deg",
             Measure::MaxAngle => "max_angle_deg",
+            Measure::MinHeight => "min_height",
+            Measure::MaxEccentricity => "max_eccentricity",
+            Measure::MaxSlope => "max_slope",
         }
     }
 
@@ -75,26 +87,33 @@ impl Measure {
             Measure::MaxArea => "max area",
             Measure::MinAngle => "min angle°",
             Measure::MaxAngle => "max angle°",
+            Measure::MinHeight => "min height",
+            Measure::MaxEccentricity => "max eccentricity",
+            Measure::MaxSlope => "max slope",
         }
     }
 
     /// Which values are better.
     pub fn better(self) -> Better {
         match self {
-            Measure::MinArea | Measure::MinAngle => Better::Larger,
+            Measure::MinArea | Measure::MinAngle | Measure::MinHeight => Better::Larger,
             _ => Better::Smaller,
         }
     }
 
-    /// The measure's value in `stats` (correctly rounded).
-    pub fn value(self, stats: &Stats) -> f64 {
-        match self {
+    /// The measure's value in `stats` (correctly rounded); `None` only for
+    /// the slope of points without elevations.
+    pub fn value(self, stats: &Stats) -> Option<f64> {
+        Some(match self {
             Measure::MaxEdgeLength => stats.max_edge_length,
             Measure::TotalEdgeLength => stats.total_edge_length,
             Measure::MinArea => stats.min_area,
             Measure::MaxArea => stats.max_area,
             Measure::MinAngle => stats.min_angle_deg,
             Measure::MaxAngle => stats.max_angle_deg,
-        }
+            Measure::MinHeight => stats.min_height,
+            Measure::MaxEccentricity => stats.max_eccentricity,
+            Measure::MaxSlope => return stats.max_slope,
+        })
     }
 }

@@ -8,7 +8,7 @@ use crate::kernel::reporting::{
 };
 use crate::kernel::{
     self, compare_areas, compare_corner_angles, compare_length_sums, compare_lengths, orient_sign,
-    Extremes, Point,
+    Corners, Extremes, Point, TriangleMeasure,
 };
 use crate::parallel::prelude::*;
 use crate::spatial::convex_hull_cycle;
@@ -81,6 +81,26 @@ pub struct Stats {
     /// Largest interior angle, degrees (180 only when it is within half an
     /// ulp of 180°, about 1.4·10⁻¹⁴ degrees: an extreme needle).
     pub max_angle_deg: f64,
+    /// Smallest altitude of a triangle (the height measure of Bern,
+    /// Edelsbrunner, Eppstein, Mitchell & Tan 1993).
+    pub min_height: f64,
+    /// The triangle of smallest altitude (exact comparison; ties: the first
+    /// in [`Triangulation::triangles`] order).
+    pub min_height_triangle: [u32; 3],
+    /// Largest eccentricity: the distance from a triangle's circumcentre to
+    /// the closed triangle, 0 for a triangle without an obtuse angle.
+    pub max_eccentricity: f64,
+    /// The triangle of largest eccentricity, chosen as
+    /// `min_height_triangle` is (the first triangle when none is obtuse).
+    pub max_eccentricity_triangle: [u32; 3],
+    /// Largest slope (gradient magnitude of the linear interpolant of the
+    /// elevations) when the points carry elevations
+    /// ([`PointSet::with_elevations`]), else `None` (and not written).
+    #[cfg_attr(feature = "io", serde(skip_serializing_if = "Option::is_none"))]
+    pub max_slope: Option<f64>,
+    /// The steepest triangle, chosen as `min_height_triangle` is.
+    #[cfg_attr(feature = "io", serde(skip_serializing_if = "Option::is_none"))]
+    pub max_slope_triangle: Option<[u32; 3]>,
     /// Number of triangles.
     pub triangles: usize,
     /// Number of edges.
@@ -96,6 +116,10 @@ pub struct Stats {
 #[derive(Clone, Debug)]
 struct Measured {
     stats: Stats,
+    /// Positions of the worst triangles in height, eccentricity and slope.
+    lowest: usize,
+    most_eccentric: usize,
+    steepest: Option<usize>,
     length_sum: LengthSum,
     sharpest: (usize, usize),
     widest: (usize, usize),
@@ -289,8 +313,25 @@ impl Triangulation {
             total_edge_length: self.total_length(m.length_sum, k, None),
             min_area: area(s.smallest_triangle),
             max_area: area(s.largest_triangle),
+            min_height: self.reported_over_power_of_ten(
+                TriangleMeasure::SmallestHeight,
+                m.lowest,
+                k,
+            ),
+            max_eccentricity: self.reported_over_power_of_ten(
+                TriangleMeasure::Eccentricity,
+                m.most_eccentric,
+                k,
+            ),
+            max_slope: m
+                .steepest
+                .map(|i| self.reported_over_power_of_ten(TriangleMeasure::Slope, i, k)),
             ..s.clone()
         }
+    }
+
+    fn reported_over_power_of_ten(&self, measure: TriangleMeasure, i: usize, k: i32) -> f64 {
+        measure.reported_over_power_of_ten(&self.measure_corners(i), k)
     }
 
     /// The triangle with the smallest angle (chosen exactly, ties: the
@@ -298,6 +339,24 @@ impl Triangulation {
     #[cfg(feature = "io")]
     pub(crate) fn sharpest_triangle(&self) -> [u32; 3] {
         self.triangles[self.measured().sharpest.0]
+    }
+
+    /// The triangle that attains `measure` (the one [`Stats`] reports:
+    /// chosen exactly, ties the first), as input indices; `None` for the
+    /// edge measures and for the slope without elevations.
+    pub fn worst_triangle(&self, measure: Measure) -> Option<[u32; 3]> {
+        let m = self.measured();
+        let position = match measure {
+            Measure::MaxEdgeLength | Measure::TotalEdgeLength => return None,
+            Measure::MinArea => return Some(m.stats.smallest_triangle),
+            Measure::MaxArea => return Some(m.stats.largest_triangle),
+            Measure::MinAngle => m.sharpest.0,
+            Measure::MaxAngle => m.widest.0,
+            Measure::MinHeight => m.lowest,
+            Measure::MaxEccentricity => m.most_eccentric,
+            Measure::MaxSlope => m.steepest?,
+        };
+        Some(self.triangles[position])
     }
 
     /// Exact comparison of one measure of this triangulation with the same
@@ -327,6 +386,21 @@ impl Triangulation {
                 self.corners(self.corner(m.widest)),
                 other.corners(other.corner(n.widest)),
             ),
+            Measure::MinHeight => TriangleMeasure::SmallestHeight.compare_values(
+                &self.measure_corners(m.lowest),
+                &other.measure_corners(n.lowest),
+            ),
+            Measure::MaxEccentricity => TriangleMeasure::Eccentricity.compare_values(
+                &self.measure_corners(m.most_eccentric),
+                &other.measure_corners(n.most_eccentric),
+            ),
+            Measure::MaxSlope => match (m.steepest, n.steepest) {
+                (Some(i), Some(j)) => TriangleMeasure::Slope
+                    .compare_values(&self.measure_corners(i), &other.measure_corners(j)),
+                // A triangulation without elevations has no slope: it sorts
+                // first, as `None` does.
+                (i, j) => i.is_some().cmp(&j.is_some()),
+            },
             Measure::TotalEdgeLength => {
                 // Correct rounding is monotone: different rounded totals are
                 // ordered as the exact ones.
@@ -351,6 +425,46 @@ impl Triangulation {
 
     fn corners(&self, t: [u32; 3]) -> [Point; 3] {
         t.map(|i| self.point(i))
+    }
+
+    /// Triangle `i`'s corners and elevations (zeros without elevations), as
+    /// the kernel's triangle measures take them.
+    fn measure_corners(&self, i: usize) -> Corners {
+        let t = self.triangles[i];
+        let z = |v: u32| {
+            self.point_set
+                .elevations()
+                .map_or(0.0, |z| z[self.point_set.distinct_index(v) as usize])
+        };
+        (self.corners(t), t.map(z))
+    }
+
+    /// The position of the worst triangle under `measure` (exact; ties: the
+    /// first), blocks in parallel.
+    fn worst_position(&self, measure: TriangleMeasure) -> usize {
+        let n = self.triangles.len();
+        (0..n.div_ceil(MEASURE_BLOCK))
+            .into_par_iter()
+            .map(|b| {
+                let start = b * MEASURE_BLOCK;
+                let end = (start + MEASURE_BLOCK).min(n);
+                let i = measure
+                    .worst((start..end).map(|i| self.measure_corners(i)))
+                    .expect("a non-empty block");
+                start + i
+            })
+            .reduce_with(|a, b| {
+                // `a` precedes `b`: keep it unless `b` is strictly worse.
+                let worse = measure
+                    .worst([self.measure_corners(a), self.measure_corners(b)].into_iter())
+                    .expect("two triangles");
+                if worse == 1 {
+                    b
+                } else {
+                    a
+                }
+            })
+            .expect("a triangulation has a triangle")
     }
 
     /// Corner `j` of triangle `i`: its `j`-th point (the apex), then the
@@ -401,6 +515,17 @@ impl Triangulation {
             })
             .reduce_with(Extremes::merge)
             .expect("a triangulation has a triangle");
+        let worst = |measure: TriangleMeasure| self.worst_position(measure);
+        let (lowest, most_eccentric) = (
+            worst(TriangleMeasure::SmallestHeight),
+            worst(TriangleMeasure::Eccentricity),
+        );
+        let steepest = self
+            .point_set
+            .elevations()
+            .map(|_| worst(TriangleMeasure::Slope));
+        let reported =
+            |measure: TriangleMeasure, i: usize| measure.reported(&self.measure_corners(i));
         let angle = |corner: (usize, usize)| {
             let [o, a, b] = self.corners(self.corner(corner));
             angle_deg(o, a, b)
@@ -423,6 +548,12 @@ impl Triangulation {
             largest_triangle: self.triangles[extremes.largest()],
             min_angle_deg: angle(extremes.sharpest()),
             max_angle_deg: angle(extremes.widest()),
+            min_height: reported(TriangleMeasure::SmallestHeight, lowest),
+            min_height_triangle: self.triangles[lowest],
+            max_eccentricity: reported(TriangleMeasure::Eccentricity, most_eccentric),
+            max_eccentricity_triangle: self.triangles[most_eccentric],
+            max_slope: steepest.map(|i| reported(TriangleMeasure::Slope, i)),
+            max_slope_triangle: steepest.map(|i| self.triangles[i]),
             triangles: self.triangles.len(),
             edges: edges.len(),
             hull_points: match &self.domain {
@@ -432,6 +563,9 @@ impl Triangulation {
         };
         Measured {
             stats,
+            lowest,
+            most_eccentric,
+            steepest,
             length_sum,
             sharpest: extremes.sharpest(),
             widest: extremes.widest(),

@@ -82,6 +82,7 @@ pub(crate) const MAXMIN_INFO: CriterionInfo = CriterionInfo {
     options: &[],
     reference: REFERENCE,
     needs_elevations: false,
+    measure: Some(crate::structures::Measure::MinArea),
 };
 
 pub(crate) const MINMAX_INFO: CriterionInfo = CriterionInfo {
@@ -92,6 +93,7 @@ pub(crate) const MINMAX_INFO: CriterionInfo = CriterionInfo {
     options: &[],
     reference: REFERENCE,
     needs_elevations: false,
+    measure: Some(crate::structures::Measure::MaxArea),
 };
 
 /// Which area bottleneck is optimised: the one enum of the area criteria

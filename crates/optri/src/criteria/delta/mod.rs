@@ -101,6 +101,7 @@ const fn info(name: &'static str, description: &'static str) -> CriterionInfo {
         options: &[],
         reference: REFERENCE,
         needs_elevations: false,
+        measure: None,
     }
 }
 

@@ -58,6 +58,7 @@ pub(crate) const INFO: CriterionInfo = CriterionInfo {
                 R. L. S. Drysdale, S. A. McElfresh & E. Welzl, Fast greedy triangulation \
                 algorithms, 1997",
     needs_elevations: false,
+    measure: None,
 };
 
 pub(crate) fn solve(

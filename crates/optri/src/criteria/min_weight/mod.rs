@@ -63,6 +63,7 @@ pub(crate) const INFO: CriterionInfo = CriterionInfo {
     options: &[],
     reference: "G. T. Klincsek 1980; Dickerson, Keil & Montague 1997; Drysdale, McElfresh & Snoeyink 2001; A. Haas 2018",
     needs_elevations: false,
+    measure: Some(crate::structures::Measure::TotalEdgeLength),
 };
 
 pub(crate) fn solve(

@@ -186,6 +186,7 @@ pub(crate) const INFO: CriterionInfo = CriterionInfo {
     reference: "H. Edelsbrunner & T. S. Tan, A quadratic time algorithm for the minmax \
                 length triangulation, FOCS 1991 / SIAM J. Comput. 1993",
     needs_elevations: false,
+    measure: Some(crate::structures::Measure::MaxEdgeLength),
 };
 
 pub(crate) fn solve(

@@ -28,7 +28,7 @@ use crate::kernel::reporting::{
     area_scaled, over_power_of_ten_rounded, Rounding, Rounding::Nearest,
 };
 use crate::kernel::Point;
-use crate::registry::{Comparison, GraphKind, Solution};
+use crate::registry::{Comparison, Criterion, GraphKind, Solution};
 use crate::structures::{Domain, PointSet, SimplePolygon, Stats, Triangulation};
 use crate::timing::Phase;
 use serde::ser::{Serialize, Serializer};
@@ -187,6 +187,11 @@ impl<'a> TriangulationReport<'a> {
     /// The triangulation described.
     pub fn triangulation(&self) -> &'a Triangulation {
         self.triangulation
+    }
+
+    /// The criterion that made it, when the report has a run.
+    pub fn criterion(&self) -> Option<Criterion> {
+        self.solution.map(|s| s.criterion)
     }
 
     /// The document as a JSON value.
