@@ -39,6 +39,7 @@
 //! Ties (isosceles triangles, a side parallel to the gradient) go to the
 //! vertex that comes first in the order the corners were given.
 
+use super::expansion::{two_diff, two_product, two_sum};
 use super::predicates::{compare_corner_angles, compare_lengths, dot_sign};
 use super::reporting::angle_deg;
 use super::rounding::{round_ratio, Rounding};
@@ -124,16 +125,34 @@ impl TriangleMeasure {
             }
             return ties;
         }
-        let mut best: Option<(Corners, Option<Interval>, Option<BigRational>)> = None;
+        // The worst so far: corners, enclosure, and once needed its exact
+        // value and sorted sides.
+        type Worst = (
+            Corners,
+            Option<Interval>,
+            Option<BigRational>,
+            Option<SortedSides>,
+        );
+        let mut best: Option<Worst> = None;
         for (i, t) in triangles.enumerate() {
             let enclosure = self.enclosure(&t);
             let mut exact = None;
             let badness = match &mut best {
                 None => Ordering::Greater,
-                Some((b, be, b_exact)) => {
+                Some((b, be, b_exact, b_sides)) => {
                     let values = match (enclosure, *be) {
                         (Some(x), Some(y)) if x.hi < y.lo => Ordering::Less,
                         (Some(x), Some(y)) if x.lo > y.hi => Ordering::Greater,
+                        // Congruent triangles tie in every measure but the
+                        // slope (a lattice's Delaunay triangles all do).
+                        _ if self != TriangleMeasure::Slope
+                            && congruent(
+                                &sorted_sides(t.0),
+                                b_sides.get_or_insert_with(|| sorted_sides(b.0)),
+                            ) =>
+                        {
+                            Ordering::Equal
+                        }
                         _ => {
                             let v = self.exact_squared(&t);
                             let order = v.cmp(b_exact.get_or_insert_with(|| self.exact_squared(b)));
@@ -149,7 +168,7 @@ impl TriangleMeasure {
             };
             if badness == Ordering::Greater {
                 ties.clear();
-                best = Some((t, enclosure, exact));
+                best = Some((t, enclosure, exact, None));
             }
             if badness != Ordering::Less {
                 ties.push(i);
@@ -281,6 +300,68 @@ impl TriangleMeasure {
             }
         }
     }
+}
+
+/// A triangle's sides, shortest first (exact), and their squared lengths
+/// when every one is exactly a double (lattices: then congruence is three
+/// comparisons of doubles).
+#[derive(Clone, Copy)]
+struct SortedSides {
+    sides: [[Point; 2]; 3],
+    exact: Option<[f64; 3]>,
+}
+
+/// `|pq|²` when the differences, their squares and the sum are all exact
+/// in floating point.
+fn squared_length_if_exact(p: Point, q: Point) -> Option<f64> {
+    let (dx, ex) = two_diff(q[0], p[0]);
+    let (dy, ey) = two_diff(q[1], p[1]);
+    let (xx, exx) = two_product(dx, dx);
+    let (yy, eyy) = two_product(dy, dy);
+    let (sum, es) = two_sum(xx, yy);
+    // Away from underflow, a zero error term of the fused multiply-add
+    // means an exact square.
+    let normal = |d: f64| d == 0.0 || d.abs() >= 2f64.powi(-400);
+    let exact = [ex, ey, exx, eyy, es].iter().all(|&e| e == 0.0)
+        && normal(dx)
+        && normal(dy)
+        && sum.is_finite();
+    exact.then_some(sum)
+}
+
+fn sorted_sides(p: [Point; 3]) -> SortedSides {
+    let mut sides = [[p[0], p[1]], [p[1], p[2]], [p[2], p[0]]];
+    let lengths: Option<Vec<f64>> = sides
+        .iter()
+        .map(|s| squared_length_if_exact(s[0], s[1]))
+        .collect();
+    if let Some(mut l) = lengths {
+        l.sort_by(f64::total_cmp);
+        return SortedSides {
+            sides,
+            exact: Some([l[0], l[1], l[2]]),
+        };
+    }
+    sides.sort_by(|x, y| compare_lengths(x[0], x[1], y[0], y[1]));
+    SortedSides { sides, exact: None }
+}
+
+/// Are triangles with these sorted sides congruent (equal side lengths)?
+fn congruent(a: &SortedSides, b: &SortedSides) -> bool {
+    if let (Some(x), Some(y)) = (a.exact, b.exact) {
+        return x == y;
+    }
+    let (a, b) = (sorted_by_length(a), sorted_by_length(b));
+    (0..3).all(|k| compare_lengths(a[k][0], a[k][1], b[k][0], b[k][1]) == Ordering::Equal)
+}
+
+/// The sides shortest first (those with exact lengths were not sorted).
+fn sorted_by_length(s: &SortedSides) -> [[Point; 2]; 3] {
+    let mut sides = s.sides;
+    if s.exact.is_some() {
+        sides.sort_by(|x, y| compare_lengths(x[0], x[1], y[0], y[1]));
+    }
+    sides
 }
 
 /// The corners rotated so that corner `i` comes first (orientation kept).

@@ -113,3 +113,67 @@ fn reported_values_are_correctly_rounded() {
     assert_eq!(TriangleMeasure::Slope.reported(&h), 2f64.sqrt());
     assert_eq!(TriangleMeasure::SmallestHeight.reported(&h), 0.5f64.sqrt());
 }
+
+/// `worst_ties` (cached exact values, congruence shortcut) against the
+/// plain pairwise comparison, on lattice triangles full of ties: copies
+/// moved, turned by quarter turns and mirrored, and random ones.
+#[test]
+fn worst_ties_match_pairwise_comparisons() {
+    let mut rng = StdRng::seed_from_u64(41);
+    for round in 0..60 {
+        let base: Vec<[Point; 3]> = (0..3)
+            .map(|_| {
+                [0; 3].map(|_| {
+                    [
+                        f64::from(rng.gen_range(-4..5)),
+                        f64::from(rng.gen_range(-4..5)),
+                    ]
+                })
+            })
+            .filter(|t| orient_sign(t[0], t[1], t[2]) != 0)
+            .collect();
+        if base.is_empty() {
+            continue;
+        }
+        let mut list: Vec<Corners> = Vec::new();
+        for _ in 0..12 {
+            let t = base[rng.gen_range(0..base.len())];
+            let (dx, dy) = (
+                f64::from(rng.gen_range(-9..10)),
+                f64::from(rng.gen_range(-9..10)),
+            );
+            let turn = rng.gen_range(0..4);
+            let mirror = rng.gen_bool(0.5);
+            let moved = t.map(|[x, y]| {
+                let (x, y) = if mirror { (-x, y) } else { (x, y) };
+                let (x, y) = match turn {
+                    0 => (x, y),
+                    1 => (-y, x),
+                    2 => (-x, -y),
+                    _ => (y, -x),
+                };
+                [x + dx, y + dy]
+            });
+            let z = [0; 3].map(|_| f64::from(rng.gen_range(-2..3)));
+            list.push((moved, if round % 2 == 0 { [0.0; 3] } else { z }));
+        }
+        for measure in [
+            TriangleMeasure::LargestAngle,
+            TriangleMeasure::SmallestHeight,
+            TriangleMeasure::Eccentricity,
+            TriangleMeasure::Slope,
+        ] {
+            let naive: Vec<usize> = (0..list.len())
+                .filter(|&i| {
+                    list.iter()
+                        .all(|u| measure.compare_badness(&list[i], u) != Ordering::Less)
+                })
+                .collect();
+            assert_eq!(
+                measure.worst_ties(list.iter().copied()),
+                naive,
+                "{measure:?} {round}"
+            );
+        }
+    }
+}
