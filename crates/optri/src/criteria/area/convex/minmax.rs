@@ -28,21 +28,38 @@
 //! them `f` falls while `g` rises, so the optimum sits at their crossing.
 //! Records of all anchors of one row (column) come from one monotone-stack
 //! sweep; a block is then one binary search.
+//!
+//! Constant factors: a row (column) visits its search pairs in order, and
+//! neighbouring pairs have nearly the same strip ends and switch point, so
+//! those monotone searches gallop from the previous pair's answers (same
+//! answers, a few evaluations instead of O(log n)); the outer rank is read
+//! along the line being swept, not across it; a block whose smallest `f`
+//! (or smallest rank `g`) cannot beat the best so far is skipped before any
+//! exact comparison.
 
-use super::sleeve::{first_true, Bottleneck, SleeveTable, TopFromEnd, TopFromStart, Witness};
+use super::sleeve::{
+    first_true, first_true_near, Bottleneck, SleeveTable, TopFromEnd, TopFromStart, Witness,
+};
 use std::cmp::Ordering;
 
 /// `F_ij` of the search pair `(i, i+len)` as offsets `[lo, hi]` from `i`,
 /// or `None` if it is empty or no apex of it can beat `bound` (see
-/// [`BlockSink::bound`]).
-fn pair_frame(table: &SleeveTable, i: usize, len: usize, bound: u32) -> Option<(usize, usize)> {
-    let n = table.n();
-    let lo = len.saturating_sub(table.mccw[(i + len) % n]).max(2);
-    let hi = (len - 2).min(table.mcw[i % n]);
+/// [`BlockSink::bound`]). `strip` carries the strip's ends from pair to
+/// pair ([`ConvexPolygon::clip_to_strip`](super::sleeve::ConvexPolygon::clip_to_strip)).
+fn pair_frame(
+    table: &SleeveTable,
+    i: usize,
+    len: usize,
+    bound: u32,
+    strip: &mut (usize, usize),
+) -> Option<(usize, usize)> {
+    debug_assert!(i < table.n());
+    let lo = len.saturating_sub(table.mccw[table.reduce(i + len)]).max(2);
+    let hi = (len - 2).min(table.mcw[i]);
     if lo > hi {
         return None;
     }
-    let (lo, hi) = table.poly.clip_to_strip(i, len, lo, hi)?;
+    let (lo, hi) = table.poly.clip_to_strip(i, len, lo, hi, strip)?;
     // Cheap exact pruning on ranks alone: every apex costs at least
     // max(λ*(P_ik), λ*(P_kj)). Scanned only for short frames, so that the
     // bound stays O(log n) per pair.
@@ -65,9 +82,10 @@ pub(super) trait BlockSink {
     /// value of rank `b` can improve the answer (pruning only; `u32::MAX`
     /// disables it).
     fn bound(&self) -> u32;
-    /// The search pair `(i, i+len)` attains `value` = max(λ*(P_ik),
-    /// λ*(P_kj), A(i,k,j)) at `k = i + r`, the optimum of one block.
-    fn offer(&mut self, table: &SleeveTable, i: usize, len: usize, r: usize, value: Bottleneck);
+    /// The search pair `(i, i+len)`, whose outer piece `P_ji` has rank
+    /// `block.outer`, attains `value` = max(λ*(P_ik), λ*(P_kj), A(i,k,j))
+    /// at `k = i + r`, the optimum of one block.
+    fn offer(&mut self, table: &SleeveTable, block: &Block, i: usize, r: usize, value: Bottleneck);
 }
 
 /// The best candidate so far, seeded with the best (A′) candidate.
@@ -110,8 +128,8 @@ impl BlockSink for BestCandidate {
         self.bound
     }
 
-    fn offer(&mut self, table: &SleeveTable, i: usize, len: usize, r: usize, value: Bottleneck) {
-        let outer = table.rank(i + len, table.n() - len);
+    fn offer(&mut self, table: &SleeveTable, block: &Block, i: usize, r: usize, value: Bottleneck) {
+        let (outer, len) = (block.outer, block.len);
         if outer >= self.bound {
             return;
         }
@@ -139,8 +157,8 @@ pub(super) fn minmax_witness(table: &SleeveTable) -> Witness {
     // triangles); then (B′) alone decides.
     let mut best: Option<(u32, Witness)> = None;
     for i in 0..n {
-        for len in 2..=n - 2 {
-            if table.solved(i, len) && table.solved(i + len, n - len) {
+        for len in 2..=table.mcw[i].min(n - 2) {
+            if table.solved(i + len, n - len) {
                 let value = table.rank(i, len).max(table.rank(i + len, n - len));
                 if best.is_none_or(|(b, _)| value < b) {
                     best = Some((value, Witness::Diagonal { i, len }));
@@ -168,12 +186,15 @@ pub(super) fn search_pairs(table: &SleeveTable, sink: &mut impl BlockSink) {
 }
 
 /// One block of a line (row or column) in line coordinates `x`: the anchor
-/// (where `g` is smallest) and the far end, and the search pair's `len`.
+/// (where `g` is smallest) and the far end, the search pair's `len` and the
+/// rank of its outer piece `P_ji` (carried along: reading it again from the
+/// table would cost a cache miss per block).
 #[derive(Clone, Copy, Debug)]
-struct Block {
+pub(super) struct Block {
     anchor: usize,
     far: usize,
-    len: usize,
+    pub(super) len: usize,
+    pub(super) outer: u32,
 }
 
 /// Row `i`, line coordinate `x = r − 2` for `r ∈ [2, mcw(i)]`, `f = λ*(P_{i,i+r})`.
@@ -184,12 +205,20 @@ fn descending_blocks_of_row(table: &SleeveTable, i: usize, sink: &mut impl Block
     let width = table.mcw[i] - 1;
     let mut tops = TopFromStart::new(&table.poly, i);
     let (mut right_anchored, mut left_anchored) = (Vec::new(), Vec::new());
+    // Offsets from `i` of the last strip's ends and switch: the starting
+    // guesses for the next pair of the row.
+    let (mut strip, mut last_switch) = ((0, 0), 0);
     for len in table.mcw[i] + 1..=n - 2 {
         let j = i + len;
-        if !table.solved(j, n - len) || table.rank(j, n - len) >= sink.bound() {
+        if !table.solved(j, n - len) {
             continue;
         }
-        let Some((lo, hi)) = pair_frame(table, i, len, sink.bound()) else {
+        // P_ji ends at i: read along column i, not across the rows j.
+        let outer = table.rank_to(i, n - len);
+        if outer >= sink.bound() {
+            continue;
+        }
+        let Some((lo, hi)) = pair_frame(table, i, len, sink.bound(), &mut strip) else {
             continue;
         };
         // Top(i, j) clamped to F splits it into the ascending part
@@ -199,16 +228,18 @@ fn descending_blocks_of_row(table: &SleeveTable, i: usize, sink: &mut impl Block
         // evaluated exactly whatever the monotonicity, since its switch
         // predicate says which objective applies there.
         let lo = tops.offset(len).clamp(lo, hi);
-        let switch = first_true(lo, hi, |r| {
+        let switch = first_true_near(lo, hi, last_switch, |r| {
             let area = Bottleneck::Triangle([i, i + r, j]);
             let column = Bottleneck::Ranked(table.rank_to(j, len - r));
             table.compare(area, column) == Ordering::Less
         });
+        last_switch = switch;
         if lo < switch {
             right_anchored.push(Block {
                 anchor: switch - 1 - 2,
                 far: lo - 2,
                 len,
+                outer,
             });
         }
         if switch <= hi {
@@ -216,6 +247,7 @@ fn descending_blocks_of_row(table: &SleeveTable, i: usize, sink: &mut impl Block
                 anchor: switch - 2,
                 far: hi - 2,
                 len,
+                outer,
             });
         }
     }
@@ -226,15 +258,15 @@ fn descending_blocks_of_row(table: &SleeveTable, i: usize, sink: &mut impl Block
         &right_anchored,
         Anchor::Right,
         |block, records| {
-            let (len, j) = (block.len, i + block.len);
+            let j = i + block.len;
             let area = |x: usize| Bottleneck::Triangle([i, i + x + 2, j]);
-            offer_crossing(table, sink, records, f, area, |x| (i, len, x + 2));
+            offer_crossing(table, sink, block, records, f, area, |x| (i, x + 2));
         },
     );
     sweep(width, f, &left_anchored, Anchor::Left, |block, records| {
         let len = block.len;
         let column = |x: usize| Bottleneck::Ranked(table.rank_to(i + len, len - x - 2));
-        offer_crossing(table, sink, records, f, column, |x| (i, len, x + 2));
+        offer_crossing(table, sink, block, records, f, column, |x| (i, x + 2));
     });
 }
 
@@ -248,21 +280,33 @@ fn ascending_blocks_of_column(table: &SleeveTable, j: usize, sink: &mut impl Blo
     let width = reach - 1;
     let mut tops = TopFromEnd::new(&table.poly, j);
     let (mut right_anchored, mut left_anchored) = (Vec::new(), Vec::new());
+    // Distances from `j` of the last strip's ends and switch: the starting
+    // guesses for the next pair of the column.
+    let (mut strip_from_end, mut last_switch_from_end) = ((0, 0), 0);
     for len in reach + 1..=n - 2 {
-        let i = (j + n - len) % n;
-        if !table.solved(j, n - len) || table.rank(j, n - len) >= sink.bound() {
+        let i = table.reduce(j + n - len);
+        if !table.solved(j, n - len) {
             continue;
         }
-        let Some((lo, hi)) = pair_frame(table, i, len, sink.bound()) else {
+        let outer = table.rank(j, n - len);
+        if outer >= sink.bound() {
+            continue;
+        }
+        let from_end = |d: usize| len.saturating_sub(d);
+        let mut strip = (from_end(strip_from_end.0), from_end(strip_from_end.1));
+        let frame = pair_frame(table, i, len, sink.bound(), &mut strip);
+        strip_from_end = (len - strip.0.min(len), len - strip.1.min(len));
+        let Some((lo, hi)) = frame else {
             continue;
         };
         // Top clamped to F (see the row case).
         let hi = tops.offset(len).clamp(lo, hi);
-        let switch = first_true(lo, hi, |r| {
+        let switch = first_true_near(lo, hi, from_end(last_switch_from_end), |r| {
             let area = Bottleneck::Triangle([i, i + r, i + len]);
             let row = Bottleneck::Ranked(table.rank(i, r));
             table.compare(area, row) != Ordering::Less
         });
+        last_switch_from_end = len - switch.min(len);
         // Offset r sits at x = r + reach − len (≥ 0 since r ≥ len − reach).
         let x = |r: usize| r + reach - len;
         if lo < switch {
@@ -270,6 +314,7 @@ fn ascending_blocks_of_column(table: &SleeveTable, j: usize, sink: &mut impl Blo
                 anchor: x(switch - 1),
                 far: x(lo),
                 len,
+                outer,
             });
         }
         if switch <= hi {
@@ -277,6 +322,7 @@ fn ascending_blocks_of_column(table: &SleeveTable, j: usize, sink: &mut impl Blo
                 anchor: x(switch),
                 far: x(hi),
                 len,
+                outer,
             });
         }
     }
@@ -291,7 +337,7 @@ fn ascending_blocks_of_column(table: &SleeveTable, j: usize, sink: &mut impl Blo
             let i = (j + n - len) % n;
             let r = |x: usize| x + len - reach;
             let row = |x: usize| Bottleneck::Ranked(table.rank(i, r(x)));
-            offer_crossing(table, sink, records, f, row, |x| (i, len, r(x)));
+            offer_crossing(table, sink, block, records, f, row, |x| (i, r(x)));
         },
     );
     sweep(width, f, &left_anchored, Anchor::Left, |block, records| {
@@ -299,7 +345,7 @@ fn ascending_blocks_of_column(table: &SleeveTable, j: usize, sink: &mut impl Blo
         let i = (j + n - len) % n;
         let r = |x: usize| x + len - reach;
         let area = |x: usize| Bottleneck::Triangle([i, i + r(x), i + len]);
-        offer_crossing(table, sink, records, f, area, |x| (i, len, r(x)));
+        offer_crossing(table, sink, block, records, f, area, |x| (i, r(x)));
     });
 }
 
@@ -363,29 +409,41 @@ fn sweep(
 /// anchor last): from the anchor outwards `f` strictly falls and `g` does
 /// not fall, so `[g ≥ f]` is false…false, true…true and the optimum is the
 /// last record before the crossing (value `f`) or the first at it (value
-/// `g`). Both are offered; the sink keeps the smaller.
+/// `g`). Both are offered; the sink keeps the smaller. `apex` maps `x` to
+/// the search pair's `(i, r)`.
 fn offer_crossing(
     table: &SleeveTable,
     sink: &mut impl BlockSink,
+    block: &Block,
     records: &[usize],
     f: impl Fn(usize) -> u32,
     g: impl Fn(usize) -> Bottleneck,
-    pair: impl Fn(usize) -> (usize, usize, usize),
+    apex: impl Fn(usize) -> (usize, usize),
 ) {
+    // The outermost record is the block's smallest `f`, a lower bound of
+    // every candidate in it: a block that cannot beat the bound needs no
+    // exact comparison.
+    if f(records[0]) >= sink.bound() {
+        return;
+    }
     let count = records.len();
     let at = |t: usize| records[count - 1 - t];
+    // Likewise `g` at the anchor, where it is smallest, when it is a rank.
+    if matches!(g(at(0)), Bottleneck::Ranked(v) if v >= sink.bound()) {
+        return;
+    }
     let crossing = first_true(0, count - 1, |t| {
         let x = at(t);
         table.compare(g(x), Bottleneck::Ranked(f(x))) != Ordering::Less
     });
     if crossing > 0 {
         let x = at(crossing - 1);
-        let (i, len, r) = pair(x);
-        sink.offer(table, i, len, r, Bottleneck::Ranked(f(x)));
+        let (i, r) = apex(x);
+        sink.offer(table, block, i, r, Bottleneck::Ranked(f(x)));
     }
     if crossing < count {
         let x = at(crossing);
-        let (i, len, r) = pair(x);
-        sink.offer(table, i, len, r, g(x));
+        let (i, r) = apex(x);
+        sink.offer(table, block, i, r, g(x));
     }
 }

@@ -59,7 +59,9 @@
 //!   O(n²) space (two `n²` rank tables, row- and column-major; the MaxMin
 //!   segment trees take `4n²` words more).
 //! - The constant is dominated by area comparisons (the kernel's filtered
-//!   `compare_areas`).
+//!   `compare_areas`) and, in MinMax's step iv, by reading one row or column
+//!   of the table per search pair; per pair a few exact predicates remain
+//!   (the searches start from the neighbouring pair's answers).
 //! - [`MaxMinTable::new`]: O(n² log n); each decision O(n²);
 //!   [`maxmin_area_convex_by_search`]: O(n² log n) (O(log n) decisions).
 //!

@@ -24,12 +24,16 @@ pub(super) const UNSOLVED: u32 = u32::MAX;
 
 /// First index in `lo..=hi` where the monotone predicate (false…false,
 /// true…true) holds, or `hi + 1` if it never does.
-pub(super) fn first_true(lo: usize, hi: usize, mut pred: impl FnMut(usize) -> bool) -> usize {
-    let (mut lo, mut hi) = (lo, hi + 1);
-    while lo < hi {
-        let mid = lo + (hi - lo) / 2;
+pub(super) fn first_true(lo: usize, hi: usize, pred: impl FnMut(usize) -> bool) -> usize {
+    first_true_before(lo, hi + 1, pred)
+}
+
+/// [`first_true`] on the half-open range `lo..end`: `end` if it never holds.
+fn first_true_before(mut lo: usize, mut end: usize, mut pred: impl FnMut(usize) -> bool) -> usize {
+    while lo < end {
+        let mid = lo + (end - lo) / 2;
         if pred(mid) {
-            hi = mid;
+            end = mid;
         } else {
             lo = mid + 1;
         }
@@ -37,10 +41,59 @@ pub(super) fn first_true(lo: usize, hi: usize, mut pred: impl FnMut(usize) -> bo
     lo
 }
 
+/// [`first_true`] by a galloping search from `guess`: the same answer, in
+/// O(log d) evaluations where `d` is its distance from `guess`. Step iv
+/// searches neighbouring pairs one after the other, and their answers
+/// (strip ends, switch points) lie close together, so this replaces
+/// O(log n) evaluations by a few.
+pub(super) fn first_true_near(
+    lo: usize,
+    hi: usize,
+    guess: usize,
+    mut pred: impl FnMut(usize) -> bool,
+) -> usize {
+    if lo > hi {
+        return lo;
+    }
+    let guess = guess.clamp(lo, hi);
+    let mut step = 1;
+    if pred(guess) {
+        // The answer is in [lo, upper]; widen downwards until pred fails.
+        let mut upper = guess;
+        loop {
+            if upper - lo < step {
+                return first_true_before(lo, upper, pred);
+            }
+            let probe = upper - step;
+            if !pred(probe) {
+                return first_true_before(probe + 1, upper, pred);
+            }
+            upper = probe;
+            step *= 2;
+        }
+    } else {
+        // The answer is in (lower, hi + 1]; widen upwards until pred holds.
+        let mut lower = guess;
+        loop {
+            if hi - lower < step {
+                return first_true_before(lower + 1, hi + 1, pred);
+            }
+            let probe = lower + step;
+            if pred(probe) {
+                return first_true_before(lower + 1, probe, pred);
+            }
+            lower = probe;
+            step *= 2;
+        }
+    }
+}
+
 /// A strictly convex polygon, counter-clockwise, as positions into `points`.
 pub(super) struct ConvexPolygon<'a> {
-    points: &'a [Point],
     polygon: &'a [u32],
+    /// The points of the cycle twice over, `cycle[pos]` for `pos < 2n`: every
+    /// position of step iv is below `2n`, so no position needs a division.
+    cycle: Vec<Point>,
     pub(super) n: usize,
 }
 
@@ -64,7 +117,10 @@ impl<'a> ConvexPolygon<'a> {
                 .all(|&v| points[v as usize].iter().all(|&c| in_range(c))),
             "coordinates outside the kernel's exact range"
         );
-        let poly = ConvexPolygon { points, polygon, n };
+        let cycle = (0..2 * n)
+            .map(|pos| points[polygon[pos % n] as usize])
+            .collect();
+        let poly = ConvexPolygon { polygon, cycle, n };
         assert!(
             poly.is_strictly_convex_ccw(),
             "polygon is not strictly convex and counter-clockwise"
@@ -90,10 +146,10 @@ impl<'a> ConvexPolygon<'a> {
         wraps == 1
     }
 
-    /// The point at position `pos` (mod n).
+    /// The point at position `pos` (mod n), `pos < 2n`.
     #[inline]
     pub(super) fn at(&self, pos: usize) -> Point {
-        self.points[self.polygon[pos % self.n] as usize]
+        self.cycle[pos]
     }
 
     /// The input vertex index at position `pos` (mod n).
@@ -190,20 +246,28 @@ impl<'a> ConvexPolygon<'a> {
     /// strip(i, i+len): the vertices whose projection on the line
     /// `v_i v_j` falls on the segment (L2232). Each half-plane cuts the
     /// convex chain in a contiguous run that starts (resp. ends) the chain,
-    /// so both ends are binary searches. `None` if nothing remains.
+    /// so both ends are monotone searches. `None` if nothing remains.
+    ///
+    /// `guess` holds offsets `(start, beyond)` where the searches start (any
+    /// values give the same answer); it is overwritten with this strip's
+    /// first offset and the first offset past it, the guesses for the
+    /// neighbouring pair.
     pub(super) fn clip_to_strip(
         &self,
         i: usize,
         len: usize,
         lo: usize,
         hi: usize,
+        guess: &mut (usize, usize),
     ) -> Option<(usize, usize)> {
         let (vi, vj) = (self.at(i), self.at(i + len));
-        let lo = first_true(lo, hi, |r| dot_sign(vi, self.at(i + r), vj) >= 0);
+        let lo = first_true_near(lo, hi, guess.0, |r| dot_sign(vi, self.at(i + r), vj) >= 0);
+        guess.0 = lo;
         if lo > hi {
             return None;
         }
-        let beyond = first_true(lo, hi, |r| dot_sign(vj, self.at(i + r), vi) < 0);
+        let beyond = first_true_near(lo, hi, guess.1, |r| dot_sign(vj, self.at(i + r), vi) < 0);
+        guess.1 = beyond;
         (beyond > lo).then(|| (lo, beyond - 1))
     }
 }
@@ -312,7 +376,9 @@ pub(super) struct SleeveTable<'a> {
     /// P_{i,j−1}.
     uses_first_ear: Vec<bool>,
     /// The triangle (positions) behind each rank; index 0 unused.
-    representative: Vec<[usize; 3]>,
+    /// Positions fit in `u16` (n ≤ 65535); the compact form keeps more of
+    /// this array, read at random ranks in step iv, in the cache.
+    representative: Vec<[u16; 3]>,
 }
 
 impl<'a> SleeveTable<'a> {
@@ -395,10 +461,10 @@ impl<'a> SleeveTable<'a> {
         ears.dedup();
         ears.sort_unstable_by(|&a, &b| compare_ears(a, b));
         let mut rank_of_ear = vec![0u32; n * n];
-        let mut representative = vec![[0usize; 3]];
+        let mut representative = vec![[0u16; 3]];
         for (index, &id) in ears.iter().enumerate() {
             if index == 0 || compare_ears(ears[index - 1], id) != Ordering::Equal {
-                representative.push(ear_positions(id));
+                representative.push(ear_positions(id).map(|p| p as u16));
             }
             rank_of_ear[id as usize] = (representative.len() - 1) as u32;
         }
@@ -436,27 +502,36 @@ impl<'a> SleeveTable<'a> {
     /// Is P_{i,i+len} solved (zonality ≤ 2, `len ≥ 2`)?
     #[inline]
     pub(super) fn solved(&self, i: usize, len: usize) -> bool {
-        len >= 2 && len <= self.mcw[i % self.n()]
+        len >= 2 && len <= self.mcw[self.reduce(i)]
     }
 
-    /// Rank of μ*/λ* of P_{i,i+len}, or [`UNSOLVED`].
+    /// `pos` mod n for `pos < 2n`, without a division (hot in step iv). A
+    /// position `≥ 2n` stays `≥ n` and makes the caller's index panic.
+    #[inline]
+    pub(super) fn reduce(&self, pos: usize) -> usize {
+        if pos >= self.n() {
+            pos - self.n()
+        } else {
+            pos
+        }
+    }
+
+    /// Rank of μ*/λ* of P_{i,i+len}, or [`UNSOLVED`]; `i < 2n`.
     #[inline]
     pub(super) fn rank(&self, i: usize, len: usize) -> u32 {
-        let n = self.n();
-        self.rank[(i % n) * n + len]
+        self.rank[self.reduce(i) * self.n() + len]
     }
 
-    /// Rank of P_{j−len,j} (column view), or [`UNSOLVED`].
+    /// Rank of P_{j−len,j} (column view), or [`UNSOLVED`]; `j < 2n`.
     #[inline]
     pub(super) fn rank_to(&self, j: usize, len: usize) -> u32 {
-        let n = self.n();
-        self.rank_by_end[(j % n) * n + len]
+        self.rank_by_end[self.reduce(j) * self.n() + len]
     }
 
     /// The triangle (positions) whose area rank `r` stands for.
     #[inline]
     pub(super) fn representative(&self, r: u32) -> [usize; 3] {
-        self.representative[r as usize]
+        self.representative[r as usize].map(usize::from)
     }
 
     /// The triangle (positions) behind a bottleneck value.

@@ -6,8 +6,10 @@
 use super::super::AreaBottleneck;
 use super::decision::MaxMinTable;
 use super::maxmin::RangeMaxSearch;
-use super::minmax::{search_pairs, BlockSink};
-use super::sleeve::{Bottleneck, SleeveTable, TopFromEnd, TopFromStart, UNSOLVED};
+use super::minmax::{search_pairs, Block, BlockSink};
+use super::sleeve::{
+    first_true, first_true_near, Bottleneck, SleeveTable, TopFromEnd, TopFromStart, UNSOLVED,
+};
 use super::{maxmin_area_at_least, maxmin_area_convex_by_search, Point};
 use crate::interrupt::Stop;
 use crate::kernel::{compare_doubled_area, cross_sign};
@@ -703,6 +705,38 @@ fn zonality_test_equals_the_angle_formula_and_mcw_mccw_agree() {
 }
 
 #[test]
+fn galloping_search_equals_the_binary_search_from_every_guess() {
+    // Every range up to 40 long, every threshold (including none and all),
+    // every guess inside and around the range; and the galloping search
+    // costs O(log d) evaluations, d the distance of the answer from the guess.
+    let mut cases = 0;
+    for lo in 1usize..4 {
+        for hi in lo.saturating_sub(1)..lo + 40 {
+            for threshold in lo..=hi + 1 {
+                let want = first_true(lo, hi, |x| x >= threshold);
+                assert_eq!(want, threshold);
+                for guess in 0..hi + 3 {
+                    let mut evaluations = 0;
+                    let got = first_true_near(lo, hi, guess, |x| {
+                        assert!((lo..=hi).contains(&x), "evaluated outside the range");
+                        evaluations += 1;
+                        x >= threshold
+                    });
+                    assert_eq!(got, want, "lo {lo}, hi {hi}, guess {guess}");
+                    let distance = want.abs_diff(guess.clamp(lo, hi.max(lo))) as f64;
+                    assert!(
+                        evaluations as f64 <= 2.0 * (distance + 1.0).log2() + 3.0,
+                        "{evaluations} evaluations at distance {distance}"
+                    );
+                    cases += 1;
+                }
+            }
+        }
+    }
+    assert!(cases > 30_000, "{cases}");
+}
+
+#[test]
 fn top_and_strip_equal_brute_force() {
     let mut rng = StdRng::seed_from_u64(SEED_PROPERTIES ^ 2);
     let mut pieces = 0;
@@ -739,10 +773,20 @@ fn top_and_strip_equal_brute_force() {
                         .copied()
                         .filter(|r| (lo..=hi).contains(r))
                         .collect();
-                    let got = poly.clip_to_strip(i, len, lo, hi);
-                    match (want.first(), want.last()) {
-                        (Some(&a), Some(&b)) => assert_eq!(got, Some((a, b))),
-                        _ => assert_eq!(got, None),
+                    // The searches start from guesses; the answer must not
+                    // depend on them.
+                    let guesses = [
+                        (lo, hi),
+                        (hi, lo),
+                        (0, 2 * len),
+                        (rng.gen_range(0..=len), rng.gen_range(0..=len)),
+                    ];
+                    for mut guess in guesses {
+                        let got = poly.clip_to_strip(i, len, lo, hi, &mut guess);
+                        match (want.first(), want.last()) {
+                            (Some(&a), Some(&b)) => assert_eq!(got, Some((a, b))),
+                            _ => assert_eq!(got, None),
+                        }
                     }
                 }
                 pieces += 1;
@@ -946,7 +990,13 @@ impl BlockSink for PerPairMinimum {
         u32::MAX
     }
 
-    fn offer(&mut self, table: &SleeveTable, i: usize, len: usize, r: usize, value: Bottleneck) {
+    fn offer(&mut self, table: &SleeveTable, block: &Block, i: usize, r: usize, value: Bottleneck) {
+        let len = block.len;
+        assert_eq!(
+            block.outer,
+            table.rank(i + len, table.n() - len),
+            "outer rank"
+        );
         // The offered value is what the apex attains.
         let g = [
             Bottleneck::Ranked(table.rank(i, r)),
