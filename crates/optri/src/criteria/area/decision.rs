@@ -275,11 +275,8 @@ mod sealed {
             let hull = convex_hull_cycle(pts);
             let convex = hull.len() == pts.len() && is_strictly_convex_cycle(pts, &hull);
             if convex && question == AreaQuestion::SmallestAtLeast {
-                check_convex_size(pts.len())?;
-                let witness = timed(phases, "decide", || {
-                    maxmin_admits(pts, &hull, |t| threshold.compare(t), options.stop())
-                })?;
-                let witness = witness.map(|w| Triangulation::from_distinct(self, w));
+                let witness = one_shot(pts, &hull, threshold, options, phases)?
+                    .map(|w| Triangulation::from_distinct(self, w));
                 return Ok((Some(witness.is_some()), ONE_SHOT, true, witness));
             }
             let solved = solve_points(self, question.kind(), options.stop(), phases)?;
@@ -298,16 +295,9 @@ mod sealed {
             phases: &mut Vec<Phase>,
         ) -> Result<Decided> {
             if self.is_strictly_convex() && question == AreaQuestion::SmallestAtLeast {
-                check_convex_size(self.len())?;
-                let witness = timed(phases, "decide", || {
-                    maxmin_admits(
-                        self.vertices(),
-                        self.counter_clockwise(),
-                        |t| threshold.compare(t),
-                        options.stop(),
-                    )
-                })?;
-                let witness = witness.map(|w| Triangulation::from_polygon_positions(self, w));
+                let ring = self.counter_clockwise();
+                let witness = one_shot(self.vertices(), ring, threshold, options, phases)?
+                    .map(|w| Triangulation::from_polygon_positions(self, w));
                 return Ok((Some(witness.is_some()), ONE_SHOT, true, witness));
             }
             let solved = solve_polygon(self, question.kind(), options.stop(), phases)?;
@@ -319,8 +309,17 @@ mod sealed {
     }
 }
 
-/// Refuses a strictly convex input beyond Algorithm 49's O(n²) tables.
-fn check_convex_size(n: usize) -> Result<()> {
+/// Algorithm 49 in one shot on the strictly convex counter-clockwise
+/// `ring` (indices into `points`), timed as `decide`: a witness's
+/// triangles, or `None`.
+fn one_shot(
+    points: &[Point],
+    ring: &[u32],
+    threshold: &AreaThreshold,
+    options: &Options,
+    phases: &mut Vec<Phase>,
+) -> Result<Option<Vec<[u32; 3]>>> {
+    let n = ring.len();
     if n > MAX_CONVEX_VERTICES {
         return Err(Error::Unsupported {
             criterion: CRITERION,
@@ -331,7 +330,9 @@ fn check_convex_size(n: usize) -> Result<()> {
             },
         });
     }
-    Ok(())
+    timed(phases, "decide", || {
+        maxmin_admits(points, ring, |t| threshold.compare(t), options.stop())
+    })
 }
 
 /// The decision a solved criterion gives: its optimum compared with the
