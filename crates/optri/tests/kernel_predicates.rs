@@ -1272,7 +1272,7 @@ fn decimal_rational(m: u128, x: i64) -> BigRational {
 
 #[test]
 fn area_thresholds_match_exact_rationals_at_and_next_to_the_area() {
-    const SEED: u64 = 0xdec1_3a1;
+    const SEED: u64 = 0x0dec_13a1;
     let mut rng = StdRng::seed_from_u64(SEED);
     let (mut cases, mut equal) = (0usize, 0usize);
     for round in 0..4000 {
