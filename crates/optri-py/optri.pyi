@@ -221,6 +221,23 @@ def graph(points: _ArrayLike, kind: str, **options: Any) -> _IndexArray:
 def graph_document(points: _ArrayLike, kind: str, **options: Any) -> Dict[str, Any]:
     """The JSON document ``optri graph --json`` prints, as a dict."""
 
+def decide(
+    points: _ArrayLike,
+    criterion: str,
+    *,
+    at_least: Optional[Union[float, int, str]] = None,
+    at_most: Optional[Union[float, int, str]] = None,
+    polygon: bool = False,
+    **options: Any,
+) -> Dict[str, Any]:
+    """Is there a triangulation whose every triangle has area at least ``at_least``
+    ("maxmin-area") or at most ``at_most`` ("minmax-area")? Areas are not doubled, in the
+    input's units; a threshold is taken exactly as the decimal it prints as. Returns the
+    decision document: "answer" (True, False, or None for unknown), "method", "exact",
+    "witness" (a triangulation document when True), "threshold", "threshold_decimal",
+    "timing_ms". ``polygon=True`` decides the interior of the simple polygon whose ring
+    ``points`` is. Raises ValueError on a bad criterion, bound or threshold."""
+
 def registry() -> _Registry:
     """The registry listing: the JSON document of ``optri criteria --json``."""
 

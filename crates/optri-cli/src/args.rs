@@ -30,6 +30,9 @@ pub(crate) enum Command {
     Compare(CompareArgs),
     /// List the criteria, graphs and options, with what each takes.
     Criteria(CriteriaArgs),
+    /// Decide whether a triangulation's smallest area can be at least (maxmin-area) or its
+    /// largest at most (minmax-area) a threshold; exit code 0 for a yes, no or unknown answer.
+    Decide(DecideArgs),
     /// Serve the web playground and its JSON API.
     Serve(ServeArgs),
     /// Triangulate a built-in point set by every criterion and draw them side by side.
@@ -76,6 +79,34 @@ pub(crate) struct TriangulateArgs {
     /// the phase `check`; a failure is an error.
     #[arg(long)]
     pub validate: bool,
+    #[command(flatten)]
+    pub style: StyleArgs,
+}
+
+#[derive(Args)]
+pub(crate) struct DecideArgs {
+    #[command(flatten)]
+    pub input: InputArgs,
+    /// maxmin-area (with --at-least) or minmax-area (with --at-most).
+    #[arg(long, value_name = "CRITERION")]
+    pub criterion: String,
+    /// Is there a triangulation whose every triangle has area (not doubled, in the input's
+    /// units) at least this? An exact decimal.
+    #[arg(long, value_name = "AREA", allow_hyphen_values = true)]
+    pub at_least: Option<String>,
+    /// Is there a triangulation whose every triangle has area at most this?
+    #[arg(long, value_name = "AREA", allow_hyphen_values = true)]
+    pub at_most: Option<String>,
+    #[command(flatten)]
+    pub run: RunArgs,
+    /// Write the decision document (.json) or the witness triangulation (any format of
+    /// `triangulate`; refused when the answer is not yes). Repeatable.
+    #[arg(long, short, value_name = "FILE")]
+    pub output: Vec<PathBuf>,
+    /// Print the decision document (`{"document": "decision", "answer": ...}`; see
+    /// docs/json-schema.md) instead of the one-line answer.
+    #[arg(long)]
+    pub json: bool,
     #[command(flatten)]
     pub style: StyleArgs,
 }

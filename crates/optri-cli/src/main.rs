@@ -9,8 +9,8 @@
 //!
 //! - `args`: the clap types (criteria and graph kinds from the library's
 //!   registry);
-//! - `commands`: `triangulate`, `graph`, `compare`, `criteria`, `serve`, `demo`, and their
-//!   shared prelude;
+//! - `commands`: `triangulate`, `graph`, `compare`, `criteria`, `decide`, `serve`, `demo`, and
+//!   their shared prelude;
 //! - `progress`: the progress line on stderr (terminals only);
 //! - `report`: the summaries and the JSON documents on stdout;
 //! - `web`: the playground page and JSON API that `serve` answers with.
@@ -40,6 +40,7 @@ fn main() -> ExitCode {
         Command::Graph(args) => commands::graph::run(args),
         Command::Compare(args) => commands::compare::run(args),
         Command::Criteria(args) => commands::criteria::run(args),
+        Command::Decide(args) => commands::decide::run(args),
         Command::Serve(args) => commands::serve::run(args),
         Command::Demo(args) => commands::demo::run(args),
     };

@@ -107,6 +107,39 @@ fn arithmetic_line(read: &optri::io::ReadInput) -> String {
     }
 }
 
+/// The summary of `optri decide`: one line with the answer, then the files
+/// written.
+pub(crate) fn decision_summary(document: &serde_json::Value, written: &[PathBuf]) -> String {
+    let criterion = document["criterion"].as_str().unwrap_or_default();
+    let threshold = document["threshold_decimal"].as_str().unwrap_or_default();
+    let (which, bound) = match document["bound"].as_str() {
+        Some("at_most") => ("largest", "at most"),
+        _ => ("smallest", "at least"),
+    };
+    let question = format!("triangulation whose {which} triangle has area {bound} {threshold}");
+    let mut text = match document["answer"].as_bool() {
+        Some(true) => {
+            let stats = &document["witness"]["stats"];
+            let measure = if which == "largest" {
+                "max_area"
+            } else {
+                "min_area"
+            };
+            format!(
+                "yes: there is a {question} ({criterion}; the witness's {which} area is {})\n",
+                stats[measure]
+            )
+        }
+        Some(false) => format!("no: there is no {question} ({criterion})\n"),
+        None => format!(
+            "unknown: {criterion}'s certified approximation neither meets nor excludes {threshold} \
+             on this point set\n"
+        ),
+    };
+    wrote(&mut text, written);
+    text
+}
+
 /// The summary of `optri triangulate`.
 pub(crate) fn triangulation_summary(run: &Run, written: &[PathBuf]) -> String {
     let Document::Triangulation(document) = run.outcome.document() else {

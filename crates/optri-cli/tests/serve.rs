@@ -373,6 +373,76 @@ fn request_numbers_are_taken_at_their_decimal_values() {
 }
 
 #[test]
+fn decide_answers_the_decision_document_at_and_past_the_optimum() {
+    let server = Server::start(&[]);
+    // A convex pentagon in tenths: Algorithm 49 on decimal areas.
+    let points = json!([[0.1, 0.1], [0.7, 0.1], [0.9, 0.4], [0.6, 0.9], [0.2, 0.7]]);
+    let (status, optimum) = server.post(
+        "/api/triangulate",
+        &json!({"points": points, "criterion": "maxmin-area"}),
+    );
+    assert_eq!(status, 200, "{optimum}");
+    let at = optimum["stats"]["min_area"].clone();
+    let ask = |criterion: &str, bound: &str, threshold: Value| {
+        server.post(
+            "/api/decide",
+            &json!({"points": points, "criterion": criterion, bound: threshold}),
+        )
+    };
+    let (status, yes) = ask("maxmin-area", "at_least", at.clone());
+    assert_eq!(status, 200, "{yes}");
+    assert_eq!(yes["document"], "decision");
+    assert_eq!(yes["answer"], true, "{yes}");
+    assert_eq!(yes["witness"]["stats"]["min_area"], at);
+    assert_eq!(yes["witness"]["coordinate_arithmetic"], "decimal-exact");
+    let value = at.as_f64().unwrap();
+    let next = f64::from_bits(value.to_bits() + 1);
+    let (_, no) = ask("maxmin-area", "at_least", json!(next));
+    assert_eq!(no["answer"], false, "{no}");
+    assert!(no["witness"].is_null());
+    // A decimal string just past the optimum.
+    let (_, no) = ask(
+        "maxmin-area",
+        "at_least",
+        json!(format!("{value}0000000000000000001")),
+    );
+    assert_eq!(no["answer"], false, "{no}");
+    let (_, minmax) = ask("minmax-area", "at_most", json!(10));
+    assert_eq!(minmax["answer"], true, "{minmax}");
+    // Bad requests: 400 with the library's message.
+    for (body, message) in [
+        (
+            json!({"points": points, "criterion": "maxmin-area", "at_least": -1}),
+            "negative",
+        ),
+        (
+            json!({"points": points, "criterion": "maxmin-area", "at_least": "nan"}),
+            "at_least",
+        ),
+        (
+            json!({"points": points, "criterion": "maxmin-area", "at_least": [1]}),
+            "at_least",
+        ),
+        (
+            json!({"points": points, "criterion": "maxmin-area", "at_most": 1}),
+            "at_least",
+        ),
+        (
+            json!({"points": points, "criterion": "delaunay", "at_least": 1}),
+            "delaunay",
+        ),
+        (
+            json!({"points": points, "criterion": "maxmin-area"}),
+            "at_least",
+        ),
+        (json!({"points": points, "at_least": 1}), "criterion"),
+    ] {
+        let error = refused(server.post("/api/decide", &body), 400);
+        assert!(error.contains(message), "{body}: {error}");
+    }
+}
+
+#[test]
 fn read_parses_files_with_the_library_readers() {
     let server = Server::start(&[]);
     let (status, v) = server.post(

@@ -27,7 +27,7 @@ use convert::{
     to_py_err,
 };
 use numpy::PyArray2;
-use optri::io::{self, Input, InputFormat, ReadInput, ReadOptions, Source};
+use optri::io::{self, Input, InputFormat, ReadInput, ReadOptions, Source, Threshold};
 use optri::request::{Outcome, Request, Results, Task};
 use optri::{Cancel, Error, Options, Phase};
 use pyo3::exceptions::{PyMemoryError, PyRuntimeError, PyTypeError};
@@ -333,6 +333,75 @@ fn graph_document<'py>(
     json_text_to_py(py, &text)
 }
 
+/// Decides exactly whether some triangulation of ``points`` (their convex
+/// hull; with ``polygon=True``, the interior of the simple polygon whose
+/// ring they are) has every triangle's area at least ``at_least``
+/// (criterion "maxmin-area") or at most ``at_most`` ("minmax-area"). Areas
+/// are triangle areas (not doubled) in the input's units, as the
+/// ``min_area`` / ``max_area`` of ``stats``. A threshold is a number or a
+/// decimal string, taken exactly as the decimal it prints as (``0.1`` is
+/// one tenth). Returns the decision document as a dict: "answer" (True,
+/// False, or None when a general point set's approximation cannot settle
+/// it), "method", "exact", "witness" (a triangulation document, when the
+/// answer is True), "threshold", "threshold_decimal", "timing_ms".
+/// Keyword arguments are options (``time_limit``).
+///
+/// Raises ValueError for another criterion, both or neither bound, the
+/// bound the criterion does not take, a negative, NaN or infinite
+/// threshold, and the input errors of ``triangulate``.
+#[pyfunction]
+#[pyo3(signature = (points, criterion, *, at_least = None, at_most = None, polygon = false, **options))]
+fn decide<'py>(
+    py: Python<'py>,
+    points: &Bound<'py, PyAny>,
+    criterion: &str,
+    at_least: Option<&Bound<'py, PyAny>>,
+    at_most: Option<&Bound<'py, PyAny>>,
+    polygon: bool,
+    options: Option<&Bound<'py, PyDict>>,
+) -> PyResult<Bound<'py, PyAny>> {
+    let at_least = threshold_arg(at_least, "at_least")?;
+    let at_most = threshold_arg(at_most, "at_most")?;
+    let task = Task::decide(criterion, at_least, at_most).map_err(to_py_err)?;
+    let input = if polygon {
+        Input::Polygon(points_arg(py, points, "vertices")?)
+    } else {
+        Input::Points(points_arg(py, points, "points")?)
+    };
+    let outcome = run(py, request(task, input, options)?)?;
+    let text = serde_json::to_string(&outcome.document())
+        .map_err(|e| PyRuntimeError::new_err(format!("cannot write the JSON document: {e}")))?;
+    json_text_to_py(py, &text)
+}
+
+/// A threshold argument: a decimal string, or a number read as the
+/// decimal it prints as.
+fn threshold_arg(
+    value: Option<&Bound<'_, PyAny>>,
+    option: &'static str,
+) -> PyResult<Option<Threshold>> {
+    let Some(value) = value.filter(|v| !v.is_none()) else {
+        return Ok(None);
+    };
+    let threshold = if let Ok(text) = value.extract::<String>() {
+        Threshold::parse(option, &text)
+    } else if value.is_instance_of::<pyo3::types::PyBool>() {
+        return Err(PyTypeError::new_err(format!(
+            "{option} takes a number or a decimal string, not a bool"
+        )));
+    } else if value.is_instance_of::<pyo3::types::PyInt>() {
+        Threshold::parse(option, &value.str()?.to_string())
+    } else if let Ok(number) = value.extract::<f64>() {
+        Threshold::from_f64(option, number)
+    } else {
+        return Err(PyTypeError::new_err(format!(
+            "{option} takes a number or a decimal string, not {}",
+            value.get_type().name()?
+        )));
+    };
+    threshold.map(Some).map_err(to_py_err)
+}
+
 /// The registry listing: the document ``optri criteria --json`` prints and
 /// the web API's ``GET /api/criteria`` returns, as a dict: "criteria"
 /// (name, description, optimality, inputs, options, reference), "graphs",
@@ -423,7 +492,8 @@ fn read_polygon<'py>(
 /// ``vertex_to_simplex``, ``convex_hull``, ``find_simplex``; plus ``exact``,
 /// ``algorithm``, ``stats``, ``timing_ms``, ``duplicates`` and the whole JSON
 /// ``document``); ``graph(points, kind)`` an edge array; ``compare`` every
-/// criterion at once; ``registry()`` is the registry listing (the JSON of
+/// criterion at once; ``decide(points, criterion, at_least=...)`` the area
+/// decision problems; ``registry()`` is the registry listing (the JSON of
 /// ``optri criteria --json``), ``criteria()`` and ``graph_kinds()`` its parts; ``read_points(path)`` reads the library's file formats.
 #[pymodule]
 #[pyo3(name = "optri")]
@@ -436,6 +506,7 @@ fn optri_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(compare, m)?)?;
     m.add_function(wrap_pyfunction!(graph, m)?)?;
     m.add_function(wrap_pyfunction!(graph_document, m)?)?;
+    m.add_function(wrap_pyfunction!(decide, m)?)?;
     m.add_function(wrap_pyfunction!(registry, m)?)?;
     m.add_function(wrap_pyfunction!(criteria, m)?)?;
     m.add_function(wrap_pyfunction!(graph_kinds, m)?)?;

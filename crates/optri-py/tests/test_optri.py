@@ -790,3 +790,77 @@ def test_ctrl_c_stops_a_long_run_within_seconds():
     word, seconds = out.stdout.split()
     assert word == "interrupted", out.stdout
     assert float(seconds) < 2.0, out.stdout
+
+
+def half_text(doubled):
+    """The exact decimal text of the integer ``doubled`` halved."""
+    return str(doubled // 2) + (".5" if doubled % 2 else "")
+
+
+def check_decision_witness(doc, pts, doubled_threshold, at_least):
+    """The witness is a triangulation of the points whose every doubled area
+    meets the threshold (exact integer arithmetic)."""
+    w = doc["witness"]
+    assert w["document"] == "triangulation"
+    for a, b, c in w["triangles"]:
+        area2 = abs(oracle.orient(pts[a], pts[b], pts[c]))
+        assert area2 >= doubled_threshold if at_least else area2 <= doubled_threshold
+
+
+@pytest.mark.parametrize("seed", range(6))
+def test_decide_is_yes_at_the_brute_force_optimum_and_no_just_past_it(seed):
+    rnd = random.Random(300 + seed)
+    pts = convex_points(rnd, 6 + seed % 3) if seed % 2 == 0 else random_points(rnd, 7)
+    best = optima(pts)
+    for criterion, key, bound in (
+        ("maxmin-area", "maxmin_area2", "at_least"),
+        ("minmax-area", "minmax_area2", "at_most"),
+    ):
+        at_least = bound == "at_least"
+        opt = best[key]
+        at = half_text(opt)
+        past = Fraction(opt, 2) + (Fraction(1, 10**9) if at_least else -Fraction(1, 10**9))
+        past_text = f"{past.numerator / past.denominator!r}"
+        for threshold, truth in ((at, True), (float(at), True), (past_text, False)):
+            doc = optri.decide(pts, criterion, **{bound: threshold})
+            assert doc["document"] == "decision" and doc["criterion"] == criterion
+            if doc["answer"] is None:
+                # A general set the approximation did not settle.
+                assert seed % 2 == 1 and not doc["exact"]
+                continue
+            assert doc["answer"] is truth, (threshold, doc)
+            if truth:
+                check_decision_witness(doc, pts, opt, at_least)
+            else:
+                assert doc["witness"] is None
+        if seed % 2 == 0:
+            # Convex position is always decided, with the next double past
+            # the optimum refused.
+            value = opt / 2
+            nxt = math.nextafter(value, math.inf if at_least else -math.inf)
+            assert optri.decide(pts, criterion, **{bound: nxt})["answer"] is False
+
+
+def test_decide_polygons_and_bad_input():
+    l_shape = [(0, 0), (4, 0), (4, 1), (1, 1), (1, 3), (0, 3)]
+    t = optri.triangulate_polygon(l_shape, "maxmin-area")
+    smallest = t.stats["min_area"]
+    yes = optri.decide(l_shape, "maxmin-area", at_least=smallest, polygon=True)
+    assert yes["answer"] is True and yes["witness"]["domain"] == "polygon"
+    no = optri.decide(l_shape, "maxmin-area", at_least=str(smallest) + "000000001", polygon=True)
+    assert no["answer"] is False
+    square = [(0, 0), (2, 0), (2, 2), (0, 2)]
+    for kwargs, message in (
+        ({"at_least": -1}, "negative"),
+        ({"at_least": float("nan")}, "not a finite number"),
+        ({"at_least": "abc"}, "not a decimal number"),
+        ({"at_most": 1}, "at_least"),
+        ({"at_least": 1, "at_most": 2}, "not both"),
+        ({}, "at_least"),
+    ):
+        with pytest.raises(ValueError, match=message):
+            optri.decide(square, "maxmin-area", **kwargs)
+    with pytest.raises(ValueError, match="delaunay"):
+        optri.decide(square, "delaunay", at_least=1)
+    with pytest.raises(TypeError):
+        optri.decide(square, "maxmin-area", at_least=True)

@@ -55,7 +55,10 @@ mod spatial;
 mod structures;
 mod timing;
 
-pub use criteria::area::{maxmin_area_at_least, MaxMinAreaDecision};
+pub use criteria::area::{
+    decide_area, maxmin_area_at_least, AreaDecision, AreaQuestion, DecisionInput,
+    MaxMinAreaDecision,
+};
 pub use criteria::{
     BoundMeasure, CertifiedBound, CriterionInfo, Diagnostics, InputKind, Optimality, OptionInfo,
     Options, Progress, OPTIONS,

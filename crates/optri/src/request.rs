@@ -1,5 +1,5 @@
 //! One request for every front end: an input as read, what to compute
-//! (a criterion, a comparison or a graph), options by name, and the run that
+//! (a criterion, a comparison, a graph or an area decision), options by name, and the run that
 //! turns them into the one JSON document. The CLI, Python and the web API
 //! all go through [`Request::run`], so they validate, time, refuse and
 //! report alike.
@@ -25,9 +25,14 @@
 //! e.g. `write`), and `total` since the front end's start
 //! ([`Outcome::finish`]).
 
+use crate::criteria::area::{decide_area, AreaDecision, AreaQuestion};
 use crate::criteria::{InputKind, Options, OPTIONS};
 use crate::error::{Error, Result};
-use crate::io::{ComparisonReport, Document, GraphReport, Input, ReadInput, TriangulationReport};
+use crate::io::{
+    ComparisonReport, DecisionReport, Document, GraphReport, Input, ReadInput, Threshold,
+    TriangulationReport,
+};
+use crate::kernel::AreaThreshold;
 use crate::registry::{
     compare, graph, triangulate_with, Comparison, Criterion, GraphKind, PointGraph, Solution,
 };
@@ -48,6 +53,15 @@ pub enum Task {
     /// A proximity graph of the points (a polygon's vertices are taken as
     /// points); two points and collinear points are accepted.
     Graph(GraphKind),
+    /// An area decision ([`crate::decide_area`]): is there a triangulation
+    /// whose every triangle's area (not doubled, in the input's units) is at
+    /// least (`maxmin-area`) or at most (`minmax-area`) the threshold?
+    Decide {
+        /// Which bound.
+        question: AreaQuestion,
+        /// The area, as the user wrote it.
+        threshold: Threshold,
+    },
 }
 
 impl Task {
@@ -82,6 +96,58 @@ impl Task {
         GraphKind::from_name(kind).map(Task::Graph)
     }
 
+    /// [`Task::Decide`] for `criterion` (`maxmin-area` with `at_least`,
+    /// `minmax-area` with `at_most`).
+    ///
+    /// # Errors
+    /// [`Error::UnknownName`] for an unknown criterion;
+    /// [`Error::InvalidOption`] for another criterion, both bounds or
+    /// neither, or the bound the criterion does not take.
+    pub fn decide(
+        criterion: &str,
+        at_least: Option<Threshold>,
+        at_most: Option<Threshold>,
+    ) -> Result<Self> {
+        let criterion = Criterion::from_name(criterion)?;
+        let invalid = |option, message: &str| Error::InvalidOption {
+            option,
+            message: message.to_string(),
+        };
+        let question = match criterion {
+            Criterion::MaxMinArea => AreaQuestion::SmallestAtLeast,
+            Criterion::MinMaxArea => AreaQuestion::LargestAtMost,
+            other => {
+                return Err(invalid(
+                    "criterion",
+                    &format!(
+                        "{} has no decision; decide takes maxmin-area (with at_least) or \
+                         minmax-area (with at_most)",
+                        other.name()
+                    ),
+                ))
+            }
+        };
+        match (question, at_least, at_most) {
+            (_, Some(_), Some(_)) => Err(invalid(
+                "at_least",
+                "give one bound, at_least or at_most, not both",
+            )),
+            (AreaQuestion::SmallestAtLeast, Some(threshold), None)
+            | (AreaQuestion::LargestAtMost, None, Some(threshold)) => Ok(Task::Decide {
+                question,
+                threshold,
+            }),
+            (AreaQuestion::SmallestAtLeast, _, _) => Err(invalid(
+                "at_least",
+                "maxmin-area is decided with at_least (its smallest triangle's area)",
+            )),
+            (AreaQuestion::LargestAtMost, _, _) => Err(invalid(
+                "at_most",
+                "minmax-area is decided with at_most (its largest triangle's area)",
+            )),
+        }
+    }
+
     /// Sets the option `name` of `options` from its text form
     /// ([`Options::set`]), refusing an option this task does not read.
     ///
@@ -106,6 +172,7 @@ impl Task {
             Task::Triangulate(c) => format!("criterion {}", c.name()),
             Task::Compare(_) => "these criteria".to_string(),
             Task::Graph(kind) => format!("graph {}", kind.name()),
+            Task::Decide { question, .. } => format!("decision {}", question.criterion()),
         }
     }
 
@@ -123,6 +190,7 @@ impl Task {
                 criteria.iter().flat_map(|c| c.options()).copied().collect()
             }
             Task::Graph(kind) => kind.options().to_vec(),
+            Task::Decide { .. } => Vec::new(),
         };
         OPTIONS
             .iter()
@@ -239,6 +307,24 @@ impl Request {
                 (Task::Compare(cs), Domain::Polygon(p)) => {
                     Results::Comparison(compare(p, cs, &options))
                 }
+                (
+                    Task::Decide {
+                        question,
+                        threshold,
+                    },
+                    domain,
+                ) => {
+                    let area = working_threshold(threshold, &read);
+                    let decision = match domain {
+                        Domain::Points(p) => decide_area(p, *question, &area, &options)?,
+                        Domain::Polygon(p) => decide_area(p, *question, &area, &options)?,
+                    };
+                    Results::Decision {
+                        question: *question,
+                        threshold: threshold.clone(),
+                        decision: Box::new(decision),
+                    }
+                }
                 (Task::Graph(_), _) => unreachable!("graphs are handled above"),
             };
             (results, Some(domain))
@@ -247,6 +333,7 @@ impl Request {
         match &results {
             Results::Triangulation(s) => phases.extend(s.phases.iter().cloned()),
             Results::Graph { graph, .. } => phases.extend(graph.phases.iter().cloned()),
+            Results::Decision { decision, .. } => phases.extend(decision.phases.iter().cloned()),
             Results::Comparison(_) => phases.push(Phase {
                 name: "compare",
                 ms: ms_since(t0),
@@ -261,6 +348,16 @@ impl Request {
             start,
         })
     }
+}
+
+/// A user's area threshold as a threshold on the doubled areas of `read`'s
+/// working points: `2 · m · 10^(e + 2k)` for the threshold `m · 10^e` and
+/// working points scaled by `10^k`.
+fn working_threshold(threshold: &Threshold, read: &ReadInput) -> AreaThreshold {
+    let (mantissa, exponent) = threshold.value();
+    let k = read.scaled.as_ref().map_or(0, |s| i64::from(s.exponent));
+    // The mantissa is below 10³⁶ (`Threshold`), so twice it fits.
+    AreaThreshold::new(2 * mantissa, exponent + 2 * k)
 }
 
 /// The validated input of a triangulation or comparison: `read`'s working
@@ -311,6 +408,15 @@ pub enum Results {
         /// Its edges and phases.
         graph: PointGraph,
     },
+    /// The answer, for [`Task::Decide`].
+    Decision {
+        /// Which bound was asked.
+        question: AreaQuestion,
+        /// The threshold as given.
+        threshold: Threshold,
+        /// The answer and its witness.
+        decision: Box<AreaDecision>,
+    },
 }
 
 /// What a [`Request`] computed, with its input and phases: a front end
@@ -347,6 +453,14 @@ impl Outcome {
     pub fn graph(&self) -> Option<(GraphKind, &PointGraph)> {
         match &self.results {
             Results::Graph { kind, graph } => Some((*kind, graph)),
+            _ => None,
+        }
+    }
+
+    /// The answer, for [`Task::Decide`].
+    pub fn decision(&self) -> Option<&AreaDecision> {
+        match &self.results {
+            Results::Decision { decision, .. } => Some(decision),
             _ => None,
         }
     }
@@ -428,6 +542,15 @@ impl Outcome {
             ),
             Results::Comparison(results) => Document::Comparison(
                 ComparisonReport::new(results)
+                    .with_input(read)
+                    .with_timing(&self.phases),
+            ),
+            Results::Decision {
+                question,
+                threshold,
+                decision,
+            } => Document::Decision(
+                DecisionReport::new(*question, threshold, decision)
                     .with_input(read)
                     .with_timing(&self.phases),
             ),

@@ -10,10 +10,11 @@ use optri::internals::kernel::{
     same_direction, strictly_inside_wedge, strictly_inside_wedge_symbolic,
 };
 use optri::kernel::{
-    compare_areas, compare_lengths, in_lune, incircle_sign, orient_sign, MAX_COORDINATE,
-    MIN_COORDINATE,
+    compare_areas, compare_lengths, in_lune, incircle_sign, orient_sign, AreaThreshold,
+    MAX_COORDINATE, MIN_COORDINATE,
 };
 use optri_oracle as oracle;
+use optri_oracle::{BigInt, BigRational};
 use rand::rngs::StdRng;
 use rand::{Rng, SeedableRng};
 
@@ -1253,4 +1254,113 @@ fn zero_lengths_in_wedges() {
     let refused = std::panic::catch_unwind(|| strictly_inside_wedge_symbolic(&points, 0, 0, 1, 2));
     assert!(refused.is_err());
     assert!(!strictly_inside_wedge_symbolic(&points, 0, 1, 2, 0));
+}
+
+// ---------------------------------------------------------------------------
+// Area thresholds: a doubled area against `m · 10^x`, exactly.
+
+/// `m · 10^x` as an exact rational.
+fn decimal_rational(m: u128, x: i64) -> BigRational {
+    let ten = BigInt::from(10).pow(x.unsigned_abs() as u32);
+    let m = BigRational::from_integer(BigInt::from(m));
+    if x >= 0 {
+        m * BigRational::from_integer(ten)
+    } else {
+        m / BigRational::from_integer(ten)
+    }
+}
+
+#[test]
+fn area_thresholds_match_exact_rationals_at_and_next_to_the_area() {
+    const SEED: u64 = 0x0dec_13a1;
+    let mut rng = StdRng::seed_from_u64(SEED);
+    let (mut cases, mut equal) = (0usize, 0usize);
+    for round in 0..4000 {
+        // Integer triangles (decimal-exact input scaled to integers) and
+        // binary triangles at several magnitudes.
+        let scale: f64 = [1.0, 1e-9, 1e12, 3.0e40, 1e-40][round % 5];
+        let integer = round % 5 == 0;
+        let p = |rng: &mut StdRng| -> Point {
+            if integer {
+                [
+                    rng.gen_range(-1_000_000i64..1_000_000) as f64,
+                    rng.gen_range(-1_000_000i64..1_000_000) as f64,
+                ]
+            } else {
+                [
+                    scale * rng.gen_range(-1.0..1.0),
+                    scale * rng.gen_range(-1.0..1.0),
+                ]
+            }
+        };
+        let t = [p(&mut rng), p(&mut rng), p(&mut rng)];
+        let exact = oracle::twice_area(t[0], t[1], t[2]);
+        if exact == BigRational::from_integer(BigInt::from(0)) {
+            continue;
+        }
+        // The decimal just below the area at x digits, then its neighbours.
+        let x: i64 = if integer {
+            rng.gen_range(-3..3)
+        } else {
+            let magnitude = (scale * scale).log10().round() as i64;
+            magnitude - rng.gen_range(0..30)
+        };
+        let floor = (exact.clone() / decimal_rational(1, x))
+            .floor()
+            .to_integer();
+        let Ok(m) = u128::try_from(&floor) else {
+            continue;
+        };
+        for m in [m.saturating_sub(1), m, m + 1, m + 2] {
+            let want = exact.cmp(&decimal_rational(m, x));
+            let got = AreaThreshold::new(m, x).compare(t);
+            assert_eq!(got, want, "{t:?} against {m}e{x}");
+            cases += 1;
+            equal += want.is_eq() as usize;
+        }
+    }
+    assert!(cases > 10_000, "{cases}");
+    assert!(equal > 500, "{equal}");
+    // Thresholds beyond every area, zero, and a degenerate triangle.
+    let t = [[0.0, 0.0], [MAX_COORDINATE, 0.0], [0.0, MAX_COORDINATE]];
+    assert_eq!(
+        AreaThreshold::new(1, 130).compare(t),
+        std::cmp::Ordering::Less
+    );
+    assert_eq!(
+        AreaThreshold::new(1, -200).compare(t),
+        std::cmp::Ordering::Greater
+    );
+    let tiny = [[0.0, 0.0], [MIN_COORDINATE, 0.0], [0.0, MIN_COORDINATE]];
+    // Its doubled area is 2⁻²⁸⁴ ≈ 1.2e-86.
+    assert_eq!(
+        AreaThreshold::new(1, -80).compare(tiny),
+        std::cmp::Ordering::Less
+    );
+    assert_eq!(
+        AreaThreshold::new(1, -90).compare(tiny),
+        std::cmp::Ordering::Greater
+    );
+    assert_eq!(
+        AreaThreshold::new(1, -200).compare(tiny),
+        std::cmp::Ordering::Greater
+    );
+    assert_eq!(
+        AreaThreshold::new(0, 5).compare(tiny),
+        std::cmp::Ordering::Greater
+    );
+    let flat = [[0.0, 0.0], [1.0, 1.0], [2.0, 2.0]];
+    assert_eq!(
+        AreaThreshold::new(0, 0).compare(flat),
+        std::cmp::Ordering::Equal
+    );
+    assert_eq!(
+        AreaThreshold::new(1, -300).compare(flat),
+        std::cmp::Ordering::Less
+    );
+    // Decimal coordinates as doubles: 0.1 · 1 is no double's area.
+    let tenth = [[0.0, 0.0], [0.1, 0.0], [0.0, 1.0]];
+    let want = oracle::twice_area(tenth[0], tenth[1], tenth[2]).cmp(&decimal_rational(1, -1));
+    assert_eq!(AreaThreshold::new(1, -1).compare(tenth), want);
+    assert_ne!(want, std::cmp::Ordering::Equal);
 }

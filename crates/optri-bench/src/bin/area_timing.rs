@@ -7,7 +7,11 @@
 //! target/release/area_timing ratio 500 1000 2000     # product vs cubic, both criteria
 //! target/release/area_timing scale 2000 4000 8000    # product only
 //! target/release/area_timing routes 500 1000 2000    # the routes' CPU times
+//! target/release/area_timing decide 500 1000 2000    # one-shot decision vs the table's
 //! ```
+//! `decide`: one MaxMin decision at the optimum (a yes) and just above it (a
+//! no), by Algorithm 49 in one shot (`decide_area`) and by building the
+//! sorted table first (`maxmin_area_at_least`), alternating `RUNS` times.
 //! `routes`: both MaxMin routes of Algorithm 44 (range-max and
 //! sort-and-search) and MinMax on ellipse polygons, CPU (wall) seconds and
 //! their growth against `n² log n`.
@@ -109,6 +113,10 @@ fn main() {
         routes(&sizes);
         return;
     }
+    if mode == "decide" {
+        decide(&sizes);
+        return;
+    }
     let runs: usize = std::env::var("RUNS")
         .ok()
         .and_then(|r| r.parse().ok())
@@ -191,5 +199,52 @@ fn main() {
             "  peak RSS so far: {} kB",
             peak_rss_kb().map_or("?".to_string(), |kb| kb.to_string())
         );
+    }
+}
+
+/// One-shot decisions against the table route, alternating, on lenses.
+fn decide(sizes: &[usize]) {
+    use optri::kernel::AreaThreshold;
+    use optri::{decide_area, maxmin_area_at_least, AreaQuestion, Options};
+    let runs: usize = std::env::var("RUNS")
+        .ok()
+        .and_then(|r| r.parse().ok())
+        .unwrap_or(3);
+    for &n in sizes {
+        let points = convex_lens(&mut StdRng::seed_from_u64(SEED_CONVEX), n);
+        let ps = PointSet::new(&points).unwrap();
+        let optimum = triangulate(&ps, Criterion::MaxMinArea).unwrap();
+        let [a, b, c] = optimum
+            .triangulation
+            .stats()
+            .smallest_triangle
+            .map(|i| points[i as usize]);
+        // Integer coordinates well below 2^26: the doubled area is an exact
+        // integer below 2^53.
+        let doubled = ((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])).abs();
+        for (label, value) in [("at the optimum", doubled), ("above it", doubled + 1.0)] {
+            let threshold = AreaThreshold::new(value as u128, 0);
+            let (mut one_shot, mut table) = (Vec::new(), Vec::new());
+            for _ in 0..runs {
+                let (d, t) = secs(|| {
+                    decide_area(
+                        &ps,
+                        AreaQuestion::SmallestAtLeast,
+                        &threshold,
+                        &Options::default(),
+                    )
+                    .unwrap()
+                });
+                one_shot.push(t);
+                let (answer, t) = secs(|| maxmin_area_at_least(&ps, value).unwrap());
+                table.push(t);
+                assert_eq!(d.answer, Some(answer));
+            }
+            let (o, t) = (median(one_shot), median(table));
+            println!(
+                "n={n} {label}: one-shot {o:.4} s, table {t:.4} s, table/one-shot {:.2}",
+                t / o
+            );
+        }
     }
 }

@@ -3,6 +3,7 @@
 
 pub(crate) mod compare;
 pub(crate) mod criteria;
+pub(crate) mod decide;
 pub(crate) mod demo;
 pub(crate) mod graph;
 pub(crate) mod serve;

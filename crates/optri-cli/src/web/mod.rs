@@ -13,6 +13,7 @@
 //! | `POST /api/triangulate` `{"points": [[x, y], …], "criterion"?, "polygon"?, "options"?}` | the triangulation document of `optri triangulate --json` (points may be `[x, y, z]`, all of them: `z` is the elevation) |
 //! | `POST /api/compare` `{"points", "criteria"?: [names], "polygon"?, "options"?}` | the comparison document of `optri compare --json` |
 //! | `POST /api/graph` `{"points", "kind", "options"?}` | the graph document of `optri graph --json` |
+//! | `POST /api/decide` `{"points", "criterion", "at_least"? \| "at_most"?, "polygon"?, "options"?}` | the decision document of `optri decide --json` (a threshold is a number or a decimal string, taken at its decimal value) |
 //! | `POST /api/read` `{"text", "filename"?, "format"?}` | `{"points": [[x, y], …], "polygon": bool, "format"}`: a file parsed by the library's readers (`[x, y, z]` when it has elevations) |
 //!
 //! Every `GET` route answers `HEAD` (the same headers, no body). `options`
@@ -81,7 +82,7 @@ mod slots;
 pub(crate) use origin::Origins;
 
 use hyper::body::Bytes;
-use optri::io::{self, ComparisonReport, InputFormat, ReadInput, ReadOptions, Source};
+use optri::io::{self, ComparisonReport, InputFormat, ReadInput, ReadOptions, Source, Threshold};
 use optri::request::{Request, Results, Task};
 use optri::{Cancel, Criterion, Error, Interruption, Options};
 use serde::Deserialize;
@@ -191,7 +192,7 @@ pub(crate) enum Route {
 pub(crate) enum Endpoint {
     /// `/api/read`.
     Read,
-    /// `/api/triangulate`, `/api/compare`, `/api/graph`.
+    /// `/api/triangulate`, `/api/compare`, `/api/graph`, `/api/decide`.
     Run(Kind),
 }
 
@@ -201,6 +202,7 @@ pub(crate) enum Kind {
     Triangulate,
     Compare,
     Graph,
+    Decide,
 }
 
 /// The API's state, shared by the connections.
@@ -243,6 +245,42 @@ struct CompareRequest {
     metric: Option<String>,
     #[serde(default)]
     options: BTreeMap<String, Value>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct DecideRequest {
+    points: Vec<Vec<f64>>,
+    criterion: String,
+    #[serde(default)]
+    at_least: Option<Value>,
+    #[serde(default)]
+    at_most: Option<Value>,
+    #[serde(default)]
+    polygon: bool,
+    #[serde(default)]
+    options: BTreeMap<String, Value>,
+}
+
+/// A threshold field: a decimal string, or a number as the decimal the body
+/// wrote (serde_json prints a double as its shortest decimal).
+fn threshold_field(
+    option: &'static str,
+    value: Option<Value>,
+) -> Result<Option<Threshold>, Refusal> {
+    let text = match value {
+        None | Some(Value::Null) => return Ok(None),
+        Some(Value::String(s)) => s,
+        Some(Value::Number(n)) => n.to_string(),
+        Some(other) => {
+            return Err(bad_request(format!(
+                "{option}: {other} is not a number or a decimal string"
+            )))
+        }
+    };
+    Threshold::parse(option, &text)
+        .map(Some)
+        .map_err(bad_request)
 }
 
 #[derive(Deserialize)]
@@ -343,6 +381,7 @@ impl Api {
             "/api/triangulate" => Some(Endpoint::Run(Kind::Triangulate)),
             "/api/compare" => Some(Endpoint::Run(Kind::Compare)),
             "/api/graph" => Some(Endpoint::Run(Kind::Graph)),
+            "/api/decide" => Some(Endpoint::Run(Kind::Decide)),
             "/api/read" => Some(Endpoint::Read),
             _ => None,
         };
@@ -368,7 +407,8 @@ impl Api {
                     404,
                     format!(
                         "no such page: {path} (the API is GET /api/criteria, GET /api/limits, \
-                         POST /api/triangulate, POST /api/compare, POST /api/graph, POST /api/read)"
+                         POST /api/triangulate, POST /api/compare, POST /api/graph, POST /api/decide, \
+                         POST /api/read)"
                     ),
                 ))
             }
@@ -532,6 +572,13 @@ fn prepare(kind: Kind, body: &[u8], limits: &Limits, cancel: Cancel) -> Result<P
             let r: GraphRequest = parse(body)?;
             let task = Task::graph(&r.kind).map_err(bad_request)?;
             (task, r.points, false, r.metric, r.options)
+        }
+        Kind::Decide => {
+            let r: DecideRequest = parse(body)?;
+            let at_least = threshold_field("at_least", r.at_least)?;
+            let at_most = threshold_field("at_most", r.at_most)?;
+            let task = Task::decide(&r.criterion, at_least, at_most).map_err(bad_request)?;
+            (task, r.points, r.polygon, None, r.options)
         }
     };
     if points.len() > limits.max_points {

@@ -34,6 +34,8 @@
 //! literal in the document has more than 15 significant digits
 //! ([`json_literals_are_short`]).
 
+use super::quoted;
+use crate::error::{Error, Result};
 use crate::kernel::Point;
 
 /// 2⁵³: integers of smaller magnitude are exact doubles.
@@ -91,6 +93,21 @@ struct Decimal {
 /// `nan`, hex) and for more than 16 significant digits, which cannot scale
 /// below 2⁵³.
 fn parse_decimal(token: &str) -> Option<Decimal> {
+    let (negative, mantissa, exponent) = parse_decimal_digits(token, 16)?;
+    if mantissa >= u128::from(EXACT_INTEGER_LIMIT) {
+        return None;
+    }
+    Some(Decimal {
+        negative,
+        mantissa: mantissa as u64,
+        exponent,
+    })
+}
+
+/// A decimal literal as `(negative, m, e)`, its value `±m · 10^e` with no
+/// trailing zero digit in `m` (`e = 0` for zero); `None` for anything but
+/// a decimal literal and for more than `max_digits ≤ 38` significant digits.
+fn parse_decimal_digits(token: &str, max_digits: usize) -> Option<(bool, u128, i64)> {
     let bytes = token.as_bytes();
     let mut i = 0;
     let negative = match bytes.first() {
@@ -104,7 +121,7 @@ fn parse_decimal(token: &str) -> Option<Decimal> {
         }
         _ => false,
     };
-    let mut mantissa: u64 = 0;
+    let mut mantissa: u128 = 0;
     let mut exponent: i64 = 0;
     let mut digits = 0usize; // significant digits taken into `mantissa`
     let mut pending_zeros: i64 = 0; // zeros after the last nonzero digit
@@ -114,7 +131,7 @@ fn parse_decimal(token: &str) -> Option<Decimal> {
         match bytes[i] {
             b'0'..=b'9' => {
                 any_digit = true;
-                let d = u64::from(bytes[i] - b'0');
+                let d = u128::from(bytes[i] - b'0');
                 if after_point {
                     exponent -= 1;
                 }
@@ -131,7 +148,7 @@ fn parse_decimal(token: &str) -> Option<Decimal> {
                     pending_zeros = 0;
                     mantissa = mantissa.checked_mul(10)?.checked_add(d)?;
                     digits += 1;
-                    if digits > 16 {
+                    if digits > max_digits {
                         return None;
                     }
                 }
@@ -165,14 +182,7 @@ fn parse_decimal(token: &str) -> Option<Decimal> {
     if mantissa == 0 {
         exponent = 0;
     }
-    if mantissa >= EXACT_INTEGER_LIMIT {
-        return None;
-    }
-    Some(Decimal {
-        negative,
-        mantissa,
-        exponent,
-    })
+    Some((negative, mantissa, exponent))
 }
 
 /// Collects the decimal value of every coordinate, in order, scaled by the
@@ -443,5 +453,80 @@ mod tests {
         assert!(json_literals_are_short(
             r#"{"a\"":[100000000000000000000000]}"#
         ));
+    }
+}
+
+/// A user's area threshold, kept as the decimal it was written as: `text`
+/// and its exact value `mantissa · 10^exponent` (`≥ 0`). A number that
+/// arrives as a double (a Python float, a JSON number) is its shortest
+/// round-trip decimal, the text it prints as, so a reported area passed
+/// back is the decimal the report showed.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Threshold {
+    text: String,
+    mantissa: u128,
+    exponent: i64,
+}
+
+/// Significant digits a threshold may have (its mantissa stays below 10³⁶,
+/// so twice it fits a `u128`).
+const THRESHOLD_DIGITS: usize = 36;
+
+impl Threshold {
+    /// Parses a decimal literal `[+]digits[.digits][(e|E)[+-]digits]`.
+    ///
+    /// # Errors
+    /// [`Error::InvalidOption`] for anything else (`nan`, `inf`, hex, a
+    /// negative value, more than 36 significant digits), naming `option`.
+    pub fn parse(option: &'static str, text: &str) -> Result<Self> {
+        let invalid = |why: &str| Error::InvalidOption {
+            option,
+            message: format!("{} {why}", quoted(text)),
+        };
+        let token = text.trim();
+        let (negative, mantissa, exponent) = parse_decimal_digits(token, THRESHOLD_DIGITS)
+            .ok_or_else(|| {
+                invalid(&format!(
+                    "is not a decimal number of at most {THRESHOLD_DIGITS} significant digits"
+                ))
+            })?;
+        if negative && mantissa != 0 {
+            return Err(invalid("is negative; an area threshold is at least 0"));
+        }
+        Ok(Self {
+            text: token.to_string(),
+            mantissa,
+            exponent,
+        })
+    }
+
+    /// A threshold from a double: its shortest round-trip decimal.
+    ///
+    /// # Errors
+    /// [`Error::InvalidOption`] for NaN, an infinity or a negative value.
+    pub fn from_f64(option: &'static str, value: f64) -> Result<Self> {
+        if !value.is_finite() {
+            return Err(Error::InvalidOption {
+                option,
+                message: format!("{value} is not a finite number"),
+            });
+        }
+        // `{}` is Rust's shortest round-trip decimal.
+        Self::parse(option, &format!("{value}"))
+    }
+
+    /// The text as given (trimmed).
+    pub fn text(&self) -> &str {
+        &self.text
+    }
+
+    /// The exact value `mantissa · 10^exponent`.
+    pub fn value(&self) -> (u128, i64) {
+        (self.mantissa, self.exponent)
+    }
+
+    /// The nearest double (for display and for documents).
+    pub fn to_f64(&self) -> f64 {
+        self.text.parse().unwrap_or(f64::NAN)
     }
 }

@@ -66,11 +66,12 @@ mod text;
 mod tsplib;
 mod write;
 
-pub use decimal::{Arithmetic, Scaled};
+pub use decimal::{Arithmetic, Scaled, Threshold};
 pub use format::{InputFormat, OutputFormat};
 
 pub use json::{
-    triangulation_from_json, ComparisonReport, GraphReport, TriangulationReport, SCHEMA_VERSION,
+    triangulation_from_json, ComparisonReport, DecisionReport, GraphReport, TriangulationReport,
+    SCHEMA_VERSION,
 };
 pub use listing::registry_listing;
 pub use read::{read, ReadOptions, Source};

@@ -4,8 +4,8 @@
 //! title, the JSON layout, the PLY encoding).
 
 use super::{
-    geojson, node, obj, off, ply, svg, Cells, ComparisonReport, GraphReport, Mesh, OutputFormat,
-    TriangulationReport,
+    geojson, node, obj, off, ply, svg, Cells, ComparisonReport, DecisionReport, GraphReport, Mesh,
+    OutputFormat, TriangulationReport,
 };
 use crate::error::{Error, Result};
 use serde::Serialize;
@@ -22,6 +22,8 @@ pub enum Document<'a> {
     Comparison(ComparisonReport<'a>),
     /// `"document": "graph"`.
     Graph(GraphReport<'a>),
+    /// `"document": "decision"`.
+    Decision(DecisionReport<'a>),
 }
 
 impl Document<'_> {
@@ -31,6 +33,7 @@ impl Document<'_> {
             Document::Triangulation(d) => d.to_json(),
             Document::Comparison(d) => d.to_json(),
             Document::Graph(d) => d.to_json(),
+            Document::Decision(d) => d.to_json(),
         }
     }
 }
@@ -44,6 +47,7 @@ impl Serialize for Document<'_> {
             Document::Triangulation(d) => d.serialize(serializer),
             Document::Comparison(d) => d.serialize(serializer),
             Document::Graph(d) => d.serialize(serializer),
+            Document::Decision(d) => d.serialize(serializer),
         }
     }
 }
@@ -57,6 +61,12 @@ impl<'a> From<TriangulationReport<'a>> for Document<'a> {
 impl<'a> From<GraphReport<'a>> for Document<'a> {
     fn from(report: GraphReport<'a>) -> Self {
         Document::Graph(report)
+    }
+}
+
+impl<'a> From<DecisionReport<'a>> for Document<'a> {
+    fn from(report: DecisionReport<'a>) -> Self {
+        Document::Decision(report)
     }
 }
 
@@ -144,7 +154,8 @@ impl WriteOptions {
 /// [`Error::Io`] naming the path for an unknown extension, a format the
 /// document has no form in (`.ele` and `.off` for a graph; anything but `.svg` and
 /// `.json` for a comparison, or `.svg` when every criterion refused the
-/// input), or when writing fails.
+/// input; anything but `.json` for a decision without a witness), or when
+/// writing fails.
 ///
 /// # Panics
 /// If a graph's edge refers to an index outside its points.
@@ -164,6 +175,7 @@ pub fn write<'a>(
         Document::Triangulation(report) => write_triangulation(&report, path, &title, options),
         Document::Graph(report) => write_graph(&report, path, &title, options),
         Document::Comparison(report) => write_comparison(&report, path, &title, options),
+        Document::Decision(report) => write_decision(&report, path, &title, options),
     }
 }
 
@@ -251,6 +263,27 @@ fn write_graph(
         }
     }
     Ok(vec![path.to_path_buf()])
+}
+
+/// A decision: its document as `.json`; any other format is its witness's
+/// (a "no" or "unknown" answer has nothing to draw).
+fn write_decision(
+    report: &DecisionReport,
+    path: &Path,
+    title: &str,
+    options: &WriteOptions,
+) -> Result<Vec<PathBuf>> {
+    if OutputFormat::from_path(path)? == OutputFormat::Json {
+        write_json_file(path, report, options.style)?;
+        return Ok(vec![path.to_path_buf()]);
+    }
+    match report.witness() {
+        Some(witness) => write_triangulation(&witness, path, title, options),
+        None => Err(write_error(
+            path,
+            &"the answer is not yes, there is no witness triangulation to write",
+        )),
+    }
 }
 
 fn write_comparison(

@@ -101,6 +101,11 @@ impl Expansion {
         }
     }
 
+    /// The components, non-overlapping, in increasing magnitude.
+    pub fn components(&self) -> &[f64] {
+        &self.components
+    }
+
     /// The exact sign of the sum: -1, 0 or 1.
     pub fn sign(&self) -> i32 {
         match self.components.last() {

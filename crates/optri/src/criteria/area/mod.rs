@@ -33,7 +33,10 @@ mod decision;
 pub(crate) mod general;
 pub(crate) mod polygon;
 
-pub use decision::{maxmin_area_at_least, MaxMinAreaDecision};
+pub use decision::{
+    decide_area, maxmin_area_at_least, AreaDecision, AreaQuestion, DecisionInput,
+    MaxMinAreaDecision,
+};
 
 use super::{
     BoundMeasure, CertifiedBound, CriterionEntry, CriterionInfo, Diagnostics, Optimality, Options,

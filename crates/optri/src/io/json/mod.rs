@@ -8,7 +8,9 @@
 //! - `"graph"`: [`GraphReport`] — an edge set over the points and, when it
 //!   comes from [`graph`](crate::graph), its kind and timings;
 //! - `"comparison"`: [`ComparisonReport`] — the results of
-//!   [`compare`](crate::compare), each a triangulation document or an error.
+//!   [`compare`](crate::compare), each a triangulation document or an error;
+//! - `"decision"`: [`DecisionReport`] — the answer to an area decision
+//!   ([`decide_area`](crate::decide_area)) and its witness triangulation.
 //!
 //! `docs/json-schema.md` in the repository lists every field with its type
 //! and meaning. The reports implement `serde::Serialize` (fields in the
@@ -20,6 +22,10 @@
 //! point, merged duplicates included, so the document describes the input as
 //! given; `elevations`, when the input had them, lists their elevations in
 //! the same order.
+
+mod decision;
+
+pub use decision::DecisionReport;
 
 use super::{input_elevations, Arithmetic, Input, ReadInput};
 use crate::criteria::{BoundMeasure, CertifiedBound, Diagnostics, Optimality};
@@ -641,7 +647,7 @@ impl Serialize for DiagnosticsMap<'_> {
     }
 }
 
-fn to_value(document: &impl Serialize) -> Value {
+pub(super) fn to_value(document: &impl Serialize) -> Value {
     // The documents hold strings, numbers, arrays and string-keyed maps only.
     serde_json::to_value(document).expect("an optri document always converts to a JSON value")
 }

@@ -5,8 +5,10 @@
 //! MaxMin optimum (the optimum is one of the table's values).
 
 use super::super::AreaBottleneck;
-use super::maxmin::{witness_apex, AdmissibilityRuns, RangeMaxSearch};
-use super::sleeve::{first_true, SleeveTable, Witness, UNSOLVED};
+use super::maxmin::{AdmissibilityRuns, RangeMaxSearch};
+use super::sleeve::{
+    first_true, sleeve_triangulation, ConvexPolygon, SleeveTable, Witness, UNSOLVED,
+};
 use crate::error::Result;
 use crate::interrupt::Stop;
 use crate::kernel::compare_doubled_area;
@@ -136,68 +138,15 @@ impl<'a> MaxMinTable<'a> {
             let rank = table.rank(i, len);
             rank != UNSOLVED && rank >= tau
         };
-        if n == 3 {
-            return ok(0, 2).then_some(Witness::Whole { i: 0 });
-        }
-        // Step 2: a proper 2-2 diagonal with both sides admissible. By the
-        // strengthening of Lemma 37 (module docs of `convex`) a triangulation with
-        // smallest area ≥ τ has such a diagonal or an internal 2-2-2
-        // triangle with all three pieces admissible.
-        for i in 0..n {
-            for len in 2..=n - 2 {
-                if ok(i, len) && ok(i + len, n - len) {
-                    return Some(Witness::Diagonal { i, len });
-                }
-            }
-        }
-        // Steps 3–4: the admissible part of every I_i and J_j is one interval
-        // (Lemma 40); prefix counts of `ok` along every row and column answer
-        // "is some k of an interval admissible?" in O(1).
-        let admissible_rows: Vec<Option<(usize, usize)>> = (0..n)
+        // The admissible part of every I_i and J_j is one interval (Lemma
+        // 40): binary searches from the peaks.
+        let rows: Vec<Option<(usize, usize)>> = (0..n)
             .map(|i| self.runs.rows[i].superlevel(|r| table.rank(i, r), tau))
             .collect();
-        let admissible_columns: Vec<Option<(usize, usize)>> = (0..n)
+        let columns: Vec<Option<(usize, usize)>> = (0..n)
             .map(|j| self.runs.columns[j].superlevel(|d| table.rank_to(j, d), tau))
             .collect();
-        // row_count[i * n + r]: admissible P_{i,i+r'} with r' < r; likewise
-        // column_count over P_{j−d',j}.
-        let mut row_count = vec![0u16; n * n];
-        let mut column_count = vec![0u16; n * n];
-        for line in 0..n {
-            for len in 1..n {
-                let at = line * n + len;
-                row_count[at] = row_count[at - 1] + ok(line, len) as u16;
-                column_count[at] = column_count[at - 1] + ok(line + n - len, len) as u16;
-            }
-        }
-        let any_in = |count: &[u16], line: usize, lo: usize, hi: usize| {
-            count[line * n + hi] > count[line * n + lo - 1]
-        };
-        // Step 5: search pairs (i, j) with P_ji admissible; the triangle
-        // (i, k, j) is internal, so its own area needs no test (Lemma 23).
-        for (i, admissible_row) in admissible_rows.iter().enumerate() {
-            for len in table.mcw[i] + 1..=n - 2 {
-                let j = (i + len) % n;
-                if !ok(j, n - len) {
-                    continue;
-                }
-                let (first, last) = (2, len - 2);
-                let found = admissible_row
-                    .map(|(lo, hi)| (lo.max(first), hi.min(last)))
-                    .is_some_and(|(lo, hi)| {
-                        lo <= hi && any_in(&column_count, j, len - hi, len - lo)
-                    })
-                    || admissible_columns[j]
-                        .map(|(lo, hi)| (lo.max(first), hi.min(last)))
-                        .is_some_and(|(lo, hi)| {
-                            lo <= hi && any_in(&row_count, i, len - hi, len - lo)
-                        });
-                if found {
-                    return Some(witness_apex(table, i, len, tau));
-                }
-            }
-        }
-        None
+        search_admissible(n, &table.mcw, ok, &rows, &columns)
     }
 
     /// The sleeve table (for tests and the range-max route).
@@ -211,4 +160,154 @@ impl<'a> MaxMinTable<'a> {
     pub(super) fn runs(&self) -> &AdmissibilityRuns {
         &self.runs
     }
+}
+
+/// Steps 2–5 of Algorithm 49 (Lemma 50) over the admissibility predicate
+/// `ok(i, len)` ("P_{i,i+len} is solved and its sleeve optimum meets the
+/// threshold"), given the admissible interval of every I_i (`rows`, offsets
+/// r) and J_j (`columns`, lengths d), O(n²).
+fn search_admissible(
+    n: usize,
+    mcw: &[usize],
+    ok: impl Fn(usize, usize) -> bool,
+    rows: &[Option<(usize, usize)>],
+    columns: &[Option<(usize, usize)>],
+) -> Option<Witness> {
+    if n == 3 {
+        return ok(0, 2).then_some(Witness::Whole { i: 0 });
+    }
+    // Step 2: a proper 2-2 diagonal with both sides admissible. By the
+    // strengthening of Lemma 37 (module docs of `convex`) a triangulation with
+    // smallest area ≥ τ has such a diagonal or an internal 2-2-2
+    // triangle with all three pieces admissible.
+    for i in 0..n {
+        for len in 2..=n - 2 {
+            if ok(i, len) && ok(i + len, n - len) {
+                return Some(Witness::Diagonal { i, len });
+            }
+        }
+    }
+    // Steps 3–4: prefix counts of `ok` along every row and column answer
+    // "is some k of an interval admissible?" in O(1).
+    // row_count[i * n + r]: admissible P_{i,i+r'} with r' < r; likewise
+    // column_count over P_{j−d',j}.
+    let mut row_count = vec![0u16; n * n];
+    let mut column_count = vec![0u16; n * n];
+    for line in 0..n {
+        for len in 1..n {
+            let at = line * n + len;
+            row_count[at] = row_count[at - 1] + ok(line, len) as u16;
+            column_count[at] = column_count[at - 1] + ok(line + n - len, len) as u16;
+        }
+    }
+    let any_in = |count: &[u16], line: usize, lo: usize, hi: usize| {
+        count[line * n + hi] > count[line * n + lo - 1]
+    };
+    // Step 5: search pairs (i, j) with P_ji admissible; the triangle
+    // (i, k, j) is internal, so its own area needs no test (Lemma 23).
+    for (i, admissible_row) in rows.iter().enumerate() {
+        for len in mcw[i] + 1..=n - 2 {
+            let j = (i + len) % n;
+            if !ok(j, n - len) {
+                continue;
+            }
+            let (first, last) = (2, len - 2);
+            let found = admissible_row
+                .map(|(lo, hi)| (lo.max(first), hi.min(last)))
+                .is_some_and(|(lo, hi)| lo <= hi && any_in(&column_count, j, len - hi, len - lo))
+                || columns[j]
+                    .map(|(lo, hi)| (lo.max(first), hi.min(last)))
+                    .is_some_and(|(lo, hi)| lo <= hi && any_in(&row_count, i, len - hi, len - lo));
+            if found {
+                let r = (2..=len - 2)
+                    .find(|&r| ok(i, r) && ok(i + r, len - r))
+                    .expect("a search pair that admits the threshold has an apex");
+                return Some(Witness::Triangle { i, r, len });
+            }
+        }
+    }
+    None
+}
+
+/// Algorithm 49 in one shot: is there a triangulation of the strictly
+/// convex polygon whose every triangle `t` has `at_least(t) != Less`
+/// (its area at least the threshold)? A triangulation proving it, or `None`.
+///
+/// Vassilev's decision runs steps ii–iii of Algorithm 44 against the
+/// threshold instead of computing optima: a piece is *admissible* when
+/// one of its two base-adjacent ears meets the threshold and the rest of
+/// its sleeve is admissible (Corollary 36 makes "some sleeve meets it" the
+/// same as "the optimal sleeve does"), a boolean program with one area
+/// comparison per ear, O(n²). No value is ranked or sorted, so the
+/// O(n² log n) sort of [`MaxMinTable::new`] (and the thesis's van Emde Boas
+/// queues, O(n² log log n)) are not needed: the admissible part of every
+/// I_i and J_j is one interval (Lemma 40) found by a scan, O(n) per line,
+/// and steps 2–5 are those of [`MaxMinTable`]'s decision. O(n²) time and
+/// space in all.
+///
+/// # Panics
+/// As [`super::maxmin_area_convex`].
+///
+/// # Errors
+/// [`Error::Interrupted`](crate::Error::Interrupted) when `stop` says so.
+pub(crate) fn maxmin_admits(
+    points: &[Point],
+    polygon: &[u32],
+    at_least: impl Fn([Point; 3]) -> Ordering,
+    stop: &Stop,
+) -> Result<Option<Vec<[u32; 3]>>> {
+    let poly = ConvexPolygon::new(points, polygon);
+    let n = poly.n;
+    let mcw = poly.max_clockwise();
+    let mccw = poly.max_counter_clockwise();
+    let meets = |t: [usize; 3]| at_least(poly.triangle(t)) != Ordering::Less;
+    // admissible[i * n + len] for the solved pieces (2 ≤ len ≤ mcw[i]);
+    // uses_first_ear as in the sleeve table, for the admissible sleeve.
+    let mut admissible = vec![false; n * n];
+    let mut uses_first_ear = vec![false; n * n];
+    for len in 2..n {
+        stop.check()?;
+        for i in 0..n {
+            if len > mcw[i] {
+                continue;
+            }
+            let entry = i * n + len;
+            let j = i + len;
+            if len == 2 {
+                admissible[entry] = meets([i, i + 1, j]);
+                uses_first_ear[entry] = true;
+                continue;
+            }
+            // The sub-piece first: it is a table lookup, the ear an area
+            // comparison.
+            let via_first = admissible[((i + 1) % n) * n + len - 1] && meets([i, i + 1, j]);
+            admissible[entry] = via_first || (admissible[entry - 1] && meets([j - 1, j, i]));
+            uses_first_ear[entry] = via_first;
+        }
+    }
+    stop.check()?;
+    let ok = |i: usize, len: usize| len < n && admissible[(i % n) * n + len];
+    // The first and last admissible offset of a run: the admissible ones
+    // form an interval (Lemma 40).
+    let interval = |lo: usize, hi: usize, ok_at: &dyn Fn(usize) -> bool| {
+        let first = (lo..=hi).find(|&r| ok_at(r))?;
+        let last = (first..=hi).rev().find(|&r| ok_at(r))?;
+        Some((first, last))
+    };
+    let rows: Vec<Option<(usize, usize)>> = (0..n)
+        .map(|i| {
+            let a = mcw[i];
+            let lo = poly.top_offset(i, a).max(2);
+            interval(lo, a, &|r| ok(i, r))
+        })
+        .collect();
+    let columns: Vec<Option<(usize, usize)>> = (0..n)
+        .map(|j| {
+            let b = mccw[j];
+            let top = poly.top_offset(j + n - b, b);
+            interval((b - top).max(2), b, &|d| ok(j + n - d, d))
+        })
+        .collect();
+    Ok(search_admissible(n, &mcw, ok, &rows, &columns)
+        .map(|witness| sleeve_triangulation(&poly, &uses_first_ear, witness)))
 }

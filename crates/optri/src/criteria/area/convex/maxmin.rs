@@ -256,7 +256,7 @@ impl<'t, 'a> RangeMaxSearch<'t, 'a> {
 ///
 /// # Panics
 /// If there is none.
-pub(super) fn witness_apex(table: &SleeveTable, i: usize, len: usize, tau: u32) -> Witness {
+fn witness_apex(table: &SleeveTable, i: usize, len: usize, tau: u32) -> Witness {
     let ok = |rank: u32| rank != UNSOLVED && rank >= tau;
     let r = (2..=len - 2)
         .find(|&r| ok(table.rank(i, r)) && ok(table.rank(i + r, len - r)))

@@ -82,7 +82,7 @@ mod sleeve;
 #[cfg(test)]
 mod tests;
 
-pub(crate) use decision::MaxMinTable;
+pub(crate) use decision::{maxmin_admits, MaxMinTable};
 
 use super::AreaBottleneck;
 use crate::error::Result;

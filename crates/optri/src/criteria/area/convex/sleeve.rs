@@ -562,44 +562,72 @@ impl<'a> SleeveTable<'a> {
         }
     }
 
-    /// Step v for one solved piece: appends the triangles (input vertex
-    /// indices) of its optimal sleeve by following the stored choices, O(len).
-    pub(super) fn push_sleeve(&self, mut i: usize, mut len: usize, out: &mut Vec<[u32; 3]>) {
-        let n = self.n();
-        let v = |p: usize| self.poly.vertex(p);
-        while len >= 2 {
-            debug_assert!(self.solved(i, len));
-            let j = i + len;
-            if self.uses_first_ear[(i % n) * n + len] {
-                out.push([v(i), v(i + 1), v(j)]);
-                i += 1;
-            } else {
-                out.push([v(i), v(j - 1), v(j)]);
-            }
-            len -= 1;
-        }
-    }
-
     /// Step v (L2351-2358): the n − 2 triangles of the triangulation that
     /// `witness` describes, O(n).
     pub(super) fn triangulation(&self, witness: Witness) -> Vec<[u32; 3]> {
-        let n = self.n();
-        let mut out = Vec::with_capacity(n - 2);
-        match witness {
-            Witness::Whole { i } => self.push_sleeve(i, n - 1, &mut out),
-            Witness::Diagonal { i, len } => {
-                self.push_sleeve(i, len, &mut out);
-                self.push_sleeve(i + len, n - len, &mut out);
-            }
-            Witness::Triangle { i, r, len } => {
-                let v = |p: usize| self.poly.vertex(p);
-                out.push([v(i), v(i + r), v(i + len)]);
-                self.push_sleeve(i, r, &mut out);
-                self.push_sleeve(i + r, len - r, &mut out);
-                self.push_sleeve(i + len, n - len, &mut out);
-            }
+        sleeve_triangulation(&self.poly, &self.uses_first_ear, witness)
+    }
+
+    /// The optimal sleeve of one solved piece (step v).
+    #[cfg(test)]
+    pub(super) fn push_sleeve(&self, i: usize, len: usize, out: &mut Vec<[u32; 3]>) {
+        debug_assert!(self.solved(i, len));
+        push_sleeve(&self.poly, &self.uses_first_ear, i, len, out);
+    }
+}
+
+/// Step v (L2351-2358): the n − 2 triangles (input vertex indices) of the
+/// triangulation that `witness` describes, following the sleeve choices
+/// `uses_first_ear[i * n + len]` of every solved piece it names (the
+/// optimal sleeves of [`SleeveTable`], or the admissible ones of a threshold
+/// program), O(n).
+pub(super) fn sleeve_triangulation(
+    poly: &ConvexPolygon,
+    uses_first_ear: &[bool],
+    witness: Witness,
+) -> Vec<[u32; 3]> {
+    let n = poly.n;
+    let v = |p: usize| poly.vertex(p);
+    let push_sleeve = |i: usize, len: usize, out: &mut Vec<[u32; 3]>| {
+        push_sleeve(poly, uses_first_ear, i, len, out)
+    };
+    let mut out = Vec::with_capacity(n - 2);
+    match witness {
+        Witness::Whole { i } => push_sleeve(i, n - 1, &mut out),
+        Witness::Diagonal { i, len } => {
+            push_sleeve(i, len, &mut out);
+            push_sleeve(i + len, n - len, &mut out);
         }
-        debug_assert_eq!(out.len(), n - 2);
-        out
+        Witness::Triangle { i, r, len } => {
+            out.push([v(i), v(i + r), v(i + len)]);
+            push_sleeve(i, r, &mut out);
+            push_sleeve(i + r, len - r, &mut out);
+            push_sleeve(i + len, n - len, &mut out);
+        }
+    }
+    debug_assert_eq!(out.len(), n - 2);
+    out
+}
+
+/// Step v for one solved piece P_{i,i+len}: appends the triangles (input
+/// vertex indices) of its sleeve by following the stored choices, O(len).
+pub(super) fn push_sleeve(
+    poly: &ConvexPolygon,
+    uses_first_ear: &[bool],
+    mut i: usize,
+    mut len: usize,
+    out: &mut Vec<[u32; 3]>,
+) {
+    let n = poly.n;
+    let v = |p: usize| poly.vertex(p);
+    while len >= 2 {
+        let j = i + len;
+        if uses_first_ear[(i % n) * n + len] {
+            out.push([v(i), v(i + 1), v(j)]);
+            i += 1;
+        } else {
+            out.push([v(i), v(j - 1), v(j)]);
+        }
+        len -= 1;
     }
 }

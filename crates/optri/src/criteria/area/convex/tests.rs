@@ -10,7 +10,7 @@ use super::minmax::{search_pairs, Block, BlockSink};
 use super::sleeve::{
     first_true, first_true_near, Bottleneck, SleeveTable, TopFromEnd, TopFromStart, UNSOLVED,
 };
-use super::{maxmin_area_at_least, maxmin_area_convex_by_search, Point};
+use super::{maxmin_admits, maxmin_area_at_least, maxmin_area_convex_by_search, Point};
 use crate::interrupt::Stop;
 use crate::kernel::{compare_doubled_area, cross_sign};
 use crate::kernel::{dot_sign, orient_sign};
@@ -304,6 +304,53 @@ fn check_decision(points: &[Point], polygon: &[u32], max_min: &BigRational) {
     assert!(table.admits_doubled_area(0.0));
     assert!(table.admits_doubled_area(-1.0));
     assert!(!table.admits_doubled_area(f64::INFINITY));
+    check_one_shot_decision(points, polygon, &table, &reps, at);
+}
+
+/// The one-shot decision (the boolean sleeve program) against the table's:
+/// the same answer at the optimum, the next table value and up to 40 more
+/// table values spread over the ranks; every witness is a triangulation
+/// whose smallest triangle meets the threshold.
+fn check_one_shot_decision(
+    points: &[Point],
+    polygon: &[u32],
+    table: &MaxMinTable,
+    reps: &[[Point; 3]],
+    at: usize,
+) {
+    let step = reps.len().div_ceil(40).max(1);
+    let ranks = (0..reps.len())
+        .step_by(step)
+        .chain([at, at + 1])
+        .filter(|&r| r < reps.len());
+    for r in ranks {
+        let threshold = reps[r];
+        let witness = maxmin_admits(
+            points,
+            polygon,
+            |t| crate::kernel::compare_areas(t, threshold),
+            &Stop::default(),
+        )
+        .unwrap();
+        assert_eq!(
+            witness.is_some(),
+            table.admits_triangle(threshold),
+            "one-shot and table decisions differ at rank {}",
+            r + 1
+        );
+        assert_eq!(
+            witness.is_some(),
+            r <= at,
+            "rank {} vs optimum {}",
+            r + 1,
+            at + 1
+        );
+        if let Some(witness) = witness {
+            assert_triangulation(points, polygon, &witness);
+            let area = |t: &[Point; 3]| twice_area(t[0], t[1], t[2]);
+            assert!(min_twice_area(points, &witness) >= area(&threshold));
+        }
+    }
 }
 
 /// Full check of one polygon against the oracle; returns the values.
