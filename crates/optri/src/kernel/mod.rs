@@ -40,6 +40,7 @@
 //! consistent: perturbed lengths are pairwise distinct and perturbed
 //! orientations are never zero, for *distinct* input points.
 
+mod angle_floor;
 mod certified_incircle;
 mod degrees;
 mod differences;
@@ -79,6 +80,7 @@ pub const MAX_COORDINATE: f64 = 3.2138760885179806e60; // 2^201
 /// Smallest accepted non-zero absolute coordinate value, 2⁻¹⁴².
 pub const MIN_COORDINATE: f64 = 1.793662034335766e-43; // 2^-142
 
+pub use angle_floor::{AngleFloor, MIN_ANGLE_FLOOR_DEGREES};
 pub(crate) use differences::{
     compare_angle_differences, compare_area_differences, compare_length_differences,
 };
