@@ -57,8 +57,8 @@ mod timing;
 
 pub use criteria::area::{maxmin_area_at_least, MaxMinAreaDecision};
 pub use criteria::{
-    BoundMeasure, CertifiedBound, CriterionInfo, Diagnostics, InputKind, Optimality, OptionInfo,
-    Options, Progress, OPTIONS,
+    ApproximationReport, AreaApproximation, BoundMeasure, CertifiedBound, CriterionInfo,
+    Diagnostics, Guarantee, InputKind, Optimality, OptionInfo, Options, Progress, OPTIONS,
 };
 pub use error::{ElevationProblem, Error, Interruption, PolygonProblem, Result, UnsupportedReason};
 pub use graphs::{

@@ -22,6 +22,7 @@ pub fn registry_listing() -> Value {
                 "name": info.name,
                 "description": info.description,
                 "optimality": info.optimality.name(),
+                "guarantee": info.optimality.statement(),
                 "inputs": c.inputs().iter().map(|k| k.name()).collect::<Vec<_>>(),
                 "options": info.options,
                 "reference": info.reference,

@@ -140,6 +140,7 @@ fn exact(triangulation: Triangulation, programs: u64) -> Solved {
         optimality: Optimality::Exact,
         diagnostics,
         bound: None,
+        approximation: None,
     }
 }
 
@@ -227,6 +228,7 @@ fn solve_general(
         },
         diagnostics: Diagnostics::default(),
         bound: None,
+        approximation: None,
     })
 }
 

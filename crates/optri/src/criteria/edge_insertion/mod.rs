@@ -194,6 +194,7 @@ fn solve(
         optimality,
         diagnostics,
         bound: None,
+        approximation: None,
     })
 }
 
@@ -232,6 +233,7 @@ fn solve_polygon(
         optimality: Optimality::Exact,
         diagnostics: Diagnostics::default(),
         bound: None,
+        approximation: None,
     })
 }
 

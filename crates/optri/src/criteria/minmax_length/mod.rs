@@ -214,6 +214,7 @@ pub(crate) fn solve(
             optimality: Optimality::Exact,
             diagnostics,
             bound: None,
+            approximation: None,
         });
     }
     let (triangulation, diagnostics) = run(points, PRODUCT, options.stop(), phases)?;
@@ -228,6 +229,7 @@ pub(crate) fn solve(
         optimality: Optimality::Exact,
         diagnostics,
         bound: None,
+        approximation: None,
     })
 }
 
