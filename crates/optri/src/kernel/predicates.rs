@@ -348,7 +348,7 @@ pub const DIAMOND_TAN_DENOMINATOR: f64 = 1024.0;
 /// it is inside the true one: using `α'` keeps the filter sound.
 ///
 /// With `u = a − o`, `v = b − o`: the angle is below `α'` iff `u·v > 0` and
-/// `1024|u×v| < 833(u·v)` ([`tangent_side`]).
+/// `1024|u×v| < 833(u·v)` (the tangent comparison `tangent_side`).
 pub fn angle_below_diamond(o: Point, a: Point, b: Point) -> bool {
     if dot_sign(o, a, b) <= 0 {
         return false;
