@@ -88,7 +88,10 @@ mod tests {
         assert_eq!(names("criteria"), criteria);
         let graphs: Vec<&str> = GraphKind::ALL.iter().map(|k| k.name()).collect();
         assert_eq!(names("graphs"), graphs);
-        assert_eq!(names("options"), ["metric", "time_limit"]);
+        assert_eq!(
+            names("options"),
+            ["metric", "alpha", "approximation", "time_limit"]
+        );
         assert_eq!(v["criteria"][1]["options"], json!(["metric"]));
         assert_eq!(v["criteria"][0]["inputs"], json!(["points", "polygon"]));
         assert_eq!(names("measures").len(), Measure::ALL.len());
