@@ -58,6 +58,7 @@ class _CriterionEntry(TypedDict):
     reference: str
     needs_elevations: bool
     measure: Optional[str]
+    guarantee: str
 
 class _GraphKindEntry(TypedDict):
     name: str
@@ -136,6 +137,11 @@ class Triangulation:
     @property
     def bound(self) -> Optional[_Bound]:
         """A certified bound on the optimum, when the criterion gives one."""
+    @property
+    def approximation(self) -> Optional[Dict[str, Any]]:
+        """maxmin-area / minmax-area on general point sets: the approximation
+        chosen, the Delaunay smallest angle, the alpha used, the candidates,
+        the flips and the guarantee; else None."""
     @property
     def algorithm(self) -> str:
         """The algorithm that ran, in words."""

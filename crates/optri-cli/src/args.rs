@@ -197,6 +197,14 @@ pub(crate) struct RunArgs {
     /// minmax-length, and by the rng and mst graphs (`optri criteria` lists what takes it).
     #[arg(long, default_value = "euclidean", value_name = "METRIC")]
     pub metric: String,
+    /// maxmin-area / minmax-area on general point sets: every angle of the result at least
+    /// DEG degrees (at most the Delaunay triangulation's smallest angle).
+    #[arg(long, value_name = "DEG")]
+    pub alpha: Option<String>,
+    /// maxmin-area / minmax-area on general point sets: thesis-75 | thesis-76 | rng-hull |
+    /// best (the default: the best of all).
+    #[arg(long, value_name = "NAME")]
+    pub approximation: Option<String>,
     /// Stop a run after this many seconds: it fails with exit code 1, or returns its best
     /// certified result marked not exact where the criterion has one. In `compare`, each
     /// criterion has the whole limit.
@@ -211,6 +219,16 @@ impl RunArgs {
         options
             .set("metric", &self.metric)
             .map_err(|e| format!("--metric: {e}"))?;
+        for (name, flag, value) in [
+            ("alpha", "--alpha", &self.alpha),
+            ("approximation", "--approximation", &self.approximation),
+        ] {
+            if let Some(value) = value {
+                options
+                    .set(name, value)
+                    .map_err(|e| format!("{flag}: {e}"))?;
+            }
+        }
         if let Some(limit) = &self.time_limit {
             options
                 .set("time_limit", limit)

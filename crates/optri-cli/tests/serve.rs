@@ -994,3 +994,28 @@ fn limits_that_overflow_or_make_no_sense_are_refused_at_start() {
     assert!(help.contains("at most 2000 points"), "{help}");
     assert!(help.contains("--read-timeout"), "{help}");
 }
+
+/// The area criteria's `alpha` and `approximation` options reach the run
+/// and its report through the request layer.
+#[test]
+fn area_options_reach_the_report() {
+    let server = Server::start(&[]);
+    let points = json!([[0, 0], [9, 1], [17, 0], [20, 8], [16, 17], [8, 20], [7, 7]]);
+    let (status, doc) = server.post(
+        "/api/triangulate",
+        &json!({"points": points, "criterion": "maxmin-area",
+                "options": {"alpha": 5, "approximation": "rng-hull"}}),
+    );
+    assert_eq!(status, 200, "{doc}");
+    assert_eq!(doc["approximation"]["choice"], "rng-hull");
+    assert_eq!(doc["approximation"]["alpha"], json!(5.0));
+    assert!(doc["stats"]["min_angle_deg"].as_f64().unwrap() >= 5.0);
+    let message = refused(
+        server.post(
+            "/api/triangulate",
+            &json!({"points": points, "criterion": "maxmin-area", "options": {"alpha": 70}}),
+        ),
+        422,
+    );
+    assert!(message.contains("α* = "), "{message}");
+}

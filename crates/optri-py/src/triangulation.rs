@@ -428,6 +428,14 @@ impl Triangulation {
         self.field(py, "bound")
     }
 
+    /// maxmin-area / minmax-area on general point sets: the approximation,
+    /// the Delaunay smallest angle, the ``alpha`` used, the candidates, the
+    /// flips and the guarantee (a dict, see docs/json-schema.md), else None.
+    #[getter]
+    fn approximation<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        self.field(py, "approximation")
+    }
+
     /// The algorithm that ran, in words.
     #[getter]
     fn algorithm<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {

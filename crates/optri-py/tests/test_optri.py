@@ -428,6 +428,7 @@ def test_criteria_and_kinds_come_from_the_registry():
             "reference",
             "needs_elevations",
             "measure",
+            "guarantee",
         }
         assert e["description"] and e["reference"]
     assert [k["name"] for k in optri.graph_kinds()] == ["hull", "delaunay", "rng", "gabriel", "mst"]
@@ -864,3 +865,40 @@ def test_decide_polygons_and_bad_input():
         optri.decide(square, "delaunay", at_least=1)
     with pytest.raises(TypeError):
         optri.decide(square, "maxmin-area", at_least=True)
+def _angles_at_least(points, triangles, degrees):
+    """Every angle of the triangles at least ``degrees`` (exact rationals
+    for the dot and cross products, the tangent with a 1e-9 margin)."""
+    tan = math.tan(math.radians(degrees))
+    for t in triangles:
+        for k in range(3):
+            o, a, b = (points[t[(k + j) % 3]] for j in range(3))
+            u = (Fraction(a[0]) - Fraction(o[0]), Fraction(a[1]) - Fraction(o[1]))
+            v = (Fraction(b[0]) - Fraction(o[0]), Fraction(b[1]) - Fraction(o[1]))
+            dot = u[0] * v[0] + u[1] * v[1]
+            cross = abs(u[0] * v[1] - u[1] * v[0])
+            if dot > 0 and cross < Fraction(tan * (1 - 1e-9)) * dot:
+                return False
+    return True
+
+
+def test_alpha_and_approximation_options_of_the_area_criteria():
+    rng = random.Random(0xA1FA)
+    points = [[rng.randint(0, 60), rng.randint(0, 60)] for _ in range(40)]
+    base = optri.triangulate(points, criterion="minmax-area")
+    star = base.approximation["delaunay_smallest_angle"]["degrees"]
+    assert base.approximation["choice"] == "best" and base.approximation["alpha"] is None
+    alpha = math.floor(star * 500) / 1000  # half of α*, a thousandth below
+    t = optri.triangulate(points, criterion="minmax-area", alpha=alpha, approximation="thesis-76")
+    assert t.approximation["alpha"] == alpha
+    assert t.approximation["candidate"].startswith("Vassilev Algorithm 76")
+    assert _angles_at_least(t.points.tolist(), t.simplices.tolist(), alpha)
+    guarantee = t.approximation["guarantee"]
+    assert guarantee["kind"] in ("optimal", "approximation")
+    if guarantee["kind"] == "approximation":
+        assert "Theorem 81" in guarantee["statement"] and guarantee["theorem_81"]
+    with pytest.raises(ValueError, match=r"α\* = "):
+        optri.triangulate(points, criterion="maxmin-area", alpha=star + 0.01)
+    with pytest.raises(ValueError, match="approximation"):
+        optri.triangulate(points, criterion="maxmin-area", approximation="thesis-77")
+    with pytest.raises(ValueError, match="unknown option 'alpha' for criterion delaunay"):
+        optri.triangulate(points, criterion="delaunay", alpha=10)

@@ -100,8 +100,9 @@ pub fn area_general(
     use crate::criteria::area::general;
     let objective = area_bottleneck(criterion)?;
     let never = crate::interrupt::Stop::default();
-    let candidates = general::candidates(points, objective, &never)?;
-    let result = general::best_of(points, objective, &candidates, &never)?;
+    let settings = general::Settings::default();
+    let candidates = general::candidates(points, objective, settings, &never)?;
+    let result = general::best_of(points, objective, settings, &candidates, &never)?;
     Ok(AreaGeneralRun {
         candidates: candidates
             .list

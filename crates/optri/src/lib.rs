@@ -60,8 +60,8 @@ pub use criteria::area::{
     MaxMinAreaDecision,
 };
 pub use criteria::{
-    BoundMeasure, CertifiedBound, CriterionInfo, Diagnostics, InputKind, Optimality, OptionInfo,
-    Options, Progress, OPTIONS,
+    ApproximationReport, AreaApproximation, BoundMeasure, CertifiedBound, CriterionInfo,
+    Diagnostics, Guarantee, InputKind, Optimality, OptionInfo, Options, Progress, OPTIONS,
 };
 pub use error::{ElevationProblem, Error, Interruption, PolygonProblem, Result, UnsupportedReason};
 pub use graphs::{

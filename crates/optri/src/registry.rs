@@ -191,6 +191,9 @@ pub struct Solution {
     pub bound: Option<CertifiedBound>,
     /// The metric lengths were measured in ([`Options::metric`]).
     pub metric: crate::kernel::Metric,
+    /// General-set area results: the approximation, α*, the α used, the
+    /// candidates, the flips and the guarantee.
+    pub approximation: Option<crate::criteria::ApproximationReport>,
 }
 
 /// What a criterion triangulates: a [`PointSet`] (its convex hull) or a
@@ -372,6 +375,7 @@ impl Solution {
             diagnostics: solved.diagnostics,
             bound: solved.bound,
             metric: options.metric.clone(),
+            approximation: solved.approximation,
         }
     }
 }

@@ -1363,4 +1363,110 @@ fn area_thresholds_match_exact_rationals_at_and_next_to_the_area() {
     let want = oracle::twice_area(tenth[0], tenth[1], tenth[2]).cmp(&decimal_rational(1, -1));
     assert_eq!(AreaThreshold::new(1, -1).compare(tenth), want);
     assert_ne!(want, std::cmp::Ordering::Equal);
+const SEED_ANGLE_FLOOR: u64 = 0xA1FA;
+
+/// `AngleFloor` against exact references: at 30° the integer definition
+/// (`at_least_30_int`), at 45° `|u×v| ≥ u·v`, at 60° `(u×v)² ≥ 3(u·v)²`,
+/// each at every scale of the coordinate range; at other floors a rational
+/// tangent reference where it decides (`tan α` from the platform within
+/// 10⁻¹² relative); and across a floor, corners a few units in the last
+/// place apart switch from below to at least exactly once.
+#[test]
+fn angle_floor_equals_exact_references() {
+    use optri::kernel::AngleFloor;
+    let mut rng = StdRng::seed_from_u64(SEED_ANGLE_FLOOR);
+    let thirty = AngleFloor::new(30.0).unwrap();
+    for _ in 0..2000 {
+        let [o, a, b] = corner_near_30(&mut rng);
+        let expected = at_least_30_int(o, a, b);
+        for scale in limit_scales() {
+            let [fo, fa, fb] = [o, a, b].map(|p| scaled(p, scale));
+            assert_eq!(thirty.admits(fo, fa, fb), expected, "{o:?} {a:?} {b:?}");
+        }
+    }
+    type Reference = fn(i128, i128) -> bool;
+    let exact: [(f64, Reference); 2] = [
+        (45.0, |c, d| d <= 0 || c.abs() >= d),
+        (60.0, |c, d| d <= 0 || c * c >= 3 * d * d),
+    ];
+    let (mut equal, mut decided) = (0, 0);
+    for (degrees, reference) in exact {
+        let floor = AngleFloor::new(degrees).unwrap();
+        for _ in 0..2000 {
+            let o = corner(&mut rng);
+            let bits = rng.gen_range(2..=28);
+            let r = |rng: &mut StdRng| rng.gen_range(-(1i64 << bits)..=1 << bits);
+            let u = [r(&mut rng), r(&mut rng)];
+            let sign = if rng.gen_bool(0.5) { 1.0 } else { -1.0 };
+            let v = if degrees == 45.0 && rng.gen_bool(0.25) {
+                // Exactly 45°: u plus u turned a quarter.
+                let s = sign as i64;
+                [u[0] - s * u[1], u[1] + s * u[0]]
+            } else {
+                add(
+                    rotated(u, sign * degrees, rng.gen_range(0.5..2.0)),
+                    [rng.gen_range(-1..=1), rng.gen_range(-1..=1)],
+                )
+            };
+            if u == [0, 0] || v == [0, 0] {
+                continue;
+            }
+            let (a, b) = (add(o, u), add(o, v));
+            let (c, d) = cross_dot_int(o, a, b);
+            equal += (c.abs() == d) as usize;
+            for scale in limit_scales() {
+                let [fo, fa, fb] = [o, a, b].map(|p| scaled(p, scale));
+                assert_eq!(floor.admits(fo, fa, fb), reference(c, d), "{degrees}°");
+            }
+        }
+    }
+    for degrees in [0.5, 12.5, 25.3, 37.1, 59.9] {
+        let floor = AngleFloor::new(degrees).unwrap();
+        let tan = degrees.to_radians().tan();
+        let (lo, hi) = (
+            oracle::to_rational(tan * (1.0 - 1e-12)),
+            oracle::to_rational(tan * (1.0 + 1e-12)),
+        );
+        for _ in 0..1000 {
+            let u = [
+                rng.gen_range(1..1i64 << 28),
+                rng.gen_range(-(1i64 << 28)..1 << 28),
+            ];
+            let v = add(
+                rotated(u, degrees, rng.gen_range(0.5..2.0)),
+                [rng.gen_range(-2..=2), rng.gen_range(-2..=2)],
+            );
+            let (c, d) = cross_dot_int([0, 0], u, v);
+            if d <= 0 {
+                continue;
+            }
+            let ratio = oracle::BigRational::new(c.abs().into(), d.into());
+            let expected = if ratio >= hi {
+                true
+            } else if ratio < lo {
+                false
+            } else {
+                continue;
+            };
+            let [fo, fa, fb] = [[0, 0], u, v].map(|p| scaled(p, 1.0));
+            assert_eq!(floor.admits(fo, fa, fb), expected, "{degrees}° {u:?} {v:?}");
+            decided += 1;
+        }
+        // Corners (0,0), (1,0), (1, t) for t a few ulps around tan α.
+        let mut t = tan;
+        for _ in 0..8 {
+            t = t.next_down();
+        }
+        let mut switches = 0;
+        let mut previous = floor.admits([0.0, 0.0], [1.0, 0.0], [1.0, t]);
+        for _ in 0..16 {
+            t = t.next_up();
+            let now = floor.admits([0.0, 0.0], [1.0, 0.0], [1.0, t]);
+            assert!(now || !previous, "{degrees}°: not monotone at {t}");
+            switches += (now != previous) as usize;
+            previous = now;
+        }
+        assert!(switches <= 1, "{degrees}°");
+    }
+    assert!(equal >= 100 && decided >= 4000, "{equal} {decided}");
 }

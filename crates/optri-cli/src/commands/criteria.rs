@@ -59,7 +59,9 @@ fn table(listing: &Value) -> String {
         ]);
     }
     out.push_str(&aligned(&rows));
-    out.push_str("\noptions (the CLI spells them --metric, --time-limit):\n");
+    out.push_str(
+        "\noptions (the CLI spells them --metric, --alpha, --approximation, --time-limit):\n",
+    );
     for o in listing["options"].as_array().into_iter().flatten() {
         out.push_str(&format!(
             "  {}: {} (default {}); values: {}\n",

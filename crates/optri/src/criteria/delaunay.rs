@@ -45,6 +45,7 @@ pub(crate) fn solve(points: &PointSet, _: &Options, phases: &mut Vec<Phase>) -> 
         optimality: Optimality::Exact,
         diagnostics: Diagnostics::default(),
         bound: None,
+        approximation: None,
     })
 }
 
@@ -65,6 +66,7 @@ pub(crate) fn solve_polygon(
         optimality: Optimality::Exact,
         diagnostics: Diagnostics::default(),
         bound: None,
+        approximation: None,
     })
 }
 

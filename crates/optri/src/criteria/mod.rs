@@ -57,6 +57,16 @@ impl Optimality {
         }
     }
 
+    /// The guarantee in words: the approximation's `bound`, or what
+    /// "exact" and "up-to-rounding" promise.
+    pub fn statement(self) -> &'static str {
+        match self {
+            Optimality::Exact => "provably optimal on every input it accepts",
+            Optimality::UpToRounding => "optimal up to floating-point rounding of sums",
+            Optimality::Approximation { bound } => bound,
+        }
+    }
+
     /// Is the result provably optimal?
     pub fn is_exact(self) -> bool {
         self == Optimality::Exact
@@ -153,6 +163,22 @@ pub const OPTIONS: &[OptionInfo] = &[
         every_run: false,
     },
     OptionInfo {
+        name: "alpha",
+        description: "area criteria on general point sets: every angle of the result at least \
+                      this many degrees (Vassilev's α-triangulations); at most the Delaunay \
+                      triangulation's smallest angle",
+        values: "a number of degrees, 0 or in [0.000000001, 90)",
+        default: "none",
+        every_run: false,
+    },
+    OptionInfo {
+        name: "approximation",
+        description: "area criteria on general point sets: which approximation answers",
+        values: "thesis-75 | thesis-76 | rng-hull | best",
+        default: "best",
+        every_run: false,
+    },
+    OptionInfo {
         name: "time_limit",
         description: "seconds a run may take; past it the run stops, or returns its best \
                       certified result with exact: false where the criterion has one",
@@ -182,6 +208,12 @@ pub struct Options {
     pub time_limit: Option<std::time::Duration>,
     /// A flag that stops the run when raised (see [`crate::Cancel`]).
     pub cancel: Option<crate::Cancel>,
+    /// The angle floor α of the area criteria on general point sets: every
+    /// angle of the result at least α (`None`: no floor; Algorithm 76 then
+    /// keeps the Delaunay triangulation's smallest angle α*).
+    pub alpha: Option<crate::kernel::AngleFloor>,
+    /// Which approximation answers the area criteria on general point sets.
+    pub approximation: AreaApproximation,
     /// The stop of a started run: `time_limit` counted from its start.
     stop: crate::interrupt::Stop,
 }
@@ -199,6 +231,18 @@ impl Options {
         self
     }
 
+    /// These options with the angle floor `alpha` (the `alpha` option).
+    pub fn with_alpha(mut self, alpha: crate::kernel::AngleFloor) -> Self {
+        self.alpha = Some(alpha);
+        self
+    }
+
+    /// These options with the area approximation `approximation`.
+    pub fn with_approximation(mut self, approximation: AreaApproximation) -> Self {
+        self.approximation = approximation;
+        self
+    }
+
     /// These options with a time limit per run.
     pub fn with_time_limit(mut self, limit: std::time::Duration) -> Self {
         self.time_limit = Some(limit);
@@ -213,7 +257,8 @@ impl Options {
 
     /// Sets the option `name` (one of [`OPTIONS`]) from its text form, as
     /// every front end takes it: `metric` in [`crate::kernel::Metric::parse`]'s
-    /// syntax, `time_limit` in seconds.
+    /// syntax, `alpha` in degrees, `approximation` by
+    /// [`AreaApproximation::name`], `time_limit` in seconds.
     ///
     /// # Errors
     /// [`Error::UnknownName`](crate::Error::UnknownName) for an unknown
@@ -232,6 +277,31 @@ impl Options {
             "metric" => {
                 self.metric =
                     crate::kernel::Metric::parse(value).map_err(crate::Error::InvalidMetric)?
+            }
+            "alpha" => {
+                let degrees: f64 = value.trim().parse().unwrap_or(f64::NAN);
+                let floor = crate::kernel::AngleFloor::new(degrees).ok_or_else(|| {
+                    crate::Error::InvalidOption {
+                        option: "alpha",
+                        message: format!(
+                            "'{}' is not a number of degrees, 0 or in [{}, 90)",
+                            shown(value),
+                            crate::kernel::MIN_ANGLE_FLOOR_DEGREES
+                        ),
+                    }
+                })?;
+                self.alpha = Some(floor);
+            }
+            "approximation" => {
+                self.approximation = AreaApproximation::ALL
+                    .iter()
+                    .copied()
+                    .find(|a| a.name() == value.trim())
+                    .ok_or_else(|| crate::Error::UnknownName {
+                        kind: "approximation",
+                        name: value.to_string(),
+                        available: AreaApproximation::ALL.iter().map(|a| a.name()).collect(),
+                    })?;
             }
             "time_limit" => {
                 let seconds: f64 = value.trim().parse().map_err(|_| invalid_time(value))?;
@@ -253,6 +323,12 @@ impl Options {
         let mut chosen = Vec::new();
         if !self.metric.is_euclidean() {
             chosen.push("metric");
+        }
+        if self.alpha.is_some() {
+            chosen.push("alpha");
+        }
+        if self.approximation != AreaApproximation::default() {
+            chosen.push("approximation");
         }
         chosen
     }
@@ -282,15 +358,19 @@ impl Options {
 
 /// The message for a time limit that is not a positive number of seconds.
 fn invalid_time(value: &str) -> crate::Error {
-    let shown: String = value
+    crate::Error::InvalidOption {
+        option: "time_limit",
+        message: format!("'{}' is not a positive number of seconds", shown(value)),
+    }
+}
+
+/// At most 40 characters of an option's value, escaped, for a message.
+fn shown(value: &str) -> String {
+    value
         .chars()
         .take(40)
         .flat_map(char::escape_default)
-        .collect();
-    crate::Error::InvalidOption {
-        option: "time_limit",
-        message: format!("'{shown}' is not a positive number of seconds"),
-    }
+        .collect()
 }
 
 /// A progress hook: called with a phase name and the fraction of it done
@@ -389,6 +469,96 @@ pub enum BoundMeasure {
     TotalLength,
 }
 
+/// Which approximation answers `maxmin-area` and `minmax-area` on a point
+/// set not in convex position (the `approximation` option; T. S. Vassilev,
+/// *Optimal area triangulation*, 2005, §3.4).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+#[non_exhaustive]
+pub enum AreaApproximation {
+    /// Algorithm 75: the Delaunay triangulation if its smallest angle α* is
+    /// below 30°, else the optimal 30°-triangulation (with `alpha` above
+    /// 30°, the optimal α-triangulation).
+    Thesis75,
+    /// Algorithm 76: area-equalising reverse-Delaunay flips that keep every
+    /// angle at least `alpha` (α* without it): the area/angle compromise.
+    Thesis76,
+    /// The optimum over the triangulations containing the relative
+    /// neighbourhood graph and the hull (only triangles with every angle at
+    /// least `alpha` when it is set).
+    RngHull,
+    /// The best of Delaunay and the three above.
+    #[default]
+    Best,
+}
+
+impl AreaApproximation {
+    /// Every approximation, in the order of the option's values.
+    pub const ALL: &'static [AreaApproximation] = &[
+        AreaApproximation::Thesis75,
+        AreaApproximation::Thesis76,
+        AreaApproximation::RngHull,
+        AreaApproximation::Best,
+    ];
+
+    /// `"thesis-75"`, `"thesis-76"`, `"rng-hull"` or `"best"`.
+    pub fn name(self) -> &'static str {
+        match self {
+            AreaApproximation::Thesis75 => "thesis-75",
+            AreaApproximation::Thesis76 => "thesis-76",
+            AreaApproximation::RngHull => "rng-hull",
+            AreaApproximation::Best => "best",
+        }
+    }
+}
+
+/// How a general-set area result was obtained and what is proven about it
+/// ([`crate::Solution::approximation`]).
+#[derive(Clone, Debug, PartialEq)]
+#[non_exhaustive]
+pub struct ApproximationReport {
+    /// The approximation asked for.
+    pub choice: AreaApproximation,
+    /// The candidate returned (its short name is the solution's algorithm).
+    pub candidate: &'static str,
+    /// The candidates computed, in tie-breaking order.
+    pub candidates: Vec<&'static str>,
+    /// Candidates not computed, each with why (a face of `RNG ∪ hull`
+    /// beyond the face programs' size cap).
+    pub skipped: Vec<(&'static str, String)>,
+    /// The Delaunay triangulation's smallest angle α* as a corner
+    /// `[apex, a, b]` (input indices) ...
+    pub delaunay_smallest_angle: [u32; 3],
+    /// ... and in degrees, correctly rounded.
+    pub delaunay_smallest_angle_degrees: f64,
+    /// The angle floor α given (`alpha`), in degrees; `None`: Algorithm 76
+    /// kept α* and the other candidates had no floor.
+    pub alpha_degrees: Option<f64>,
+    /// Flips made by Algorithm 76 (0 when it did not run).
+    pub flips: usize,
+    /// What is proven about the result.
+    pub guarantee: Guarantee,
+}
+
+/// What the seeds prove about one result.
+#[derive(Clone, Debug, PartialEq)]
+#[non_exhaustive]
+pub struct Guarantee {
+    /// `"optimal"` (the result attains the certified bound),
+    /// `"optimal-among-alpha-triangulations"` (no triangulation whose angles
+    /// are all at least `alpha_degrees` does better) or `"approximation"`.
+    pub kind: &'static str,
+    /// The floor of `"optimal-among-alpha-triangulations"`, in degrees.
+    pub alpha_degrees: Option<f64>,
+    /// The guarantee in words.
+    pub statement: String,
+    /// The result's smallest angle in degrees, correctly rounded.
+    pub smallest_angle_degrees: f64,
+    /// Theorem 81's approximation factor against an optimum of smallest
+    /// angle β, as `[β, factor]` for sampled β (empty for an optimal
+    /// result).
+    pub theorem_81: Vec<[f64; 2]>,
+}
+
 /// What a criterion's `solve` returns to the registry.
 pub(crate) struct Solved {
     pub triangulation: Triangulation,
@@ -398,6 +568,8 @@ pub(crate) struct Solved {
     pub diagnostics: Diagnostics,
     /// For results that are not proven optimal: how far off they can be.
     pub bound: Option<CertifiedBound>,
+    /// General-set area results: how they were obtained, their guarantee.
+    pub approximation: Option<ApproximationReport>,
 }
 
 /// The one signature of every criterion's entry point.

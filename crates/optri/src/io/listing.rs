@@ -22,6 +22,7 @@ pub fn registry_listing() -> Value {
                 "name": info.name,
                 "description": info.description,
                 "optimality": info.optimality.name(),
+                "guarantee": info.optimality.statement(),
                 "inputs": c.inputs().iter().map(|k| k.name()).collect::<Vec<_>>(),
                 "options": info.options,
                 "reference": info.reference,
@@ -88,7 +89,10 @@ mod tests {
         assert_eq!(names("criteria"), criteria);
         let graphs: Vec<&str> = GraphKind::ALL.iter().map(|k| k.name()).collect();
         assert_eq!(names("graphs"), graphs);
-        assert_eq!(names("options"), ["metric", "time_limit"]);
+        assert_eq!(
+            names("options"),
+            ["metric", "alpha", "approximation", "time_limit"]
+        );
         assert_eq!(v["criteria"][1]["options"], json!(["metric"]));
         assert_eq!(v["criteria"][0]["inputs"], json!(["points", "polygon"]));
         assert_eq!(names("measures").len(), Measure::ALL.len());

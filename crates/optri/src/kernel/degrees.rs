@@ -43,6 +43,56 @@ use std::cmp::Ordering;
 /// The angle at `o` between the rays to `a` and `b`, in degrees, in
 /// `[0°, 180°]`, correctly rounded (0 if `a` or `b` is `o`).
 pub(super) fn corner_degrees(o: Point, a: Point, b: Point) -> f64 {
+    let (cross, dot) = scaled_cross_dot(o, a, b);
+    degrees_of(&cross, &dot)
+}
+
+/// Exact: the angle at `o` between the rays to `a` and `b` (in degrees)
+/// against `num / den` degrees, for `den > 0`. An angle that is not a
+/// multiple of 45° is irrational in degrees (module docs), so it differs
+/// from every rational and the loop below, which narrows its enclosure
+/// until the rational falls outside, ends.
+pub(super) fn compare_corner_with_degrees(
+    o: Point,
+    a: Point,
+    b: Point,
+    num: &BigUint,
+    den: &BigUint,
+) -> Ordering {
+    let (c, d) = scaled_cross_dot(o, a, b);
+    let whole = |degrees: u32| (BigUint::from(degrees) * den).cmp(num);
+    match reduce(&c, &d) {
+        Reduced::Exact(degrees) => whole(degrees),
+        Reduced::Arctangent {
+            n,
+            den: atan_den,
+            base,
+            sign,
+        } => {
+            let target = BigInt::from_biguint(Sign::Plus, num.clone());
+            let den = BigInt::from_biguint(Sign::Plus, den.clone());
+            let mut q: u64 = 64;
+            loop {
+                if let Some([(low_num, low_den), (high_num, high_den)]) =
+                    enclosure(n, atan_den, base, sign, q)
+                {
+                    // Ends are num/den with positive denominators.
+                    if low_num * &den > &target * low_den {
+                        return Ordering::Greater;
+                    }
+                    if high_num * &den < &target * high_den {
+                        return Ordering::Less;
+                    }
+                }
+                q *= 2;
+            }
+        }
+    }
+}
+
+/// The cross product's magnitude and the dot product of `a − o` and `b − o`,
+/// as exact integers (every coordinate scaled by the same power of two).
+fn scaled_cross_dot(o: Point, a: Point, b: Point) -> (BigUint, BigInt) {
     let coordinates = [o, a, b].into_iter().flatten();
     let emin = coordinates
         .filter(|&v| v != 0.0)
@@ -53,39 +103,80 @@ pub(super) fn corner_degrees(o: Point, a: Point, b: Point) -> f64 {
     let (ux, uy, vx, vy) = (d(a, 0), d(a, 1), d(b, 0), d(b, 1));
     let cross = &ux * &vy - &uy * &vx;
     let dot = ux * vx + uy * vy;
-    degrees_of(cross.magnitude(), &dot)
+    (cross.magnitude().clone(), dot)
 }
 
-/// `atan2(c, d)` in degrees for `c ≥ 0`, correctly rounded.
-fn degrees_of(c: &BigUint, d: &BigInt) -> f64 {
+/// `atan2(c, d)` in degrees for `c ≥ 0`: a multiple of 45°, or an
+/// arctangent of a ratio below 1 to evaluate.
+enum Reduced<'a> {
+    Exact(u32),
+    /// `90°·base + sign·(180/π)·atan(n/den)`, with `0 < n < den`.
+    Arctangent {
+        n: &'a BigUint,
+        den: &'a BigUint,
+        base: u32,
+        sign: i32,
+    },
+}
+
+/// The reduction of the module docs.
+fn reduce<'a>(c: &'a BigUint, d: &'a BigInt) -> Reduced<'a> {
     let m = d.magnitude();
     let forward = d.is_positive();
     if c.is_zero() {
-        return if d.is_negative() { 180.0 } else { 0.0 };
+        return Reduced::Exact(if d.is_negative() { 180 } else { 0 });
     }
     if m.is_zero() {
-        return 90.0;
+        return Reduced::Exact(90);
     }
-    // θ = 90°·base + sign·(180/π)·atan(n/den), with n < den.
     let (n, den, base, sign) = match c.cmp(m) {
-        Ordering::Equal => return if forward { 45.0 } else { 135.0 },
+        Ordering::Equal => return Reduced::Exact(if forward { 45 } else { 135 }),
         Ordering::Less if forward => (c, m, 0u32, 1),
         Ordering::Less => (c, m, 2, -1),
         Ordering::Greater if forward => (m, c, 1, -1),
         Ordering::Greater => (m, c, 1, 1),
     };
-    let mut q: u64 = 64;
-    loop {
-        if let Some(v) = enclose_and_round(n, den, base, sign, q) {
-            return v;
+    Reduced::Arctangent { n, den, base, sign }
+}
+
+/// `atan2(c, d)` in degrees for `c ≥ 0`, correctly rounded.
+fn degrees_of(c: &BigUint, d: &BigInt) -> f64 {
+    match reduce(c, d) {
+        Reduced::Exact(degrees) => f64::from(degrees),
+        Reduced::Arctangent { n, den, base, sign } => {
+            let mut q: u64 = 64;
+            loop {
+                if let Some(v) = enclose_and_round(n, den, base, sign, q) {
+                    return v;
+                }
+                q *= 2;
+            }
         }
-        q *= 2;
     }
 }
 
 /// One step of Ziv's loop at precision `q`: the enclosure of
 /// `90·base + sign·180·atan(n/den)/π` and its rounding if both ends agree.
 fn enclose_and_round(n: &BigUint, den: &BigUint, base: u32, sign: i32, q: u64) -> Option<f64> {
+    let ends = enclosure(n, den, base, sign, q)?;
+    let [low, high] = ends.map(|(num, den)| {
+        num.is_positive()
+            .then(|| round_ratio(num.magnitude(), den.magnitude(), 0, Rounding::Nearest))
+    });
+    let (low, high) = (low?, high?);
+    (low == high).then_some(low)
+}
+
+/// An enclosure `[low, high]` of `90·base + sign·180·atan(n/den)/π` at
+/// precision `q`, each end as `(numerator, positive denominator)`; `None`
+/// when the precision is too low to bound π and the arctangent away from 0.
+fn enclosure(
+    n: &BigUint,
+    den: &BigUint,
+    base: u32,
+    sign: i32,
+    q: u64,
+) -> Option<[(BigInt, BigInt); 2]> {
     // The arctangent at a precision relative to its size (tiny angles of
     // needles need many fractional bits), π at `q` bits.
     let qa = q + den.bits().saturating_sub(n.bits());
@@ -104,26 +195,16 @@ fn enclose_and_round(n: &BigUint, den: &BigUint, base: u32, sign: i32, q: u64) -
     // value = 90·base + sign·180·(A/2^qa)/(Π/2^q) = num/(Π·2^qa), and the
     // ends pair the smaller A with the larger Π for the lower end when the
     // arctangent is added (and the other way round when subtracted).
-    let end = |a: &BigInt, pi: &BigInt| -> Option<f64> {
+    let end = |a: &BigInt, pi: &BigInt| -> (BigInt, BigInt) {
         let num: BigInt = 90 * BigInt::from(base) * pi * (BigInt::one() << qa as usize)
             + sign * 180 * a * (BigInt::one() << q as usize);
-        let den = pi << qa as usize;
-        if !num.is_positive() {
-            return None;
-        }
-        Some(round_ratio(
-            num.magnitude(),
-            den.magnitude(),
-            0,
-            Rounding::Nearest,
-        ))
+        (num, pi << qa as usize)
     };
-    let (low, high) = if sign > 0 {
-        (end(&a_low, &pi_high)?, end(&a_high, &pi_low)?)
+    Some(if sign > 0 {
+        [end(&a_low, &pi_high), end(&a_high, &pi_low)]
     } else {
-        (end(&a_high, &pi_low)?, end(&a_low, &pi_high)?)
-    };
-    (low == high).then_some(low)
+        [end(&a_high, &pi_low), end(&a_low, &pi_high)]
+    })
 }
 
 /// `(A, E)` with `|A − 2^q·atan(n/den)| < E`, for `0 ≤ n < den`.

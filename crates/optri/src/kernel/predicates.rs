@@ -274,7 +274,7 @@ pub(super) fn rounded_cross_dot(o: Point, a: Point, b: Point) -> [f64; 4] {
 /// The exact cross product `u × v` and dot product `u · v` of
 /// `u = a − o`, `v = b − o`, as expansions (each difference is an exact
 /// two-term value, each product of two such an exact four-term sum).
-fn exact_cross_dot(o: Point, a: Point, b: Point) -> (Expansion, Expansion) {
+pub(super) fn exact_cross_dot(o: Point, a: Point, b: Point) -> (Expansion, Expansion) {
     let (ux, uy) = (two_diff(a[0], o[0]), two_diff(a[1], o[1]));
     let (vx, vy) = (two_diff(b[0], o[0]), two_diff(b[1], o[1]));
     let (mut cross, mut dot) = (Expansion::new(), Expansion::new());
@@ -348,29 +348,38 @@ pub const DIAMOND_TAN_DENOMINATOR: f64 = 1024.0;
 /// it is inside the true one: using `α'` keeps the filter sound.
 ///
 /// With `u = a − o`, `v = b − o`: the angle is below `α'` iff `u·v > 0` and
-/// `1024|u×v| < 833(u·v)`, a degree-2 polynomial in the differences. Filter:
-/// `|c̃ − C| ≤ γ₄P_c`, `|d̃ − D| ≤ γ₄P_d` (see [`angle_at_least_30_degrees`]),
-/// the scalings by 833 and 1024 and the subtraction add `γ₂` relative, so
-/// `16u(833p̃_d + 1024p̃_c)` bounds the error; else exact expansions.
+/// `1024|u×v| < 833(u·v)` (the tangent comparison `tangent_side`).
 pub fn angle_below_diamond(o: Point, a: Point, b: Point) -> bool {
     if dot_sign(o, a, b) <= 0 {
         return false;
     }
+    tangent_side(o, a, b, DIAMOND_TAN_NUMERATOR, DIAMOND_TAN_DENOMINATOR) > 0
+}
+
+/// Exact: the sign of `num·(u·v) − den·|u×v|` for `u = a − o`, `v = b − o`
+/// and `num, den > 0`. When `u·v > 0` it is the sign of `num/den − tan θ`
+/// for the angle `θ` at `o`: positive iff `θ < arctan(num/den)`.
+///
+/// A degree-2 polynomial in the differences. Filter: `|c̃ − C| ≤ γ₄P_c`,
+/// `|d̃ − D| ≤ γ₄P_d` (see [`angle_at_least_30_degrees`]); the two scalings
+/// and the subtraction add `γ₂` relative, so `16u(num·p̃_d + den·p̃_c)`
+/// bounds the error; else exact expansions.
+pub(super) fn tangent_side(o: Point, a: Point, b: Point, num: f64, den: f64) -> i32 {
     let [c, d, pc, pd] = rounded_cross_dot(o, a, b);
-    let e = DIAMOND_TAN_NUMERATOR * d - DIAMOND_TAN_DENOMINATOR * c.abs();
-    let tolerance = 16.0 * U * (DIAMOND_TAN_NUMERATOR * pd + DIAMOND_TAN_DENOMINATOR * pc);
+    let e = num * d - den * c.abs();
+    let tolerance = 16.0 * U * (num * pd + den * pc);
     if e > tolerance {
-        return true;
+        return 1;
     }
     if -e > tolerance {
-        return false;
+        return -1;
     }
     let (cross, dot) = exact_cross_dot(o, a, b);
     let s = orient_sign(o, a, b) as f64; // the sign of the cross product
     let mut e = Expansion::new();
-    e.add_scaled(&dot, DIAMOND_TAN_NUMERATOR);
-    e.add_scaled(&cross, -DIAMOND_TAN_DENOMINATOR * s);
-    e.sign() > 0
+    e.add_scaled(&dot, num);
+    e.add_scaled(&cross, -den * s);
+    e.sign()
 }
 
 #[cfg(any(test, feature = "internals"))]

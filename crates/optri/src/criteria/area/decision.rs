@@ -279,7 +279,7 @@ mod sealed {
                     .map(|w| Triangulation::from_distinct(self, w));
                 return Ok((Some(witness.is_some()), ONE_SHOT, true, witness));
             }
-            let solved = solve_points(self, question.kind(), options.stop(), phases)?;
+            let solved = solve_points(self, question.kind(), options, phases)?;
             Ok(read_solution(question, threshold, solved, |i| {
                 self.input_points()[i as usize]
             }))

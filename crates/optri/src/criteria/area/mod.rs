@@ -39,8 +39,8 @@ pub use decision::{
 };
 
 use super::{
-    BoundMeasure, CertifiedBound, CriterionEntry, CriterionInfo, Diagnostics, Optimality, Options,
-    Solved,
+    AreaApproximation, BoundMeasure, CertifiedBound, CriterionEntry, CriterionInfo, Diagnostics,
+    Optimality, Options, Solved,
 };
 use crate::error::{Error, Result, UnsupportedReason};
 use crate::interrupt::Stop;
@@ -59,8 +59,11 @@ const REFERENCE: &str = "T. S. Vassilev, Optimal area triangulation, PhD thesis,
 /// The weakest guarantee over all inputs: exact in convex position and on
 /// polygons, an approximation (exact when certified) on general sets.
 const GENERAL_OPTIMALITY: Optimality = Optimality::Approximation {
-    bound: "exact in convex position and on simple polygons; on general point sets never worse \
-            than Delaunay, exact when it meets the certified bound",
+    bound: "exact in convex position and on simple polygons; on general point sets (or with \
+            alpha or approximation set) never worse than Delaunay, within a certified bound \
+            (exact when it meets it), optimal among the alpha-triangulations for alpha >= 30 \
+            degrees, and within Vassilev's Theorem 81 factors of an optimum whose smallest \
+            angle is below the result's",
 };
 
 /// The registry's entry of MaxMin area.
@@ -82,7 +85,7 @@ pub(crate) const MAXMIN_INFO: CriterionInfo = CriterionInfo {
     description: "maximises the smallest triangle area (exact in convex position and on simple \
                   polygons; general point sets: certified approximation)",
     optimality: GENERAL_OPTIMALITY,
-    options: &[],
+    options: GENERAL_OPTIONS,
     reference: REFERENCE,
     needs_elevations: false,
     measure: Some(crate::structures::Measure::MinArea),
@@ -93,11 +96,14 @@ pub(crate) const MINMAX_INFO: CriterionInfo = CriterionInfo {
     description: "minimises the largest triangle area (exact in convex position and on simple \
                   polygons; general point sets: certified approximation)",
     optimality: GENERAL_OPTIMALITY,
-    options: &[],
+    options: GENERAL_OPTIONS,
     reference: REFERENCE,
     needs_elevations: false,
     measure: Some(crate::structures::Measure::MaxArea),
 };
+
+/// The options of the approximations of general point sets.
+const GENERAL_OPTIONS: &[&str] = &["alpha", "approximation"];
 
 /// Which area bottleneck is optimised: the one enum of the area criteria
 /// (the convex algorithm, the polygon program and the general
@@ -155,7 +161,7 @@ pub(crate) fn solve_maxmin(
     options: &Options,
     phases: &mut Vec<Phase>,
 ) -> Result<Solved> {
-    solve_points(points, AreaBottleneck::MaxMin, options.stop(), phases)
+    solve_points(points, AreaBottleneck::MaxMin, options, phases)
 }
 
 pub(crate) fn solve_minmax(
@@ -163,7 +169,7 @@ pub(crate) fn solve_minmax(
     options: &Options,
     phases: &mut Vec<Phase>,
 ) -> Result<Solved> {
-    solve_points(points, AreaBottleneck::MinMax, options.stop(), phases)
+    solve_points(points, AreaBottleneck::MinMax, options, phases)
 }
 
 pub(crate) fn solve_maxmin_polygon(
@@ -171,6 +177,7 @@ pub(crate) fn solve_maxmin_polygon(
     options: &Options,
     phases: &mut Vec<Phase>,
 ) -> Result<Solved> {
+    refuse_general_options(options)?;
     solve_polygon(polygon, AreaBottleneck::MaxMin, options.stop(), phases)
 }
 
@@ -179,6 +186,7 @@ pub(crate) fn solve_minmax_polygon(
     options: &Options,
     phases: &mut Vec<Phase>,
 ) -> Result<Solved> {
+    refuse_general_options(options)?;
     solve_polygon(polygon, AreaBottleneck::MinMax, options.stop(), phases)
 }
 
@@ -189,20 +197,49 @@ fn solved(triangulation: Triangulation, algorithm: &str) -> Solved {
         optimality: Optimality::Exact,
         diagnostics: Diagnostics::default(),
         bound: None,
+        approximation: None,
     }
+}
+
+/// Do the options ask for the general approximation (an angle floor or an
+/// approximation other than `best`)?
+fn asks_for_approximation(options: &Options) -> bool {
+    options.alpha.is_some() || options.approximation != AreaApproximation::Best
+}
+
+/// A polygon's optimum is computed exactly: `alpha` and `approximation`
+/// choose among the approximations of point sets, so they are refused.
+fn refuse_general_options(options: &Options) -> Result<()> {
+    if !asks_for_approximation(options) {
+        return Ok(());
+    }
+    let option = if options.alpha.is_some() {
+        "alpha"
+    } else {
+        "approximation"
+    };
+    Err(Error::InvalidOption {
+        option,
+        message: "applies to point sets (the approximations of general sets); a polygon's \
+                  optimum is computed exactly"
+            .to_string(),
+    })
 }
 
 fn solve_points(
     points: &PointSet,
     kind: AreaBottleneck,
-    stop: &Stop,
+    options: &Options,
     phases: &mut Vec<Phase>,
 ) -> Result<Solved> {
     let criterion = kind.criterion();
+    let stop = options.stop();
     let pts = points.points();
     let hull = convex_hull_cycle(pts);
-    if hull.len() != pts.len() {
-        return solve_general(points, kind, stop, phases);
+    // Points in convex position have an exact algorithm; an angle floor or
+    // a chosen approximation asks for the approximations instead.
+    if hull.len() != pts.len() || asks_for_approximation(options) {
+        return solve_general(points, kind, options, phases);
     }
     let strictly_convex = is_strictly_convex_cycle(pts, &hull);
     let (limit, because) = if strictly_convex {
@@ -282,12 +319,20 @@ fn solve_polygon(
 fn solve_general(
     points: &PointSet,
     kind: AreaBottleneck,
-    stop: &Stop,
+    options: &Options,
     phases: &mut Vec<Phase>,
 ) -> Result<Solved> {
+    let settings = general::Settings {
+        alpha: options.alpha.as_ref(),
+        approximation: options.approximation,
+    };
     let result = timed(phases, kind.criterion(), || {
-        general::area_general(points, kind, stop)
+        general::area_general(points, kind, settings, options.stop())
     })?;
+    let mut report = result.report;
+    report.delaunay_smallest_angle = report
+        .delaunay_smallest_angle
+        .map(|d| points.input_index(d));
     let triangulation = Triangulation::from_distinct(points, result.triangles);
     let pts = points.points();
     let bound = result.bound.map(|t| CertifiedBound {
@@ -303,11 +348,13 @@ fn solve_general(
             Optimality::Exact
         } else {
             Optimality::Approximation {
-                bound: "never worse than Delaunay; the optimum is within the certified `bound`",
+                bound: "never worse than Delaunay; the optimum is within the certified `bound`; \
+                        what else is proven: `approximation.guarantee`",
             }
         },
         diagnostics: Diagnostics::default(),
         bound,
+        approximation: Some(report),
     })
 }
 

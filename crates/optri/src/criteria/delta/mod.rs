@@ -141,6 +141,7 @@ fn exact(triangulation: Triangulation, programs: u64) -> Solved {
         optimality: Optimality::Exact,
         diagnostics,
         bound: None,
+        approximation: None,
     }
 }
 
@@ -228,6 +229,7 @@ fn solve_general(
         },
         diagnostics: Diagnostics::default(),
         bound: None,
+        approximation: None,
     })
 }
 

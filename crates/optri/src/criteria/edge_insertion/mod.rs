@@ -208,6 +208,7 @@ fn solve(
         optimality,
         diagnostics,
         bound: None,
+        approximation: None,
     })
 }
 
@@ -246,6 +247,7 @@ fn solve_polygon(
         optimality: Optimality::Exact,
         diagnostics: Diagnostics::default(),
         bound: None,
+        approximation: None,
     })
 }
 

@@ -73,6 +73,7 @@ pub(crate) fn solve(
         optimality: Optimality::Exact,
         diagnostics: Diagnostics::default(),
         bound: None,
+        approximation: None,
     })
 }
 

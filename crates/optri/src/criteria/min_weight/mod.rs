@@ -59,7 +59,12 @@ pub(crate) const ENTRY: CriterionEntry = CriterionEntry {
 pub(crate) const INFO: CriterionInfo = CriterionInfo {
     name: "min-weight",
     description: "minimises the total edge length",
-    optimality: Optimality::Exact,
+    optimality: Optimality::Approximation {
+        bound: "exact unless the exact pipeline cannot finish (a face beyond the exact search's \
+                budget, a skeleton beyond the memory budget, convex position beyond the program, \
+                or the time limit): then the lighter of greedy and Delaunay, or the best found, \
+                with a certified lower bound on the optimal weight",
+    },
     options: &[],
     reference: "G. T. Klincsek 1980; Dickerson, Keil & Montague 1997; Drysdale, McElfresh & Snoeyink 2001; A. Haas 2018",
     needs_elevations: false,
@@ -101,6 +106,7 @@ pub(crate) fn solve(
                 optimality: Optimality::Exact,
                 diagnostics: Diagnostics::default(),
                 bound: None,
+                approximation: None,
             },
             Err(Error::Interrupted(Interruption::TimeLimit { seconds })) => {
                 lighter_of_greedy_and_delaunay(
@@ -174,6 +180,7 @@ pub(crate) fn solve_polygon(
         optimality: Optimality::Exact,
         diagnostics: Diagnostics::default(),
         bound: None,
+        approximation: None,
     })
 }
 
@@ -294,6 +301,7 @@ fn lighter_of_greedy_and_delaunay(
             value: lower_bound,
             upper: false,
         }),
+        approximation: None,
     })
 }
 
@@ -668,6 +676,7 @@ pub(crate) fn general_min_weight_within(
                 value: lower_bound,
                 upper: false,
             }),
+            approximation: None,
         },
         // When exact the bound is the result's weight, summed only where it
         // is read (the test hooks): a sort of all edges otherwise.

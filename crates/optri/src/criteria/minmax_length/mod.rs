@@ -215,6 +215,7 @@ pub(crate) fn solve(
             optimality: Optimality::Exact,
             diagnostics,
             bound: None,
+            approximation: None,
         });
     }
     let (triangulation, diagnostics) = run(points, PRODUCT, options.stop(), phases)?;
@@ -229,6 +230,7 @@ pub(crate) fn solve(
         optimality: Optimality::Exact,
         diagnostics,
         bound: None,
+        approximation: None,
     })
 }
 

@@ -280,5 +280,6 @@ pub(crate) fn solve_polygon(
         optimality: Optimality::Exact,
         diagnostics: Diagnostics::default(),
         bound: None,
+        approximation: None,
     })
 }

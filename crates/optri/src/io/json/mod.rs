@@ -28,7 +28,7 @@ mod decision;
 pub use decision::DecisionReport;
 
 use super::{input_elevations, Arithmetic, Input, ReadInput};
-use crate::criteria::{BoundMeasure, CertifiedBound, Diagnostics, Optimality};
+use crate::criteria::{ApproximationReport, BoundMeasure, CertifiedBound, Diagnostics, Optimality};
 use crate::error::{Error, Result};
 use crate::kernel::reporting::{
     area_scaled, over_power_of_ten_rounded, Rounding, Rounding::Nearest,
@@ -235,6 +235,9 @@ impl Serialize for TriangulationReport<'_> {
             }),
             algorithm: run.map(|s| s.algorithm.as_str()),
             algorithm_detail: run.map(|s| s.algorithm_detail.as_str()),
+            approximation: run
+                .and_then(|s| s.approximation.as_ref())
+                .map(ApproximationDocument::of),
             metric: run.and_then(|s| {
                 let (longest_edge, max_edge_length) = self.metric_longest_edge()?;
                 Some(MetricDocument {
@@ -278,6 +281,81 @@ struct BoundDocument {
     gap: Option<f64>,
 }
 
+/// How a general-set area result was obtained and its guarantee
+/// (`Solution::approximation`).
+#[derive(serde::Serialize)]
+struct ApproximationDocument<'a> {
+    choice: &'static str,
+    candidate: &'static str,
+    candidates: &'a [&'static str],
+    skipped: Vec<SkippedDocument<'a>>,
+    delaunay_smallest_angle: AngleDocument,
+    alpha: Option<f64>,
+    flips: usize,
+    guarantee: GuaranteeDocument<'a>,
+}
+
+#[derive(serde::Serialize)]
+struct SkippedDocument<'a> {
+    candidate: &'static str,
+    reason: &'a str,
+}
+
+#[derive(serde::Serialize)]
+struct AngleDocument {
+    degrees: f64,
+    corner: [u32; 3],
+}
+
+#[derive(serde::Serialize)]
+struct GuaranteeDocument<'a> {
+    kind: &'static str,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    alpha: Option<f64>,
+    statement: &'a str,
+    smallest_angle_deg: f64,
+    theorem_81: Vec<FactorDocument>,
+}
+
+#[derive(serde::Serialize)]
+struct FactorDocument {
+    beta: f64,
+    factor: f64,
+}
+
+impl<'a> ApproximationDocument<'a> {
+    fn of(r: &'a ApproximationReport) -> Self {
+        let g = &r.guarantee;
+        ApproximationDocument {
+            choice: r.choice.name(),
+            candidate: r.candidate,
+            candidates: &r.candidates,
+            skipped: r
+                .skipped
+                .iter()
+                .map(|(candidate, reason)| SkippedDocument { candidate, reason })
+                .collect(),
+            delaunay_smallest_angle: AngleDocument {
+                degrees: r.delaunay_smallest_angle_degrees,
+                corner: r.delaunay_smallest_angle,
+            },
+            alpha: r.alpha_degrees,
+            flips: r.flips,
+            guarantee: GuaranteeDocument {
+                kind: g.kind,
+                alpha: g.alpha_degrees,
+                statement: &g.statement,
+                smallest_angle_deg: g.smallest_angle_degrees,
+                theorem_81: g
+                    .theorem_81
+                    .iter()
+                    .map(|&[beta, factor]| FactorDocument { beta, factor })
+                    .collect(),
+            },
+        }
+    }
+}
+
 /// Lengths under a non-Euclidean metric (`Solution::metric`); `stats` stays
 /// Euclidean.
 #[derive(serde::Serialize)]
@@ -307,6 +385,8 @@ struct TriangulationDocument<'a> {
     algorithm: Option<&'a str>,
     #[serde(skip_serializing_if = "Option::is_none")]
     algorithm_detail: Option<&'a str>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    approximation: Option<ApproximationDocument<'a>>,
     #[serde(skip_serializing_if = "Option::is_none")]
     metric: Option<MetricDocument>,
     points: usize,

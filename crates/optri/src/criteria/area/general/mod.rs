@@ -59,11 +59,32 @@
 //! uniform points in the unit square, both objectives): about 10 ms at
 //! n = 1000 and 0.1 s at n = 10⁴ (largest face 184 corners).
 //!
+//! # The angle floor α and the choice of approximation
+//! With a floor `α` (the `alpha` option, [`AngleFloor`]: the user's
+//! decimal, every corner compared with it exactly) every candidate is an
+//! *α-triangulation*, all angles at least `α`: Algorithm 76 flips only
+//! when both new triangles meet `α` (the thesis's parameter; without it
+//! `α*`), the face programs admit only triangles that meet `α`, and
+//! Algorithm 75 uses the stricter of `α` and 30°. `α ≤ α*` is required:
+//! `DT` maximises the smallest angle (Property 13), so above `α*` no
+//! α-triangulation exists and the run is refused naming `α*`; at or below
+//! it `DT` is one and contains `RNG ∪ hull`, so every face program has a
+//! solution. For `α ≥ 30°` every α-triangulation is a 30°-triangulation
+//! and contains `RNG ∪ hull` (Theorem 74), so the face programs find the
+//! optimum over *all* α-triangulations; the result says so in its
+//! guarantee. The `approximation` option ([`AreaApproximation`]) computes
+//! one candidate (`thesis-75`, `thesis-76`, `rng-hull`; Delaunay stands in
+//! when a face exceeds the cap) or all of them (`best`, the default).
+//! Candidates skipped because of the cap are reported.
+//!
 //! # Guarantees
 //! The thesis bounds the approximation only relative to `β`, the smallest
-//! angle of the *unknown* optimum (Theorem 81): nothing is
+//! angle of the *unknown* optimum (Theorem 81, `guarantee.rs`): nothing is
 //! guaranteed a priori, so the result is an approximation unless the bound
-//! below certifies it.
+//! below certifies it, or the face programs under a floor of at least 30°
+//! make it optimal among the α-triangulations (Algorithm 75's step 3 is the
+//! case α = 30°). Each result reports which, and Theorem 81's factors for
+//! its own smallest angle.
 //!
 //! # The certified bound
 //! Let `ab` be an edge of the convex hull between consecutive hull points
@@ -107,14 +128,18 @@
 //! (the program's rule); Algorithm 76's order is the FIFO above. Everything
 //! works on the distinct-point numbering of [`PointSet`].
 
+mod guarantee;
+
 use super::polygon::BottleneckArea;
 use super::AreaBottleneck;
+use crate::criteria::{ApproximationReport, AreaApproximation, Guarantee};
 use crate::error::{Error, Result};
 use crate::graphs::rng_from_delaunay;
 use crate::interrupt::Stop;
+use crate::kernel::metrics::angle_deg;
 use crate::kernel::{
     angle_at_least_30_degrees, compare_areas, compare_corner_angles, incircle_sign, orient_sign,
-    Point,
+    AngleFloor, Point,
 };
 use crate::polygon_program::optimal_triangulation;
 use crate::spatial::{convex_hull_cycle, empty_apexes};
@@ -137,6 +162,57 @@ pub(crate) struct GeneralAreaResult {
     /// bound on the optimal largest area. `None` never happens today (every
     /// accepted point set has a hull edge); kept for inputs without one.
     pub bound: Option<[u32; 3]>,
+    /// How the result was obtained and its guarantee (distinct indices).
+    pub report: ApproximationReport,
+}
+
+/// What the caller asks of the approximation: the candidates and the angle
+/// floor.
+#[derive(Clone, Copy, Debug, Default)]
+pub(crate) struct Settings<'a> {
+    /// Every angle of every candidate at least this (module docs).
+    pub alpha: Option<&'a AngleFloor>,
+    pub approximation: AreaApproximation,
+}
+
+/// Which triangles a face program may use, and which flips Algorithm 76
+/// may make: every angle at least a floor, decided exactly.
+#[derive(Clone, Copy, Debug)]
+enum AngleRule<'a> {
+    /// Every triangle.
+    Any,
+    /// Every angle at least 30° (Algorithm 75).
+    Thirty,
+    /// Every angle at least that of a corner (Algorithm 76 at `α*`).
+    Corner([Point; 3]),
+    /// Every angle at least the user's floor.
+    Floor(&'a AngleFloor),
+}
+
+impl AngleRule<'_> {
+    /// Does every angle of the triangle `abc` meet the rule?
+    fn admits(self, a: Point, b: Point, c: Point) -> bool {
+        let corners = [[a, b, c], [b, c, a], [c, a, b]];
+        match self {
+            AngleRule::Any => true,
+            AngleRule::Thirty => corners
+                .into_iter()
+                .all(|[o, p, q]| angle_at_least_30_degrees(o, p, q)),
+            AngleRule::Corner(alpha) => corners
+                .into_iter()
+                .all(|corner| compare_corner_angles(corner, alpha) != Ordering::Less),
+            AngleRule::Floor(floor) => floor.admits_triangle(a, b, c),
+        }
+    }
+
+    /// The rule's floor in degrees, for the rules that have a fixed one.
+    fn degrees(self) -> Option<f64> {
+        match self {
+            AngleRule::Thirty => Some(30.0),
+            AngleRule::Floor(floor) => Some(floor.degrees()),
+            AngleRule::Any | AngleRule::Corner(_) => None,
+        }
+    }
 }
 
 /// Loop steps between two checks of the stop token: a check reads the
@@ -176,11 +252,18 @@ pub(crate) const MAX_FACE_CORNERS: usize = 500;
 /// Every candidate, in the tie-breaking order of the module docs, with what the algorithms
 /// learnt on the way.
 #[cfg_attr(not(test), allow(dead_code))] // the angle statistics serve the tests
-pub(crate) struct Candidates {
-    /// The candidates computed: all four, or without the face programs
-    /// (Algorithm 75's step 3 and the `RNG ∪ hull` optimum) when a face
-    /// exceeds the cap.
+pub(crate) struct Candidates<'a> {
+    /// The candidates computed: those the approximation asks for (all four
+    /// for `best`), without the face programs (Algorithm 75's step 3 and
+    /// the `RNG ∪ hull` optimum) when a face exceeds the cap; Delaunay
+    /// when nothing else is left.
     pub list: Vec<Candidate>,
+    /// The candidates skipped, each with why.
+    pub skipped: Vec<(&'static str, String)>,
+    /// A floor such that one candidate is optimal among the triangulations
+    /// meeting it (Algorithm 75's step 3; the face programs under a floor
+    /// of at least 30°, by Theorem 74).
+    optimum_rule: Option<AngleRule<'a>>,
     /// Corners of the largest face of `RNG ∪ hull`.
     pub largest_face: usize,
     /// `DT`'s smallest angle as a corner `[apex, a, b]`.
@@ -191,22 +274,26 @@ pub(crate) struct Candidates {
     pub flips: usize,
 }
 
-/// The best of the four candidates under `objective`, with the certified
-/// bound (module docs).
+/// The best of the candidates `settings` asks for under `objective`, with
+/// the certified bound and the guarantee (module docs).
 ///
 /// # Errors
-/// [`Error::Internal`] if spade fails or a face program finds no
-/// triangulation (a bug); [`Error::Interrupted`] when `stop` says so
-/// (checked between faces, flips and searched hull edges).
+/// [`Error::InvalidOption`] if the floor exceeds the Delaunay
+/// triangulation's smallest angle; [`Error::Internal`] if spade fails or a
+/// face program finds no triangulation (a bug); [`Error::Interrupted`]
+/// when `stop` says so (checked between faces, flips and searched hull
+/// edges).
 pub(crate) fn area_general(
     points: &PointSet,
     objective: AreaBottleneck,
+    settings: Settings<'_>,
     stop: &Stop,
 ) -> Result<GeneralAreaResult> {
     best_of(
         points,
         objective,
-        &candidates(points, objective, stop)?,
+        settings,
+        &candidates(points, objective, settings, stop)?,
         stop,
     )
 }
@@ -219,7 +306,8 @@ pub(crate) fn area_general(
 pub(crate) fn best_of(
     points: &PointSet,
     objective: AreaBottleneck,
-    candidates: &Candidates,
+    settings: Settings<'_>,
+    candidates: &Candidates<'_>,
     stop: &Stop,
 ) -> Result<GeneralAreaResult> {
     let pts = points.points();
@@ -242,31 +330,100 @@ pub(crate) fn best_of(
         stop,
     )?;
     let exact = bound.is_some_and(|b| area_order(pts, winner.bottleneck, b) == Ordering::Equal);
+    let corner_degrees =
+        |[o, a, b]: [u32; 3]| angle_deg(pts[o as usize], pts[a as usize], pts[b as usize]);
+    let smallest_angle_degrees = corner_degrees(smallest_angle(pts, &winner.triangles));
+    let guarantee = if exact {
+        Guarantee {
+            kind: "optimal",
+            alpha_degrees: None,
+            statement: "optimal: the result attains the certified bound".to_string(),
+            smallest_angle_degrees,
+            theorem_81: Vec::new(),
+        }
+    } else {
+        let names: Vec<&str> = candidates.list.iter().map(|c| c.name).collect();
+        let mut statement = format!(
+            "not proven optimal; the optimum is within the certified bound; no worse than {}",
+            names.join(", ")
+        );
+        let mut kind = "approximation";
+        let mut alpha_degrees = None;
+        if let Some((rule, degrees)) = candidates
+            .optimum_rule
+            .and_then(|r| Some((r, r.degrees()?)))
+        {
+            let meets = winner
+                .triangles
+                .iter()
+                .all(|t| rule.admits(pts[t[0] as usize], pts[t[1] as usize], pts[t[2] as usize]));
+            if meets {
+                kind = "optimal-among-alpha-triangulations";
+                alpha_degrees = Some(degrees);
+                statement = format!(
+                    "optimal among the triangulations whose angles are all at least {degrees}° \
+                     (every 30°-triangulation contains RNG ∪ hull, Vassilev's Theorem 74, so the \
+                     face programs search them all); over all triangulations the optimum is \
+                     within the certified bound"
+                );
+            } else {
+                statement.push_str(&format!(
+                    "; no worse than the optimum among the triangulations whose angles are all \
+                     at least {degrees}°"
+                ));
+            }
+        }
+        Guarantee {
+            kind,
+            alpha_degrees,
+            statement: format!(
+                "{statement}. {}",
+                guarantee::theorem_81_statement(objective, smallest_angle_degrees)
+            ),
+            smallest_angle_degrees,
+            theorem_81: guarantee::sampled_factors(objective, smallest_angle_degrees),
+        }
+    };
+    let report = ApproximationReport {
+        choice: settings.approximation,
+        candidate: winner.name,
+        candidates: candidates.list.iter().map(|c| c.name).collect(),
+        skipped: candidates.skipped.clone(),
+        delaunay_smallest_angle: candidates.smallest_angle,
+        delaunay_smallest_angle_degrees: corner_degrees(candidates.smallest_angle),
+        alpha_degrees: settings.alpha.map(AngleFloor::degrees),
+        flips: candidates.flips,
+        guarantee,
+    };
     Ok(GeneralAreaResult {
         triangles: winner.triangles.clone(),
         algorithm: winner.name.to_string(),
         exact,
         bound,
+        report,
     })
 }
 
-/// The four candidates of the module docs for `objective`.
-pub(crate) fn candidates(
+/// The candidates of the module docs that `settings` asks for, under
+/// `objective`.
+pub(crate) fn candidates<'a>(
     points: &PointSet,
     objective: AreaBottleneck,
+    settings: Settings<'a>,
     stop: &Stop,
-) -> Result<Candidates> {
-    candidates_with_cap(points, objective, MAX_FACE_CORNERS, stop)
+) -> Result<Candidates<'a>> {
+    candidates_with_cap(points, objective, settings, MAX_FACE_CORNERS, stop)
 }
 
 /// [`candidates`] with the face-size cap `max_face` instead of
 /// [`MAX_FACE_CORNERS`].
-fn candidates_with_cap(
+fn candidates_with_cap<'a>(
     points: &PointSet,
     objective: AreaBottleneck,
+    settings: Settings<'a>,
     max_face: usize,
     stop: &Stop,
-) -> Result<Candidates> {
+) -> Result<Candidates<'a>> {
     let pts = points.points();
     let g = DelaunayGraph::with_topology(pts)?;
     let with_bottleneck = |name: &'static str, triangles: Vec<[u32; 3]>| Candidate {
@@ -276,25 +433,89 @@ fn candidates_with_cap(
     };
     let smallest_angle = smallest_angle(pts, &g.triangles);
     let [o, a, b] = smallest_angle.map(|v| pts[v as usize]);
-    let thirty_degrees = angle_at_least_30_degrees(o, a, b);
-    let faces = rng_hull_faces(pts, &g);
-    let largest_face = faces.iter().map(Vec::len).max().unwrap_or(0);
-    let mut list = vec![with_bottleneck(DELAUNAY, g.triangles.clone())];
-    if !thirty_degrees {
-        list.push(with_bottleneck(ALGORITHM_75, g.triangles.clone()));
-    }
-    if largest_face <= max_face {
-        if thirty_degrees {
-            let fat = triangulate_faces(pts, &faces, objective, true, stop)?;
-            list.push(with_bottleneck(ALGORITHM_75, fat));
+    if let Some(floor) = settings.alpha {
+        // Delaunay maximises the smallest angle (thesis Property 13): above
+        // α* no triangulation meets the floor; at or below it Delaunay does.
+        if !floor.admits(o, a, b) {
+            return Err(Error::InvalidOption {
+                option: "alpha",
+                message: format!(
+                    "α = {}° exceeds the Delaunay triangulation's smallest angle α* = {}° \
+                     (corner at point {} between points {} and {}): no triangulation has every \
+                     angle at least α",
+                    floor.degrees(),
+                    angle_deg(o, a, b),
+                    points.input_index(smallest_angle[0]),
+                    points.input_index(smallest_angle[1]),
+                    points.input_index(smallest_angle[2]),
+                ),
+            });
         }
-        let rng_hull = triangulate_faces(pts, &faces, objective, false, stop)?;
-        list.push(with_bottleneck(RNG_HULL_OPTIMUM, rng_hull));
     }
-    let (algorithm_76, flips) = algorithm_76(pts, &g, smallest_angle, stop)?;
-    list.push(with_bottleneck(ALGORITHM_76, algorithm_76));
+    let thirty_degrees = angle_at_least_30_degrees(o, a, b);
+    let floor_at_least_30 = settings.alpha.filter(|f| f.degrees() >= 30.0);
+    let wants = |a: AreaApproximation| {
+        settings.approximation == AreaApproximation::Best || settings.approximation == a
+    };
+    let wants_75 = wants(AreaApproximation::Thesis75);
+    let wants_rng_hull = wants(AreaApproximation::RngHull);
+    let faces = if (wants_75 && thirty_degrees) || wants_rng_hull {
+        rng_hull_faces(pts, &g)
+    } else {
+        Vec::new()
+    };
+    let largest_face = faces.iter().map(Vec::len).max().unwrap_or(0);
+    let too_large = format!(
+        "a face of RNG ∪ hull has {largest_face} corners, above the face programs' cap of \
+         {max_face}"
+    );
+    let mut list = Vec::new();
+    let mut skipped = Vec::new();
+    let mut optimum_rule = None;
+    if settings.approximation == AreaApproximation::Best {
+        list.push(with_bottleneck(DELAUNAY, g.triangles.clone()));
+    }
+    if wants_75 {
+        if !thirty_degrees {
+            list.push(with_bottleneck(ALGORITHM_75, g.triangles.clone()));
+        } else if largest_face <= max_face {
+            // A floor above 30° is stricter than Algorithm 75's.
+            let rule = floor_at_least_30.map_or(AngleRule::Thirty, AngleRule::Floor);
+            let fat = triangulate_faces(pts, &faces, objective, rule, stop)?;
+            list.push(with_bottleneck(ALGORITHM_75, fat));
+            optimum_rule = Some(rule);
+        } else {
+            skipped.push((ALGORITHM_75, too_large.clone()));
+        }
+    }
+    if wants_rng_hull {
+        if largest_face <= max_face {
+            let rule = settings.alpha.map_or(AngleRule::Any, AngleRule::Floor);
+            let rng_hull = triangulate_faces(pts, &faces, objective, rule, stop)?;
+            list.push(with_bottleneck(RNG_HULL_OPTIMUM, rng_hull));
+            if let Some(floor) = floor_at_least_30 {
+                optimum_rule = Some(AngleRule::Floor(floor)); // Theorem 74
+            }
+        } else {
+            skipped.push((RNG_HULL_OPTIMUM, too_large));
+        }
+    }
+    let mut flips = 0;
+    if wants(AreaApproximation::Thesis76) {
+        let rule = settings
+            .alpha
+            .map_or(AngleRule::Corner([o, a, b]), AngleRule::Floor);
+        let (algorithm_76, made) = algorithm_76(pts, &g, rule, stop)?;
+        flips = made;
+        list.push(with_bottleneck(ALGORITHM_76, algorithm_76));
+    }
+    if list.is_empty() {
+        list.push(with_bottleneck(DELAUNAY, g.triangles.clone()));
+    }
     Ok(Candidates {
         list,
+        skipped,
+        optimum_rule,
         largest_face,
         smallest_angle,
         thirty_degrees,
@@ -364,12 +585,12 @@ pub(crate) fn rng_hull_faces(pts: &[Point], g: &DelaunayGraph) -> Vec<Vec<u32>> 
 }
 
 /// Each face triangulated by the polygon program under `objective`, with
-/// only triangles whose angles are all at least 30° if `thirty_degrees`.
+/// only triangles that meet `rule`.
 fn triangulate_faces(
     pts: &[Point],
     faces: &[Vec<u32>],
     objective: AreaBottleneck,
-    thirty_degrees: bool,
+    rule: AngleRule<'_>,
     stop: &Stop,
 ) -> Result<Vec<[u32; 3]>> {
     let p = |v: u32| pts[v as usize];
@@ -385,11 +606,7 @@ fn triangulate_faces(
         let v = face.as_slice();
         let allowed = |i: usize, m: usize, j: usize| {
             let (a, b, c) = (p(v[i]), p(v[m]), p(v[j]));
-            orient_sign(a, b, c) > 0
-                && (!thirty_degrees
-                    || (angle_at_least_30_degrees(a, b, c)
-                        && angle_at_least_30_degrees(b, c, a)
-                        && angle_at_least_30_degrees(c, a, b)))
+            orient_sign(a, b, c) > 0 && rule.admits(a, b, c)
         };
         let solved = optimal_triangulation(
             face.len(),
@@ -402,9 +619,8 @@ fn triangulate_faces(
         )
         .ok_or_else(|| {
             Error::Internal(format!(
-                "a face of RNG ∪ hull with {} corners has no {}triangulation",
+                "a face of RNG ∪ hull with {} corners has no triangulation under {rule:?}",
                 face.len(),
-                if thirty_degrees { "30°-" } else { "" }
             ))
         })?;
         out.extend(solved.triangles.into_iter().map(|t| t.map(|c| v[c])));
@@ -412,18 +628,17 @@ fn triangulate_faces(
     Ok(out)
 }
 
-/// Algorithm 76 from `DT` with the angle floor `alpha` (a corner
-/// `[apex, a, b]`; `DT`'s smallest angle): the triangles and the number of
-/// flips (module docs for the rule, the order and termination), or
+/// Algorithm 76 from `DT` with the angle floor `rule` (`DT`'s smallest
+/// angle, or the user's α): the triangles and the number of flips (module
+/// docs for the rule, the order and termination), or
 /// [`Error::Interrupted`] when `stop` says so.
 fn algorithm_76(
     pts: &[Point],
     g: &DelaunayGraph,
-    alpha: [u32; 3],
+    rule: AngleRule<'_>,
     stop: &Stop,
 ) -> Result<(Vec<[u32; 3]>, usize)> {
     let p = |v: u32| pts[v as usize];
-    let alpha = alpha.map(p);
     let mut tri = g.triangles.clone();
     let mut nb = g.topology.neighbours.clone();
     let mut queue: VecDeque<(u32, usize, [u32; 2])> = VecDeque::new();
@@ -434,11 +649,7 @@ fn algorithm_76(
             }
         }
     }
-    let angles_ok = |[a, b, c]: [Point; 3]| {
-        [[a, b, c], [b, c, a], [c, a, b]]
-            .into_iter()
-            .all(|corner| compare_corner_angles(corner, alpha) != Ordering::Less)
-    };
+    let angles_ok = |[a, b, c]: [Point; 3]| rule.admits(a, b, c);
     let mut flips = 0;
     let mut popped = 0usize;
     while let Some((t, j, [x, y])) = queue.pop_front() {
@@ -664,11 +875,12 @@ pub(crate) fn step_times(points: &PointSet) -> Result<AreaGeneralSteps> {
         ("face programs MinMax", AreaBottleneck::MinMax),
     ] {
         timed(&mut phases, name, || {
-            triangulate_faces(pts, &faces, objective, false, &Stop::default())
+            triangulate_faces(pts, &faces, objective, AngleRule::Any, &Stop::default())
         })?;
     }
     let (_, flips) = timed(&mut phases, "Algorithm 76", || {
-        algorithm_76(pts, &g, smallest_angle(pts, &g.triangles), &Stop::default())
+        let corner = smallest_angle(pts, &g.triangles).map(|v| pts[v as usize]);
+        algorithm_76(pts, &g, AngleRule::Corner(corner), &Stop::default())
     })?;
     let hull = convex_hull_cycle(pts);
     timed(&mut phases, "bound MaxMin", || {

@@ -13,12 +13,12 @@ use rand::{Rng, SeedableRng};
 
 /// [`super::area_general`], never stopped.
 fn area_general(points: &PointSet, objective: AreaBottleneck) -> Result<GeneralAreaResult> {
-    super::area_general(points, objective, &Stop::default())
+    super::area_general(points, objective, Settings::default(), &Stop::default())
 }
 
 /// [`super::candidates`], never stopped.
-fn candidates(points: &PointSet, objective: AreaBottleneck) -> Result<Candidates> {
-    super::candidates(points, objective, &Stop::default())
+fn candidates(points: &PointSet, objective: AreaBottleneck) -> Result<Candidates<'static>> {
+    super::candidates(points, objective, Settings::default(), &Stop::default())
 }
 
 /// [`super::candidates_with_cap`], never stopped.
@@ -26,8 +26,14 @@ fn candidates_with_cap(
     points: &PointSet,
     objective: AreaBottleneck,
     max_face: usize,
-) -> Result<Candidates> {
-    super::candidates_with_cap(points, objective, max_face, &Stop::default())
+) -> Result<Candidates<'static>> {
+    super::candidates_with_cap(
+        points,
+        objective,
+        Settings::default(),
+        max_face,
+        &Stop::default(),
+    )
 }
 
 const OBJECTIVES: [AreaBottleneck; 2] = [AreaBottleneck::MaxMin, AreaBottleneck::MinMax];
@@ -640,4 +646,295 @@ fn theorem_74_and_algorithm_75_by_enumeration() {
         "{thirty_triangulations} {step_3}"
     );
     eprintln!("{sets} sets, {thirty_triangulations} 30°-triangulations, Algorithm 75 step 3 in {step_3} runs");
+}
+
+/// [`super::area_general`] with an angle floor of `degrees` and an
+/// approximation, never stopped.
+fn with_alpha(
+    points: &PointSet,
+    objective: AreaBottleneck,
+    degrees: Option<f64>,
+    approximation: AreaApproximation,
+) -> Result<GeneralAreaResult> {
+    let floor = degrees.map(|d| AngleFloor::new(d).expect("a valid floor"));
+    let settings = Settings {
+        alpha: floor.as_ref(),
+        approximation,
+    };
+    super::area_general(points, objective, settings, &Stop::default())
+}
+
+/// The angle at `o` against `degrees`, by the oracle's rationals and the
+/// platform's tangent, independent of the kernel: `Some(true)` if at least,
+/// `Some(false)` if below, `None` within 10⁻⁹ relative of `tan α` (too close
+/// for this reference to decide).
+fn at_least_degrees_rational(o: Point, a: Point, b: Point, degrees: f64) -> Option<bool> {
+    let d = |p: Point, k: usize| to_rational(p[k]) - to_rational(o[k]);
+    let (ux, uy, vx, vy) = (d(a, 0), d(a, 1), d(b, 0), d(b, 1));
+    let dot = ux.clone() * vx.clone() + uy.clone() * vy.clone();
+    let cross = ux * vy - uy * vx;
+    let cross = if cross < BigRational::from_integer(0.into()) {
+        -cross
+    } else {
+        cross
+    };
+    if dot <= BigRational::from_integer(0.into()) || degrees == 0.0 {
+        return Some(true);
+    }
+    let tan = degrees.to_radians().tan();
+    let lo = to_rational(tan * (1.0 - 1e-9));
+    let hi = to_rational(tan * (1.0 + 1e-9));
+    if cross >= hi * dot.clone() {
+        Some(true)
+    } else if cross < lo * dot {
+        Some(false)
+    } else {
+        None
+    }
+}
+
+/// Is every angle of `triangles` at least `degrees` (rationals)? `None`
+/// when some corner is too close to decide.
+fn is_alpha_triangulation(pts: &[Point], triangles: &[[u32; 3]], degrees: f64) -> Option<bool> {
+    let mut all = true;
+    for t in triangles {
+        let [a, b, c] = t.map(|v| pts[v as usize]);
+        for [o, p, q] in [[a, b, c], [b, c, a], [c, a, b]] {
+            all &= at_least_degrees_rational(o, p, q, degrees)?;
+        }
+    }
+    Some(all)
+}
+
+/// `DT`'s smallest angle in degrees, rounded down to a thousandth: a floor
+/// that every Delaunay angle meets.
+fn delaunay_floor(ps: &PointSet) -> f64 {
+    let pts = ps.points();
+    let g = DelaunayGraph::with_topology(pts).unwrap();
+    let [o, a, b] = smallest_angle(pts, &g.triangles).map(|v| pts[v as usize]);
+    (angle_deg(o, a, b) * 1000.0).floor() / 1000.0 - 0.001
+}
+
+/// With a floor α ≤ α*, every approximation's result is an
+/// α-triangulation (checked in rationals), never worse than Delaunay
+/// (which is one), and reports the floor; Algorithm 76 with α = α* keeps
+/// today's candidate.
+#[test]
+fn alpha_results_keep_every_angle_at_least_alpha() {
+    const SEED: u64 = 0xA4EA_00A1;
+    let mut rng = StdRng::seed_from_u64(SEED);
+    let mut cases = 0;
+    for i in 0..60 {
+        let family = FAMILIES[i % FAMILIES.len()];
+        let Ok(ps) = PointSet::new(&sample(&mut rng, family, 8 + i % 30)) else {
+            continue;
+        };
+        let pts = ps.points();
+        let top = delaunay_floor(&ps);
+        if top <= 0.0 {
+            continue;
+        }
+        for fraction in [0.0, 0.4, 0.8, 1.0] {
+            let alpha = (top * fraction * 1000.0).floor() / 1000.0;
+            for objective in OBJECTIVES {
+                let dt = value(
+                    pts,
+                    &candidates(&ps, objective).unwrap().list[0].triangles,
+                    objective,
+                );
+                for &approximation in AreaApproximation::ALL {
+                    let r = with_alpha(&ps, objective, Some(alpha), approximation).unwrap();
+                    Triangulation::from_distinct(&ps, r.triangles.clone())
+                        .validate()
+                        .unwrap();
+                    assert_ne!(
+                        is_alpha_triangulation(pts, &r.triangles, alpha),
+                        Some(false),
+                        "{family} α={alpha} {approximation:?}"
+                    );
+                    assert!(at_least_as_good(
+                        objective,
+                        &value(pts, &r.triangles, objective),
+                        &dt
+                    ));
+                    assert_eq!(r.report.alpha_degrees, Some(alpha));
+                    assert!(r.report.guarantee.smallest_angle_degrees >= alpha);
+                    cases += 1;
+                }
+            }
+        }
+    }
+    assert!(cases >= 1500, "{cases} cases");
+}
+
+/// Theorem 74 with the floor: for α ≥ 30° the result is optimal among the
+/// α-triangulations (exhaustive enumeration, angles in rationals), and says
+/// so; α above α* is refused with α* in the message.
+#[test]
+fn alpha_from_30_degrees_is_optimal_among_alpha_triangulations() {
+    const SEED: u64 = 0xA4EA_00A2;
+    let mut rng = StdRng::seed_from_u64(SEED);
+    let (mut checked, mut refused, mut undecided) = (0, 0, 0);
+    for i in 0..300 {
+        let n = 6 + i % 3;
+        let ps = PointSet::new(&lattice_patch(&mut rng, n, [1, 4, 8][i % 3])).unwrap();
+        let pts = ps.points();
+        let top = delaunay_floor(&ps);
+        let all = oracle::all_triangulations(pts);
+        for alpha in [30.0, 31.5, 33.25, top] {
+            if alpha < 30.0 {
+                continue;
+            }
+            if alpha > top + 0.002 {
+                for objective in OBJECTIVES {
+                    let Err(Error::InvalidOption { option, message }) =
+                        with_alpha(&ps, objective, Some(alpha), AreaApproximation::Best)
+                    else {
+                        panic!("α = {alpha} above α* ≈ {top} accepted");
+                    };
+                    assert_eq!(option, "alpha");
+                    assert!(message.contains("α*"), "{message}");
+                    refused += 1;
+                }
+                continue;
+            }
+            let fat: Option<Vec<&Vec<[u32; 3]>>> = all
+                .iter()
+                .filter_map(|t| match is_alpha_triangulation(pts, t, alpha) {
+                    Some(true) => Some(Some(t)),
+                    Some(false) => None,
+                    None => Some(None),
+                })
+                .collect();
+            let Some(fat) = fat else {
+                undecided += 1;
+                continue;
+            };
+            assert!(!fat.is_empty(), "Delaunay is an α-triangulation");
+            for objective in OBJECTIVES {
+                let best = best_value(pts, fat.iter().copied(), objective);
+                for approximation in [
+                    AreaApproximation::Best,
+                    AreaApproximation::RngHull,
+                    AreaApproximation::Thesis75,
+                ] {
+                    let r = with_alpha(&ps, objective, Some(alpha), approximation).unwrap();
+                    assert_eq!(
+                        value(pts, &r.triangles, objective),
+                        best,
+                        "{pts:?} α={alpha}"
+                    );
+                    let kind = r.report.guarantee.kind;
+                    assert!(
+                        kind == "optimal" || kind == "optimal-among-alpha-triangulations",
+                        "{kind}"
+                    );
+                    checked += 1;
+                }
+            }
+        }
+    }
+    assert!(checked >= 600 && refused >= 100, "{checked} {refused}");
+    assert!(undecided <= 5, "{undecided}");
+}
+
+/// A sweep of the floor on a lattice (α* = 45° exactly: right isosceles
+/// triangles): every α from 0° to 45° gives an α-triangulation, 45° itself
+/// included (an exact tie), and anything above is refused naming α*.
+#[test]
+fn alpha_sweep_on_a_lattice() {
+    let grid: Vec<Point> = (0..36)
+        .map(|k| [f64::from(k % 6), f64::from(k / 6)])
+        .collect();
+    let ps = PointSet::new(&grid).unwrap();
+    let pts = ps.points();
+    let mut alpha = 0.0;
+    while alpha <= 45.0 {
+        for objective in OBJECTIVES {
+            for &approximation in AreaApproximation::ALL {
+                let r = with_alpha(&ps, objective, Some(alpha), approximation).unwrap();
+                Triangulation::from_distinct(&ps, r.triangles.clone())
+                    .validate()
+                    .unwrap();
+                let floor = AngleFloor::new(alpha).unwrap();
+                for t in &r.triangles {
+                    let [a, b, c] = t.map(|v| pts[v as usize]);
+                    assert!(floor.admits_triangle(a, b, c));
+                }
+                assert_ne!(
+                    is_alpha_triangulation(pts, &r.triangles, alpha.min(44.9)),
+                    Some(false)
+                );
+                assert_eq!(r.report.delaunay_smallest_angle_degrees, 45.0);
+            }
+        }
+        alpha += 7.5;
+    }
+    for alpha in [45.000001, 50.0, 89.0] {
+        let Err(Error::InvalidOption { message, .. }) = with_alpha(
+            &ps,
+            AreaBottleneck::MaxMin,
+            Some(alpha),
+            AreaApproximation::Best,
+        ) else {
+            panic!("α = {alpha} accepted");
+        };
+        assert!(message.contains("α* = 45°"), "{message}");
+    }
+}
+
+/// Each approximation computes its own candidates; `best` without a floor
+/// is today's result; the guarantee of a result that is not optimal
+/// carries Theorem 81's factors.
+#[test]
+fn approximations_choose_their_candidates() {
+    const SEED: u64 = 0xA4EA_00A3;
+    let mut rng = StdRng::seed_from_u64(SEED);
+    let mut approximations = 0;
+    for _ in 0..20 {
+        let ps = PointSet::new(&sample(&mut rng, "uniform", 40)).unwrap();
+        for objective in OBJECTIVES {
+            let default = area_general(&ps, objective).unwrap();
+            let best = with_alpha(&ps, objective, None, AreaApproximation::Best).unwrap();
+            assert_eq!(default.triangles, best.triangles);
+            assert_eq!(best.report.candidates, CANDIDATE_NAMES);
+            let expect = [
+                (AreaApproximation::Thesis75, ALGORITHM_75),
+                (AreaApproximation::Thesis76, ALGORITHM_76),
+                (AreaApproximation::RngHull, RNG_HULL_OPTIMUM),
+            ];
+            for (approximation, name) in expect {
+                let r = with_alpha(&ps, objective, None, approximation).unwrap();
+                assert_eq!(r.report.candidates, [name]);
+                assert_eq!(r.report.candidate, name);
+                assert_eq!(r.report.choice, approximation);
+                if r.report.guarantee.kind == "approximation" {
+                    assert!(!r.report.guarantee.theorem_81.is_empty());
+                    assert!(r.report.guarantee.statement.contains("Theorem 81"));
+                    approximations += 1;
+                }
+            }
+            if best.exact {
+                assert_eq!(best.report.guarantee.kind, "optimal");
+                assert!(best.report.guarantee.theorem_81.is_empty());
+            }
+        }
+    }
+    assert!(approximations >= 20, "{approximations}");
+}
+
+/// Faces beyond the cap are reported, not skipped silently.
+#[test]
+fn skipped_candidates_are_reported() {
+    let mut rng = StdRng::seed_from_u64(0xA4EA_00A4);
+    let ps = PointSet::new(&sample(&mut rng, "real", 30)).unwrap();
+    let settings = Settings::default();
+    let c = super::candidates_with_cap(&ps, AreaBottleneck::MaxMin, settings, 3, &Stop::default())
+        .unwrap();
+    assert!(c.largest_face > 3);
+    let names: Vec<&str> = c.skipped.iter().map(|s| s.0).collect();
+    assert!(names.contains(&RNG_HULL_OPTIMUM), "{names:?}");
+    assert!(c.skipped.iter().all(|s| s.1.contains("cap of 3")));
+    let r = best_of(&ps, AreaBottleneck::MaxMin, settings, &c, &Stop::default()).unwrap();
+    assert_eq!(r.report.skipped, c.skipped);
 }
