@@ -1363,6 +1363,8 @@ fn area_thresholds_match_exact_rationals_at_and_next_to_the_area() {
     let want = oracle::twice_area(tenth[0], tenth[1], tenth[2]).cmp(&decimal_rational(1, -1));
     assert_eq!(AreaThreshold::new(1, -1).compare(tenth), want);
     assert_ne!(want, std::cmp::Ordering::Equal);
+}
+
 const SEED_ANGLE_FLOOR: u64 = 0xA1FA;
 
 /// `AngleFloor` against exact references: at 30° the integer definition

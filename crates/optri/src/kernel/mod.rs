@@ -40,8 +40,8 @@
 //! consistent: perturbed lengths are pairwise distinct and perturbed
 //! orientations are never zero, for *distinct* input points.
 
-mod area_threshold;
 mod angle_floor;
+mod area_threshold;
 mod certified_incircle;
 mod degrees;
 mod differences;
@@ -81,8 +81,8 @@ pub const MAX_COORDINATE: f64 = 3.2138760885179806e60; // 2^201
 /// Smallest accepted non-zero absolute coordinate value, 2⁻¹⁴².
 pub const MIN_COORDINATE: f64 = 1.793662034335766e-43; // 2^-142
 
-pub use area_threshold::AreaThreshold;
 pub use angle_floor::{AngleFloor, MIN_ANGLE_FLOOR_DEGREES};
+pub use area_threshold::AreaThreshold;
 pub(crate) use differences::{
     compare_angle_differences, compare_area_differences, compare_length_differences,
 };
